@@ -1,0 +1,195 @@
+/// @file bench_world.cpp
+/// Micro-benchmarks of the per-step world updates: one sensor scan, one incremental frontier
+/// update, frontier clustering. Maps are generated here (seeded) so the numbers do not depend
+/// on the map generators.
+
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <cstdint>
+#include <deque>
+#include <vector>
+
+#include "engine/world/frontiers.hpp"
+#include "engine/world/known_map.hpp"
+#include "engine/world/random.hpp"
+#include "engine/world/sensor.hpp"
+#include "engine/world/world_map.hpp"
+
+namespace fsweep {
+namespace {
+
+constexpr int kSide = 200;  // map side (cells)
+
+/// 200 x 200 cells at 1 m, obstacle cells with probability `p` (seeded), start free.
+WorldMap bench_world(double p) {
+  WorldMap map;
+  map.occupied = Grid<std::uint8_t>(kSide, kSide, 0);
+  map.resolution_m = 1.0;
+  Rng rng = make_rng(42, "bench-map");
+  for (int i = 0; i < map.occupied.size(); ++i) map.occupied[i] = uniform01(rng) < p ? 1 : 0;
+  map.start = Cell{kSide / 2, kSide / 2};
+  map.occupied.at(map.start) = 0;
+  return map;
+}
+
+/// `n` free cells at least `margin` cells from the edge (seeded).
+std::vector<Cell> free_cells(const WorldMap& map, int n, int margin) {
+  std::vector<Cell> out;
+  Rng rng = make_rng(7, "bench-cells");
+  const auto span = static_cast<std::uint64_t>(kSide - 2 * margin);
+  while (static_cast<int>(out.size()) < n) {
+    const Cell c{margin + static_cast<int>(uniform_below(rng, span)),
+                 margin + static_cast<int>(uniform_below(rng, span))};
+    if (map.is_free(c)) out.push_back(c);
+  }
+  return out;
+}
+
+SensorParams sensor_params(double range_m) {
+  SensorParams p;
+  p.range_m = range_m;
+  return p;
+}
+
+/// One scan from a fresh (all unknown) KnownMap: the full cost of a scan into unexplored space.
+/// Fresh maps are prepared in batches with the timer paused, so the pause cost is amortised
+/// over a batch and the map copy is not timed. Argument: range (cells).
+void BM_SensorScan(benchmark::State& state) {  // NOLINT(readability-identifier-naming)
+  const WorldMap map = bench_world(0.15);
+  Sensor sensor(sensor_params(static_cast<double>(state.range(0))), map.resolution_m);
+  const std::vector<Cell> at = free_cells(map, 256, 0);
+  const KnownMap fresh(kSide, kSide, map.resolution_m);
+  constexpr std::size_t kBatch = 64;
+  std::vector<KnownMap> pool(kBatch, fresh);
+  Rng rng = make_rng(1, "sensor");
+  std::size_t used = 0;
+  std::size_t next = 0;
+  std::int64_t revealed = 0;
+  for (auto _ : state) {
+    if (used == kBatch) {
+      state.PauseTiming();
+      for (KnownMap& k : pool) k = fresh;
+      used = 0;
+      state.ResumeTiming();
+    }
+    const auto cells = sensor.scan(map, pool[used++], at[next++ % at.size()], 0.0, rng);
+    revealed += static_cast<std::int64_t>(cells.size());
+    benchmark::DoNotOptimize(cells.data());
+  }
+  state.counters["revealed_per_scan"] =
+      benchmark::Counter(static_cast<double>(revealed), benchmark::Counter::kAvgIterations);
+}
+BENCHMARK(BM_SensorScan)->Arg(10)->Arg(30);
+
+/// One scan where every cell in range is already known (the skip path; robot standing still).
+void BM_SensorScanKnown(benchmark::State& state) {  // NOLINT(readability-identifier-naming)
+  const WorldMap map = bench_world(0.15);
+  Sensor sensor(sensor_params(static_cast<double>(state.range(0))), map.resolution_m);
+  KnownMap known(kSide, kSide, map.resolution_m);
+  for (int i = 0; i < known.size(); ++i) known.reveal(i, map.occupied[i] != 0);
+  const std::vector<Cell> at = free_cells(map, 256, 0);
+  Rng rng = make_rng(1, "sensor");
+  std::size_t next = 0;
+  for (auto _ : state) {
+    const auto cells = sensor.scan(map, known, at[next++ % at.size()], 0.0, rng);
+    benchmark::DoNotOptimize(cells.data());
+  }
+}
+BENCHMARK(BM_SensorScanKnown)->Arg(10);
+
+/// Snapshots of a greedy exploration (scan, go to the nearest frontier cell, repeat) on the
+/// bench map: the map after a scan, the cells that scan revealed, the frontiers before it.
+struct Snapshot {
+  KnownMap known;
+  std::vector<int> revealed;
+  FrontierMap before;
+};
+
+int nearest_frontier(const KnownMap& known, const FrontierMap& frontiers, Cell from) {
+  std::vector<std::uint8_t> seen(static_cast<std::size_t>(known.size()), 0);
+  std::deque<Cell> queue{from};
+  seen[static_cast<std::size_t>(known.index(from))] = 1;
+  while (!queue.empty()) {
+    const Cell c = queue.front();
+    queue.pop_front();
+    if (frontiers.is_frontier(known.index(c))) return known.index(c);
+    for (const Cell d : kDirections) {
+      const Cell n{c.x + d.x, c.y + d.y};
+      if (!known.is_free(n) || seen[static_cast<std::size_t>(known.index(n))] != 0) continue;
+      seen[static_cast<std::size_t>(known.index(n))] = 1;
+      queue.push_back(n);
+    }
+  }
+  return frontiers.count() > 0 ? frontiers.cells().front() : -1;
+}
+
+/// Runs `warmup` steps, then records `count` snapshots (range 10 cells).
+std::vector<Snapshot> exploration_snapshots(int warmup, int count) {
+  const WorldMap map = bench_world(0.15);
+  Sensor sensor(sensor_params(10.0), map.resolution_m);
+  KnownMap known(kSide, kSide, map.resolution_m);
+  FrontierMap frontiers(known);
+  Rng rng = make_rng(1, "sensor");
+  Cell at = map.start;
+  std::vector<Snapshot> out;
+  for (int step = 0; step < warmup + count; ++step) {
+    const FrontierMap before = frontiers;
+    const auto revealed = sensor.scan(map, known, at, 0.0, rng);
+    frontiers.update(known, revealed);
+    if (step >= warmup) out.push_back(Snapshot{known, {revealed.begin(), revealed.end()}, before});
+    const int target = nearest_frontier(known, frontiers, at);
+    if (target < 0) break;
+    at = known.cell(target);
+  }
+  return out;
+}
+
+/// FrontierMap::update after one scan step of an exploration (cycling through 16 steps).
+/// update() is idempotent for a given (known, revealed) pair and recomputes the same cells each
+/// time, so repeating it on the same FrontierMap costs what the first call cost.
+void BM_FrontierUpdate(benchmark::State& state) {  // NOLINT(readability-identifier-naming)
+  std::vector<Snapshot> snaps = exploration_snapshots(100, 16);
+  std::size_t next = 0;
+  std::int64_t revealed = 0;
+  for (auto _ : state) {
+    Snapshot& s = snaps[next++ % snaps.size()];
+    s.before.update(s.known, s.revealed);
+    revealed += static_cast<std::int64_t>(s.revealed.size());
+    benchmark::DoNotOptimize(s.before.count());
+  }
+  state.counters["revealed_per_update"] =
+      benchmark::Counter(static_cast<double>(revealed), benchmark::Counter::kAvgIterations);
+}
+BENCHMARK(BM_FrontierUpdate);
+
+/// Full rebuild on the same maps, for comparison with the incremental update.
+void BM_FrontierRebuild(benchmark::State& state) {  // NOLINT(readability-identifier-naming)
+  std::vector<Snapshot> snaps = exploration_snapshots(100, 16);
+  FrontierMap frontiers;
+  std::size_t next = 0;
+  for (auto _ : state) {
+    frontiers.rebuild(snaps[next++ % snaps.size()].known);
+    benchmark::DoNotOptimize(frontiers.count());
+  }
+}
+BENCHMARK(BM_FrontierRebuild);
+
+/// FrontierMap::clusters (pieces of at most 10 m) after 100 exploration steps.
+void BM_FrontierClusters(benchmark::State& state) {  // NOLINT(readability-identifier-naming)
+  const std::vector<Snapshot> snaps = exploration_snapshots(100, 1);
+  const FrontierMap frontiers(snaps.front().known);
+  std::int64_t clusters = 0;
+  for (auto _ : state) {
+    const auto result = frontiers.clusters(snaps.front().known, 10.0);
+    clusters += static_cast<std::int64_t>(result.size());
+    benchmark::DoNotOptimize(result.data());
+  }
+  state.counters["frontier_cells"] = frontiers.count();
+  state.counters["clusters"] =
+      benchmark::Counter(static_cast<double>(clusters), benchmark::Counter::kAvgIterations);
+}
+BENCHMARK(BM_FrontierClusters);
+
+}  // namespace
+}  // namespace fsweep

@@ -1,0 +1,17 @@
+#pragma once
+/// @file commands.hpp
+/// The subcommands of `fsweep`. Each registers its options on the CLI11 app and returns the
+/// function that runs it (exit code).
+
+#include <functional>
+
+#include <CLI/CLI.hpp>
+
+namespace fsweep::cli {
+
+using Command = std::function<int()>;
+
+Command add_sim_command(CLI::App& app);
+Command add_plan_command(CLI::App& app);
+
+}  // namespace fsweep::cli

@@ -1,0 +1,48 @@
+#pragma once
+/// @file grid_distance_oracle.hpp
+/// The engine's answer to strategies' distance queries: bounded one-to-many Dijkstra over
+/// known free space from the robot and from the dock, cached for one decision.
+
+#include "planners/distance_field.hpp"
+#include "planners/incremental_distance_field.hpp"
+#include "strategies/strategy.hpp"
+
+namespace fsweep {
+
+class GridDistanceOracle final : public DistanceOracle {
+ public:
+  GridDistanceOracle() = default;
+
+  /// Starts a new decision: the map, the robot and the dock may have changed. `dock_field`
+  /// (may be null) is the simulation's up-to-date field from the dock; without it, dock
+  /// distances are searched like robot distances.
+  void reset(const KnownMap& known, Cell robot, Cell dock, bool allow_corner_cutting,
+             const IncrementalDistanceField* dock_field);
+
+  [[nodiscard]] std::vector<double> from_robot(std::span<const int> cells, double bound_m) override;
+  [[nodiscard]] std::vector<double> from_dock(std::span<const int> cells, double bound_m) override;
+  [[nodiscard]] int nearest_from_robot(std::span<const int> cells) override;
+
+  /// Expansions of all searches since the last reset().
+  [[nodiscard]] long expansions() const { return expansions_; }
+
+ private:
+  struct Cached {
+    DistanceField field;
+    double bound_m = -1.0;  // < 0: not computed for this decision
+    std::vector<int> cells;  // the cells the field is exact for
+  };
+  std::vector<double> lookup(Cached& c, Cell source, std::span<const int> cells, double bound_m);
+
+  const KnownMap* known_ = nullptr;
+  Cell robot_{};
+  Cell dock_{};
+  bool corner_cutting_ = false;
+  const IncrementalDistanceField* dock_field_ = nullptr;
+  Cached robot_field_;
+  Cached dock_search_;
+  DistanceField scratch_;
+  long expansions_ = 0;
+};
+
+}  // namespace fsweep

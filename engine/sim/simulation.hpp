@@ -1,0 +1,105 @@
+#pragma once
+/// @file simulation.hpp
+/// The exploration loop (DESIGN.md section 6): sense, update frontiers, ask the strategy,
+/// plan, move cell by cell sensing after every step, repeat until an end reason applies.
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "engine/sim/battery.hpp"
+#include "engine/sim/grid_distance_oracle.hpp"
+#include "engine/sim/run_result.hpp"
+#include "engine/sim/run_spec.hpp"
+#include "engine/world/frontiers.hpp"
+#include "engine/world/known_map.hpp"
+#include "engine/world/random.hpp"
+#include "engine/world/sensor.hpp"
+#include "planners/planner.hpp"
+#include "strategies/strategy.hpp"
+
+namespace fsweep {
+
+/// The state of one run, as a copyable value: copying a Simulation clones its strategy and
+/// planner, so a run can be forked at a decision (DESIGN.md section 7, weight search). No
+/// globals; every random stream comes from the run seed.
+///
+/// Rules of the loop:
+/// - The robot senses at the start and after every cell step.
+/// - Frontier goals are cluster representatives (split at `cluster_max_length_m`).
+/// - A goal whose visit revealed nothing while it is still a frontier cell is dropped (it is
+///   unobservable, e.g. behind a sensor blind spot); so is a goal the planner cannot reach.
+/// - Arriving at the dock recharges the battery (a recharge is counted when it was not full).
+/// - A move the battery cannot pay for ends the run with BatteryDepleted.
+class Simulation {
+ public:
+  /// Builds the run; throws ConfigError for a bad spec (unknown plugin, dock in an obstacle).
+  explicit Simulation(const RunSpec& spec);
+  Simulation(const Simulation& other);
+  Simulation& operator=(const Simulation& other);
+  Simulation(Simulation&&) noexcept = default;
+  Simulation& operator=(Simulation&&) noexcept = default;
+  ~Simulation() = default;
+
+  /// One decision: decide, plan, travel. Returns false once the run has ended.
+  bool step();
+  /// Steps until the end and returns the result.
+  [[nodiscard]] RunResult run();
+
+  [[nodiscard]] bool ended() const { return ended_; }
+  /// The result so far (final once ended()).
+  [[nodiscard]] RunResult result() const;
+
+  [[nodiscard]] const KnownMap& known() const { return known_; }
+  [[nodiscard]] Cell robot() const { return robot_; }
+
+ private:
+  void sense();
+  bool move_to(Cell next);
+  void sample_progress();
+  void end(EndReason reason, std::string detail = {});
+  void finish();
+  [[nodiscard]] double coverage() const;
+
+  RunSpec spec_;
+  std::unique_ptr<Strategy> strategy_;
+  std::unique_ptr<Planner> planner_;
+  Sensor sensor_;
+  KnownMap known_;
+  FrontierMap frontiers_;
+  Rng sensor_rng_;
+  GridDistanceOracle oracle_;
+  IncrementalDistanceField dock_field_;
+  bool dock_field_ready_ = false;
+  Grid<std::uint8_t> reachable_;
+  int reachable_count_ = 0;
+  int known_reachable_ = 0;
+  std::vector<std::uint8_t> dropped_;
+
+  Cell robot_{};
+  int heading_ = 0;
+  Cell dock_{};
+  Cell previous_position_{};
+  std::optional<Cell> previous_goal_;
+  Battery battery_{0.0, 1.0};
+
+  double resolution_m_ = 1.0;
+  double cluster_max_length_m_ = 0.0;
+  double progress_step_m_ = 1.0;
+  long max_steps_ = 0;
+  double next_progress_m_ = 0.0;
+  int quiet_decisions_ = 0;
+
+  RunMetrics metrics_;
+  std::vector<ProgressSample> progress_;
+  std::vector<Cell> trajectory_;
+  std::vector<int> recharge_steps_;
+  bool ended_ = false;
+  EndReason end_ = EndReason::Error;
+  std::string end_detail_;
+};
+
+/// Runs `spec` to the end: a pure function of the spec (and its seed).
+[[nodiscard]] RunResult simulate(const RunSpec& spec);
+
+}  // namespace fsweep

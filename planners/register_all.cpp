@@ -1,0 +1,28 @@
+#include "planners/register_all.hpp"
+
+#include <array>
+#include <nlohmann/json.hpp>
+
+#include "planners/grid_planner.hpp"
+
+namespace fsweep {
+namespace {
+
+template <GridSearchKind Kind>
+std::unique_ptr<Planner> make_grid_planner(const nlohmann::json& params, const std::string& where) {
+  return std::make_unique<GridPlanner>(Kind, GridPlannerParams::from_json(params, where));
+}
+
+}  // namespace
+
+std::span<const PlannerEntry> planner_table() {
+  // Add new planners here (one line each); the registry, the CLI and the conformance tests
+  // pick them up from this table.
+  static constexpr std::array kTable{
+      PlannerEntry{"astar", &make_grid_planner<GridSearchKind::AStar>},
+      PlannerEntry{"dijkstra", &make_grid_planner<GridSearchKind::Dijkstra>},
+  };
+  return kTable;
+}
+
+}  // namespace fsweep

@@ -1,0 +1,74 @@
+/// @file register_all.cpp
+/// The one place where strategies are registered.
+
+#include <algorithm>
+#include <functional>
+#include <map>
+#include <nlohmann/json.hpp>
+
+#include "engine/world/config_error.hpp"
+#include "strategies/energy_aware.hpp"
+#include "strategies/registry.hpp"
+
+namespace fsweep {
+namespace {
+
+struct Entry {
+  std::function<std::unique_ptr<Strategy>(const nlohmann::json&, std::uint64_t, const std::string&)> make;
+  std::function<nlohmann::json(const nlohmann::json&)> resolve;
+};
+
+const std::map<std::string, Entry>& table() {
+  static const std::map<std::string, Entry> entries = {
+      {"energy_aware",
+       {[](const nlohmann::json& p, std::uint64_t, const std::string& where) -> std::unique_ptr<Strategy> {
+          return std::make_unique<EnergyAware>("energy_aware", energy_aware_params_from_json(p, where));
+        },
+        [](const nlohmann::json& p) { return nlohmann::json(energy_aware_params_from_json(p, "")); }}},
+      {"closest_frontier",
+       {[](const nlohmann::json& p, std::uint64_t, const std::string& where) -> std::unique_ptr<Strategy> {
+          EnergyAwareParams ea;
+          ea.w1 = 1.0;
+          ea.w2 = ea.w3 = ea.w4 = 0.0;
+          if (!p.is_null()) {
+            require_known_keys(p, {"distance"}, where);
+            ea.distance = energy_aware_params_from_json(p, where).distance;
+          }
+          return std::make_unique<EnergyAware>("closest_frontier", ea);
+        },
+        [](const nlohmann::json& p) {
+          std::string d = "path";
+          if (!p.is_null() && p.contains("distance")) d = p.at("distance").get<std::string>();
+          return nlohmann::json{{"distance", d}};
+        }}},
+  };
+  return entries;
+}
+
+const Entry& find(const std::string& name, const std::string& where) {
+  const auto& t = table();
+  const auto it = t.find(name);
+  if (it == t.end()) {
+    throw ConfigError(where, "unknown strategy '" + name + "'; known: " + join_names(strategy_names()));
+  }
+  return it->second;
+}
+
+}  // namespace
+
+std::unique_ptr<Strategy> make_strategy(const std::string& name, const nlohmann::json& params, std::uint64_t seed,
+                                        const std::string& where) {
+  return find(name, where).make(params, seed, where + "/params");
+}
+
+std::vector<std::string> strategy_names() {
+  std::vector<std::string> names;
+  for (const auto& [name, entry] : table()) names.push_back(name);
+  return names;
+}
+
+nlohmann::json resolved_strategy_params(const std::string& name, const nlohmann::json& params) {
+  return find(name, "strategy").resolve(params);
+}
+
+}  // namespace fsweep

@@ -1,0 +1,100 @@
+// The `fsweep` executable end to end: outputs written, and bad input reported with one clear
+// message and exit code 2.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <sys/wait.h>
+
+namespace {
+
+struct Outcome {
+  int code = -1;
+  std::string output;  // stdout and stderr
+};
+
+Outcome fsweep(const std::string& args) {
+  const std::string cmd = std::string(FSWEEP_BINARY_DIR) + "/bin/fsweep " + args + " 2>&1";
+  Outcome out;
+  FILE* pipe = popen(cmd.c_str(), "r");
+  if (pipe == nullptr) return out;
+  std::array<char, 4096> buf{};
+  while (fgets(buf.data(), static_cast<int>(buf.size()), pipe) != nullptr) out.output += buf.data();
+  const int status = pclose(pipe);
+  out.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return out;
+}
+
+std::string temp_dir(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() / ("fsweep_cli_" + name + "_" + std::to_string(getpid()));
+  std::filesystem::remove_all(dir);
+  return dir.string();
+}
+
+TEST(Cli, SimWritesCsvProgressAndPng) {
+  const std::string out = temp_dir("sim");
+  const Outcome r = fsweep("sim --map rooms:w=40,h=30,door=3,seed=1 --strategy energy_aware --param w1=10 "
+                           "--robot sensor.range_m=6 --robot battery=400 --seed 3 --out " + out);
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find("end: "), std::string::npos);
+  for (const char* f : {"run.csv", "progress.csv", "trajectory.png"}) {
+    EXPECT_TRUE(std::filesystem::exists(out + "/" + f)) << f;
+  }
+  std::ifstream csv(out + "/run.csv");
+  std::string header;
+  std::getline(csv, header);
+  for (const char* col : {"map", "strategy.w1", "robot.sensor.range_m", "robot.battery", "seed", "end_reason",
+                          "distance_m", "coverage", "recharges"}) {
+    EXPECT_NE(header.find(col), std::string::npos) << col;
+  }
+  std::filesystem::remove_all(out);
+}
+
+TEST(Cli, MissingMapFileIsExit2NamingTheFile) {
+  const Outcome r = fsweep("sim --map /nonexistent/x.map --out " + temp_dir("missing"));
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.output.find("/nonexistent/x.map"), std::string::npos) << r.output;
+}
+
+TEST(Cli, UnknownStrategyListsKnownOnes) {
+  const Outcome r = fsweep("sim --map free:w=10,h=10 --strategy nearest --out " + temp_dir("strategy"));
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.output.find("nearest"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("closest_frontier"), std::string::npos) << r.output;
+}
+
+TEST(Cli, UnknownPlannerListsKnownOnes) {
+  const Outcome r = fsweep("sim --map free:w=10,h=10 --planner rrt --out " + temp_dir("planner"));
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.output.find("astar"), std::string::npos) << r.output;
+}
+
+TEST(Cli, UnknownParameterIsNamed) {
+  const Outcome r = fsweep("sim --map free:w=10,h=10 --strategy energy_aware --param w9=1 --out " + temp_dir("p"));
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.output.find("w9"), std::string::npos) << r.output;
+}
+
+TEST(Cli, OutOfRangeValueSaysWhatIsAllowed) {
+  const Outcome r = fsweep("sim --map free:w=10,h=10 --strategy energy_aware --param w1=300 --out " + temp_dir("r"));
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.output.find("[0, 250]"), std::string::npos) << r.output;
+}
+
+TEST(Cli, StartInsideObstacleNamesTheCell) {
+  const Outcome r = fsweep("sim --map \"free:w=10,h=10,start=0;0\" --out " + temp_dir("start"));
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.output.find("(0, 0)"), std::string::npos) << r.output;
+}
+
+TEST(Cli, PlanScenarioReportsZeroMismatches) {
+  const std::string data = FSWEEP_TEST_DATA;
+  const Outcome r = fsweep("plan --quiet --map " + data + "/arena.map --scen " + data + "/arena.map.scen");
+  EXPECT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find("160 queries, 160 match, 0 mismatches"), std::string::npos) << r.output;
+}
+
+}  // namespace

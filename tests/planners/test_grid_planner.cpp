@@ -1,0 +1,212 @@
+#include <gtest/gtest.h>
+
+#include "planner_test_utils.hpp"
+#include "planners/grid_planner.hpp"
+
+namespace fsweep {
+namespace {
+
+using testing::expect_valid_path;
+using testing::known_from_ascii;
+
+PlanRequest request_for(Cell start, Cell goal, bool allow_corner_cutting = false) {
+  PlanRequest r;
+  r.start = start;
+  r.goal = goal;
+  r.allow_corner_cutting = allow_corner_cutting;
+  return r;
+}
+
+class GridPlannerBoth : public ::testing::TestWithParam<GridSearchKind> {};
+
+TEST_P(GridPlannerBoth, StraightLine) {
+  // 4 orthogonal steps of 0.5 m.
+  const auto m = known_from_ascii({"S...G"}, 0.5);
+  GridPlanner planner(GetParam());
+  const PlanRequest req = request_for(m.start, m.goal);
+  const PlanResult r = planner.plan(m.known, req);
+  expect_valid_path(m.known, req, r);
+  EXPECT_EQ(r.path.size(), 5U);
+  EXPECT_DOUBLE_EQ(r.length_m, 2.0);
+  EXPECT_EQ(r.turns, 0);  // start heading 0 is east, along the corridor
+  EXPECT_GT(r.expansions, 0);
+  EXPECT_GE(r.time_s, 0.0);
+}
+
+TEST_P(GridPlannerBoth, DiagonalOnOpenMap) {
+  const auto m = known_from_ascii({"S....", ".....", ".....", ".....", "....G"});
+  GridPlanner planner(GetParam());
+  const PlanResult r = planner.plan(m.known, request_for(m.start, m.goal));
+  expect_valid_path(m.known, request_for(m.start, m.goal), r);
+  EXPECT_NEAR(r.length_m, 4 * kSqrt2, 1e-12);
+}
+
+TEST_P(GridPlannerBoth, StartEqualsGoalIsOneCellPath) {
+  const auto m = known_from_ascii({"...", ".S.", "..."});
+  GridPlanner planner(GetParam());
+  const PlanResult r = planner.plan(m.known, request_for(m.start, m.start));
+  ASSERT_EQ(r.status, PlanStatus::Success);
+  ASSERT_EQ(r.path.size(), 1U);
+  EXPECT_EQ(r.path[0], m.start);
+  EXPECT_EQ(r.length_m, 0.0);
+  EXPECT_EQ(r.energy, 0.0);
+  EXPECT_EQ(r.turns, 0);
+}
+
+TEST_P(GridPlannerBoth, GoalInsideObstacle) {
+  const auto m = known_from_ascii({"S..", ".#.", "..."});
+  GridPlanner planner(GetParam());
+  const PlanResult r = planner.plan(m.known, request_for(m.start, Cell{1, 1}));
+  EXPECT_EQ(r.status, PlanStatus::GoalInvalid);
+  EXPECT_TRUE(r.path.empty());
+  EXPECT_EQ(r.length_m, 0.0);
+}
+
+TEST_P(GridPlannerBoth, GoalOutsideGridOrUnknown) {
+  const auto m = known_from_ascii({"S.?", "..."});
+  GridPlanner planner(GetParam());
+  EXPECT_EQ(planner.plan(m.known, request_for(m.start, Cell{3, 0})).status, PlanStatus::GoalInvalid);
+  EXPECT_EQ(planner.plan(m.known, request_for(m.start, Cell{0, -1})).status, PlanStatus::GoalInvalid);
+  EXPECT_EQ(planner.plan(m.known, request_for(m.start, Cell{2, 0})).status, PlanStatus::GoalInvalid);
+}
+
+TEST_P(GridPlannerBoth, StartInvalidBeforeGoalInvalid) {
+  const auto m = known_from_ascii({"#.G", "?.."});
+  GridPlanner planner(GetParam());
+  EXPECT_EQ(planner.plan(m.known, request_for(Cell{0, 0}, m.goal)).status, PlanStatus::StartInvalid);
+  EXPECT_EQ(planner.plan(m.known, request_for(Cell{0, 1}, m.goal)).status, PlanStatus::StartInvalid);
+  EXPECT_EQ(planner.plan(m.known, request_for(Cell{-1, 0}, m.goal)).status, PlanStatus::StartInvalid);
+  // Both ends invalid: the start is reported.
+  EXPECT_EQ(planner.plan(m.known, request_for(Cell{0, 0}, Cell{0, 0})).status, PlanStatus::StartInvalid);
+}
+
+TEST_P(GridPlannerBoth, NoPathBehindWall) {
+  const auto m = known_from_ascii({"S.#..", "..#..", "..#.G"});
+  GridPlanner planner(GetParam());
+  const PlanResult r = planner.plan(m.known, request_for(m.start, m.goal));
+  EXPECT_EQ(r.status, PlanStatus::NoPath);
+  EXPECT_TRUE(r.path.empty());
+  EXPECT_GT(r.expansions, 0);
+}
+
+TEST_P(GridPlannerBoth, UnknownCellsBlock) {
+  // The direct row is unknown in the middle: the path goes around through row 1.
+  const auto m = known_from_ascii({"S.?.G", "....."});
+  GridPlanner planner(GetParam());
+  const PlanRequest req = request_for(m.start, m.goal);
+  const PlanResult r = planner.plan(m.known, req);
+  expect_valid_path(m.known, req, r);
+  // Hand calculation: (0,0) -diag-> (1,1) -> (2,1) -> (3,1) -diag-> (4,0). The diagonals past
+  // the unknown cell (2,0) are blocked without corner cutting, so 2 + 2 sqrt(2).
+  EXPECT_NEAR(r.length_m, 2.0 + 2.0 * kSqrt2, 1e-12);
+  const Cell unknown{2, 0};
+  for (const Cell c : r.path) EXPECT_FALSE(c == unknown);
+}
+
+TEST_P(GridPlannerBoth, CornerCuttingChangesLength) {
+  // (0,0) -> (1,1) past the blocked corner (0,1): 2 without cutting, sqrt(2) with it.
+  const auto m = known_from_ascii({"S.", "#G"});
+  GridPlanner planner(GetParam());
+  const PlanResult strict = planner.plan(m.known, request_for(m.start, m.goal, false));
+  expect_valid_path(m.known, request_for(m.start, m.goal, false), strict);
+  EXPECT_DOUBLE_EQ(strict.length_m, 2.0);
+  const PlanResult cut = planner.plan(m.known, request_for(m.start, m.goal, true));
+  expect_valid_path(m.known, request_for(m.start, m.goal, true), cut);
+  EXPECT_DOUBLE_EQ(cut.length_m, kSqrt2);
+}
+
+TEST_P(GridPlannerBoth, DiagonalGapNeedsCornerCutting) {
+  const auto m = known_from_ascii({"S#", "#G"});
+  GridPlanner planner(GetParam());
+  EXPECT_EQ(planner.plan(m.known, request_for(m.start, m.goal, false)).status, PlanStatus::NoPath);
+  EXPECT_EQ(planner.plan(m.known, request_for(m.start, m.goal, true)).status, PlanStatus::Success);
+}
+
+TEST_P(GridPlannerBoth, EnergyStopsAndTurnsFromMeasurePath) {
+  // The only path: east, east, south, south. One 90-degree turn from start heading east.
+  const auto m = known_from_ascii({"S..", "##.", "##G"});
+  GridPlanner planner(GetParam());
+  PlanRequest req = request_for(m.start, m.goal);
+  req.energy.per_metre = 1.0;
+  req.energy.per_stop = 0.5;
+  req.energy.per_turn = {0.4, 0.6, 0.8, 1.0};
+  const PlanResult r = planner.plan(m.known, req);
+  expect_valid_path(m.known, req, r);
+  EXPECT_DOUBLE_EQ(r.length_m, 4.0);
+  EXPECT_EQ(r.stops, 1);
+  EXPECT_EQ(r.turns, 1);
+  EXPECT_DOUBLE_EQ(r.energy, 4.0 + 0.5 + 0.6);  // travel + stop + 90-degree turn
+}
+
+TEST_P(GridPlannerBoth, DeterministicAndReusable) {
+  // The same planner answers queries on maps of different sizes; results equal a fresh
+  // planner's (search arrays are reset by generation stamp, not cleared).
+  GridPlanner reused(GetParam());
+  for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+    const KnownMap known = testing::random_known_map(20 + static_cast<int>(seed) * 7, 25, 0.25, seed);
+    Rng rng = make_rng(seed, "queries");
+    for (int q = 0; q < 20; ++q) {
+      const PlanRequest req =
+          request_for(testing::random_free_cell(known, rng), testing::random_free_cell(known, rng));
+      GridPlanner fresh(GetParam());
+      const PlanResult a = reused.plan(known, req);
+      const PlanResult b = fresh.plan(known, req);
+      ASSERT_EQ(a.status, b.status);
+      EXPECT_EQ(a.path, b.path);
+      EXPECT_EQ(a.expansions, b.expansions);
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Kinds, GridPlannerBoth,
+                         ::testing::Values(GridSearchKind::Dijkstra, GridSearchKind::AStar),
+                         [](const ::testing::TestParamInfo<GridSearchKind>& info) {
+                           return info.param == GridSearchKind::AStar ? std::string("AStar")
+                                                                      : std::string("Dijkstra");
+                         });
+
+TEST(GridPlanner, DijkstraAndAStarAgreeOnRandomMaps) {
+  GridPlanner dijkstra(GridSearchKind::Dijkstra);
+  GridPlanner astar(GridSearchKind::AStar);
+  long dijkstra_expansions = 0;
+  long astar_expansions = 0;
+  int successes = 0;
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    const KnownMap known = testing::random_known_map(40, 30, 0.3, seed);
+    Rng rng = make_rng(seed, "queries");
+    for (int q = 0; q < 30; ++q) {
+      const PlanRequest req = request_for(testing::random_free_cell(known, rng),
+                                          testing::random_free_cell(known, rng), q % 2 == 1);
+      const PlanResult d = dijkstra.plan(known, req);
+      const PlanResult a = astar.plan(known, req);
+      ASSERT_EQ(d.status, a.status) << "seed " << seed << " query " << q;
+      if (d.status != PlanStatus::Success) continue;
+      ++successes;
+      expect_valid_path(known, req, d);
+      expect_valid_path(known, req, a);
+      EXPECT_NEAR(d.length_m, a.length_m, 1e-9) << "seed " << seed << " query " << q;
+      dijkstra_expansions += d.expansions;
+      astar_expansions += a.expansions;
+    }
+  }
+  EXPECT_GT(successes, 50);
+  EXPECT_LT(astar_expansions, dijkstra_expansions);
+}
+
+TEST(GridPlanner, NamesAndClone) {
+  EXPECT_EQ(GridPlanner(GridSearchKind::Dijkstra).name(), "dijkstra");
+  EXPECT_EQ(GridPlanner(GridSearchKind::AStar).name(), "astar");
+  const auto clone = GridPlanner(GridSearchKind::AStar).clone();
+  EXPECT_EQ(clone->name(), "astar");
+}
+
+TEST(GridPlanner, ToStringNamesEveryStatus) {
+  EXPECT_EQ(to_string(PlanStatus::Success), "Success");
+  EXPECT_EQ(to_string(PlanStatus::StartInvalid), "StartInvalid");
+  EXPECT_EQ(to_string(PlanStatus::GoalInvalid), "GoalInvalid");
+  EXPECT_EQ(to_string(PlanStatus::NoPath), "NoPath");
+  EXPECT_EQ(to_string(PlanStatus::Timeout), "Timeout");
+}
+
+}  // namespace
+}  // namespace fsweep

@@ -1,0 +1,354 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "engine/world/config_error.hpp"
+#include "engine/world/sensor.hpp"
+#include "world/ascii_world.hpp"
+
+namespace fsweep {
+namespace {
+
+using test::ascii_world;
+
+WorldMap open_world(int width, int height) {
+  return ascii_world(std::vector<std::string>(static_cast<std::size_t>(height),
+                                              std::string(static_cast<std::size_t>(width), '.')));
+}
+
+/// Obstacles with probability p (seeded), start cell free.
+WorldMap random_world(int width, int height, double p, std::uint64_t seed) {
+  WorldMap map = open_world(width, height);
+  Rng rng = make_rng(seed, "test-map");
+  for (int i = 0; i < map.occupied.size(); ++i) map.occupied[i] = uniform01(rng) < p ? 1 : 0;
+  map.start = Cell{width / 2, height / 2};
+  map.occupied.at(map.start) = 0;
+  return map;
+}
+
+struct ScanResult {
+  KnownMap known;
+  std::vector<int> revealed;
+};
+
+/// One scan from a fresh KnownMap.
+ScanResult scan_fresh(const WorldMap& map, const SensorParams& params, Cell at, double heading_rad = 0.0,
+                      std::uint64_t seed = 1) {
+  Sensor sensor(params, map.resolution_m);
+  ScanResult r{KnownMap(map.width(), map.height(), map.resolution_m), {}};
+  Rng rng = make_rng(seed, "sensor");
+  const auto revealed = sensor.scan(map, r.known, at, heading_rad, rng);
+  r.revealed.assign(revealed.begin(), revealed.end());
+  return r;
+}
+
+SensorParams range(double range_m) {
+  SensorParams p;
+  p.range_m = range_m;
+  return p;
+}
+
+bool known(const ScanResult& r, Cell c) { return r.known.state(c) != CellState::Unknown; }
+
+TEST(Sensor, RangeBoundaryIsInclusive) {
+  const WorldMap map = open_world(13, 13);
+  const Cell at{6, 6};
+  const auto r = scan_fresh(map, range(5.0), at);
+  // (3, 4) offset: distance exactly 5.
+  EXPECT_TRUE(known(r, Cell{9, 10}));
+  EXPECT_TRUE(known(r, Cell{11, 6}));
+  EXPECT_TRUE(known(r, Cell{6, 1}));
+  // Just beyond: 6 and sqrt(32) = 5.66.
+  EXPECT_FALSE(known(r, Cell{12, 6}));
+  EXPECT_FALSE(known(r, Cell{10, 10}));
+  Sensor sensor(range(5.0), 1.0);
+  EXPECT_TRUE(sensor.visible(map, at, Cell{9, 10}));
+  EXPECT_FALSE(sensor.visible(map, at, Cell{12, 6}));
+}
+
+TEST(Sensor, OpenSpaceRevealsTheLatticeDisc) {
+  // Lattice points with dx^2 + dy^2 <= 9, counted by hand: 7 + 2*5 + 2*5 + 2*1 = 29.
+  const WorldMap map = open_world(11, 11);
+  EXPECT_EQ(scan_fresh(map, range(3.0), Cell{5, 5}).revealed.size(), 29U);
+}
+
+TEST(Sensor, RangeInMetresIsDividedByResolution) {
+  // 1.5 m at 0.5 m per cell and 0.9 m at 0.3 m per cell are both 3 cells (29 cells, above);
+  // 0.9 / 0.3 is not exactly 3 in floating point.
+  EXPECT_EQ(
+      scan_fresh(ascii_world(std::vector<std::string>(11, std::string(11, '.')), 0.5), range(1.5), Cell{5, 5})
+          .revealed.size(),
+      29U);
+  EXPECT_EQ(
+      scan_fresh(ascii_world(std::vector<std::string>(11, std::string(11, '.')), 0.3), range(0.9), Cell{5, 5})
+          .revealed.size(),
+      29U);
+  EXPECT_DOUBLE_EQ(Sensor(range(1.5), 0.5).range_cells(), 3.0);
+}
+
+TEST(Sensor, WallBlocksSight) {
+  const WorldMap map = ascii_world({
+      "........",
+      "S..#....",
+      "........",
+  });
+  const auto r = scan_fresh(map, range(10.0), map.start);
+  for (int x = 4; x < 8; ++x) EXPECT_FALSE(known(r, Cell{x, 1})) << "x=" << x;
+  // The ray to (4, 0) leaves row 1 before the wall: (1,1) (2,1) (2,0) (3,0).
+  EXPECT_TRUE(known(r, Cell{4, 0}));
+  EXPECT_EQ(r.known.state(Cell{3, 1}), CellState::Occupied);
+}
+
+TEST(Sensor, OccupiedCellIsObserved) {
+  const WorldMap map = ascii_world({"S.##."});
+  const auto r = scan_fresh(map, range(10.0), map.start);
+  EXPECT_EQ(r.known.state(Cell{2, 0}), CellState::Occupied);
+  EXPECT_EQ(r.known.state(Cell{3, 0}), CellState::Unknown);  // behind the first wall cell
+  EXPECT_EQ(r.known.state(Cell{1, 0}), CellState::Free);
+  EXPECT_NE(std::find(r.revealed.begin(), r.revealed.end(), 2), r.revealed.end());
+  EXPECT_EQ(r.known.occupied_count(), 1);
+  EXPECT_EQ(r.known.free_count(), 2);
+}
+
+TEST(Sensor, DiagonalGapBetweenTwoWallsIsOpaque) {
+  const WorldMap map = ascii_world({
+      "S#..",
+      "#...",
+      "....",
+      "....",
+  });
+  const auto r = scan_fresh(map, range(10.0), map.start);
+  // Only the robot's cell and the two walls beside it.
+  EXPECT_EQ(r.known.known_count(), 3);
+  EXPECT_FALSE(known(r, Cell{1, 1}));
+  EXPECT_FALSE(known(r, Cell{3, 3}));
+  Sensor sensor(range(10.0), 1.0);
+  EXPECT_FALSE(sensor.visible(map, Cell{0, 0}, Cell{1, 1}));
+  EXPECT_FALSE(sensor.visible(map, Cell{1, 1}, Cell{0, 0}));
+}
+
+TEST(Sensor, DiagonalGapWithOneFreeSideIsSeeThrough) {
+  for (const auto& rows : {std::vector<std::string>{"S#..", "....", "....", "...."},
+                           std::vector<std::string>{"S...", "#...", "....", "...."}}) {
+    const WorldMap map = ascii_world(rows);
+    const auto r = scan_fresh(map, range(10.0), map.start);
+    EXPECT_TRUE(known(r, Cell{1, 1})) << rows[0];
+    EXPECT_TRUE(known(r, Cell{2, 2})) << rows[0];
+    EXPECT_TRUE(known(r, Cell{3, 3})) << rows[0];
+  }
+}
+
+TEST(Sensor, CornerRuleAppliesToShallowRays) {
+  // The segment from (0,0) to (3,1) passes exactly through the corner shared by (2,0) and
+  // (1,1) (at x = 1.5, y = 0.5 with centres on integers).
+  Sensor sensor(range(10.0), 1.0);
+  EXPECT_FALSE(sensor.visible(ascii_world({"S.#.", ".#.."}), Cell{0, 0}, Cell{3, 1}));
+  EXPECT_TRUE(sensor.visible(ascii_world({"S.#.", "...."}), Cell{0, 0}, Cell{3, 1}));
+  EXPECT_TRUE(sensor.visible(ascii_world({"S...", ".#.."}), Cell{0, 0}, Cell{3, 1}));
+}
+
+TEST(Sensor, FieldOfViewLimitsCells) {
+  const WorldMap map = open_world(9, 9);
+  const Cell at{4, 4};
+  SensorParams p = range(4.0);
+  p.fov_deg = 180.0;
+  // Lattice disc of radius 4 has 49 points: 9 on dx = 0, 20 on each side. The boundary
+  // (dx = 0) is inside the field of view.
+  const auto east = scan_fresh(map, p, at, heading_angle(0));
+  EXPECT_EQ(east.revealed.size(), 29U);
+  for (const int i : east.revealed) EXPECT_GE(map.occupied.cell(i).x, at.x);
+  EXPECT_TRUE(known(east, Cell{4, 0}));
+  EXPECT_TRUE(known(east, Cell{4, 8}));
+  // Heading west wraps around +-pi.
+  const auto west = scan_fresh(map, p, at, heading_angle(4));
+  EXPECT_EQ(west.revealed.size(), 29U);
+  for (const int i : west.revealed) EXPECT_LE(map.occupied.cell(i).x, at.x);
+  // Heading south (y grows downward).
+  const auto south = scan_fresh(map, p, at, heading_angle(2));
+  for (const int i : south.revealed) EXPECT_GE(map.occupied.cell(i).y, at.y);
+  // 90 degrees facing east: |dy| <= dx, diagonals included.
+  p.fov_deg = 90.0;
+  const auto narrow = scan_fresh(map, p, at, 0.0);
+  for (const int i : narrow.revealed) {
+    const Cell c = map.occupied.cell(i);
+    EXPECT_LE(std::abs(c.y - at.y), c.x - at.x);
+  }
+  EXPECT_TRUE(known(narrow, Cell{6, 6}));
+  EXPECT_TRUE(known(narrow, Cell{6, 2}));
+  EXPECT_FALSE(known(narrow, Cell{5, 7}));
+}
+
+TEST(Sensor, RobotCellIsAlwaysSeen) {
+  const WorldMap map = open_world(5, 5);
+  SensorParams p = range(0.5);  // less than one cell
+  p.fov_deg = 10.0;
+  p.miss_probability = 0.99;
+  for (std::uint64_t seed = 0; seed < 20; ++seed) {
+    const auto r = scan_fresh(map, p, Cell{2, 2}, heading_angle(4), seed);
+    ASSERT_EQ(r.revealed, std::vector<int>{12});
+  }
+}
+
+TEST(Sensor, MissProbabilityIsSeededAndDeterministic) {
+  const WorldMap map = open_world(41, 41);
+  SensorParams p = range(15.0);
+  p.miss_probability = 0.3;
+  const Cell at{20, 20};
+  const auto a = scan_fresh(map, p, at, 0.0, 7);
+  const auto b = scan_fresh(map, p, at, 0.0, 7);
+  const auto c = scan_fresh(map, p, at, 0.0, 8);
+  EXPECT_EQ(a.revealed, b.revealed);
+  EXPECT_EQ(a.known, b.known);
+  EXPECT_NE(a.revealed, c.revealed);
+  // 709 cells in range (from the noiseless scan); about 30 % missed (binomial sd ~ 12 cells).
+  const auto clean = scan_fresh(map, range(15.0), at);
+  const double missed =
+      1.0 - static_cast<double>(a.revealed.size()) / static_cast<double>(clean.revealed.size());
+  EXPECT_GT(missed, 0.2);
+  EXPECT_LT(missed, 0.4);
+  // A miss lasts one scan: scanning again reveals more.
+  Sensor sensor(p, 1.0);
+  KnownMap known = a.known;
+  Rng rng = make_rng(9, "sensor");
+  EXPECT_FALSE(sensor.scan(map, known, at, 0.0, rng).empty());
+}
+
+TEST(Sensor, NoiselessScanDoesNotDrawRandomNumbers) {
+  const WorldMap map = open_world(11, 11);
+  Sensor sensor(range(4.0), 1.0);
+  KnownMap known(11, 11, 1.0);
+  Rng rng = make_rng(3, "sensor");
+  const Rng before = rng;
+  (void)sensor.scan(map, known, Cell{5, 5}, 0.0, rng);
+  EXPECT_EQ(rng, before);
+}
+
+TEST(Sensor, ReturnsOnlyNewlyRevealedCells) {
+  const WorldMap map = random_world(30, 30, 0.2, 5);
+  Sensor sensor(range(6.0), 1.0);
+  KnownMap known(30, 30, 1.0);
+  Rng rng = make_rng(1, "sensor");
+  const Cell at = map.start;
+  const auto first = sensor.scan(map, known, at, 0.0, rng);
+  EXPECT_EQ(static_cast<int>(first.size()), known.known_count());
+  EXPECT_TRUE(sensor.scan(map, known, at, 0.0, rng).empty());
+
+  Cell next = at;
+  for (int x = at.x + 5; x > at.x; --x) {
+    if (map.is_free(Cell{x, at.y}) && known.is_free(Cell{x, at.y})) {
+      next = Cell{x, at.y};
+      break;
+    }
+  }
+  const KnownMap before = known;
+  const auto second = sensor.scan(map, known, next, 0.0, rng);
+  std::vector<int> changed;
+  for (int i = 0; i < known.size(); ++i) {
+    if (before.state(i) != known.state(i)) {
+      EXPECT_EQ(before.state(i), CellState::Unknown);
+      EXPECT_EQ(known.state(i), map.is_free(i) ? CellState::Free : CellState::Occupied);
+      changed.push_back(i);
+    }
+  }
+  std::vector<int> got(second.begin(), second.end());
+  std::sort(got.begin(), got.end());
+  EXPECT_EQ(got, changed);
+  EXPECT_EQ(known.known_count() - before.known_count(), static_cast<int>(second.size()));
+}
+
+TEST(Sensor, ScanMatchesVisible) {
+  const WorldMap map = random_world(31, 31, 0.3, 11);
+  Sensor sensor(range(7.5), 1.0);
+  for (const Cell at : {map.start, Cell{0, 0}, Cell{30, 3}, Cell{4, 29}}) {
+    const auto r = scan_fresh(map, range(7.5), at);
+    std::set<int> got(r.revealed.begin(), r.revealed.end());
+    ASSERT_EQ(got.size(), r.revealed.size());
+    for (int i = 0; i < map.occupied.size(); ++i) {
+      const bool expected = i == map.occupied.index(at) || sensor.visible(map, at, map.occupied.cell(i));
+      EXPECT_EQ(got.count(i) == 1, expected) << "cell " << i;
+    }
+  }
+}
+
+TEST(Sensor, VisibilityIsSymmetric) {
+  const WorldMap map = random_world(20, 20, 0.35, 3);
+  Sensor sensor(range(8.0), 1.0);
+  for (int a = 0; a < map.occupied.size(); ++a) {
+    for (int b = a + 1; b < map.occupied.size(); ++b) {
+      const Cell ca = map.occupied.cell(a);
+      const Cell cb = map.occupied.cell(b);
+      ASSERT_EQ(sensor.visible(map, ca, cb), sensor.visible(map, cb, ca)) << a << " " << b;
+    }
+  }
+}
+
+TEST(SensorParams, JsonRoundTrips) {
+  SensorParams p;
+  p.range_m = 4.5;
+  p.fov_deg = 180.0;
+  p.miss_probability = 0.25;
+  const nlohmann::json j = p;
+  const SensorParams q = sensor_params_from_json(j, "/sensor");
+  EXPECT_EQ(q.range_m, 4.5);
+  EXPECT_EQ(q.fov_deg, 180.0);
+  EXPECT_EQ(q.miss_probability, 0.25);
+}
+
+TEST(SensorParams, MissingKeysKeepDefaults) {
+  const SensorParams q = sensor_params_from_json(nlohmann::json::object({{"range_m", 3}}), "/sensor");
+  EXPECT_EQ(q.range_m, 3.0);
+  EXPECT_EQ(q.fov_deg, SensorParams{}.fov_deg);
+  EXPECT_EQ(q.miss_probability, SensorParams{}.miss_probability);
+}
+
+TEST(SensorParams, UnknownKeyIsConfigError) {
+  try {
+    (void)sensor_params_from_json(nlohmann::json{{"rnage_m", 3}}, "/sensor");
+    FAIL() << "no exception";
+  } catch (const ConfigError& e) {
+    EXPECT_EQ(e.where(), "/sensor/rnage_m");
+    EXPECT_NE(std::string(e.what()).find("range_m"), std::string::npos);
+  }
+}
+
+/// The message of the ConfigError thrown for `j`, or "" when none is thrown.
+std::string error_of(const nlohmann::json& j) {
+  try {
+    (void)sensor_params_from_json(j, "/runs/0/sensor");
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(SensorParams, InvalidValuesNamePathValueAndRange) {
+  const std::string range_error = error_of({{"range_m", -1.5}});
+  EXPECT_NE(range_error.find("/runs/0/sensor/range_m"), std::string::npos) << range_error;
+  EXPECT_NE(range_error.find("-1.5"), std::string::npos) << range_error;
+  EXPECT_NE(range_error.find("> 0"), std::string::npos) << range_error;
+  EXPECT_NE(error_of({{"range_m", 0}}), "");
+
+  const std::string fov_error = error_of({{"fov_deg", 400}});
+  EXPECT_NE(fov_error.find("/runs/0/sensor/fov_deg"), std::string::npos) << fov_error;
+  EXPECT_NE(fov_error.find("400"), std::string::npos) << fov_error;
+  EXPECT_NE(fov_error.find("(0, 360]"), std::string::npos) << fov_error;
+  EXPECT_NE(error_of({{"fov_deg", 0}}), "");
+  EXPECT_EQ(error_of({{"fov_deg", 360}}), "");
+
+  const std::string miss_error = error_of({{"miss_probability", 1.0}});
+  EXPECT_NE(miss_error.find("/runs/0/sensor/miss_probability"), std::string::npos) << miss_error;
+  EXPECT_NE(miss_error.find("[0, 1)"), std::string::npos) << miss_error;
+  EXPECT_NE(error_of({{"miss_probability", -0.1}}), "");
+  EXPECT_EQ(error_of({{"miss_probability", 0.0}}), "");
+
+  EXPECT_NE(error_of({{"range_m", "ten"}}).find("/runs/0/sensor/range_m"), std::string::npos);
+  EXPECT_NE(error_of(nlohmann::json::array()), "");
+}
+
+}  // namespace
+}  // namespace fsweep

@@ -1,0 +1,66 @@
+// Ground-truth queries: free counts, reachability (corner cutting), nearest free cell, and the
+// fully known map.
+#include <gtest/gtest.h>
+
+#include "engine/world/known_map.hpp"
+#include "engine/world/map_loaders.hpp"
+#include "engine/world/world_map.hpp"
+
+namespace fsweep {
+namespace {
+
+int count(const Grid<std::uint8_t>& g) {
+  int n = 0;
+  for (const auto v : g.data()) n += v;
+  return n;
+}
+
+TEST(WorldMap, FreeCountCountsFreeCells) { EXPECT_EQ(parse_ascii_map("#..\n.#.\n").free_count(), 4); }
+
+TEST(ReachableFree, DiagonalGapIsClosedWithoutCornerCutting) {
+  // The two free cells touch only diagonally between two walls.
+  const WorldMap map = parse_ascii_map("S#\n#.\n");
+  EXPECT_EQ(count(reachable_free(map, Cell{0, 0})), 1);
+  EXPECT_EQ(count(reachable_free(map, Cell{0, 0}, true)), 2);
+}
+
+TEST(ReachableFree, DiagonalNeedsBothOrthogonalNeighbours) {
+  // One orthogonal neighbour free is not enough for the diagonal step, but the free cells are
+  // still joined through that neighbour.
+  const WorldMap map = parse_ascii_map("S.#\n#..\n###\n");
+  const Grid<std::uint8_t> reached = reachable_free(map, Cell{0, 0});
+  EXPECT_EQ(count(reached), 4);
+  EXPECT_EQ(reached.at(Cell{2, 1}), 1);
+}
+
+TEST(ReachableFree, WallsSeparateRoomsAndAnOccupiedStartReachesNothing) {
+  const WorldMap map = parse_ascii_map("..#..\n..#..\n");
+  EXPECT_EQ(count(reachable_free(map, Cell{0, 0})), 4);
+  EXPECT_EQ(count(reachable_free(map, Cell{2, 0})), 0);
+  EXPECT_EQ(count(reachable_free(map, Cell{-1, 0})), 0);
+}
+
+TEST(NearestFreeCell, EuclideanWithTiesByIndex) {
+  const WorldMap map = parse_ascii_map(".#.\n###\n.#.\n");
+  // All four corners are sqrt(2) from the centre: the lowest index wins.
+  EXPECT_EQ(nearest_free_cell(map, Cell{1, 1}), (Cell{0, 0}));
+  EXPECT_EQ(nearest_free_cell(map, Cell{2, 1}), (Cell{2, 0}));
+  EXPECT_EQ(nearest_free_cell(parse_ascii_map("#.\n"), Cell{0, 0}), (Cell{1, 0}));
+  WorldMap full = parse_ascii_map("#.\n");
+  full.occupied.fill(1);
+  EXPECT_EQ(nearest_free_cell(full, Cell{0, 0}), (Cell{-1, -1}));
+}
+
+TEST(FullyKnown, KnowsEveryCellOfTheGroundTruth) {
+  const WorldMap map = parse_ascii_map("S.#\n##.\n", 0.5);
+  const KnownMap known = fully_known(map);
+  EXPECT_EQ(known.width(), 3);
+  EXPECT_DOUBLE_EQ(known.resolution_m(), 0.5);
+  EXPECT_EQ(known.free_count(), 3);
+  EXPECT_EQ(known.occupied_count(), 3);
+  EXPECT_EQ(known.state(Cell{2, 0}), CellState::Occupied);
+  EXPECT_EQ(known.state(Cell{1, 0}), CellState::Free);
+}
+
+}  // namespace
+}  // namespace fsweep
