@@ -175,13 +175,15 @@ void BM_FrontierRebuild(benchmark::State& state) {  // NOLINT(readability-identi
 }
 BENCHMARK(BM_FrontierRebuild);
 
-/// FrontierMap::clusters (pieces of at most 10 m) after 100 exploration steps.
+/// FrontierMap::clusters (pieces of at most 10 m) after 100 exploration steps. Argument:
+/// allow_corner_cutting (0 or 1).
 void BM_FrontierClusters(benchmark::State& state) {  // NOLINT(readability-identifier-naming)
   const std::vector<Snapshot> snaps = exploration_snapshots(100, 1);
   const FrontierMap frontiers(snaps.front().known);
+  const bool corner_cutting = state.range(0) != 0;
   std::int64_t clusters = 0;
   for (auto _ : state) {
-    const auto result = frontiers.clusters(snaps.front().known, 10.0);
+    const auto result = frontiers.clusters(snaps.front().known, 10.0, corner_cutting);
     clusters += static_cast<std::int64_t>(result.size());
     benchmark::DoNotOptimize(result.data());
   }
@@ -189,7 +191,46 @@ void BM_FrontierClusters(benchmark::State& state) {  // NOLINT(readability-ident
   state.counters["clusters"] =
       benchmark::Counter(static_cast<double>(clusters), benchmark::Counter::kAvgIterations);
 }
-BENCHMARK(BM_FrontierClusters);
+BENCHMARK(BM_FrontierClusters)->Arg(0)->Arg(1);
+
+/// The same frontier on a 1000 x 1000 map: the snapshot pasted into a corner, every other cell
+/// known occupied. Clustering should cost the same as above (O(frontier cells), not O(map)).
+void BM_FrontierClustersLargeMap(benchmark::State& state) {  // NOLINT(readability-identifier-naming)
+  constexpr int kLargeSide = 1000;
+  const std::vector<Snapshot> snaps = exploration_snapshots(100, 1);
+  const KnownMap& small = snaps.front().known;
+  KnownMap known(kLargeSide, kLargeSide, small.resolution_m());
+  for (int y = 0; y < kLargeSide; ++y) {
+    for (int x = 0; x < kLargeSide; ++x) {
+      const Cell c{x, y};
+      const CellState s = small.in_bounds(c) ? small.state(c) : CellState::Occupied;
+      if (s != CellState::Unknown) known.reveal(known.index(c), s == CellState::Occupied);
+    }
+  }
+  const FrontierMap frontiers(known);
+  std::int64_t clusters = 0;
+  for (auto _ : state) {
+    const auto result = frontiers.clusters(known, 10.0, false);
+    clusters += static_cast<std::int64_t>(result.size());
+    benchmark::DoNotOptimize(result.data());
+  }
+  state.counters["frontier_cells"] = frontiers.count();
+  state.counters["clusters"] =
+      benchmark::Counter(static_cast<double>(clusters), benchmark::Counter::kAvgIterations);
+}
+BENCHMARK(BM_FrontierClustersLargeMap);
+
+/// FrontierMap::cells() on the same map.
+void BM_FrontierCells(benchmark::State& state) {  // NOLINT(readability-identifier-naming)
+  const std::vector<Snapshot> snaps = exploration_snapshots(100, 1);
+  const FrontierMap frontiers(snaps.front().known);
+  for (auto _ : state) {
+    const auto cells = frontiers.cells();
+    benchmark::DoNotOptimize(cells.data());
+  }
+  state.counters["frontier_cells"] = frontiers.count();
+}
+BENCHMARK(BM_FrontierCells);
 
 }  // namespace
 }  // namespace fsweep

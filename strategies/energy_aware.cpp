@@ -40,9 +40,11 @@ EnergyAwareParams energy_aware_params_from_json(const nlohmann::json& j, const s
   weight("w4", p.w4);
   if (j.contains("distance")) {
     const auto& v = j.at("distance");
-    if (!v.is_string() || (v.get<std::string>() != "path" && v.get<std::string>() != "euclidean")) {
+    const bool known_mode = v.is_string() && (v.get<std::string>() == "path" || v.get<std::string>() == "octile" ||
+                                              v.get<std::string>() == "euclidean");
+    if (!known_mode) {
       problems += (problems.empty() ? "" : "; ") + where + "/distance: value " + v.dump() +
-                  " not allowed; allowed: \"path\", \"euclidean\"";
+                  " not allowed; allowed: \"path\", \"octile\", \"euclidean\"";
     } else {
       p.distance = v.get<std::string>();
     }
@@ -72,12 +74,13 @@ Candidates EnergyAware::candidates(const Observation& obs) {
   const double res = obs.known.resolution_m();
   std::vector<double> d_g;
   std::vector<double> d_gb;
-  if (params_.distance == "euclidean") {
+  if (params_.distance == "euclidean" || params_.distance == "octile") {
+    const auto metric = params_.distance == "euclidean" ? &euclidean_distance : &octile_distance;
     d_g.reserve(reps.size());
     d_gb.reserve(reps.size());
     for (const int r : reps) {
-      d_g.push_back(euclidean_distance(obs.robot, obs.known.cell(r)) * res);
-      d_gb.push_back(euclidean_distance(obs.known.cell(r), obs.dock) * res);
+      d_g.push_back(metric(obs.robot, obs.known.cell(r)) * res);
+      d_gb.push_back(metric(obs.known.cell(r), obs.dock) * res);
     }
   } else {
     // Both legs must be shorter than d_l, so d_l bounds both searches (DESIGN.md section 4).

@@ -19,7 +19,11 @@ struct EnergyAwareParams {
   double w3 = 9.0;   ///< weight of d_gbe, +-d_gb by state of charge (eq. 9)
   double w4 = 20.0;  ///< weight of theta_rel in [0, 1] (eq. 10)
   /// "path": d_g and d_gb are shortest path lengths over known free space (the paper's A*);
-  /// "euclidean": straight-line distances between cell centres (the paper in free space).
+  /// "octile": the 8-connected length without obstacles (exact in free space, no search; a
+  /// lower bound elsewhere);
+  /// "euclidean": straight-line distances between cell centres (the paper in free space; on
+  /// this 8-connected grid it underestimates travel by up to 8%, so a battery-limited robot
+  /// can run out on the way back: such runs end as battery_depleted).
   std::string distance = "path";
 
   static constexpr double kMaxWeight = 250.0;

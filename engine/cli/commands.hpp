@@ -13,5 +13,9 @@ using Command = std::function<int()>;
 
 Command add_sim_command(CLI::App& app);
 Command add_plan_command(CLI::App& app);
+Command add_run_command(CLI::App& app);
+Command add_expand_command(CLI::App& app);
+Command add_aggregate_command(CLI::App& app);
+Command add_plot_command(CLI::App& app);
 
 }  // namespace fsweep::cli

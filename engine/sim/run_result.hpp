@@ -35,8 +35,13 @@ struct RunMetrics {
   int decisions = 0;
   int recharges = 0;
   long steps = 0;
+  /// Distance travelled when the last cell was revealed: what it took to reach the final
+  /// coverage (the travel after it, e.g. the way back to the dock, excluded).
+  double distance_to_final_coverage_m = 0.0;
   /// Known free area.
   double explored_area_m2 = 0.0;
+  /// explored_area_m2 / distance_m (0 when the robot did not move).
+  double area_per_metre = 0.0;
   /// Known free and occupied area.
   double known_area_m2 = 0.0;
   /// Free area reachable from the start (ground truth, same motion rule).

@@ -133,6 +133,7 @@ void Simulation::sense() {
   for (const int i : revealed) {
     if (known_.is_free(i) && reachable_[i] != 0) ++known_reachable_;
   }
+  if (!revealed.empty()) metrics_.distance_to_final_coverage_m = metrics_.distance_m;
 }
 
 double Simulation::coverage() const {
@@ -183,7 +184,8 @@ bool Simulation::step() {
   }
 
   // 1. Observe and decide.
-  const auto clusters = frontiers_.clusters(known_, cluster_max_length_m_, dropped_);
+  const auto clusters =
+      frontiers_.clusters(known_, cluster_max_length_m_, spec_.robot.allow_corner_cutting, dropped_);
   oracle_.reset(known_, robot_, dock_, spec_.robot.allow_corner_cutting, dock_field_ready_ ? &dock_field_ : nullptr);
   const BatteryView battery{battery_.level(), battery_.capacity(), battery_.remaining_range_m()};
   const Observation obs{known_,           frontiers_, clusters,       oracle_, spec_.robot.sensor,
@@ -307,6 +309,7 @@ RunResult Simulation::result() const {
   const double cell_area = resolution_m_ * resolution_m_;
   r.metrics.explored_area_m2 = known_.free_count() * cell_area;
   r.metrics.known_area_m2 = known_.known_count() * cell_area;
+  r.metrics.area_per_metre = metrics_.distance_m > 0.0 ? r.metrics.explored_area_m2 / metrics_.distance_m : 0.0;
   r.metrics.coverage = coverage();
   r.metrics.residual_unknown_m2 = (reachable_count_ - known_reachable_) * cell_area;
   r.metrics.frontier_cells_left = frontiers_.count();

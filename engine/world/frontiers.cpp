@@ -3,9 +3,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstring>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
+#include <utility>
 
 namespace fsweep {
 namespace {
@@ -31,20 +32,6 @@ inline bool frontier_at(const CellState* s, int w, int h, int x, int y) {
   return false;
 }
 
-/// Index of the first nonzero byte of `p[from, n)`, or `n`. Skips zero stretches eight bytes
-/// at a time: frontier flags are sparse.
-std::size_t next_set(const std::uint8_t* p, std::size_t n, std::size_t from) {
-  std::size_t i = from;
-  while (i + 8 <= n) {
-    std::uint64_t word = 0;
-    std::memcpy(&word, p + i, sizeof word);
-    if (word != 0) break;
-    i += 8;
-  }
-  while (i < n && p[i] == 0) ++i;
-  return i;
-}
-
 }  // namespace
 
 bool is_frontier_cell(const KnownMap& known, int index) {
@@ -59,16 +46,39 @@ void FrontierMap::rebuild(const KnownMap& known) {
   const int h = known.height();
   width_ = w;
   flags_.assign(static_cast<std::size_t>(known.size()), 0);
+  list_.clear();
   count_ = 0;
+  stale_ = 0;
   const CellState* s = known.cells().data().data();
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; ++x) {
       if (frontier_at(s, w, h, x, y)) {
         const int i = y * w + x;
-        flags_[static_cast<std::size_t>(i)] = 1;
-        ++count_;
+        flags_[static_cast<std::size_t>(i)] = kFrontier | kListed;
+        list_.push_back(i);
       }
     }
+  }
+  count_ = static_cast<int>(list_.size());
+  sorted_ = list_.size();
+}
+
+void FrontierMap::set(int i, bool frontier) {
+  std::uint8_t& flag = flags_[static_cast<std::size_t>(i)];
+  const bool was = (flag & kFrontier) != 0;
+  if (was == frontier) return;
+  if (frontier) {
+    ++count_;
+    if ((flag & kListed) != 0) {
+      --stale_;  // revived while still listed
+    } else {
+      list_.push_back(i);
+    }
+    flag = kFrontier | kListed;
+  } else {
+    --count_;
+    ++stale_;
+    flag = kListed;
   }
 }
 
@@ -90,52 +100,71 @@ void FrontierMap::update(const KnownMap& known, std::span<const int> revealed) {
     const int y0 = std::max(ry - 1, 0);
     const int y1 = std::min(ry + 1, h - 1);
     for (int y = y0; y <= y1; ++y) {
-      for (int x = x0; x <= x1; ++x) {
-        const std::uint8_t now = frontier_at(s, w, h, x, y) ? 1 : 0;
-        const int i = y * w + x;
-        std::uint8_t& flag = flags_[static_cast<std::size_t>(i)];
-        count_ += static_cast<int>(now) - static_cast<int>(flag);
-        flag = now;
-      }
+      for (int x = x0; x <= x1; ++x) set(y * w + x, frontier_at(s, w, h, x, y));
     }
   }
+  // Keep the list within a constant factor of the frontier count.
+  if (stale_ > 64 && stale_ > static_cast<std::size_t>(count_)) normalise();
+}
+
+void FrontierMap::normalise() const {
+  if (stale_ == 0 && sorted_ == list_.size()) return;
+  std::size_t kept = 0;
+  std::size_t kept_sorted = 0;
+  for (std::size_t k = 0; k < list_.size(); ++k) {
+    const int i = list_[k];
+    std::uint8_t& flag = flags_[static_cast<std::size_t>(i)];
+    if ((flag & kFrontier) != 0) {
+      list_[kept++] = i;
+      if (k < sorted_) kept_sorted = kept;
+    } else {
+      flag = 0;  // stale: no longer listed
+    }
+  }
+  list_.resize(kept);
+  stale_ = 0;
+  const auto middle = list_.begin() + static_cast<std::ptrdiff_t>(kept_sorted);
+  std::sort(middle, list_.end());
+  std::inplace_merge(list_.begin(), middle, list_.end());
+  sorted_ = list_.size();
 }
 
 std::vector<int> FrontierMap::cells() const {
-  std::vector<int> out;
-  out.reserve(static_cast<std::size_t>(count_));
-  const std::size_t n = flags_.size();
-  for (std::size_t i = next_set(flags_.data(), n, 0); i < n; i = next_set(flags_.data(), n, i + 1)) {
-    out.push_back(static_cast<int>(i));
-  }
-  return out;
+  normalise();
+  return list_;
 }
 
 std::vector<FrontierCluster> FrontierMap::clusters(const KnownMap& known, double max_length_m,
+                                                   bool allow_corner_cutting,
                                                    std::span<const std::uint8_t> excluded) const {
   std::vector<FrontierCluster> result;
   if (flags_.size() != static_cast<std::size_t>(known.size()) || width_ != known.width()) {
     throw std::invalid_argument(
         "FrontierMap::clusters: the known map's size differs from the frontier map's");
   }
+  if (!excluded.empty() && excluded.size() != flags_.size()) {
+    throw std::invalid_argument("FrontierMap::clusters: excluded has " + std::to_string(excluded.size()) +
+                                " flags for " + std::to_string(flags_.size()) + " cells");
+  }
   if (count_ == 0) return result;
+  normalise();
   const int w = known.width();
   const int h = known.height();
   const double resolution_m = known.resolution_m();
+  const CellState* state = known.cells().data().data();
+  std::uint8_t* flags = flags_.data();
+  const std::uint8_t* skip = excluded.empty() ? nullptr : excluded.data();
 
-  // 1. Candidate cells: a copy of the flags without the excluded cells. The walk below clears
-  //    each cell it visits, so the copy doubles as the "not yet visited" set.
-  std::vector<std::uint8_t> remaining = flags_;
-  const std::size_t n = remaining.size();
-  if (!excluded.empty()) {
-    if (excluded.size() != n) {
-      throw std::invalid_argument("FrontierMap::clusters: excluded has " + std::to_string(excluded.size()) +
-                                  " flags for " + std::to_string(n) + " cells");
+  // Scratch marks live in flags_ and are cleared on every exit (also by an exception).
+  struct ClearMarks {
+    const std::vector<int>& list;
+    std::uint8_t* flags;
+    ~ClearMarks() {
+      for (const int i : list) flags[i] &= static_cast<std::uint8_t>(~kPlaced);
     }
-    for (std::size_t i = 0; i < n; ++i) remaining[i] &= static_cast<std::uint8_t>(excluded[i] == 0 ? 1 : 0);
-  }
+  } const clear_marks{list_, flags};
 
-  // 2. Piece size in cells: floor(max_length_m / resolution_m), at least 1 (with slack for
+  // 1. Piece size in cells: floor(max_length_m / resolution_m), at least 1 (with slack for
   //    ratios such as 3.0 / 0.3 that round just below an integer); no splitting when <= 0.
   std::size_t cap = std::max<std::size_t>(static_cast<std::size_t>(count_), 1);
   if (max_length_m > 0.0) {
@@ -143,23 +172,51 @@ std::vector<FrontierCluster> FrontierMap::clusters(const KnownMap& known, double
     cap = ratio < 1.0 ? 1 : static_cast<std::size_t>(std::min(ratio, static_cast<double>(cap)));
   }
 
-  // 3. One breadth-first walk per 8-connected component, from its lowest-index cell (the
-  //    ascending scan meets it first), visiting neighbours in heading order; the visiting order
-  //    is cut into consecutive pieces of `cap` cells.
-  std::vector<int> queue;
-  queue.reserve(static_cast<std::size_t>(count_));
-  std::array<int, 8> offset{};  // index step of each heading
-  for (std::size_t k = 0; k < offset.size(); ++k) offset[k] = kDirections[k].y * w + kDirections[k].x;
-  const auto add_piece = [&](std::span<const int> members) {
+  // A cell in a walk, with its coordinates (carried along to avoid divisions).
+  struct Node {
+    int i;
+    int x;
+    int y;
+  };
+  // Calls visit(node) for every neighbour of `c` linked to it by the motion rule that is a
+  // frontier cell, not excluded and not yet placed, in heading order. `c` is a copy: visit()
+  // may grow the vector it came from. Unrolled over the eight headings.
+  const auto for_each_link = [&](const Node c, auto&& visit) {
+    const bool interior = c.x > 0 && c.y > 0 && c.x < w - 1 && c.y < h - 1;
+    const auto step = [&]<std::size_t K>(std::integral_constant<std::size_t, K>) {
+      constexpr int dx = kDirections[K].x;
+      constexpr int dy = kDirections[K].y;
+      const int nx = c.x + dx;
+      const int ny = c.y + dy;
+      if (!interior && (nx < 0 || ny < 0 || nx >= w || ny >= h)) return;
+      const int n = c.i + dy * w + dx;
+      if ((flags[n] & (kFrontier | kPlaced)) != kFrontier) return;
+      if (skip != nullptr && skip[n] != 0) return;
+      // Diagonal: both cells beside it must be known free.
+      if constexpr (dx != 0 && dy != 0) {
+        if (!allow_corner_cutting && (state[c.i + dx] != CellState::Free || state[c.i + dy * w] != CellState::Free)) {
+          return;
+        }
+      }
+      visit(Node{n, nx, ny});
+    };
+    [&]<std::size_t... K>(std::index_sequence<K...>) {
+      (step(std::integral_constant<std::size_t, K>{}), ...);
+    }(std::make_index_sequence<kDirections.size()>{});
+  };
+
+  // Appends the cluster of `members` (reordered by index here).
+  const auto add_piece = [&](std::vector<Node>& members) {
+    std::sort(members.begin(), members.end(), [](const Node& a, const Node& b) { return a.i < b.i; });
     FrontierCluster cl;
-    cl.cells.assign(members.begin(), members.end());
-    std::sort(cl.cells.begin(), cl.cells.end());
-    const auto n = static_cast<long long>(cl.cells.size());
+    cl.cells.reserve(members.size());
+    const auto n = static_cast<long long>(members.size());
     long long sx = 0;
     long long sy = 0;
-    for (const int i : cl.cells) {
-      sx += i % w;
-      sy += i / w;
+    for (const Node& m : members) {
+      cl.cells.push_back(m.i);
+      sx += m.x;
+      sy += m.y;
     }
     // Cell (x, y) has its centre at (x, y) in cell units (as in euclidean_distance()).
     cl.centroid_x = static_cast<double>(sx) / static_cast<double>(n);
@@ -167,52 +224,50 @@ std::vector<FrontierCluster> FrontierMap::clusters(const KnownMap& known, double
     cl.length_m = static_cast<double>(n) * resolution_m;
     // Representative: nearest to the centroid, compared exactly as
     // n^2 d^2 = (n x - sum x)^2 + (n y - sum y)^2; members are ascending and only a strictly
-    // smaller distance wins, so ties keep the lowest index.
-    Int128 best = -1;
-    for (const int i : cl.cells) {
-      const Int128 ex = static_cast<Int128>(n) * (i % w) - sx;
-      const Int128 ey = static_cast<Int128>(n) * (i / w) - sy;
-      const Int128 d = ex * ex + ey * ey;
-      if (best < 0 || d < best) {
-        best = d;
-        cl.representative = i;
+    // smaller distance wins, so ties keep the lowest index. |n x - sum x| <= n * side, so
+    // 64 bits suffice while 2 (n * side)^2 < 2^63; else 128.
+    const auto nearest = [&]<typename T>(T best) {
+      for (const Node& m : members) {
+        const T ex = static_cast<T>(n) * m.x - sx;
+        const T ey = static_cast<T>(n) * m.y - sy;
+        const T d = ex * ex + ey * ey;
+        if (best < 0 || d < best) {
+          best = d;
+          cl.representative = m.i;
+        }
       }
+    };
+    if (n * std::max(w, h) < (1LL << 30)) {
+      nearest(static_cast<long long>(-1));
+    } else {
+      nearest(static_cast<Int128>(-1));
     }
     result.push_back(std::move(cl));
   };
 
-  for (std::size_t seed = next_set(remaining.data(), n, 0); seed < n;
-       seed = next_set(remaining.data(), n, seed + 1)) {
-    remaining[seed] = 0;
-    queue.clear();
-    queue.push_back(static_cast<int>(seed));
-    for (std::size_t head = 0; head < queue.size(); ++head) {
-      const int c = queue[head];
-      const int cx = c % w;
-      const int cy = c / w;
-      const bool interior = cx > 0 && cy > 0 && cx < w - 1 && cy < h - 1;
-      for (std::size_t k = 0; k < kDirections.size(); ++k) {
-        if (!interior) {
-          const int nx = cx + kDirections[k].x;
-          const int ny = cy + kDirections[k].y;
-          if (nx < 0 || ny < 0 || nx >= w || ny >= h) continue;
-        }
-        const int ni = c + offset[k];
-        std::uint8_t& r = remaining[static_cast<std::size_t>(ni)];
-        if (r == 0) continue;
-        r = 0;
-        queue.push_back(ni);
-      }
+  // 2. Pieces, by walks over the cells not yet placed, each from the lowest-index one left.
+  //    Links never join two components, so a walk stays inside the component of its start
+  //    cell, and the pieces of each component come out exactly as the per-component rule in
+  //    frontiers.hpp makes them (the lowest cell left overall is the lowest left in its
+  //    component). Without splitting a walk takes the whole component. Every piece starts at
+  //    its lowest member, so pieces come out ordered by lowest member.
+  std::vector<Node> piece;
+  piece.reserve(std::min(cap, list_.size()));
+  result.reserve(list_.size() / cap + 16);
+  for (const int start : list_) {
+    if ((flags[start] & kPlaced) != 0 || (skip != nullptr && skip[start] != 0)) continue;
+    piece.clear();
+    flags[start] |= kPlaced;
+    piece.push_back(Node{start, start % w, start / w});
+    for (std::size_t head = 0; head < piece.size() && piece.size() < cap; ++head) {
+      for_each_link(piece[head], [&](const Node& n) {
+        if (piece.size() == cap) return;
+        flags[n.i] |= kPlaced;
+        piece.push_back(n);
+      });
     }
-    for (std::size_t first = 0; first < queue.size(); first += cap) {
-      add_piece(std::span<const int>(queue).subspan(first, std::min(cap, queue.size() - first)));
-    }
+    add_piece(piece);
   }
-
-  // 4. Order by lowest member (pieces of one component interleave with other components).
-  std::sort(result.begin(), result.end(), [](const FrontierCluster& a, const FrontierCluster& b) {
-    return a.cells.front() < b.cells.front();
-  });
   return result;
 }
 

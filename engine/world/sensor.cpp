@@ -1,7 +1,11 @@
 #include "engine/world/sensor.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
+#include <iterator>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
@@ -23,30 +27,38 @@ double squared_range_limit(double range_cells) {
   return range_cells * range_cells * (1.0 + kRangeSlack) + kRangeSlack;
 }
 
-/// Walks the segment from the centre of cell (0, 0) to the centre of cell (dx, dy)
-/// (Amanatides & Woo 1987, "A fast voxel traversal algorithm", in exact integer arithmetic).
-/// Calls `on_cell(x, y)` for every cell the segment enters before the target and
-/// `on_corner(ax, ay, bx, by)` where it passes exactly through a grid corner, with the two cells
-/// beside that corner. Either callback returns false to stop the walk; the walk returns false
-/// when stopped.
+/// Walks a ray from the centre of the robot's cell to the end point (ex, ey), given in doubled
+/// coordinates relative to that centre: cell (x, y) relative to the robot's cell spans
+/// (2x - 1, 2x + 1) x (2y - 1, 2y + 1), so the target's centre is (2dx, 2dy) and the midpoints
+/// of its faces are (2dx - sign(dx), 2dy) and (2dx, 2dy - sign(dy)). Calls `on_cell(x, y)` for
+/// every cell the ray enters strictly before its end point (for a centre ray the last one is
+/// the target itself) and `on_corner(ax, ay, bx, by)` where it passes exactly through a grid
+/// corner, with the two cells beside that corner. Either callback returns false to stop the
+/// walk; the walk returns false when stopped.
 ///
-/// With centres at integer coordinates, cell boundaries lie at half-integers. The segment meets
-/// the (i+1)-th vertical boundary at t = (2i+1) / (2|dx|) and the (j+1)-th horizontal one at
-/// t = (2j+1) / (2|dy|); comparing (2i+1)|dy| with (2j+1)|dx| orders them exactly, and equality
-/// is a corner. A segment between centres never runs along a boundary.
+/// Amanatides & Woo 1987 ("A fast voxel traversal algorithm") in exact integer arithmetic:
+/// cell boundaries lie at odd coordinates; the ray meets its (i+1)-th vertical boundary at
+/// t = (2i+1) / |ex| and its (j+1)-th horizontal one at t = (2j+1) / |ey|, t in [0, 1];
+/// comparing (2i+1)|ey| with (2j+1)|ex| orders them exactly, and equality is a corner. Only
+/// boundaries with t < 1 are crossed: one at t = 1 holds the end point (the face a face ray
+/// ends on). A ray from a cell centre never runs along a boundary, and a face midpoint is
+/// never a corner, so no corner lies at t = 1.
 template <typename OnCell, typename OnCorner>
-bool walk_segment(int dx, int dy, OnCell&& on_cell, OnCorner&& on_corner) {
-  const int sx = dx > 0 ? 1 : (dx < 0 ? -1 : 0);
-  const int sy = dy > 0 ? 1 : (dy < 0 ? -1 : 0);
-  const long long ax = std::abs(dx);
-  const long long ay = std::abs(dy);
-  long long i = 0;  // x steps taken
-  long long j = 0;  // y steps taken
-  while (i != ax || j != ay) {
+bool walk_ray(int ex, int ey, OnCell&& on_cell, OnCorner&& on_corner) {
+  const int sx = ex > 0 ? 1 : (ex < 0 ? -1 : 0);
+  const int sy = ey > 0 ? 1 : (ey < 0 ? -1 : 0);
+  const long long ax = std::abs(ex);
+  const long long ay = std::abs(ey);
+  long long i = 0;  // vertical boundaries crossed
+  long long j = 0;  // horizontal boundaries crossed
+  for (;;) {
+    const bool vertical = 2 * i + 1 < ax;    // another vertical boundary before the end point
+    const bool horizontal = 2 * j + 1 < ay;  // another horizontal one
+    if (!vertical && !horizontal) return true;
     long long cmp = 0;  // < 0: cross a vertical boundary first, > 0: horizontal, 0: corner
-    if (ay == 0) {
+    if (!horizontal) {
       cmp = -1;
-    } else if (ax == 0) {
+    } else if (!vertical) {
       cmp = 1;
     } else {
       cmp = (2 * i + 1) * ay - (2 * j + 1) * ax;
@@ -62,11 +74,128 @@ bool walk_segment(int dx, int dy, OnCell&& on_cell, OnCorner&& on_corner) {
     } else {
       ++j;
     }
-    if (i == ax && j == ay) break;  // entered the target
     if (!on_cell(static_cast<int>(i) * sx, static_cast<int>(j) * sy)) return false;
   }
-  return true;
 }
+
+/// One check of a ray, relative to the robot's cell: the ray is blocked here when cells a and
+/// b are both occupied. A cell the ray enters has b == a; a corner it passes through has the
+/// two cells beside the corner. (Used while building the tables.)
+struct Check {
+  int a_dx = 0;
+  int a_dy = 0;
+  int b_dx = 0;
+  int b_dy = 0;
+  friend bool operator==(const Check&, const Check&) = default;
+};
+
+/// A check as stored in the tables (8 bytes): cell a at (dx, dy) from the robot's cell, cell b
+/// at (b_dx, b_dy) from a (the two cells beside a corner are diagonal neighbours; (0, 0) for a
+/// cell check). For a centre-ray check, bit f of open_faces is set when face ray f of the same
+/// target is not implied blocked by this check blocking, so it must be walked; it lives here,
+/// next to the check, because the scan reads it right after finding the check blocked.
+struct Crossing {
+  std::int16_t dx = 0;
+  std::int16_t dy = 0;
+  std::int8_t b_dx = 0;
+  std::int8_t b_dy = 0;
+  std::uint8_t open_faces = 0;
+  std::uint8_t unused = 0;
+};
+static_assert(sizeof(Crossing) == 8);
+
+/// A face ray's own checks: crossings[first, first + count). Its leading checks that equal the
+/// centre ray's leading checks are not stored again (they are clear whenever the face ray is
+/// looked at, see Sensor::scan).
+struct FaceRay {
+  std::uint32_t first = 0;
+  std::uint32_t count = 0;
+};
+
+/// One target offset in range: the checks of its centre ray, crossings[first, first + count),
+/// and its face rays, faces[face_first, face_first + face_count). 16 bytes: the scan streams
+/// through all targets.
+struct Target {
+  std::uint32_t first = 0;
+  std::int16_t dx = 0;
+  std::int16_t dy = 0;
+  std::uint16_t count = 0;
+  std::uint8_t face_count = 0;
+  std::uint32_t face_first = 0;
+};
+static_assert(sizeof(Target) == 16);
+
+/// Largest supported range (cells): offsets and check counts are stored in 16 bits.
+constexpr int kMaxRangeCells = 16000;
+
+/// The checks of the ray from the robot's cell centre to (ex, ey) (doubled coordinates) for
+/// target offset (dx, dy): the target itself is never checked.
+std::vector<Check> ray_checks(int ex, int ey, int dx, int dy) {
+  std::vector<Check> out;
+  walk_ray(
+      ex, ey,
+      [&](int x, int y) {
+        if (x != dx || y != dy) out.push_back(Check{x, y, x, y});
+        return true;
+      },
+      [&](int ax, int ay, int bx, int by) {
+        out.push_back(Check{ax, ay, bx, by});
+        return true;
+      });
+  return out;
+}
+
+/// The stored form of `c` (see Crossing).
+Crossing compact(const Check& c) {
+  return Crossing{static_cast<std::int16_t>(c.a_dx), static_cast<std::int16_t>(c.a_dy),
+                  static_cast<std::int8_t>(c.b_dx - c.a_dx), static_cast<std::int8_t>(c.b_dy - c.a_dy), 0, 0};
+}
+
+/// The checks of one ray as a set, to ask whether another check implies that this ray is
+/// blocked: a check blocks when all of its cells (one, or two for a corner) are occupied, so
+/// check c implies the ray is blocked when the ray has a check whose cells are among c's.
+class CheckSet {
+ public:
+  explicit CheckSet(const std::vector<Check>& ray) {
+    for (const Check& c : ray) {
+      if (c.a_dx == c.b_dx && c.a_dy == c.b_dy) {
+        cells_.push_back(key(c.a_dx, c.a_dy));
+      } else {
+        corners_.push_back(corner_key(c));
+      }
+    }
+    std::sort(cells_.begin(), cells_.end());
+    std::sort(corners_.begin(), corners_.end());
+  }
+
+  /// True when `c` blocking implies this ray is blocked.
+  [[nodiscard]] bool blocked_by(const Check& c) const {
+    return has_cell(c.a_dx, c.a_dy) || has_cell(c.b_dx, c.b_dy) ||
+           std::binary_search(corners_.begin(), corners_.end(), corner_key(c));
+  }
+
+  /// True when `other` being blocked implies this ray is blocked (every check of `other`
+  /// implies it): then this ray being clear implies `other` being clear.
+  [[nodiscard]] bool blocked_by(const std::vector<Check>& other) const {
+    return std::all_of(other.begin(), other.end(), [&](const Check& c) { return blocked_by(c); });
+  }
+
+ private:
+  static std::uint32_t key(int x, int y) {
+    return (static_cast<std::uint32_t>(x + 32768) << 16) | static_cast<std::uint32_t>(y + 32768);
+  }
+  static std::uint64_t corner_key(const Check& c) {
+    const std::uint64_t a = key(c.a_dx, c.a_dy);
+    const std::uint64_t b = key(c.b_dx, c.b_dy);
+    return (std::min(a, b) << 32) | std::max(a, b);
+  }
+  [[nodiscard]] bool has_cell(int x, int y) const {
+    return std::binary_search(cells_.begin(), cells_.end(), key(x, y));
+  }
+
+  std::vector<std::uint32_t> cells_;
+  std::vector<std::uint64_t> corners_;
+};
 
 /// Smallest absolute difference between two angles (radians), in [0, pi].
 double angle_distance(double a, double b) {
@@ -115,6 +244,16 @@ void to_json(nlohmann::json& j, const SensorParams& p) {
       {"range_m", p.range_m}, {"fov_deg", p.fov_deg}, {"miss_probability", p.miss_probability}};
 }
 
+struct Sensor::Tables {
+  /// In offset-table order.
+  std::vector<Target> targets;
+  /// Direction to each target's centre (radians, as heading_angle()); read only with a
+  /// limited field of view.
+  std::vector<double> angles;
+  std::vector<Crossing> crossings;
+  std::vector<FaceRay> faces;
+};
+
 Sensor::Sensor(const SensorParams& params, double resolution_m)
     : params_(params), range_cells_(params.range_m / resolution_m) {
   if (!(resolution_m > 0.0) || !std::isfinite(range_cells_) || range_cells_ < 0.0) {
@@ -122,6 +261,13 @@ Sensor::Sensor(const SensorParams& params, double resolution_m)
         "Sensor: needs resolution_m > 0 and a finite range_m >= 0, got resolution_m = " +
         std::to_string(resolution_m) + ", range_m = " + std::to_string(params.range_m));
   }
+  if (range_cells_ > kMaxRangeCells) {
+    throw std::invalid_argument("Sensor: range_m / resolution_m = " + std::to_string(range_cells_) +
+                                " cells is more than the supported " + std::to_string(kMaxRangeCells));
+  }
+  auto tables = std::make_shared<Tables>();
+  std::vector<Target>& targets = tables->targets;
+  std::vector<Crossing>& crossings = tables->crossings;
   // 1. Every offset within range, ordered by squared distance, then row, then column: this is
   //    the "offset-table order" of scan() results and of noise draws.
   const double limit = squared_range_limit(range_cells_);
@@ -129,34 +275,62 @@ Sensor::Sensor(const SensorParams& params, double resolution_m)
   for (int dy = -r; dy <= r; ++dy) {
     for (int dx = -r; dx <= r; ++dx) {
       if (static_cast<double>(dx * dx + dy * dy) <= limit) {
-        targets_.push_back(
-            Target{dx, dy, std::atan2(static_cast<double>(dy), static_cast<double>(dx)), 0, 0});
+        Target t;
+        t.dx = static_cast<std::int16_t>(dx);
+        t.dy = static_cast<std::int16_t>(dy);
+        targets.push_back(t);
       }
     }
   }
-  std::sort(targets_.begin(), targets_.end(), [](const Target& a, const Target& b) {
+  std::sort(targets.begin(), targets.end(), [](const Target& a, const Target& b) {
     const int da = a.dx * a.dx + a.dy * a.dy;
     const int db = b.dx * b.dx + b.dy * b.dy;
     if (da != db) return da < db;
     if (a.dy != b.dy) return a.dy < b.dy;
     return a.dx < b.dx;
   });
-  // 2. The crossings of each target's line of sight, in walk order.
-  for (Target& t : targets_) {
-    t.first = static_cast<std::uint32_t>(crossings_.size());
-    walk_segment(
-        t.dx, t.dy,
-        [&](int x, int y) {
-          crossings_.push_back(Crossing{x, y, 0, 0, false});
-          return true;
-        },
-        [&](int ax, int ay, int bx, int by) {
-          crossings_.push_back(Crossing{ax, ay, bx, by, true});
-          return true;
-        });
-    t.count = static_cast<std::uint32_t>(crossings_.size()) - t.first;
+  // 2. The checks of each target's centre ray, in walk order, then its face rays that can make
+  //    a difference: a face ray implied by the centre ray or by another kept face ray (e.g. the
+  //    face ray of a target straight ahead, whose checks equal the centre ray's) is dropped.
+  //    Each kept face ray stores its checks after its common prefix with the centre ray.
+  for (Target& t : targets) {
+    const int dx = t.dx;
+    const int dy = t.dy;
+    tables->angles.push_back(std::atan2(static_cast<double>(dy), static_cast<double>(dx)));
+    const std::vector<Check> centre = ray_checks(2 * dx, 2 * dy, dx, dy);
+    std::vector<std::vector<Check>> faces;
+    const auto consider = [&](std::vector<Check> face) {
+      const CheckSet set(face);
+      if (set.blocked_by(centre)) return;
+      for (const auto& kept : faces) {
+        if (set.blocked_by(kept)) return;
+      }
+      std::erase_if(faces, [&](const std::vector<Check>& kept) { return CheckSet(kept).blocked_by(face); });
+      faces.push_back(std::move(face));
+    };
+    if (dx != 0) consider(ray_checks(2 * dx - (dx > 0 ? 1 : -1), 2 * dy, dx, dy));
+    if (dy != 0) consider(ray_checks(2 * dx, 2 * dy - (dy > 0 ? 1 : -1), dx, dy));
+
+    t.first = static_cast<std::uint32_t>(crossings.size());
+    t.count = static_cast<std::uint16_t>(centre.size());
+    for (const Check& c : centre) crossings.push_back(compact(c));
+    t.face_count = static_cast<std::uint8_t>(faces.size());
+    t.face_first = static_cast<std::uint32_t>(tables->faces.size());
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+      const std::vector<Check>& face = faces[f];
+      const CheckSet set(face);
+      for (std::size_t k = 0; k < centre.size(); ++k) {
+        if (!set.blocked_by(centre[k])) crossings[t.first + k].open_faces |= static_cast<std::uint8_t>(1U << f);
+      }
+      const auto shared = std::mismatch(face.begin(), face.end(), centre.begin(), centre.end()).first;
+      tables->faces.push_back(FaceRay{static_cast<std::uint32_t>(crossings.size()),
+                                      static_cast<std::uint32_t>(face.end() - shared)});
+      std::transform(shared, face.end(), std::back_inserter(crossings), compact);
+    }
   }
-  revealed_.reserve(targets_.size());
+  crossings.shrink_to_fit();
+  revealed_.reserve(targets.size());
+  tables_ = std::move(tables);
 }
 
 std::span<const int> Sensor::scan(const WorldMap& truth, KnownMap& known, Cell at, double heading_rad,
@@ -164,42 +338,57 @@ std::span<const int> Sensor::scan(const WorldMap& truth, KnownMap& known, Cell a
   revealed_.clear();
   const int width = truth.width();
   const int height = truth.height();
-  if (!truth.occupied.in_bounds(at)) return {};
+  if (!tables_ || !truth.occupied.in_bounds(at)) return {};
   const std::uint8_t* occ = truth.occupied.data().data();
   const int at_index = at.y * width + at.x;
   const bool limit_fov = params_.fov_deg < 360.0;
   const double half_fov = params_.fov_deg * (M_PI / 360.0) + kAngleSlack;
   const bool noisy = params_.miss_probability > 0.0;
+  // Whether check `c` blocks. Crossed cells lie inside the bounding box of the robot's and the
+  // target's cells, so they are on the map.
+  const auto blocks = [&](const Crossing& c) {
+    const int a = at_index + c.dy * width + c.dx;
+    return occ[a] != 0 && occ[a + c.b_dy * width + c.b_dx] != 0;
+  };
+  const Crossing* const crossings = tables_->crossings.data();
+  const FaceRay* const faces = tables_->faces.data();
+  const double* const angles = tables_->angles.data();
 
-  for (const Target& t : targets_) {
+  const Target* const targets = tables_->targets.data();
+  // reveal() below changes cell states in place, never the storage.
+  const CellState* const known_state = known.cells().data().data();
+  const std::size_t target_count = tables_->targets.size();
+  for (std::size_t n = 0; n < target_count; ++n) {
+    const Target& t = targets[n];
     // 1. The target must lie on the map and still be unknown (known cells never change).
     const int x = at.x + t.dx;
     const int y = at.y + t.dy;
     if (x < 0 || y < 0 || x >= width || y >= height) continue;
     const int index = at_index + t.dy * width + t.dx;
-    if (!known.is_unknown(index)) continue;
+    if (known_state[index] != CellState::Unknown) continue;
     const bool own_cell = t.dx == 0 && t.dy == 0;
     // 2. Field of view (the robot's own cell is always seen).
-    if (limit_fov && !own_cell && angle_distance(t.angle, heading_rad) > half_fov) continue;
-    // 3. Line of sight. Crossed cells lie inside the bounding box of the robot's and the
-    //    target's cells, so they are on the map.
-    bool clear = true;
-    const Crossing* c = crossings_.data() + t.first;
-    const Crossing* const end = c + t.count;
-    for (; c != end; ++c) {
-      const int a = at_index + c->a_dy * width + c->a_dx;
-      if (c->corner) {
-        const int b = at_index + c->b_dy * width + c->b_dx;
-        if (occ[a] != 0 && occ[b] != 0) {
-          clear = false;
-          break;
-        }
-      } else if (occ[a] != 0) {
-        clear = false;
-        break;
+    if (limit_fov && !own_cell && angle_distance(angles[n], heading_rad) > half_fov) continue;
+    // 3. Line of sight: the centre ray; for an occupied target whose centre ray is blocked at
+    //    check k, the face rays not implied blocked by check k (its open_faces bits). Such a
+    //    face ray does not contain check k, so its common prefix with the centre ray ends
+    //    before k and is clear: only its own stored checks remain. (One branch on a rarely set
+    //    mask rather than on the target's occupancy, which would mispredict often.)
+    const Crossing* c = crossings + t.first;
+    std::uint32_t k = 0;
+    while (k < t.count && !blocks(c[k])) ++k;
+    if (k < t.count) {
+      unsigned open = c[k].open_faces;
+      open &= 0U - static_cast<unsigned>(occ[index] != 0);
+      if (open == 0) continue;
+      bool seen = false;
+      for (unsigned f = 0; f < t.face_count && !seen; ++f) {
+        if (((open >> f) & 1U) == 0) continue;
+        const FaceRay& ray = faces[t.face_first + f];
+        seen = std::none_of(crossings + ray.first, crossings + ray.first + ray.count, blocks);
       }
+      if (!seen) continue;
     }
-    if (!clear) continue;
     // 4. Seeded miss: one draw per visible unknown cell, in table order; the robot's own cell
     //    is never missed.
     if (noisy && !own_cell && uniform01(rng) < params_.miss_probability) continue;
@@ -217,9 +406,16 @@ bool Sensor::visible(const WorldMap& truth, Cell at, Cell target) const {
     return false;
   }
   const auto occupied = [&](int ox, int oy) { return !truth.is_free(Cell{at.x + ox, at.y + oy}); };
-  return walk_segment(
-      dx, dy, [&](int x, int y) { return !occupied(x, y); },
-      [&](int ax, int ay, int bx, int by) { return !(occupied(ax, ay) && occupied(bx, by)); });
+  const auto clear = [&](int ex, int ey) {
+    return walk_ray(
+        ex, ey, [&](int x, int y) { return (x == dx && y == dy) || !occupied(x, y); },
+        [&](int ax, int ay, int bx, int by) { return !(occupied(ax, ay) && occupied(bx, by)); });
+  };
+  if (clear(2 * dx, 2 * dy)) return true;    // centre ray
+  if (!occupied(dx, dy)) return false;       // free targets: centre ray only
+  const int sx = dx > 0 ? 1 : (dx < 0 ? -1 : 0);
+  const int sy = dy > 0 ? 1 : (dy < 0 ? -1 : 0);
+  return (dx != 0 && clear(2 * dx - sx, 2 * dy)) || (dy != 0 && clear(2 * dx, 2 * dy - sy));
 }
 
 }  // namespace fsweep

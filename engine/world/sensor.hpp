@@ -7,16 +7,31 @@
 ///   cell and the target cell is <= range_m / resolution_m (cells). The boundary is included.
 /// - Field of view: with fov_deg < 360 the direction to the target cell centre must lie within
 ///   +-fov_deg/2 of the heading (inclusive). The robot's own cell is always seen.
-/// - Line of sight: the segment between the two cell centres is walked cell by cell
-///   (Amanatides-Woo). Every cell the segment enters before the target must not be occupied.
-///   Where the segment passes exactly through a grid corner it touches the two cells beside
-///   the corner only at that point: it is blocked there only if both of those cells are
-///   occupied (a diagonal gap between two occupied cells is opaque; a gap with one free side
-///   is see-through). Occupied cells that are reached are themselves observed.
+/// - Rays: a ray is a segment from the centre of the robot's cell to an end point, walked cell
+///   by cell (Amanatides-Woo, in exact integer arithmetic on doubled coordinates: cell x spans
+///   [2x, 2x+2], its centre is at 2x+1). A ray is clear when every cell it enters strictly
+///   before its end point, other than the target, is not occupied. Where it passes exactly
+///   through a grid corner it touches the two cells beside the corner only at that point: it
+///   is blocked there only if both of those cells are occupied (a diagonal gap between two
+///   occupied cells is opaque; a gap with one free side is see-through).
+/// - Free targets: visible when the centre ray (end point: the target's centre) is clear.
+/// - Occupied targets: visible when the centre ray is clear, or a face ray is clear. A face
+///   ray ends at the midpoint of a face of the target that looks toward the robot: with
+///   dx = target.x - robot.x != 0, the vertical face on the robot's side (end point
+///   x = 2*target.x + 1 - sign(dx), y = 2*target.y + 1); with dy != 0, the horizontal face on
+///   the robot's side (likewise). The end point lies on the target's boundary, so the target
+///   is only touched there and the last cell the ray enters is the one in front of that face,
+///   which must be free. (A laser hits a wall's face, not its centre: along a straight wall,
+///   a wall cell at a grazing angle is seen although its centre ray first enters the side of
+///   its neighbour.) Face rays change only what is visible, not range or field of view, which
+///   are still measured to the target's centre. Visibility is therefore symmetric between two
+///   free cells but not in general when one of them is occupied.
+///   Occupied cells that are visible are themselves observed.
 /// - Noise: with miss_probability p > 0 every visible, still unknown cell stays unknown with
 ///   probability p on this scan (drawn from the run's "sensor" stream in a fixed cell order).
 
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -42,8 +57,10 @@ struct SensorParams {
 [[nodiscard]] SensorParams sensor_params_from_json(const nlohmann::json& j, const std::string& where);
 void to_json(nlohmann::json& j, const SensorParams& p);
 
-/// A sensor for one resolution. Precomputes, per target offset in range, the cells its line of
-/// sight crosses, so a scan costs one table walk. Copyable value type.
+/// A sensor for one resolution. Precomputes, per target offset in range, the cells its rays
+/// cross, so a scan costs one table walk. Copyable value type: copies share the immutable
+/// tables and each has its own result buffer (so one instance must not scan from two threads
+/// at once, but copies may).
 class Sensor {
  public:
   Sensor() = default;
@@ -55,8 +72,9 @@ class Sensor {
   /// stays valid until the next call. `rng` is used only when miss_probability > 0.
   std::span<const int> scan(const WorldMap& truth, KnownMap& known, Cell at, double heading_rad, Rng& rng);
 
-  /// True when `target` is visible from `at` on `truth` under the range and line-of-sight rules
-  /// (ignores field of view and noise). For tests and for information-gain estimates.
+  /// True when `target` is visible from `at` on `truth` under the range and ray rules (ignores
+  /// field of view and noise). Walks the rays directly, independently of the tables. For tests
+  /// and for information-gain estimates.
   [[nodiscard]] bool visible(const WorldMap& truth, Cell at, Cell target) const;
 
   [[nodiscard]] const SensorParams& params() const { return params_; }
@@ -64,24 +82,11 @@ class Sensor {
   [[nodiscard]] double range_cells() const { return range_cells_; }
 
  private:
+  struct Tables;  // defined in sensor.cpp; immutable once built
+
   SensorParams params_;
   double range_cells_ = 0.0;
-  // Implementation tables (offsets, their crossed cells, corner pairs) are private details.
-  struct Target {
-    int dx = 0;
-    int dy = 0;
-    double angle = 0.0;
-    std::uint32_t first = 0;   // into crossings_
-    std::uint32_t count = 0;
-  };
-  struct Crossing {
-    // A cell the ray enters (b_dx/b_dy unused, corner = false), or a corner touch whose two
-    // side cells must not both be occupied (corner = true).
-    int a_dx = 0, a_dy = 0, b_dx = 0, b_dy = 0;
-    bool corner = false;
-  };
-  std::vector<Target> targets_;
-  std::vector<Crossing> crossings_;
+  std::shared_ptr<const Tables> tables_;  // null for a default-constructed sensor
   std::vector<int> revealed_;
 };
 

@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <deque>
 #include <string>
 #include <vector>
@@ -80,12 +82,42 @@ TEST(Frontiers, UpdateTracksRevealedCells) {
   EXPECT_FALSE(frontiers.is_frontier(4));  // occupied
 }
 
-TEST(Frontiers, ClustersAreEightConnectedComponents) {
+TEST(Frontiers, UpdateHandlesCellsLeavingAndReturning) {
+  // update() trusts only the 3x3 neighbourhoods of `revealed`; feeding it two different maps
+  // makes cell (1,1) = 4 leave the set and come back while the list still holds it.
+  const KnownMap with = ascii_known({
+      "...",
+      "...",
+      "..?",
+  });
+  const KnownMap without = ascii_known({
+      "...",
+      "...",
+      "..#",
+  });
+  FrontierMap frontiers(with);
+  EXPECT_EQ(frontiers.cells(), (std::vector<int>{4, 5, 7}));
+  const int changed[] = {8};
+  frontiers.update(without, changed);
+  EXPECT_EQ(frontiers.count(), 0);
+  frontiers.update(with, changed);  // no query in between
+  EXPECT_EQ(frontiers.count(), 3);
+  EXPECT_EQ(frontiers.cells(), (std::vector<int>{4, 5, 7}));
+  frontiers.update(without, changed);
+  EXPECT_TRUE(frontiers.cells().empty());
+  EXPECT_TRUE(frontiers.clusters(without, 0.0, false).empty());
+  frontiers.update(with, changed);
+  const auto clusters = frontiers.clusters(with, 0.0, false);
+  ASSERT_EQ(clusters.size(), 1U);
+  EXPECT_EQ(clusters[0].cells, (std::vector<int>{4, 5, 7}));
+}
+
+TEST(Frontiers, ClustersAreConnectedComponents) {
   const KnownMap known = ascii_known({
       "#......#..",
       "????##????",
   });
-  const auto clusters = FrontierMap(known).clusters(known, 0.0);
+  const auto clusters = FrontierMap(known).clusters(known, 0.0, false);
   ASSERT_EQ(clusters.size(), 2U);
   EXPECT_EQ(clusters[0].cells, (std::vector<int>{1, 2, 3, 4, 5, 6}));
   EXPECT_EQ(clusters[1].cells, (std::vector<int>{8, 9}));
@@ -96,17 +128,53 @@ TEST(Frontiers, ClustersAreEightConnectedComponents) {
   EXPECT_DOUBLE_EQ(clusters[0].length_m, 6.0);
 }
 
-TEST(Frontiers, DiagonalNeighboursShareACluster) {
+TEST(Frontiers, DiagonalNeighboursConnectLikeTheRobotMoves) {
+  // Frontier cells 0, 7, 14 on a diagonal; the cells beside each diagonal step are a wall and
+  // an unknown cell, so the robot cannot make those steps without corner cutting.
   const KnownMap known = ascii_known({
       ".?####",
       "#.?###",
       "##.?##",
       "######",
   });
-  const auto clusters = FrontierMap(known).clusters(known, 0.0);
-  ASSERT_EQ(clusters.size(), 1U);
-  EXPECT_EQ(clusters[0].cells, (std::vector<int>{0, 7, 14}));
-  EXPECT_EQ(clusters[0].representative, 7);
+  const FrontierMap frontiers(known);
+  const auto apart = frontiers.clusters(known, 0.0, false);
+  ASSERT_EQ(apart.size(), 3U);
+  EXPECT_EQ(apart[0].cells, std::vector<int>{0});
+  EXPECT_EQ(apart[1].cells, std::vector<int>{7});
+  EXPECT_EQ(apart[2].cells, std::vector<int>{14});
+  const auto together = frontiers.clusters(known, 0.0, true);
+  ASSERT_EQ(together.size(), 1U);
+  EXPECT_EQ(together[0].cells, (std::vector<int>{0, 7, 14}));
+  EXPECT_EQ(together[0].representative, 7);
+}
+
+TEST(Frontiers, DiagonalThroughKnownFreeCellsConnects) {
+  // Frontier cells {1, 4, 5} around the unknown (0,0) and {10, 11, 14} around (3,3). (1,1) = 5
+  // and (2,2) = 10 are diagonal neighbours; (2,1) and (1,2) beside them are free and not
+  // frontiers (no unknown neighbour). One cluster; with (2,1) a wall, two unless corners may
+  // be cut.
+  const KnownMap open = ascii_known({
+      "?...",
+      "....",
+      "....",
+      "...?",
+  });
+  const auto one = FrontierMap(open).clusters(open, 0.0, false);
+  ASSERT_EQ(one.size(), 1U);
+  EXPECT_EQ(one[0].cells, (std::vector<int>{1, 4, 5, 10, 11, 14}));
+  const KnownMap wall = ascii_known({
+      "?...",
+      "..#.",
+      "....",
+      "...?",
+  });
+  const FrontierMap frontiers(wall);
+  const auto two = frontiers.clusters(wall, 0.0, false);
+  ASSERT_EQ(two.size(), 2U);
+  EXPECT_EQ(two[0].cells, (std::vector<int>{1, 4, 5}));
+  EXPECT_EQ(two[1].cells, (std::vector<int>{10, 11, 14}));
+  EXPECT_EQ(frontiers.clusters(wall, 0.0, true).size(), 1U);
 }
 
 const std::vector<std::string> kRow = {
@@ -117,7 +185,7 @@ const std::vector<std::string> kRow = {
 TEST(Frontiers, ClustersSplitByLength) {
   const KnownMap known = ascii_known(kRow);
   const FrontierMap frontiers(known);
-  const auto pieces = frontiers.clusters(known, 3.0);
+  const auto pieces = frontiers.clusters(known, 3.0, false);
   ASSERT_EQ(pieces.size(), 4U);
   EXPECT_EQ(pieces[0].cells, (std::vector<int>{0, 1, 2}));
   EXPECT_EQ(pieces[1].cells, (std::vector<int>{3, 4, 5}));
@@ -129,11 +197,11 @@ TEST(Frontiers, ClustersSplitByLength) {
   EXPECT_DOUBLE_EQ(pieces[1].length_m, 3.0);
   EXPECT_DOUBLE_EQ(pieces[3].length_m, 1.0);
   // A length that is not a whole number of cells rounds down: 3.9 m -> 3 cells.
-  EXPECT_EQ(frontiers.clusters(known, 3.9).size(), 4U);
+  EXPECT_EQ(frontiers.clusters(known, 3.9, false).size(), 4U);
   // Shorter than a cell: one cell per piece.
-  EXPECT_EQ(frontiers.clusters(known, 0.2).size(), 10U);
+  EXPECT_EQ(frontiers.clusters(known, 0.2, false).size(), 10U);
   // No splitting at <= 0; 10 cells, centroid 4.5, tie 4 / 5.
-  const auto whole = frontiers.clusters(known, -1.0);
+  const auto whole = frontiers.clusters(known, -1.0, false);
   ASSERT_EQ(whole.size(), 1U);
   EXPECT_EQ(whole[0].representative, 4);
 }
@@ -141,25 +209,51 @@ TEST(Frontiers, ClustersSplitByLength) {
 TEST(Frontiers, SplitLengthIsInMetres) {
   // 0.9 m at 0.3 m per cell is 3 cells (0.9 / 0.3 is just below 3 in floating point).
   const KnownMap known = ascii_known(kRow, 0.3);
-  const auto pieces = FrontierMap(known).clusters(known, 0.9);
+  const auto pieces = FrontierMap(known).clusters(known, 0.9, false);
   ASSERT_EQ(pieces.size(), 4U);
   EXPECT_EQ(pieces[0].cells.size(), 3U);
   EXPECT_NEAR(pieces[0].length_m, 0.9, 1e-12);
 }
 
-TEST(Frontiers, ClusterPiecesFollowBreadthFirstOrder) {
-  // Frontier cells (0,0) (1,0) (2,0) (0,1) (0,2) = 0 1 2 3 6. The walk from 0 visits
-  // neighbours in heading order (E, SE, S, ...): 0, 1, 3, 2, 6; pieces of two cells.
+TEST(Frontiers, ClusterPiecesAreConnectedBreadthFirstWalks) {
+  // Frontier cells (0,0) (1,0) (2,0) (0,1) (0,2) = 0 1 2 3 6; pieces of two cells. The walk
+  // from 0 visits neighbours in heading order (E, SE, S, ...) and closes {0, 1}. The next walk
+  // starts from the lowest cell left, 2, whose only frontier neighbour (1,0) is placed: {2}.
+  // Then {3, 6}. (Cutting the first walk's order 0 1 3 2 6 into twos would give {2, 3}, two
+  // cells that do not touch.)
   const KnownMap known = ascii_known({
       "...",
       ".??",
       ".??",
   });
-  const auto pieces = FrontierMap(known).clusters(known, 2.0);
+  const auto pieces = FrontierMap(known).clusters(known, 2.0, false);
   ASSERT_EQ(pieces.size(), 3U);
   EXPECT_EQ(pieces[0].cells, (std::vector<int>{0, 1}));
-  EXPECT_EQ(pieces[1].cells, (std::vector<int>{2, 3}));
-  EXPECT_EQ(pieces[2].cells, (std::vector<int>{6}));
+  EXPECT_EQ(pieces[1].cells, std::vector<int>{2});
+  EXPECT_EQ(pieces[2].cells, (std::vector<int>{3, 6}));
+}
+
+TEST(Frontiers, LongPiecesFollowTheWalk) {
+  // A ring of 14 frontier cells around an unknown block, linked orthogonally only (each
+  // diagonal between ring cells has an unknown cell beside it). Pieces of 4 cells:
+  // - from 0: E 1, S 5; from 1: E 2 -> {0, 1, 2, 5};
+  // - from 3 (lowest left): E 4 (SE 9 is not linked); from 4: S 9; from 9: S 14;
+  // - from 10: S 15 (SE 16 is not linked); from 15: E 16; from 16: E 17;
+  // - from 18: E 19.
+  const KnownMap known = ascii_known({
+      ".....",
+      ".???.",
+      ".???.",
+      ".....",
+  });
+  const FrontierMap frontiers(known);
+  ASSERT_EQ(frontiers.count(), 14);
+  const auto pieces = frontiers.clusters(known, 4.0, false);
+  ASSERT_EQ(pieces.size(), 4U);
+  EXPECT_EQ(pieces[0].cells, (std::vector<int>{0, 1, 2, 5}));
+  EXPECT_EQ(pieces[1].cells, (std::vector<int>{3, 4, 9, 14}));
+  EXPECT_EQ(pieces[2].cells, (std::vector<int>{10, 15, 16, 17}));
+  EXPECT_EQ(pieces[3].cells, (std::vector<int>{18, 19}));
 }
 
 TEST(Frontiers, RepresentativeIsNearestToCentroidTiesLowestIndex) {
@@ -170,7 +264,7 @@ TEST(Frontiers, RepresentativeIsNearestToCentroidTiesLowestIndex) {
       ".??",
       ".??",
   });
-  const auto clusters = FrontierMap(known).clusters(known, 0.0);
+  const auto clusters = FrontierMap(known).clusters(known, 0.0, false);
   ASSERT_EQ(clusters.size(), 1U);
   EXPECT_EQ(clusters[0].representative, 1);
   EXPECT_DOUBLE_EQ(clusters[0].centroid_x, 0.6);
@@ -182,12 +276,12 @@ TEST(Frontiers, ExcludedCellsAreLeftOut) {
   std::vector<std::uint8_t> excluded(static_cast<std::size_t>(known.size()), 0);
   excluded[4] = 1;
   excluded[5] = 1;
-  const auto clusters = FrontierMap(known).clusters(known, 0.0, excluded);
+  const auto clusters = FrontierMap(known).clusters(known, 0.0, false, excluded);
   ASSERT_EQ(clusters.size(), 2U);
   EXPECT_EQ(clusters[0].cells, (std::vector<int>{0, 1, 2, 3}));
   EXPECT_EQ(clusters[1].cells, (std::vector<int>{6, 7, 8, 9}));
   std::fill(excluded.begin(), excluded.end(), 1);
-  EXPECT_TRUE(FrontierMap(known).clusters(known, 0.0, excluded).empty());
+  EXPECT_TRUE(FrontierMap(known).clusters(known, 0.0, false, excluded).empty());
 }
 
 TEST(Frontiers, PiecesAreOrderedByLowestMember) {
@@ -199,7 +293,7 @@ TEST(Frontiers, PiecesAreOrderedByLowestMember) {
       ".?##",
       ".?##",
   });
-  const auto pieces = FrontierMap(known).clusters(known, 2.0);
+  const auto pieces = FrontierMap(known).clusters(known, 2.0, false);
   ASSERT_EQ(pieces.size(), 3U);
   EXPECT_EQ(pieces[0].cells, (std::vector<int>{0, 4}));
   EXPECT_EQ(pieces[1].cells, std::vector<int>{2});
@@ -329,6 +423,169 @@ std::vector<WorldMap> exploration_maps() {
       "..............",
   }));
   return maps;
+}
+
+/// Clusters by the rule in frontiers.hpp, written plainly over the whole map.
+std::vector<FrontierCluster> reference_clusters(const KnownMap& known, double max_length_m, bool cut,
+                                                const std::vector<std::uint8_t>& excluded) {
+  const int n = known.size();
+  const auto candidate = [&](Cell c) {
+    return known.in_bounds(c) && is_frontier_cell(known, known.index(c)) &&
+           (excluded.empty() || excluded[static_cast<std::size_t>(known.index(c))] == 0);
+  };
+  const auto linked = [&](Cell a, Cell b) {
+    if (!candidate(b)) return false;
+    return a.x == b.x || a.y == b.y || cut || (known.is_free(Cell{b.x, a.y}) && known.is_free(Cell{a.x, b.y}));
+  };
+  int total = 0;
+  for (int i = 0; i < n; ++i) total += is_frontier_cell(known, i) ? 1 : 0;
+  std::size_t cap = static_cast<std::size_t>(std::max(total, 1));
+  if (max_length_m > 0.0) {
+    cap = std::max<std::size_t>(
+        static_cast<std::size_t>(std::floor(max_length_m / known.resolution_m() * (1.0 + 1e-9))), 1);
+  }
+  // Breadth-first walk from `start` over cells with `allowed`, at most `limit` cells.
+  const auto walk = [&](int start, const std::vector<std::uint8_t>& allowed, std::size_t limit) {
+    std::vector<int> out{start};
+    std::vector<std::uint8_t> in(static_cast<std::size_t>(n), 0);
+    in[static_cast<std::size_t>(start)] = 1;
+    for (std::size_t head = 0; head < out.size() && out.size() < limit; ++head) {
+      const Cell c = known.cell(out[head]);
+      for (const Cell d : kDirections) {
+        const Cell m{c.x + d.x, c.y + d.y};
+        if (out.size() == limit || !linked(c, m)) continue;
+        const auto mi = static_cast<std::size_t>(known.index(m));
+        if (allowed[mi] == 0 || in[mi] != 0) continue;
+        in[mi] = 1;
+        out.push_back(known.index(m));
+      }
+    }
+    return out;
+  };
+  std::vector<FrontierCluster> result;
+  std::vector<std::uint8_t> unplaced(static_cast<std::size_t>(n), 0);
+  for (int i = 0; i < n; ++i) unplaced[static_cast<std::size_t>(i)] = candidate(known.cell(i)) ? 1 : 0;
+  std::vector<std::uint8_t> reached(static_cast<std::size_t>(n), 0);
+  for (int i = 0; i < n; ++i) {
+    if (unplaced[static_cast<std::size_t>(i)] == 0 || reached[static_cast<std::size_t>(i)] != 0) continue;
+    std::vector<int> component = walk(i, unplaced, static_cast<std::size_t>(n));
+    for (const int c : component) reached[static_cast<std::size_t>(c)] = 1;
+    std::sort(component.begin(), component.end());
+    std::vector<std::uint8_t> left(static_cast<std::size_t>(n), 0);
+    for (const int c : component) left[static_cast<std::size_t>(c)] = 1;
+    for (const int start : component) {
+      if (left[static_cast<std::size_t>(start)] == 0) continue;
+      FrontierCluster cl;
+      cl.cells = walk(start, left, cap);
+      for (const int c : cl.cells) left[static_cast<std::size_t>(c)] = 0;
+      std::sort(cl.cells.begin(), cl.cells.end());
+      const auto m = static_cast<long long>(cl.cells.size());
+      long long sx = 0;
+      long long sy = 0;
+      for (const int c : cl.cells) {
+        sx += known.cell(c).x;
+        sy += known.cell(c).y;
+      }
+      cl.centroid_x = static_cast<double>(sx) / static_cast<double>(m);
+      cl.centroid_y = static_cast<double>(sy) / static_cast<double>(m);
+      cl.length_m = static_cast<double>(m) * known.resolution_m();
+      long long best = -1;
+      for (const int c : cl.cells) {
+        const long long ex = m * known.cell(c).x - sx;
+        const long long ey = m * known.cell(c).y - sy;
+        if (best < 0 || ex * ex + ey * ey < best) {
+          best = ex * ex + ey * ey;
+          cl.representative = c;
+        }
+      }
+      result.push_back(std::move(cl));
+    }
+  }
+  std::sort(result.begin(), result.end(),
+            [](const FrontierCluster& a, const FrontierCluster& b) { return a.cells.front() < b.cells.front(); });
+  return result;
+}
+
+/// Checks clusters() against the reference for several settings, and that every piece is
+/// connected by robot moves among its own cells.
+void check_clusters(const KnownMap& known, const FrontierMap& frontiers, std::uint64_t seed) {
+  std::vector<std::uint8_t> some(static_cast<std::size_t>(known.size()), 0);
+  Rng rng = make_rng(seed, "excluded");
+  for (auto& e : some) e = uniform01(rng) < 0.1 ? 1 : 0;
+  for (const bool cut : {false, true}) {
+    for (const double length : {0.0, 3.0, 7.5}) {
+      for (const std::vector<std::uint8_t>* excluded : {static_cast<std::vector<std::uint8_t>*>(nullptr), &some}) {
+        const std::vector<std::uint8_t> none;
+        const std::vector<std::uint8_t>& ex = excluded == nullptr ? none : *excluded;
+        const auto got = frontiers.clusters(known, length, cut, ex);
+        const auto want = reference_clusters(known, length, cut, ex);
+        ASSERT_EQ(got.size(), want.size()) << "cut " << cut << " length " << length;
+        for (std::size_t k = 0; k < got.size(); ++k) {
+          ASSERT_EQ(got[k].cells, want[k].cells) << "cluster " << k;
+          ASSERT_EQ(got[k].representative, want[k].representative);
+          ASSERT_DOUBLE_EQ(got[k].centroid_x, want[k].centroid_x);
+          ASSERT_DOUBLE_EQ(got[k].centroid_y, want[k].centroid_y);
+          ASSERT_DOUBLE_EQ(got[k].length_m, want[k].length_m);
+          // Connected by moves between its own cells (a diagonal move needs both cells beside
+          // it known free unless corners may be cut).
+          const std::vector<int>& cells = got[k].cells;
+          std::vector<int> seen{cells.front()};
+          for (std::size_t head = 0; head < seen.size(); ++head) {
+            const Cell a = known.cell(seen[head]);
+            for (const int other : cells) {
+              const Cell b = known.cell(other);
+              if (std::find(seen.begin(), seen.end(), other) != seen.end()) continue;
+              if (std::abs(a.x - b.x) > 1 || std::abs(a.y - b.y) > 1) continue;
+              if (!cut && !passable(a, b, [&](Cell c) { return !known.is_free(c); })) continue;
+              seen.push_back(other);
+            }
+          }
+          ASSERT_EQ(seen.size(), cells.size()) << "piece " << k << " is not connected";
+        }
+      }
+    }
+  }
+}
+
+TEST(Frontiers, ClustersMatchReferenceDuringExplorations) {
+  SensorParams params;
+  params.range_m = 4.0;
+  params.miss_probability = 0.2;
+  std::uint64_t seed = 100;
+  for (const WorldMap& map : exploration_maps()) {
+    SCOPED_TRACE("map " + std::to_string(map.width()) + "x" + std::to_string(map.height()));
+    Sensor sensor(params, map.resolution_m);
+    KnownMap known(map.width(), map.height(), map.resolution_m);
+    FrontierMap frontiers(known);
+    Rng rng = make_rng(++seed, "sensor");
+    Cell at = map.start;
+    for (int step = 0; step < 400; ++step) {
+      frontiers.update(known, sensor.scan(map, known, at, 0.0, rng));
+      if (step % 3 == 0) check_clusters(known, frontiers, seed + static_cast<std::uint64_t>(step));
+      if (HasFatalFailure() || frontiers.count() == 0) break;
+      const int target = nearest_frontier(known, frontiers, at);
+      at = known.cell(target < 0 ? frontiers.cells().front() : target);
+    }
+  }
+}
+
+TEST(Frontiers, ManyUpdatesWithoutQueriesStayConsistent) {
+  // cells() and clusters() sort and prune the frontier list; between them update() alone must
+  // keep it bounded and correct (here: a whole exploration without a query until the end).
+  const WorldMap map = exploration_maps().front();
+  Sensor sensor(SensorParams{3.0, 360.0, 0.0}, map.resolution_m);
+  KnownMap known(map.width(), map.height(), map.resolution_m);
+  FrontierMap frontiers(known);
+  Rng rng = make_rng(5, "sensor");
+  for (int y = 1; y < map.height(); y += 3) {
+    for (int x = 1; x < map.width(); x += 3) {
+      if (map.is_free(Cell{x, y})) frontiers.update(known, sensor.scan(map, known, Cell{x, y}, 0.0, rng));
+    }
+  }
+  EXPECT_EQ(frontiers.cells(), from_scratch(known));
+  EXPECT_EQ(frontiers.count(), static_cast<int>(from_scratch(known).size()));
+  const FrontierMap copy = frontiers;
+  EXPECT_EQ(copy.cells(), frontiers.cells());
 }
 
 TEST(Frontiers, IncrementalMatchesFromScratch) {

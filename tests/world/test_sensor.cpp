@@ -275,16 +275,234 @@ TEST(Sensor, ScanMatchesVisible) {
   }
 }
 
-TEST(Sensor, VisibilityIsSymmetric) {
+TEST(Sensor, VisibilityBetweenFreeCellsIsSymmetric) {
+  // Free targets use the centre ray only, which is the same segment both ways. (Occupied
+  // targets may also be seen through a face ray, which has no reverse counterpart.)
   const WorldMap map = random_world(20, 20, 0.35, 3);
   Sensor sensor(range(8.0), 1.0);
   for (int a = 0; a < map.occupied.size(); ++a) {
+    if (!map.is_free(a)) continue;
     for (int b = a + 1; b < map.occupied.size(); ++b) {
+      if (!map.is_free(b)) continue;
       const Cell ca = map.occupied.cell(a);
       const Cell cb = map.occupied.cell(b);
       ASSERT_EQ(sensor.visible(map, ca, cb), sensor.visible(map, cb, ca)) << a << " " << b;
     }
   }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Occupied targets: face rays (see the rule list in sensor.hpp).
+
+TEST(Sensor, StraightWallIsSeenAtGrazingAngles) {
+  // Robot 2 cells below a straight wall, range 5: wall cells (x, 0) with (x - 4)^2 + 4 <= 25,
+  // i.e. x = 0..8, are in range. The centre ray to (x, 0) with |x - 4| >= 3 enters the side of
+  // the neighbouring wall cell first (it reaches row 0 at |dx| * 3/4 > |dx| - 1/2 cells), so
+  // under a centre-only rule only x = 2..6 were seen. The face ray to the bottom face's
+  // midpoint (2dx, -3 in doubled coordinates) crosses only rows 2 and 1, which are free.
+  const WorldMap map = ascii_world({
+      "##########",
+      "..........",
+      "....S.....",
+  });
+  const auto r = scan_fresh(map, range(5.0), map.start);
+  Sensor sensor(range(5.0), 1.0);
+  for (int x = 0; x <= 8; ++x) {
+    EXPECT_EQ(r.known.state(Cell{x, 0}), CellState::Occupied) << "x=" << x;
+    EXPECT_TRUE(sensor.visible(map, map.start, Cell{x, 0})) << "x=" << x;
+  }
+  EXPECT_FALSE(known(r, Cell{9, 0}));  // out of range: 25 + 4 > 25
+  EXPECT_FALSE(sensor.visible(map, map.start, Cell{9, 0}));
+  EXPECT_EQ(r.known.occupied_count(), 9);
+}
+
+TEST(Sensor, ClosedBoxHidesOnlyItsCorners) {
+  // Robot at (1,1), range 5 (every cell is in range). Rays are worked in doubled coordinates
+  // relative to the robot's centre (cell (x, y) relative spans (2x-1, 2x+1) x (2y-1, 2y+1)).
+  //
+  // (3,0), offset (2,-1): the centre ray to (4,-2) enters (2,1) and then, at t = 1/2 (height
+  // -1 before x = 3), the wall (2,0): blocked; the vertical-face ray to (3,-2) likewise enters
+  // (2,1) then (2,0). The horizontal-face ray to (4,-1) only crosses x = 1 and x = 3 before
+  // its end, entering (2,1) and (3,1), both free: (3,0) is seen (the grazing case).
+  //
+  // (4,0), offset (3,-1): the centre ray to (6,-2) enters (2,1), passes the corner at (3,-1)
+  // (beside (3,1) free and (2,0) wall: see-through) and enters (3,0), a wall: blocked. The
+  // vertical-face ray to (5,-2) (the west face) enters (2,1) at t = 1/5, then crosses height -1
+  // at t = 1/2 before x = 3 at t = 3/5, entering the wall (2,0): blocked. The horizontal-face
+  // ray to (6,-1) (the south face) ends on height -1, so it stays in row 1 and enters (2,1),
+  // (3,1) and then (4,1), the wall in front of that face: blocked. So (4,0) stays hidden
+  // (and (4,2) by symmetry).
+  //
+  // (0,0), offset (-1,-1): the centre ray passes the corner at (-1,-1) between the walls (0,1)
+  // and (1,0): opaque. Its east-face ray to (-1,-2) enters (1,0) and its south-face ray to
+  // (-2,-1) enters (0,1), both walls: the near corners (0,0) and (0,2) stay hidden too, as
+  // with a centre-only rule (a diagonal gap between two walls is opaque).
+  const WorldMap map = ascii_world({
+      "#####",
+      "#S..#",
+      "#####",
+  });
+  const auto r = scan_fresh(map, range(5.0), map.start);
+  Sensor sensor(range(5.0), 1.0);
+  for (int y = 0; y < 3; ++y) {
+    for (int x = 0; x < 5; ++x) {
+      const bool corner = (x == 0 || x == 4) && y != 1;
+      EXPECT_EQ(known(r, Cell{x, y}), !corner) << x << "," << y;
+      EXPECT_EQ(sensor.visible(map, map.start, Cell{x, y}), !corner) << x << "," << y;
+    }
+  }
+  EXPECT_EQ(r.known.known_count(), 11);
+}
+
+TEST(Sensor, WallCellBehindAWallCellStaysHidden) {
+  // A wall two cells thick: every back-row cell has a wall cell in front of each face that
+  // looks toward the robot ((x, 1) below it; (x -+ 1, 0) beside it), and its centre ray
+  // enters row 1. (6,0) ends the back row: its east face borders free space, but that face
+  // looks away from the robot, so it does not count.
+  const WorldMap map = ascii_world({
+      "#######...",
+      "##########",
+      "..........",
+      "....S.....",
+  });
+  const auto r = scan_fresh(map, range(5.0), map.start);
+  Sensor sensor(range(5.0), 1.0);
+  for (int x = 0; x <= 8; ++x) EXPECT_EQ(r.known.state(Cell{x, 1}), CellState::Occupied) << "x=" << x;
+  for (int x = 0; x < 10; ++x) {
+    EXPECT_FALSE(known(r, Cell{x, 0})) << "x=" << x;
+    EXPECT_FALSE(sensor.visible(map, map.start, Cell{x, 0})) << "x=" << x;
+  }
+  // In a single row: the second wall cell's only face toward the robot is covered.
+  const WorldMap row = ascii_world({"S..##."});
+  EXPECT_TRUE(sensor.visible(row, row.start, Cell{3, 0}));
+  EXPECT_FALSE(sensor.visible(row, row.start, Cell{4, 0}));
+}
+
+TEST(Sensor, FreeCellsKeepTheCentreRule) {
+  // Target (4,1) from (0,0): the centre ray to (8,2) (doubled) enters (1,0), (2,0) and, at
+  // t = 1/2, the wall (2,1): blocked. The ray to the north face's midpoint (8,1) would stay in
+  // row 0 and be clear, so the cell is seen when it is a wall, but not when it is free.
+  const WorldMap free_target = ascii_world({
+      "S.....",
+      "..#...",
+  });
+  const WorldMap wall_target = ascii_world({
+      "S.....",
+      "..#.#.",
+  });
+  Sensor sensor(range(10.0), 1.0);
+  EXPECT_FALSE(sensor.visible(free_target, Cell{0, 0}, Cell{4, 1}));
+  EXPECT_FALSE(known(scan_fresh(free_target, range(10.0), Cell{0, 0}), Cell{4, 1}));
+  EXPECT_TRUE(sensor.visible(wall_target, Cell{0, 0}, Cell{4, 1}));
+  EXPECT_EQ(scan_fresh(wall_target, range(10.0), Cell{0, 0}).known.state(Cell{4, 1}), CellState::Occupied);
+  // The west face's ray to (7,2) enters (2,1) as well.
+  const WorldMap west_only = ascii_world({
+      "S...#.",
+      "..#.#.",
+  });
+  EXPECT_FALSE(sensor.visible(west_only, Cell{0, 0}, Cell{4, 1}));
+}
+
+// A reference for the ray rule by brute force: a ray from the robot's centre (origin) to
+// (ex, ey) in doubled coordinates enters cell (x, y) (relative) when the open segment meets
+// the cell's open interior; it passes a corner (X, Y) (both odd) when that point lies on it
+// strictly between its ends. Times are compared as exact fractions.
+struct Fraction {
+  long long num;
+  long long den;  // > 0
+  friend bool operator<(Fraction a, Fraction b) { return a.num * b.den < b.num * a.den; }
+};
+
+/// Open interval of t where t * e lies in (lo, hi); empty interval when e == 0 and 0 is not
+/// inside.
+std::pair<Fraction, Fraction> times_inside(long long e, long long lo, long long hi) {
+  if (e == 0) {
+    return lo < 0 && 0 < hi ? std::pair{Fraction{0, 1}, Fraction{1, 1}} : std::pair{Fraction{1, 1}, Fraction{0, 1}};
+  }
+  if (e > 0) return {Fraction{lo, e}, Fraction{hi, e}};
+  return {Fraction{-hi, -e}, Fraction{-lo, -e}};
+}
+
+bool reference_ray_clear(const WorldMap& map, Cell at, int ex, int ey, Cell skip) {
+  const auto occupied = [&](int x, int y) { return !map.is_free(Cell{at.x + x, at.y + y}); };
+  const int x0 = std::min(0, ex / 2) - 1;
+  const int x1 = std::max(0, ex / 2) + 1;
+  const int y0 = std::min(0, ey / 2) - 1;
+  const int y1 = std::max(0, ey / 2) + 1;
+  for (int y = y0; y <= y1; ++y) {
+    for (int x = x0; x <= x1; ++x) {
+      if ((x == 0 && y == 0) || (x == skip.x && y == skip.y)) continue;
+      const auto [ax, bx] = times_inside(ex, 2 * x - 1, 2 * x + 1);
+      const auto [ay, by] = times_inside(ey, 2 * y - 1, 2 * y + 1);
+      const Fraction lo = std::max({ax, ay, Fraction{0, 1}});
+      const Fraction hi = std::min({bx, by, Fraction{1, 1}});
+      if (lo < hi && occupied(x, y)) return false;
+    }
+  }
+  for (int cy = 2 * y0 - 1; cy <= 2 * y1 + 1; cy += 2) {
+    for (int cx = 2 * x0 - 1; cx <= 2 * x1 + 1; cx += 2) {
+      if (ex == 0 || static_cast<long long>(cx) * ey != static_cast<long long>(cy) * ex) continue;
+      const Fraction t{ex > 0 ? cx : -cx, ex > 0 ? ex : -ex};
+      if (!(Fraction{0, 1} < t && t < Fraction{1, 1})) continue;
+      const int sx = ex > 0 ? 1 : -1;
+      const int sy = ey > 0 ? 1 : -1;
+      // Beside the corner: ahead in x but not in y, and ahead in y but not in x.
+      if (occupied((cx + sx) / 2, (cy - sy) / 2) && occupied((cx - sx) / 2, (cy + sy) / 2)) return false;
+    }
+  }
+  return true;
+}
+
+bool reference_visible(const WorldMap& map, double range_cells, Cell at, Cell target) {
+  const int dx = target.x - at.x;
+  const int dy = target.y - at.y;
+  if (dx * dx + dy * dy > range_cells * range_cells + 1e-9) return false;
+  if (reference_ray_clear(map, at, 2 * dx, 2 * dy, Cell{dx, dy})) return true;
+  if (map.is_free(target)) return false;
+  const Cell none{1 << 20, 1 << 20};
+  return (dx != 0 && reference_ray_clear(map, at, 2 * dx - (dx > 0 ? 1 : -1), 2 * dy, none)) ||
+         (dy != 0 && reference_ray_clear(map, at, 2 * dx, 2 * dy - (dy > 0 ? 1 : -1), none));
+}
+
+TEST(Sensor, MatchesBruteForceReference) {
+  for (const double p : {0.15, 0.3, 0.5}) {
+    const WorldMap map = random_world(27, 27, p, static_cast<std::uint64_t>(p * 100));
+    Sensor sensor(range(9.0), 1.0);
+    int occupied_seen = 0;
+    for (const Cell at : {map.start, Cell{0, 0}, Cell{26, 4}, Cell{3, 26}, Cell{7, 9}}) {
+      const auto r = scan_fresh(map, range(9.0), at);
+      for (int i = 0; i < map.occupied.size(); ++i) {
+        const Cell c = map.occupied.cell(i);
+        const bool expected = c == at || reference_visible(map, 9.0, at, c);
+        ASSERT_EQ(sensor.visible(map, at, c) || c == at, expected) << "p " << p << " at " << at.x << ","
+                                                                   << at.y << " cell " << c.x << "," << c.y;
+        ASSERT_EQ(known(r, c), expected) << "p " << p << " cell " << c.x << "," << c.y;
+        if (expected && !map.is_free(c)) ++occupied_seen;
+      }
+    }
+    EXPECT_GT(occupied_seen, 20);
+  }
+}
+
+TEST(Sensor, CopiesScanIndependently) {
+  // Copies share the precomputed tables but not the result buffer.
+  const WorldMap map = random_world(30, 30, 0.2, 5);
+  const Sensor original(range(6.0), 1.0);
+  Sensor a = original;
+  Sensor b = a;
+  KnownMap known_a(30, 30, 1.0);
+  KnownMap known_b(30, 30, 1.0);
+  Rng rng = make_rng(1, "sensor");
+  const auto from_a = a.scan(map, known_a, map.start, 0.0, rng);
+  const std::vector<int> saved(from_a.begin(), from_a.end());
+  const auto from_b = b.scan(map, known_b, Cell{2, 3}, 0.0, rng);
+  EXPECT_EQ(std::vector<int>(from_a.begin(), from_a.end()), saved);  // still a's result
+  EXPECT_NE(std::vector<int>(from_b.begin(), from_b.end()), saved);
+  const auto fresh = scan_fresh(map, range(6.0), Cell{2, 3});
+  EXPECT_EQ(std::vector<int>(from_b.begin(), from_b.end()), fresh.revealed);
+  EXPECT_EQ(known_a, scan_fresh(map, range(6.0), map.start).known);
+  Sensor unset;
+  EXPECT_TRUE(unset.scan(map, known_a, map.start, 0.0, rng).empty());
 }
 
 TEST(SensorParams, JsonRoundTrips) {

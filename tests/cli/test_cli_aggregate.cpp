@@ -1,0 +1,128 @@
+// `fsweep aggregate` and `fsweep plot` end to end on a hand-written sweep directory
+// (tests/sweep/aggregate_fixture.hpp).
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "sweep/aggregate_fixture.hpp"
+
+namespace {
+
+struct Outcome {
+  int code = -1;
+  std::string output;  // stdout and stderr
+};
+
+Outcome fsweep_cli(const std::string& args) {
+  const std::string cmd = std::string(FSWEEP_BINARY_DIR) + "/bin/fsweep " + args + " 2>&1";
+  Outcome out;
+  FILE* pipe = popen(cmd.c_str(), "r");
+  if (pipe == nullptr) return out;
+  std::array<char, 4096> buf{};
+  while (fgets(buf.data(), static_cast<int>(buf.size()), pipe) != nullptr) out.output += buf.data();
+  const int status = pclose(pipe);
+  out.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return out;
+}
+
+std::string first_line_after_header(const std::filesystem::path& path) {
+  std::ifstream f(path);
+  std::string line;
+  std::getline(f, line);
+  std::getline(f, line);
+  return line;
+}
+
+bool python_has_matplotlib() {
+  return std::filesystem::exists("/usr/bin/python3") &&
+         std::system("/usr/bin/python3 -c 'import matplotlib' >/dev/null 2>&1") == 0;
+}
+
+TEST(CliAggregate, WritesSummaryProgressAndBest) {
+  const auto dir = fsweep::testing::make_sweep_dir("cli_aggregate");
+  const Outcome r = fsweep_cli("aggregate " + dir.string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find("3 configurations"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("config_id 2"), std::string::npos) << r.output;  // distance to final coverage 0
+  for (const char* f : {"summary.csv", "progress_summary.csv", "best.csv"}) {
+    EXPECT_TRUE(std::filesystem::exists(dir / f)) << f;
+    EXPECT_FALSE(std::filesystem::exists(dir / (std::string(f) + ".tmp"))) << f;
+  }
+  EXPECT_EQ(first_line_after_header(dir / "best.csv").substr(0, 4), "1,2,");
+  std::filesystem::remove_all(dir);
+}
+
+TEST(CliAggregate, ObjectiveOptionReranks) {
+  const auto dir = fsweep::testing::make_sweep_dir("cli_objective");
+  const Outcome r = fsweep_cli("aggregate " + dir.string() + " --objective area_per_metre");
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_EQ(first_line_after_header(dir / "best.csv").substr(0, 4), "1,0,");
+  std::filesystem::remove_all(dir);
+}
+
+TEST(CliAggregate, BadInputIsExit2NamingFileAndLine) {
+  const auto dir = fsweep::testing::make_sweep_dir("cli_bad");
+  fsweep::testing::write_text(dir / "runs.csv", "run_key,seed,end_reason,distance_m\nk0,1,complete\n");
+  Outcome r = fsweep_cli("aggregate " + dir.string());
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.output.find("runs.csv:2"), std::string::npos) << r.output;
+  r = fsweep_cli("aggregate " + dir.string() + " --objective speed");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.output.find("speed"), std::string::npos) << r.output;
+  r = fsweep_cli("aggregate /nonexistent/sweep");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.output.find("/nonexistent/sweep/runs.csv"), std::string::npos) << r.output;
+  std::filesystem::remove_all(dir);
+}
+
+TEST(CliPlot, DrawsProgressAndMetricsPngs) {
+  if (!python_has_matplotlib()) GTEST_SKIP() << "/usr/bin/python3 has no matplotlib";
+  const auto dir = fsweep::testing::make_sweep_dir("cli_plot");
+  // No summary yet: plot aggregates first.
+  const Outcome r = fsweep_cli("plot " + dir.string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  for (const char* f : {"plots/progress.png", "plots/metrics.png", "summary.csv"}) {
+    ASSERT_TRUE(std::filesystem::exists(dir / f)) << f;
+    EXPECT_GT(std::filesystem::file_size(dir / f), 1000u) << f;
+  }
+  std::ifstream png(dir / "plots/progress.png", std::ios::binary);
+  std::array<char, 4> magic{};
+  png.read(magic.data(), magic.size());
+  EXPECT_EQ(std::string(magic.data() + 1, 3), "PNG");
+  // One weight varies: no heat map (needs two).
+  EXPECT_FALSE(std::filesystem::exists(dir / "plots/heatmap_w1_w2.png"));
+  std::filesystem::remove_all(dir);
+}
+
+TEST(CliPlot, HeatMapForTwoVaryingWeightsInOutDir) {
+  if (!python_has_matplotlib()) GTEST_SKIP() << "/usr/bin/python3 has no matplotlib";
+  const auto dir = fsweep::testing::make_sweep_dir("cli_heatmap");
+  fsweep::testing::write_text(
+      dir / "runs.csv",
+      "run_index,run_key,map,strategy,strategy.w1,strategy.w2,seed,end_reason,end_detail,"
+      "distance_m,energy,coverage,distance_to_final_coverage_m\n"
+      "0,k0,free,energy_aware,0,0,1,complete,,10,10,1,9\n"
+      "1,k1,free,energy_aware,0,5,1,complete,,12,12,1,11\n"
+      "2,k2,free,energy_aware,5,0,1,complete,,14,14,1,13\n"
+      "3,k3,free,energy_aware,5,5,1,complete,,8,8,1,7\n");
+  fsweep::testing::write_text(dir / "progress.csv",
+                              "run_index,run_key,distance_m,explored_area_m2,coverage,energy\n"
+                              "0,k0,0,1,0.1,0\n0,k0,10,9,1,10\n1,k1,0,1,0.1,0\n1,k1,12,9,1,12\n"
+                              "2,k2,0,1,0.1,0\n2,k2,14,9,1,14\n3,k3,0,1,0.1,0\n3,k3,8,9,1,8\n");
+  const std::string out = (dir / "figures").string();
+  ASSERT_EQ(fsweep_cli("aggregate " + dir.string()).code, 0);
+  const Outcome r = fsweep_cli("plot " + dir.string() + " --out " + out);
+  ASSERT_EQ(r.code, 0) << r.output;
+  for (const char* f : {"progress.png", "metrics.png", "heatmap_w1_w2.png"}) {
+    EXPECT_TRUE(std::filesystem::exists(out + "/" + f)) << f;
+  }
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace

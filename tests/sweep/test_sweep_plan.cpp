@@ -1,0 +1,253 @@
+// Sweep expansion: counts, run order (mixed radix, last axis fastest), zip groups, map seeds,
+// robot variants, lazy decoding of huge sweeps, run keys.
+#include <gtest/gtest.h>
+
+#include <set>
+#include <string>
+
+#include "engine/sweep/sweep_plan.hpp"
+#include "engine/world/random.hpp"
+
+namespace fsweep {
+namespace {
+
+using nlohmann::json;
+
+json minimal() {
+  return json::parse(R"({"schema_version": 1, "name": "t", "maps": ["free:w=20,h=20"],
+                         "strategies": [{"name": "closest_frontier"}]})");
+}
+
+/// 2 maps x (3 x 2 + 1) strategy configurations x 2 planners x 2 robots x 3 repetitions.
+json cartesian() {
+  return json::parse(R"({
+    "schema_version": 1, "name": "cartesian", "seed": 9,
+    "maps": ["free:w=20,h=20", "rooms:w=30,h=20,seed=1"],
+    "strategies": [
+      {"name": "energy_aware", "params": {"w1": [0, 10, 20], "w4": {"range": [0, 1], "step": 1}}},
+      {"name": "closest_frontier"}
+    ],
+    "planners": ["astar", {"type": "dijkstra"}],
+    "robot": {"battery": [100, 200]},
+    "repetitions": 3
+  })");
+}
+
+TEST(SweepPlan, MinimalSweepHasOneRunWithDefaults) {
+  const SweepPlan plan = SweepPlan::from_json(minimal(), "s.json");
+  EXPECT_EQ(plan.run_count(), 1U);
+  EXPECT_EQ(plan.output_dir(), "results/t");
+  EXPECT_EQ(plan.objective(), "distance_to_final_coverage_m");
+  const RunSpec spec = plan.run_spec(0);
+  EXPECT_EQ(spec.strategy, "closest_frontier");
+  EXPECT_TRUE(spec.strategy_params.is_null());
+  EXPECT_EQ(spec.planner, "astar");
+  EXPECT_EQ(spec.seed, derive_seed(0, "repetition/0"));
+  EXPECT_TRUE(plan.maps()[0].free_space);
+  EXPECT_EQ(plan.robots()[0].label, "-");
+}
+
+TEST(SweepPlan, CartesianProductCount) {
+  const SweepPlan plan = SweepPlan::from_json(cartesian(), "s.json");
+  EXPECT_EQ(plan.configuration_count(), 2U * 7U * 2U * 2U);
+  EXPECT_EQ(plan.run_count(), 2U * 7U * 2U * 2U * 3U);
+  const auto axes = plan.axes();
+  ASSERT_EQ(axes.size(), 5U);
+  EXPECT_EQ(axes[0], (std::pair<std::string, std::uint64_t>{"maps", 2}));
+  EXPECT_EQ(axes[1], (std::pair<std::string, std::uint64_t>{"strategy configurations", 7}));
+  EXPECT_EQ(axes[2], (std::pair<std::string, std::uint64_t>{"planners", 2}));
+  EXPECT_EQ(axes[3], (std::pair<std::string, std::uint64_t>{"robots", 2}));
+  EXPECT_EQ(axes[4], (std::pair<std::string, std::uint64_t>{"repetitions", 3}));
+}
+
+TEST(SweepPlan, MixedRadixOrderRepetitionsFastestMapsSlowest) {
+  const SweepPlan plan = SweepPlan::from_json(cartesian(), "s.json");
+  EXPECT_EQ(plan.coordinates(1).repetition, 1);
+  EXPECT_EQ(plan.coordinates(3).robot, 1U);  // after 3 repetitions
+  EXPECT_EQ(plan.coordinates(3).repetition, 0);
+  EXPECT_EQ(plan.coordinates(6).planner, 1U);          // after 2 robots x 3 repetitions
+  EXPECT_EQ(plan.coordinates(12).strategy_combo, 1U);  // after 2 planners
+  EXPECT_EQ(plan.coordinates(72).strategy_entry, 1U);  // after the 6 energy_aware combinations
+  EXPECT_EQ(plan.coordinates(84).map, 1U);             // after 7 strategy configurations
+  // Inside an entry the last parameter varies fastest: w4 (0, 1) before w1 (0, 10, 20).
+  EXPECT_EQ(plan.run_spec(12).strategy_params, (json{{"w1", 0}, {"w4", 1}}));
+  EXPECT_EQ(plan.run_spec(24).strategy_params, (json{{"w1", 10}, {"w4", 0}}));
+  EXPECT_TRUE(plan.run_spec(72).strategy_params.is_null());
+  EXPECT_THROW((void)plan.coordinates(plan.run_count()), std::out_of_range);
+}
+
+TEST(SweepPlan, RunSpecOfAnIndexEqualsAHandDecode) {
+  const SweepPlan plan = SweepPlan::from_json(cartesian(), "s.json");
+  // map 1, strategy configuration 4 (energy_aware combo 4: w1 = 20, w4 = 0), planner 1,
+  // robot 0, repetition 2: (((1 * 7 + 4) * 2 + 1) * 2 + 0) * 3 + 2 = 140.
+  const RunCoordinates c = plan.coordinates(140);
+  EXPECT_EQ(c.map, 1U);
+  EXPECT_EQ(c.strategy_entry, 0U);
+  EXPECT_EQ(c.strategy_combo, 4U);
+  EXPECT_EQ(c.planner, 1U);
+  EXPECT_EQ(c.robot, 0U);
+  EXPECT_EQ(c.repetition, 2);
+  const RunSpec spec = plan.run_spec(140);
+  EXPECT_EQ(spec.map.get(), plan.maps()[1].map.get());  // shared, not copied
+  EXPECT_EQ(spec.strategy, "energy_aware");
+  EXPECT_EQ(spec.strategy_params, (json{{"w1", 20}, {"w4", 0}}));
+  EXPECT_EQ(spec.planner, "dijkstra");
+  EXPECT_EQ(spec.robot.battery_capacity, 100.0);
+  EXPECT_EQ(spec.seed, derive_seed(9, "repetition/2"));
+}
+
+TEST(SweepPlan, RunSeedDependsOnlyOnTheRepetition) {
+  const SweepPlan plan = SweepPlan::from_json(cartesian(), "s.json");
+  for (std::uint64_t i = 0; i < plan.run_count(); ++i) {
+    EXPECT_EQ(plan.run_spec(i).seed, derive_seed(9, "repetition/" + std::to_string(i % 3))) << i;
+  }
+  EXPECT_NE(plan.run_spec(0).seed, plan.run_spec(1).seed);
+}
+
+TEST(SweepPlan, ZipGroupVariesTogether) {
+  json s = minimal();
+  s["strategies"] = json::parse(R"([{"name": "energy_aware",
+      "params": {"w1": [1, 2, 3], "w3": [4, 5, 6], "w4": [0, 1]}, "zip": [["w3", "w1"]]}])");
+  const SweepPlan plan = SweepPlan::from_json(s, "s.json");
+  const StrategyEntry& e = plan.strategies()[0];
+  EXPECT_EQ(e.count(), 6U);  // 3 zipped pairs x 2, not 3 x 3 x 2
+  ASSERT_EQ(e.groups.size(), 2U);
+  EXPECT_EQ(e.groups[0].names, (std::vector<std::string>{"w3", "w1"}));  // zip order inside the group
+  EXPECT_EQ(e.params_at(0), (json{{"w1", 1}, {"w3", 4}, {"w4", 0}}));
+  EXPECT_EQ(e.params_at(1), (json{{"w1", 1}, {"w3", 4}, {"w4", 1}}));
+  EXPECT_EQ(e.params_at(2), (json{{"w1", 2}, {"w3", 5}, {"w4", 0}}));
+  EXPECT_EQ(e.params_at(5), (json{{"w1", 3}, {"w3", 6}, {"w4", 1}}));
+}
+
+TEST(SweepPlan, ExhaustiveWeightSearchIsCountedAndDecodedLazily) {
+  json s = minimal();
+  s["strategies"] = json::parse(R"([{"name": "energy_aware", "params": {
+      "w1": {"range": [0, 250], "step": 1}, "w2": {"range": [0, 250], "step": 1},
+      "w3": {"range": [0, 250], "step": 1}, "w4": {"range": [0, 250], "step": 1}}}])");
+  s["repetitions"] = 2;
+  const SweepPlan plan = SweepPlan::from_json(s, "s.json");
+  const std::uint64_t weights = 251ULL * 251ULL * 251ULL * 251ULL;  // 3,969,126,001
+  EXPECT_EQ(plan.configuration_count(), weights);
+  EXPECT_EQ(plan.run_count(), 2 * weights);
+  for (const auto& g : plan.strategies()[0].groups) EXPECT_EQ(g.combos.size(), 251U);  // 4 x 251 values held
+
+  const RunCoordinates last = plan.coordinates(plan.run_count() - 1);
+  EXPECT_EQ(last.strategy_combo, weights - 1);
+  EXPECT_EQ(last.repetition, 1);
+  EXPECT_EQ(plan.run_spec(plan.run_count() - 1).strategy_params,
+            (json{{"w1", 250}, {"w2", 250}, {"w3", 250}, {"w4", 250}}));
+  const std::uint64_t combo = ((1ULL * 251 + 2) * 251 + 3) * 251 + 4;
+  EXPECT_EQ(plan.run_spec(combo * 2 + 1).strategy_params, (json{{"w1", 1}, {"w2", 2}, {"w3", 3}, {"w4", 4}}));
+}
+
+TEST(SweepPlan, MapSeedsExpandIntoOneMapPerSeed) {
+  json s = minimal();
+  s["maps"] = json::parse(R"([
+      {"generator": "rooms", "w": 30, "h": 20, "label": "r", "seeds": {"range": [1, 3], "step": 1}},
+      {"spec": "rooms:w=30,h=20", "seeds": [7, 8]}])");
+  const SweepPlan plan = SweepPlan::from_json(s, "s.json");
+  ASSERT_EQ(plan.maps().size(), 5U);
+  EXPECT_EQ(plan.maps()[0].label, "r seed=1");
+  EXPECT_EQ(plan.maps()[2].spec, (json{{"generator", "rooms"}, {"w", 30}, {"h", 20}, {"seed", 3}}));
+  EXPECT_EQ(plan.maps()[3].label, "rooms:w=30,h=20,seed=7");
+  EXPECT_EQ(plan.maps()[4].spec, (json{{"generator", "rooms"}, {"w", 30}, {"h", 20}, {"seed", 8}}));
+  EXPECT_FALSE(plan.maps()[0].free_space);
+  EXPECT_NE(plan.maps()[0].map->occupied.data(), plan.maps()[1].map->occupied.data());
+  EXPECT_EQ(plan.run_count(), 5U);
+}
+
+TEST(SweepPlan, RobotLeavesSweepAsACartesianProductInPathOrder) {
+  json s = minimal();
+  s["robot"] = json::parse(R"({"sensor": {"range_m": {"range": [4, 8], "step": 2}}, "battery": [400, 800],
+                               "dock": [1, 1], "energy": "mei2006"})");
+  const SweepPlan plan = SweepPlan::from_json(s, "s.json");
+  ASSERT_EQ(plan.robots().size(), 6U);
+  // /battery sorts before /sensor/range_m, so battery varies slowest.
+  EXPECT_EQ(plan.robots()[0].label, "battery=400 sensor.range_m=4");
+  EXPECT_EQ(plan.robots()[1].label, "battery=400 sensor.range_m=6");
+  EXPECT_EQ(plan.robots()[5].label, "battery=800 sensor.range_m=8");
+  EXPECT_EQ(plan.robots()[4].params.sensor.range_m, 6.0);
+  EXPECT_EQ(plan.robots()[4].params.battery_capacity, 800.0);
+  for (const auto& r : plan.robots()) {
+    EXPECT_EQ(r.params.dock, (Cell{1, 1}));  // [x, y] is one value, not a sweep
+    EXPECT_EQ(r.params.energy.preset, "mei2006");
+  }
+}
+
+TEST(SweepPlan, RobotArrayFieldsSweepAsListsOfArrays) {
+  json s = minimal();
+  s["robot"] = json::parse(R"({"dock": [[1, 1], [2, 3]], "energy": ["distance", {"preset": "mei2006"}]})");
+  const SweepPlan plan = SweepPlan::from_json(s, "s.json");
+  ASSERT_EQ(plan.robots().size(), 4U);
+  EXPECT_EQ(plan.robots()[2].params.dock, (Cell{2, 3}));
+  EXPECT_EQ(plan.robots()[1].params.energy.preset, "mei2006");
+  EXPECT_EQ(plan.robots()[1].label, R"(dock=[1,1] energy={"preset":"mei2006"})");
+}
+
+TEST(SweepPlan, ProgressStepMayBeGivenAtTheTopLevel) {
+  json s = minimal();
+  s["progress_step_m"] = 2.5;
+  EXPECT_EQ(SweepPlan::from_json(s, "s.json").sim().progress_step_m, 2.5);
+}
+
+// Guards against accidental changes of run keys, which would make every existing output
+// unresumable: the key of the minimal sweep's only run, computed once with this build
+// (FNV-1a 64 of the canonical JSON documented in sweep_plan.hpp).
+TEST(SweepPlan, RunKeyGolden) {
+  const SweepPlan plan = SweepPlan::from_json(minimal(), "s.json");
+  EXPECT_EQ(plan.run_key(0), "6ac3e10ce1b340f0");
+  EXPECT_EQ(plan.run_key(0).size(), 16U);
+}
+
+TEST(SweepPlan, RunKeyChangesWithEverySingleField) {
+  const json base = json::parse(R"({"schema_version": 1, "name": "k", "maps": ["free:w=20,h=20"],
+      "strategies": [{"name": "energy_aware", "params": {"w1": 10}}], "robot": {"battery": 400}})");
+  auto key = [](const json& s, std::uint64_t index = 0) {
+    return SweepPlan::from_json(s, "s.json").run_key(index);
+  };
+  std::vector<json> variants;
+  auto vary = [&](const std::string& pointer, const json& value) {
+    json s = base;
+    s[json::json_pointer(pointer)] = value;
+    variants.push_back(s);
+  };
+  vary("/maps/0", "free:w=21,h=20");
+  vary("/strategies/0/params/w1", 11);
+  vary("/strategies/0", json{{"name", "closest_frontier"}});
+  vary("/planners", json{"dijkstra"});
+  vary("/robot/battery", 401);
+  vary("/robot/sensor", json{{"range_m", 11}});
+  vary("/robot/dock", json{2, 2});
+  vary("/sim", json{{"stuck_decisions", 50}});
+  vary("/seed", 1);
+  std::set<std::string> keys{key(base)};
+  for (const auto& v : variants) EXPECT_TRUE(keys.insert(key(v)).second) << v.dump();
+  json reps = base;
+  reps["repetitions"] = 2;
+  EXPECT_EQ(key(reps, 0), key(base));
+  EXPECT_TRUE(keys.insert(key(reps, 1)).second);
+}
+
+TEST(SweepPlan, RunKeyIsTheSameForTheSameConfigurationInAnySweep) {
+  const json base = json::parse(R"({"schema_version": 1, "name": "k", "maps": ["free:w=20,h=20"],
+      "strategies": [{"name": "energy_aware", "params": {"w1": 10}}]})");
+  const SweepPlan plan = SweepPlan::from_json(base, "s.json");
+  const std::string key = plan.run_key(0);
+  const Cell start = plan.maps()[0].map->start;
+
+  json other = base;
+  other["name"] = "other";
+  other["description"] = "another sweep";
+  other["maps"] =
+      json::parse(R"(["rooms:w=30,h=20,seed=1", {"generator": "free", "w": 20, "h": 20, "label": "f"}])");
+  other["strategies"] =
+      json::parse(R"([{"name": "energy_aware", "label": "ea", "params": {"w1": [5, 10.0]}}])");
+  other["robot"] = json{{"dock", {start.x, start.y}}};  // the default dock, written out
+  const SweepPlan o = SweepPlan::from_json(other, "o.json");
+  ASSERT_EQ(o.run_count(), 4U);
+  EXPECT_EQ(o.run_key(3), key);  // map 1, w1 = 10.0: defaults resolved, labels ignored
+  EXPECT_NE(o.run_key(2), key);
+}
+
+}  // namespace
+}  // namespace fsweep

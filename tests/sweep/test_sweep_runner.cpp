@@ -1,0 +1,462 @@
+// The sweep runner: outputs independent of the thread count, resume after SIGKILL, torn lines,
+// Ctrl-C, changed sweeps, failed runs, the competitive-ratio columns and the manifest.
+#include <gtest/gtest.h>
+
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "engine/sim/run_table.hpp"
+#include "engine/sweep/csv_journal.hpp"
+#include "engine/sweep/sweep_plan.hpp"
+#include "engine/sweep/sweep_runner.hpp"
+#include "engine/world/config_error.hpp"
+
+extern char** environ;  // NOLINT(readability-redundant-declaration): for posix_spawn
+
+namespace fsweep {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+constexpr const char* kChildSweepEnv = "FSWEEP_RUNNER_CHILD_SWEEP";
+constexpr const char* kChildOutEnv = "FSWEEP_RUNNER_CHILD_OUT";
+
+std::string temp_dir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("fsweep_runner_" + name + "_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir.string();
+}
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+void write_file(const std::string& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out << text;
+}
+
+/// 2 maps x 3 strategy configurations x 2 sensor ranges x 4 repetitions = 48 runs of varied
+/// length (so that with 2 threads they finish out of order).
+json small_sweep() {
+  return json::parse(R"({
+    "schema_version": 1,
+    "name": "runner_test",
+    "maps": ["rooms:w=30,h=24,door=3,seed=1", "rooms:w=24,h=20,door=2,seed=2"],
+    "strategies": [{"name": "closest_frontier"}, {"name": "energy_aware", "params": {"w1": [0, 10]}}],
+    "robot": {"sensor": {"range_m": [4, 7]}},
+    "repetitions": 4,
+    "seed": 11
+  })");
+}
+
+/// 96 longer runs (about 0.5 s on 2 threads), for killing and interrupting mid-way.
+json long_sweep() {
+  json sweep = small_sweep();
+  sweep["maps"] = {"rooms:w=60,h=45,door=3,seed=1", "rooms:w=50,h=40,door=3,seed=2"};
+  sweep["repetitions"] = 8;
+  return sweep;
+}
+
+RunnerReport run(const json& sweep, const std::string& dir, int threads, bool fresh = false) {
+  RunnerOptions o;
+  o.threads = threads;
+  o.out_dir = dir;
+  o.progress = false;
+  o.fresh = fresh;
+  return run_sweep(SweepPlan::from_json(sweep, "test.json"), o);
+}
+
+/// CSV records (quoted newlines stay inside their record), without the newlines.
+std::vector<std::string> records(const std::string& text) {
+  std::vector<std::string> out;
+  std::string cur;
+  bool quoted = false;
+  for (const char c : text) {
+    if (c == '"') quoted = !quoted;
+    if (c == '\n' && !quoted) {
+      out.push_back(cur);
+      cur.clear();
+    } else {
+      cur += c;
+    }
+  }
+  if (!cur.empty()) out.push_back(cur);
+  return out;
+}
+
+/// The CSV text with the columns named `*_time_s` removed: they measure the machine, so they
+/// are the only cells allowed to differ between equivalent runs.
+std::string without_timing(const std::string& text) {
+  const auto recs = records(text);
+  if (recs.empty()) return {};
+  const auto header = split_csv_line(recs[0]);
+  std::vector<bool> keep(header.size());
+  for (std::size_t i = 0; i < header.size(); ++i) keep[i] = !header[i].ends_with("_time_s");
+  std::string out;
+  for (const auto& r : recs) {
+    const auto f = split_csv_line(r);
+    EXPECT_EQ(f.size(), header.size()) << r;
+    for (std::size_t i = 0; i < f.size() && i < keep.size(); ++i) {
+      if (keep[i]) out += csv_field(f[i]) + ",";
+    }
+    out += "\n";
+  }
+  return out;
+}
+
+std::vector<std::string> column(const std::string& csv_text, const std::string& name) {
+  const auto recs = records(csv_text);
+  const auto header = split_csv_line(recs.at(0));
+  const auto it = std::find(header.begin(), header.end(), name);
+  EXPECT_NE(it, header.end()) << name;
+  if (it == header.end()) return {};
+  const auto c = static_cast<std::size_t>(it - header.begin());
+  std::vector<std::string> out;
+  for (std::size_t i = 1; i < recs.size(); ++i) out.push_back(split_csv_line(recs[i]).at(c));
+  return out;
+}
+
+void expect_same_outputs(const std::string& a, const std::string& b) {
+  const std::string runs_a = read_file(a + "/runs.csv");
+  ASSERT_FALSE(runs_a.empty());
+  EXPECT_EQ(without_timing(runs_a), without_timing(read_file(b + "/runs.csv")));
+  EXPECT_EQ(read_file(a + "/progress.csv"), read_file(b + "/progress.csv"));
+}
+
+std::size_t data_rows(const std::string& path) { return records(read_file(path)).size() - 1; }
+
+/// Starts this test binary again running only SweepRunnerChild (the sweep named by the
+/// environment): a fresh process, as fork() would not be safe after oneTBB started threads.
+pid_t spawn_child(const std::string& sweep_file, const std::string& out) {
+  ::setenv(kChildSweepEnv, sweep_file.c_str(), 1);
+  ::setenv(kChildOutEnv, out.c_str(), 1);
+  std::string self = fs::read_symlink("/proc/self/exe").string();
+  std::string filter = "--gtest_filter=SweepRunnerChild.RunsTheSweepNamedInTheEnvironment";
+  char* argv[] = {self.data(), filter.data(), nullptr};
+  pid_t pid = -1;
+  const int rc = ::posix_spawn(&pid, self.c_str(), nullptr, nullptr, argv, environ);
+  ::unsetenv(kChildSweepEnv);
+  ::unsetenv(kChildOutEnv);
+  return rc == 0 ? pid : -1;
+}
+
+TEST(SweepRunnerChild, RunsTheSweepNamedInTheEnvironment) {
+  const char* sweep = std::getenv(kChildSweepEnv);
+  const char* out = std::getenv(kChildOutEnv);
+  if (sweep == nullptr || out == nullptr) GTEST_SKIP() << "only runs as the child of ResumeAfterSigkill";
+  RunnerOptions o;
+  o.threads = 2;
+  o.out_dir = out;
+  o.progress = false;
+  (void)run_sweep(SweepPlan::from_file(sweep), o);
+}
+
+TEST(SweepRunner, ThreadsDoNotChangeOutputs) {
+  const std::string one = temp_dir("threads1");
+  const std::string two = temp_dir("threads2");
+  const RunnerReport r1 = run(small_sweep(), one, 1);
+  const RunnerReport r2 = run(small_sweep(), two, 2);
+  EXPECT_EQ(r1.total, 48U);
+  EXPECT_EQ(r1.ran, 48U);
+  EXPECT_EQ(r2.ran, 48U);
+  EXPECT_FALSE(r2.interrupted);
+  EXPECT_EQ(data_rows(one + "/runs.csv"), 48U);
+  expect_same_outputs(one, two);
+  // Rows are in run-index order.
+  const auto index = column(read_file(two + "/runs.csv"), "run_index");
+  for (std::size_t i = 0; i < index.size(); ++i) EXPECT_EQ(index[i], std::to_string(i));
+  fs::remove_all(one);
+  fs::remove_all(two);
+}
+
+TEST(SweepRunner, ResumeAfterSigkillEqualsUninterrupted) {
+  const json sweep = long_sweep();
+  const std::string ref = temp_dir("sigkill_ref");
+  const std::string killed = temp_dir("sigkill");
+  ASSERT_EQ(run(sweep, ref, 2).ran, 96U);
+
+  const std::string sweep_file = killed + "/sweep.json";
+  write_file(sweep_file, sweep.dump(2));
+  const pid_t pid = spawn_child(sweep_file, killed);
+  ASSERT_GT(pid, 0);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (std::chrono::steady_clock::now() < deadline) {
+    if (fs::exists(killed + "/runs.csv") && data_rows(killed + "/runs.csv") >= 3) break;
+    std::this_thread::sleep_for(std::chrono::microseconds(500));
+  }
+  ::kill(pid, SIGKILL);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "the child finished before it could be killed";
+  const std::size_t done_at_kill = data_rows(killed + "/runs.csv");
+  ASSERT_LT(done_at_kill, 96U);
+  EXPECT_EQ(nlohmann::json::parse(read_file(killed + "/manifest.json"))["status"], "running");
+
+  const RunnerReport r = run(sweep, killed, 2);
+  EXPECT_EQ(r.skipped + r.ran, 96U);
+  EXPECT_GE(r.skipped, 3U);
+  expect_same_outputs(ref, killed);
+  EXPECT_EQ(nlohmann::json::parse(read_file(killed + "/manifest.json"))["status"], "complete");
+  fs::remove_all(ref);
+  fs::remove_all(killed);
+}
+
+TEST(SweepRunner, TornLinesAreDroppedAndRedone) {
+  const std::string ref = temp_dir("torn_ref");
+  const std::string torn = temp_dir("torn");
+  ASSERT_EQ(run(small_sweep(), ref, 2).ran, 48U);
+
+  // runs.csv: the header, 10 complete rows and half of the 11th, with no newline; progress.csv:
+  // the rows of runs 0..10 (run 10 has no runs.csv row: it was not done) and half a row of 11.
+  const auto run_recs = records(read_file(ref + "/runs.csv"));
+  std::string runs = run_recs[0] + "\n";
+  for (int i = 1; i <= 10; ++i) runs += run_recs[static_cast<std::size_t>(i)] + "\n";
+  runs += run_recs[11].substr(0, run_recs[11].size() / 2);
+  std::string progress;
+  const auto progress_recs = records(read_file(ref + "/progress.csv"));
+  progress += progress_recs[0] + "\n";
+  std::string run11;
+  for (std::size_t i = 1; i < progress_recs.size(); ++i) {
+    const auto f = split_csv_line(progress_recs[i]);
+    if (std::stoi(f[0]) <= 10) progress += progress_recs[i] + "\n";
+    if (std::stoi(f[0]) == 11 && run11.empty()) run11 = progress_recs[i];
+  }
+  ASSERT_FALSE(run11.empty());
+  progress += run11.substr(0, run11.size() / 2);
+  write_file(torn + "/runs.csv", runs);
+  write_file(torn + "/progress.csv", progress);
+  fs::copy_file(ref + "/manifest.json", torn + "/manifest.json");
+
+  const RunnerReport r = run(small_sweep(), torn, 2);
+  EXPECT_EQ(r.skipped, 10U);
+  EXPECT_EQ(r.ran, 38U);
+  expect_same_outputs(ref, torn);
+  fs::remove_all(ref);
+  fs::remove_all(torn);
+}
+
+TEST(SweepRunner, InterruptStopsAfterFlushingAndResumes) {
+  const json sweep = long_sweep();
+  const std::string ref = temp_dir("sigint_ref");
+  const std::string dir = temp_dir("sigint");
+  ASSERT_EQ(run(sweep, ref, 2).ran, 96U);
+
+  // A late SIGINT (after run_sweep restored the handlers) must not end the test process.
+  struct sigaction ignore {};
+  struct sigaction previous {};
+  ignore.sa_handler = [](int) {};
+  ::sigaction(SIGINT, &ignore, &previous);
+  std::thread interrupter([&] {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    while (std::chrono::steady_clock::now() < deadline) {
+      if (fs::exists(dir + "/runs.csv") && data_rows(dir + "/runs.csv") >= 3) break;
+      std::this_thread::sleep_for(std::chrono::microseconds(500));
+    }
+    ::kill(::getpid(), SIGINT);
+  });
+  const RunnerReport first = run(sweep, dir, 2);
+  interrupter.join();
+  ::sigaction(SIGINT, &previous, nullptr);
+  ASSERT_TRUE(first.interrupted) << "the sweep finished before the interrupt";
+  EXPECT_LT(first.ran, 96U);
+  // Everything that ran was flushed: one complete row per run.
+  EXPECT_EQ(data_rows(dir + "/runs.csv"), first.ran);
+  EXPECT_EQ(read_file(dir + "/runs.csv").back(), '\n');
+  EXPECT_EQ(nlohmann::json::parse(read_file(dir + "/manifest.json"))["status"], "interrupted");
+  EXPECT_FALSE(fs::exists(dir + "/summary.csv"));
+
+  const RunnerReport second = run(sweep, dir, 2);
+  EXPECT_FALSE(second.interrupted);
+  EXPECT_EQ(second.skipped, first.ran);
+  expect_same_outputs(ref, dir);
+  fs::remove_all(ref);
+  fs::remove_all(dir);
+}
+
+TEST(SweepRunner, ResumeSkipsDone) {
+  const std::string dir = temp_dir("skip");
+  ASSERT_EQ(run(small_sweep(), dir, 2).ran, 48U);
+  const std::string runs = read_file(dir + "/runs.csv");
+  const std::string progress = read_file(dir + "/progress.csv");
+  const RunnerReport again = run(small_sweep(), dir, 2);
+  EXPECT_EQ(again.ran, 0U);
+  EXPECT_EQ(again.skipped, 48U);
+  EXPECT_FALSE(again.interrupted);
+  EXPECT_EQ(read_file(dir + "/runs.csv"), runs);  // byte-identical, timing columns included
+  EXPECT_EQ(read_file(dir + "/progress.csv"), progress);
+  fs::remove_all(dir);
+}
+
+TEST(SweepRunner, ChangedSweepRefusesWithoutFresh) {
+  const std::string dir = temp_dir("changed");
+  ASSERT_EQ(run(small_sweep(), dir, 2).ran, 48U);
+  json changed = small_sweep();
+  changed["seed"] = 12;
+  try {
+    (void)run(changed, dir, 2);
+    FAIL() << "a changed sweep was accepted";
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("--fresh"), std::string::npos) << e.what();
+  }
+  const RunnerReport fresh = run(changed, dir, 2, true);
+  EXPECT_EQ(fresh.ran, 48U);
+  EXPECT_EQ(fresh.skipped, 0U);
+  EXPECT_EQ(column(read_file(dir + "/runs.csv"), "seed").size(), 48U);
+
+  // Without the manifest, runs.csv's columns still tell a different sweep apart.
+  fs::remove(dir + "/manifest.json");
+  json other = small_sweep();
+  other["strategies"] = json::parse(R"([{"name": "closest_frontier"}])");
+  EXPECT_THROW((void)run(other, dir, 2), ConfigError);
+  fs::remove_all(dir);
+}
+
+TEST(SweepRunner, FailedRunIsRecorded) {
+  const std::string dir = temp_dir("failed");
+  json sweep = small_sweep();
+  sweep["sim"] = {{"max_steps", 5}};
+  const RunnerReport r = run(sweep, dir, 2);
+  EXPECT_EQ(r.ran, 48U);
+  EXPECT_FALSE(r.interrupted);
+  const auto reasons = column(read_file(dir + "/runs.csv"), "end_reason");
+  ASSERT_EQ(reasons.size(), 48U);
+  for (const auto& reason : reasons) EXPECT_EQ(reason, "step_limit");
+  const auto detail = column(read_file(dir + "/runs.csv"), "end_detail");
+  EXPECT_NE(detail.at(0).find("step cap"), std::string::npos) << detail.at(0);
+  fs::remove_all(dir);
+}
+
+TEST(SweepRunner, CompetitiveRatioColumns) {
+  // Free space with a battery: the star-pattern optimum applies. mei2006 costs 1 per cell
+  // length (per_metre 0), so at 0.5 m per cell straight travel costs 2 per metre.
+  const json sweep = json::parse(R"({
+    "schema_version": 1,
+    "name": "competitive_test",
+    "maps": ["free:w=31,h=31", "free:w=31,h=31,res=0.5", "rooms:w=30,h=24,door=3,seed=1"],
+    "strategies": [{"name": "closest_frontier"}],
+    "robot": {"sensor": {"range_m": 5}, "battery": 60, "energy": ["distance", "mei2006"]}
+  })");
+  const std::string dir = temp_dir("competitive");
+  ASSERT_EQ(run(sweep, dir, 2).ran, 6U);
+  const std::string csv = read_file(dir + "/runs.csv");
+  const auto optimum = column(csv, "optimal_distance_m");
+  const auto ratio = column(csv, "competitive_ratio");
+  const auto distance = column(csv, "distance_m");
+  // Hand calculation, d* = pi r^2 / (2 r_s) with r_s = 5 m:
+  // distance model: r = 60 / 1 = 60 m -> d* = 3600 pi / 10 = 1130.97 m (both free maps);
+  // mei2006 at 1 m/cell: r = 60 / (0 + 1 / 1) = 60 m -> the same;
+  // mei2006 at 0.5 m/cell: r = 60 / (0 + 1 / 0.5) = 30 m -> d* = 900 pi / 10 = 282.74 m.
+  const double d60 = M_PI * 60.0 * 60.0 / 10.0;
+  const double d30 = M_PI * 30.0 * 30.0 / 10.0;
+  const double expected[] = {d60, d60, d60, d30};
+  for (std::size_t i = 0; i < 4; ++i) {
+    ASSERT_FALSE(optimum[i].empty()) << i;
+    EXPECT_NEAR(std::stod(optimum[i]), expected[i], 1e-9 * expected[i]) << i;
+    EXPECT_NEAR(std::stod(ratio[i]), std::stod(distance[i]) / expected[i], 1e-12) << i;
+    EXPECT_GT(std::stod(ratio[i]), 0.0) << i;
+  }
+  // Not free space: empty cells.
+  for (std::size_t i = 4; i < 6; ++i) {
+    EXPECT_TRUE(optimum[i].empty()) << i;
+    EXPECT_TRUE(ratio[i].empty()) << i;
+  }
+  fs::remove_all(dir);
+}
+
+TEST(SweepRunner, ManifestHasTheFields) {
+  const std::string dir = temp_dir("manifest");
+  const RunnerReport r = run(small_sweep(), dir, 2);
+  const json m = json::parse(read_file(dir + "/manifest.json"));
+  for (const char* key : {"sweep", "sweep_file", "sweep_hash", "name", "runs", "git_revision", "compiler", "libraries",
+                          "host", "cpu_model", "threads", "start_utc", "end_utc", "wall_s", "runs_per_s", "status",
+                          "seed", "objective"}) {
+    EXPECT_TRUE(m.contains(key)) << key;
+  }
+  EXPECT_EQ(m["sweep"], small_sweep());
+  EXPECT_EQ(m["sweep_file"], "");
+  EXPECT_EQ(m["sweep_hash"].get<std::string>().size(), 16U);
+  EXPECT_EQ(m["name"], "runner_test");
+  EXPECT_EQ(m["status"], "complete");
+  EXPECT_EQ(m["threads"], 2);
+  EXPECT_EQ(m["runs"]["total"], 48);
+  EXPECT_EQ(m["runs"]["done"], 48);
+  EXPECT_EQ(m["runs"]["ran"], 48);
+  EXPECT_EQ(m["runs"]["skipped"], 0);
+  EXPECT_EQ(m["runs"]["failed"], 0);
+  EXPECT_GT(m["runs_per_s"].get<double>(), 0.0);
+  EXPECT_DOUBLE_EQ(m["wall_s"].get<double>(), r.wall_s);
+  EXPECT_TRUE(m["libraries"].contains("oneTBB"));
+  EXPECT_TRUE(m["libraries"].contains("nlohmann_json"));
+  EXPECT_EQ(m["start_utc"].get<std::string>().size(), 20U);  // 2024-05-01T12:34:56Z
+  EXPECT_EQ(m["end_utc"].get<std::string>().back(), 'Z');
+  fs::remove_all(dir);
+}
+
+TEST(SweepRunner, ShardsPartitionTheRuns) {
+  const std::string ref = temp_dir("shard_ref");
+  const std::string dir = temp_dir("shards");
+  ASSERT_EQ(run(small_sweep(), ref, 2).ran, 48U);
+  const auto ref_rows = records(without_timing(read_file(ref + "/runs.csv")));
+  std::vector<std::string> merged(ref_rows.size());
+  merged[0] = ref_rows[0];
+  for (std::uint64_t s = 0; s < 3; ++s) {
+    RunnerOptions o;
+    o.threads = 2;
+    o.out_dir = dir;
+    o.progress = false;
+    o.shard_index = s;
+    o.shard_count = 3;
+    const RunnerReport r = run_sweep(SweepPlan::from_json(small_sweep(), ""), o);
+    EXPECT_EQ(r.total, 16U);
+    EXPECT_EQ(r.out_dir, dir + "/shard-" + std::to_string(s) + "-of-3");
+    const auto rows = records(without_timing(read_file(r.out_dir + "/runs.csv")));
+    ASSERT_EQ(rows.size(), 17U);
+    EXPECT_EQ(rows[0], ref_rows[0]);  // the whole sweep's header
+    for (std::size_t i = 1; i < rows.size(); ++i) {
+      const std::size_t index = std::stoul(split_csv_line(rows[i])[0]);
+      EXPECT_EQ(index % 3, s);
+      merged.at(index + 1) = rows[i];
+    }
+  }
+  EXPECT_EQ(merged, ref_rows);
+  fs::remove_all(ref);
+  fs::remove_all(dir);
+}
+
+TEST(SweepRunner, BadOptionsAreConfigErrors) {
+  const SweepPlan plan = SweepPlan::from_json(small_sweep(), "");
+  RunnerOptions o;
+  o.out_dir = temp_dir("bad_options");
+  o.progress = false;
+  o.shard_index = 2;
+  o.shard_count = 2;
+  EXPECT_THROW((void)run_sweep(plan, o), ConfigError);
+  o.shard_index = 0;
+  o.shard_count = 1;
+  o.threads = -1;
+  EXPECT_THROW((void)run_sweep(plan, o), ConfigError);
+  fs::remove_all(o.out_dir);
+}
+
+}  // namespace
+}  // namespace fsweep
