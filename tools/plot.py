@@ -79,12 +79,14 @@ def config_labels(header, rows):
     return labels
 
 
-def shown_configs(best_rows, top):
-    """config_ids to draw: all, or the best `top` by rank; and a note for titles."""
+def shown_configs(best_header, best_rows, top):
+    """config_ids to draw in best.csv's order: all, or the best `top`; and a note for titles."""
     ids = [r["config_id"] for r in best_rows]
+    median_col = next((c for c in best_header if c.endswith(".median")), "objective.median")
+    objective = median_col[:-len(".median")]
     if len(ids) <= top:
-        return ids, ""
-    return ids[:top], f" (best {top} of {len(ids)})"
+        return ids, f"\nconfigurations by median {objective}"
+    return ids[:top], f"\nbest {top} of {len(ids)} configurations by median {objective}"
 
 
 def plot_progress(progress_rows, ids, labels, note, out):
@@ -106,7 +108,7 @@ def plot_progress(progress_rows, ids, labels, note, out):
                 marker="o" if len(d) == 1 else None, label=f"{labels[config_id]} (n={rows[0]['n']})")
     ax.set_xlabel("distance travelled (m)", fontsize=11)
     ax.set_ylabel("explored area (m²)", fontsize=11)
-    ax.set_title("Explored area vs distance: mean, q05–q95 band" + note, fontsize=12)
+    ax.set_title("Explored area vs distance: mean, q05–q95 band" + note, fontsize=11)
     ax.grid(True, alpha=0.3)
     ax.set_xlim(left=0)
     ax.set_ylim(bottom=0)
@@ -141,7 +143,7 @@ def plot_metrics(summary_header, summary_rows, ids, labels, note, out):
         ax.grid(True, axis="x", alpha=0.3)
     for k in range(len(metrics), rows_n * cols):
         axes[k // cols][k % cols].set_visible(False)
-    fig.suptitle("Median per configuration, bars q05–q95" + note, fontsize=12)
+    fig.suptitle("Median per configuration, bars q05–q95" + note, fontsize=11)
     fig.tight_layout()
     fig.savefig(os.path.join(out, "metrics.png"), **SAVE)
     plt.close(fig)
@@ -221,7 +223,7 @@ def main():
     _, progress_rows = read_csv(os.path.join(args.dir, "progress_summary.csv"))
     best_header, best_rows = read_csv(os.path.join(args.dir, "best.csv"))
     labels = config_labels(summary_header, summary_rows)
-    ids, note = shown_configs(best_rows, args.top)
+    ids, note = shown_configs(best_header, best_rows, args.top)
 
     plot_progress(progress_rows, ids, labels, note, out)
     plot_metrics(summary_header, summary_rows, ids, labels, note, out)

@@ -260,7 +260,8 @@ void write_summary(const std::string& path, RunsTable& runs) {
   out.close();
 }
 
-void write_progress_summary(const std::string& path, std::vector<ProgressBands>& bands) {
+void write_progress_summary(const std::string& path, const std::string& source,
+                            std::vector<ProgressBands>& bands) {
   CsvOut out(path);
   out.row({"config_id", "distance_m", "n", "explored_area_m2.mean", "explored_area_m2.q05",
            "explored_area_m2.q50", "explored_area_m2.q95"});
@@ -273,10 +274,11 @@ void write_progress_summary(const std::string& path, std::vector<ProgressBands>&
     const auto write_bin = [&](double distance_m) {
       const Stats s = describe(values);
       if (values.size() != b.finals.size()) {
-        throw ConfigError(path, "the runs of configuration " + std::to_string(id) +
-                                    " are not sampled on a common distance grid (" +
-                                    std::to_string(values.size()) + " of " + std::to_string(b.finals.size()) +
-                                    " runs at " + format_number(distance_m) + " m)");
+        throw ConfigError(source, "the runs of configuration " + std::to_string(id) +
+                                      " are not sampled on a common distance grid (" +
+                                      std::to_string(values.size()) + " of " +
+                                      std::to_string(b.finals.size()) + " runs at " +
+                                      format_number(distance_m) + " m)");
       }
       out.row({std::to_string(id), format_number(distance_m), std::to_string(values.size()), cell(s[0]),
                cell(s[3]), cell(s[5]), cell(s[7])});
@@ -381,7 +383,7 @@ void aggregate(const std::string& dir, const AggregateOptions& options) {
   RunsTable runs = read_runs(dir + "/runs.csv");
   std::vector<ProgressBands> bands = read_progress(dir + "/progress.csv", runs);
   write_best(dir + "/best.csv", runs, objective);
-  write_progress_summary(dir + "/progress_summary.csv", bands);
+  write_progress_summary(dir + "/progress_summary.csv", dir + "/progress.csv", bands);
   write_summary(dir + "/summary.csv", runs);
 }
 

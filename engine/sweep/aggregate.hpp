@@ -40,7 +40,8 @@
 /// - Errors: a missing file, a row with a different number of fields than the header, an
 ///   unclosed quote, a last line without a newline (torn write), a non-numeric metric, a
 ///   run_key twice in runs.csv, a run's progress rows split or with decreasing distance: each
-///   throws ConfigError at `<file>:<line>`.
+///   throws ConfigError at `<file>:<line>`; runs of one configuration sampled on different
+///   distance grids throw ConfigError naming progress.csv.
 
 #include <string>
 #include <vector>

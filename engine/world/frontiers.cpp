@@ -184,25 +184,27 @@ std::vector<FrontierCluster> FrontierMap::clusters(const KnownMap& known, double
   const auto for_each_link = [&](const Node c, auto&& visit) {
     const bool interior = c.x > 0 && c.y > 0 && c.x < w - 1 && c.y < h - 1;
     const auto step = [&]<std::size_t K>(std::integral_constant<std::size_t, K>) {
-      constexpr int dx = kDirections[K].x;
-      constexpr int dy = kDirections[K].y;
-      const int nx = c.x + dx;
-      const int ny = c.y + dy;
+      constexpr int kDx = kDirections[K].x;
+      constexpr int kDy = kDirections[K].y;
+      const int nx = c.x + kDx;
+      const int ny = c.y + kDy;
       if (!interior && (nx < 0 || ny < 0 || nx >= w || ny >= h)) return;
-      const int n = c.i + dy * w + dx;
+      const int n = c.i + kDy * w + kDx;
       if ((flags[n] & (kFrontier | kPlaced)) != kFrontier) return;
       if (skip != nullptr && skip[n] != 0) return;
       // Diagonal: both cells beside it must be known free.
-      if constexpr (dx != 0 && dy != 0) {
-        if (!allow_corner_cutting && (state[c.i + dx] != CellState::Free || state[c.i + dy * w] != CellState::Free)) {
+      if constexpr (kDx != 0 && kDy != 0) {
+        if (!allow_corner_cutting &&
+            (state[c.i + kDx] != CellState::Free || state[c.i + kDy * w] != CellState::Free)) {
           return;
         }
       }
       visit(Node{n, nx, ny});
     };
-    [&]<std::size_t... K>(std::index_sequence<K...>) {
+    const auto steps = [&]<std::size_t... K>(std::index_sequence<K...>) {
       (step(std::integral_constant<std::size_t, K>{}), ...);
-    }(std::make_index_sequence<kDirections.size()>{});
+    };
+    steps(std::make_index_sequence<kDirections.size()>{});
   };
 
   // Appends the cluster of `members` (reordered by index here).

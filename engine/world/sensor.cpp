@@ -147,31 +147,43 @@ std::vector<Check> ray_checks(int ex, int ey, int dx, int dy) {
 
 /// The stored form of `c` (see Crossing).
 Crossing compact(const Check& c) {
-  return Crossing{static_cast<std::int16_t>(c.a_dx), static_cast<std::int16_t>(c.a_dy),
-                  static_cast<std::int8_t>(c.b_dx - c.a_dx), static_cast<std::int8_t>(c.b_dy - c.a_dy), 0, 0};
+  Crossing out;
+  out.dx = static_cast<std::int16_t>(c.a_dx);
+  out.dy = static_cast<std::int16_t>(c.a_dy);
+  out.b_dx = static_cast<std::int8_t>(c.b_dx - c.a_dx);
+  out.b_dy = static_cast<std::int8_t>(c.b_dy - c.a_dy);
+  return out;
 }
 
-/// The checks of one ray as a set, to ask whether another check implies that this ray is
-/// blocked: a check blocks when all of its cells (one, or two for a corner) are occupied, so
-/// check c implies the ray is blocked when the ray has a check whose cells are among c's.
+/// The checks of one ray as a set over the offsets within `r` cells, to ask whether another
+/// check implies that this ray is blocked: a check blocks when all of its cells (one, or two
+/// for a corner) are occupied, so check c implies the ray is blocked when the ray has a check
+/// whose cells are among c's. Dense stamped arrays make assign() and each question O(1) per
+/// check, for O(r^2) memory (the order of the tables themselves).
 class CheckSet {
  public:
-  explicit CheckSet(const std::vector<Check>& ray) {
+  explicit CheckSet(int r)
+      : r_(r + 1),
+        side_(2 * r + 3),
+        cells_(static_cast<std::size_t>(side_) * static_cast<std::size_t>(side_), 0),
+        corners_(2 * cells_.size(), 0) {}
+
+  /// Makes this the set of `ray`'s checks.
+  void assign(const std::vector<Check>& ray) {
+    ++stamp_;
     for (const Check& c : ray) {
-      if (c.a_dx == c.b_dx && c.a_dy == c.b_dy) {
-        cells_.push_back(key(c.a_dx, c.a_dy));
+      if (is_cell(c)) {
+        cells_[cell(c.a_dx, c.a_dy)] = stamp_;
       } else {
-        corners_.push_back(corner_key(c));
+        corners_[corner(c)] = stamp_;
       }
     }
-    std::sort(cells_.begin(), cells_.end());
-    std::sort(corners_.begin(), corners_.end());
   }
 
   /// True when `c` blocking implies this ray is blocked.
   [[nodiscard]] bool blocked_by(const Check& c) const {
-    return has_cell(c.a_dx, c.a_dy) || has_cell(c.b_dx, c.b_dy) ||
-           std::binary_search(corners_.begin(), corners_.end(), corner_key(c));
+    return cells_[cell(c.a_dx, c.a_dy)] == stamp_ || cells_[cell(c.b_dx, c.b_dy)] == stamp_ ||
+           (!is_cell(c) && corners_[corner(c)] == stamp_);
   }
 
   /// True when `other` being blocked implies this ray is blocked (every check of `other`
@@ -181,20 +193,25 @@ class CheckSet {
   }
 
  private:
-  static std::uint32_t key(int x, int y) {
-    return (static_cast<std::uint32_t>(x + 32768) << 16) | static_cast<std::uint32_t>(y + 32768);
+  static bool is_cell(const Check& c) { return c.a_dx == c.b_dx && c.a_dy == c.b_dy; }
+  [[nodiscard]] std::size_t cell(int x, int y) const {
+    return static_cast<std::size_t>(y + r_) * static_cast<std::size_t>(side_) +
+           static_cast<std::size_t>(x + r_);
   }
-  static std::uint64_t corner_key(const Check& c) {
-    const std::uint64_t a = key(c.a_dx, c.a_dy);
-    const std::uint64_t b = key(c.b_dx, c.b_dy);
-    return (std::min(a, b) << 32) | std::max(a, b);
-  }
-  [[nodiscard]] bool has_cell(int x, int y) const {
-    return std::binary_search(cells_.begin(), cells_.end(), key(x, y));
+  /// A corner by its point, (a + b) / 2 with odd doubled coordinates a + b, and which diagonal
+  /// pair of the four cells around it the check names.
+  [[nodiscard]] std::size_t corner(const Check& c) const {
+    const int px = (c.a_dx + c.b_dx + 2 * r_ - 1) / 2;
+    const int py = (c.a_dy + c.b_dy + 2 * r_ - 1) / 2;
+    const bool falling = (c.b_dx - c.a_dx) == (c.b_dy - c.a_dy);
+    return (falling ? cells_.size() : 0) + cell(px - r_, py - r_);
   }
 
+  int r_;
+  int side_;
+  std::uint32_t stamp_ = 0;
   std::vector<std::uint32_t> cells_;
-  std::vector<std::uint64_t> corners_;
+  std::vector<std::uint32_t> corners_;
 };
 
 /// Smallest absolute difference between two angles (radians), in [0, pi].
@@ -290,37 +307,44 @@ Sensor::Sensor(const SensorParams& params, double resolution_m)
     return a.dx < b.dx;
   });
   // 2. The checks of each target's centre ray, in walk order, then its face rays that can make
-  //    a difference: a face ray implied by the centre ray or by another kept face ray (e.g. the
+  //    a difference: a face ray implied by the centre ray or by the other face ray (e.g. the
   //    face ray of a target straight ahead, whose checks equal the centre ray's) is dropped.
   //    Each kept face ray stores its checks after its common prefix with the centre ray.
+  std::array<CheckSet, 2> sets{CheckSet(r), CheckSet(r)};
   for (Target& t : targets) {
     const int dx = t.dx;
     const int dy = t.dy;
     tables->angles.push_back(std::atan2(static_cast<double>(dy), static_cast<double>(dx)));
     const std::vector<Check> centre = ray_checks(2 * dx, 2 * dy, dx, dy);
-    std::vector<std::vector<Check>> faces;
-    const auto consider = [&](std::vector<Check> face) {
-      const CheckSet set(face);
-      if (set.blocked_by(centre)) return;
-      for (const auto& kept : faces) {
-        if (set.blocked_by(kept)) return;
+    std::array<std::vector<Check>, 2> faces;  // vertical face, horizontal face
+    std::array<bool, 2> keep{dx != 0, dy != 0};
+    if (keep[0]) faces[0] = ray_checks(2 * dx - (dx > 0 ? 1 : -1), 2 * dy, dx, dy);
+    if (keep[1]) faces[1] = ray_checks(2 * dx, 2 * dy - (dy > 0 ? 1 : -1), dx, dy);
+    for (std::size_t f = 0; f < 2; ++f) {
+      if (!keep[f]) continue;
+      sets[f].assign(faces[f]);
+      keep[f] = !sets[f].blocked_by(centre);
+    }
+    if (keep[0] && keep[1]) {
+      if (sets[1].blocked_by(faces[0])) {
+        keep[1] = false;
+      } else if (sets[0].blocked_by(faces[1])) {
+        keep[0] = false;
       }
-      std::erase_if(faces, [&](const std::vector<Check>& kept) { return CheckSet(kept).blocked_by(face); });
-      faces.push_back(std::move(face));
-    };
-    if (dx != 0) consider(ray_checks(2 * dx - (dx > 0 ? 1 : -1), 2 * dy, dx, dy));
-    if (dy != 0) consider(ray_checks(2 * dx, 2 * dy - (dy > 0 ? 1 : -1), dx, dy));
+    }
 
     t.first = static_cast<std::uint32_t>(crossings.size());
     t.count = static_cast<std::uint16_t>(centre.size());
     for (const Check& c : centre) crossings.push_back(compact(c));
-    t.face_count = static_cast<std::uint8_t>(faces.size());
     t.face_first = static_cast<std::uint32_t>(tables->faces.size());
-    for (std::size_t f = 0; f < faces.size(); ++f) {
+    for (std::size_t f = 0; f < 2; ++f) {
+      if (!keep[f]) continue;
+      const unsigned bit = 1U << t.face_count;
+      ++t.face_count;
       const std::vector<Check>& face = faces[f];
-      const CheckSet set(face);
       for (std::size_t k = 0; k < centre.size(); ++k) {
-        if (!set.blocked_by(centre[k])) crossings[t.first + k].open_faces |= static_cast<std::uint8_t>(1U << f);
+        if (!sets[f].blocked_by(centre[k]))
+          crossings[t.first + k].open_faces |= static_cast<std::uint8_t>(bit);
       }
       const auto shared = std::mismatch(face.begin(), face.end(), centre.begin(), centre.end()).first;
       tables->faces.push_back(FaceRay{static_cast<std::uint32_t>(crossings.size()),
@@ -411,8 +435,8 @@ bool Sensor::visible(const WorldMap& truth, Cell at, Cell target) const {
         ex, ey, [&](int x, int y) { return (x == dx && y == dy) || !occupied(x, y); },
         [&](int ax, int ay, int bx, int by) { return !(occupied(ax, ay) && occupied(bx, by)); });
   };
-  if (clear(2 * dx, 2 * dy)) return true;    // centre ray
-  if (!occupied(dx, dy)) return false;       // free targets: centre ray only
+  if (clear(2 * dx, 2 * dy)) return true;  // centre ray
+  if (!occupied(dx, dy)) return false;     // free targets: centre ray only
   const int sx = dx > 0 ? 1 : (dx < 0 ? -1 : 0);
   const int sy = dy > 0 ? 1 : (dy < 0 ? -1 : 0);
   return (dx != 0 && clear(2 * dx - sx, 2 * dy)) || (dy != 0 && clear(2 * dx, 2 * dy - sy));

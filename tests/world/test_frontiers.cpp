@@ -435,7 +435,8 @@ std::vector<FrontierCluster> reference_clusters(const KnownMap& known, double ma
   };
   const auto linked = [&](Cell a, Cell b) {
     if (!candidate(b)) return false;
-    return a.x == b.x || a.y == b.y || cut || (known.is_free(Cell{b.x, a.y}) && known.is_free(Cell{a.x, b.y}));
+    return a.x == b.x || a.y == b.y || cut ||
+           (known.is_free(Cell{b.x, a.y}) && known.is_free(Cell{a.x, b.y}));
   };
   int total = 0;
   for (int i = 0; i < n; ++i) total += is_frontier_cell(known, i) ? 1 : 0;
@@ -501,8 +502,9 @@ std::vector<FrontierCluster> reference_clusters(const KnownMap& known, double ma
       result.push_back(std::move(cl));
     }
   }
-  std::sort(result.begin(), result.end(),
-            [](const FrontierCluster& a, const FrontierCluster& b) { return a.cells.front() < b.cells.front(); });
+  std::sort(result.begin(), result.end(), [](const FrontierCluster& a, const FrontierCluster& b) {
+    return a.cells.front() < b.cells.front();
+  });
   return result;
 }
 
@@ -514,7 +516,8 @@ void check_clusters(const KnownMap& known, const FrontierMap& frontiers, std::ui
   for (auto& e : some) e = uniform01(rng) < 0.1 ? 1 : 0;
   for (const bool cut : {false, true}) {
     for (const double length : {0.0, 3.0, 7.5}) {
-      for (const std::vector<std::uint8_t>* excluded : {static_cast<std::vector<std::uint8_t>*>(nullptr), &some}) {
+      for (const std::vector<std::uint8_t>* excluded :
+           {static_cast<std::vector<std::uint8_t>*>(nullptr), &some}) {
         const std::vector<std::uint8_t> none;
         const std::vector<std::uint8_t>& ex = excluded == nullptr ? none : *excluded;
         const auto got = frontiers.clusters(known, length, cut, ex);

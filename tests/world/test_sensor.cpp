@@ -417,7 +417,8 @@ struct Fraction {
 /// inside.
 std::pair<Fraction, Fraction> times_inside(long long e, long long lo, long long hi) {
   if (e == 0) {
-    return lo < 0 && 0 < hi ? std::pair{Fraction{0, 1}, Fraction{1, 1}} : std::pair{Fraction{1, 1}, Fraction{0, 1}};
+    return lo < 0 && 0 < hi ? std::pair{Fraction{0, 1}, Fraction{1, 1}}
+                            : std::pair{Fraction{1, 1}, Fraction{0, 1}};
   }
   if (e > 0) return {Fraction{lo, e}, Fraction{hi, e}};
   return {Fraction{-hi, -e}, Fraction{-lo, -e}};
@@ -474,8 +475,8 @@ TEST(Sensor, MatchesBruteForceReference) {
       for (int i = 0; i < map.occupied.size(); ++i) {
         const Cell c = map.occupied.cell(i);
         const bool expected = c == at || reference_visible(map, 9.0, at, c);
-        ASSERT_EQ(sensor.visible(map, at, c) || c == at, expected) << "p " << p << " at " << at.x << ","
-                                                                   << at.y << " cell " << c.x << "," << c.y;
+        ASSERT_EQ(sensor.visible(map, at, c) || c == at, expected)
+            << "p " << p << " at " << at.x << "," << at.y << " cell " << c.x << "," << c.y;
         ASSERT_EQ(known(r, c), expected) << "p " << p << " cell " << c.x << "," << c.y;
         if (expected && !map.is_free(c)) ++occupied_seen;
       }
