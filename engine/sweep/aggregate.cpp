@@ -129,7 +129,10 @@ RunsTable read_runs(const std::string& path) {
   const std::size_t first_metric = (end_detail >= 0 ? static_cast<std::size_t>(end_detail) : end_reason) + 1;
   std::vector<std::size_t> config_cols;
   for (std::size_t i = 0; i < seed; ++i) {
-    if (header[i] == "run_index" || header[i] == "run_key") continue;
+    // The map instance (its source and start) is pooled within its map_class.
+    if (header[i] == "run_index" || header[i] == "run_key" || header[i] == "map" || header[i] == "map.start") {
+      continue;
+    }
     config_cols.push_back(i);
     t.config_names.push_back(header[i]);
   }

@@ -9,8 +9,9 @@
 ///   run_key; metric columns = every column after `end_detail` (optimal_distance_m and
 ///   competitive_ratio included), all numeric (an empty or `nan` cell is skipped, anything else
 ///   that is not a number is an error; `inf` is a number).
-/// - summary.csv: one row per configuration (runs with equal config columns; the seed is not
-///   part of it), in order of first appearance in runs.csv, numbered by `config_id` from 0:
+/// - summary.csv: one row per configuration (runs with equal config columns; the seed and the
+///   map instance columns `map` and `map.start` are not part of it, so runs on the maps of one
+///   `map_class` — e.g. the seeds of one generated map — are pooled like repetitions), in order of first appearance in runs.csv, numbered by `config_id` from 0:
 ///   `config_id`, the config columns, `n` (runs), one count column per end reason
 ///   (`end.complete`, ... for every EndReason in declaration order, then any reason this build
 ///   does not know, by first appearance), then for every metric column M:

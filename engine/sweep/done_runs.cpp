@@ -20,6 +20,7 @@ void DoneRuns::add(std::uint64_t key, std::uint64_t index) { rows_.push_back({ke
 void DoneRuns::seal() {
   std::sort(rows_.begin(), rows_.end());
   taken_.assign(rows_.size(), false);
+  taken_count_ = 0;
 }
 
 bool DoneRuns::contains(std::uint64_t key, std::uint64_t index) const {
@@ -32,6 +33,7 @@ bool DoneRuns::take(std::uint64_t key) {
     const auto i = static_cast<std::size_t>(it - rows_.begin());
     if (!taken_[i]) {
       taken_[i] = true;
+      ++taken_count_;
       return true;
     }
   }

@@ -25,6 +25,8 @@ class DoneRuns {
   bool take(std::uint64_t key);
 
   [[nodiscard]] std::size_t size() const { return rows_.size(); }
+  /// Rows not consumed by take() yet (0: no later run can be done, stop looking).
+  [[nodiscard]] std::size_t untaken() const { return rows_.size() - taken_count_; }
   [[nodiscard]] bool empty() const { return rows_.empty(); }
 
  private:
@@ -35,6 +37,7 @@ class DoneRuns {
   };
   std::vector<Row> rows_;
   std::vector<bool> taken_;
+  std::size_t taken_count_ = 0;
 };
 
 /// Reads a run_key (16 hex digits); nullopt for anything else.

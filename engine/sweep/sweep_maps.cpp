@@ -197,6 +197,7 @@ std::vector<SweepMap> parse_maps(const json& maps, std::vector<std::string>& pro
       }
       m.spec = canonical(source);
       m.free_space = source.value("generator", json("")) == "free";
+      m.map_class = !label.empty() ? label : (spec_string.empty() ? spec_text(base) : spec_string);
       if (!label.empty()) {
         m.label = has_seeds ? label + " seed=" + std::to_string(seeds[k]) : label;
       } else {

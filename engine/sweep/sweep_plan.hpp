@@ -112,6 +112,11 @@ struct SweepMap {
   /// Short label for tables: the item's `label` (plus " seed=N" when seeds expand), else the
   /// spec string or the object written as a spec string.
   std::string label;
+  /// The map class: the item's `label`, else its spec without the generator seed. All maps a
+  /// `seeds` list expands into share it; summaries pool runs over the maps of one class (so
+  /// map seeds act as repetitions), and weights can be ranked per class. Items given the same
+  /// label form one class.
+  std::string map_class;
   /// Canonical JSON object of the source (what the run key hashes; see above).
   nlohmann::json spec;
   std::shared_ptr<const WorldMap> map;

@@ -160,6 +160,14 @@ RunnerReport run_sweep(const SweepPlan& plan, const RunnerOptions& options) {
   const std::string& dir = report.out_dir;
   const DirectoryLock lock(dir);
 
+  // Temp files of a runner killed while replacing a file ("runs.csv.tmp.<pid>").
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    const std::string name = entry.path().filename().string();
+    for (const char* f : {"runs.csv", "progress.csv", "manifest.json"}) {
+      if (name.starts_with(std::string(f) + ".tmp.")) fs::remove(entry.path());
+    }
+  }
+
   const std::string manifest_path = dir + "/manifest.json";
   const std::string hash = sweep_hash(plan.source());
   if (options.fresh) {
@@ -215,7 +223,7 @@ RunnerReport run_sweep(const SweepPlan& plan, const RunnerOptions& options) {
       Job job;
       job.index = next;
       next += options.shard_count;
-      if (!resumed.done.empty()) {
+      if (resumed.done.untaken() > 0) {  // run keys in this serial stage only while resuming
         job.key = plan.run_key(job.index);
         const auto key = parse_run_key(job.key);
         if (key && resumed.done.take(*key)) {

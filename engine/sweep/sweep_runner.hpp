@@ -3,7 +3,7 @@
 /// Runs a SweepPlan in parallel (oneTBB) and writes its outputs, resumably.
 ///
 /// Files in the output directory (the contract between runner, aggregation, merge and plots):
-/// - `runs.csv`: header `run_index,run_key,<config columns>,seed,<metric columns>,
+/// - `runs.csv`: header `run_index,run_key,map_class,<config columns>,seed,<metric columns>,
 ///   optimal_distance_m,competitive_ratio`; one row per run, in run-index order. Config columns
 ///   are the union over the sweep of run_table.hpp's config_columns() (a column a run does not
 ///   have is empty; see sweep_table.hpp); metric columns are run_table.hpp's metric_columns().
@@ -25,7 +25,8 @@
 /// - `summary.csv`, `progress_summary.csv`, `best.csv`: written by aggregate.hpp after a
 ///   complete, unsharded run.
 /// - `.fsweep.lock`: an flock held while running; a second runner on the same directory is
-///   refused (the kernel drops the lock when the process dies, even by SIGKILL).
+///   refused (the kernel drops the lock when the process dies, even by SIGKILL). Temp files a
+///   killed runner left (`runs.csv.tmp.<pid>`, ...) are deleted on start.
 ///
 /// Determinism: workers run whole runs; rows pass through a bounded reorder stage (a oneTBB
 /// parallel_pipeline whose serial in-order output stage writes them) and are written in

@@ -24,15 +24,28 @@ std::string join_record(const std::vector<std::string>& fields) {
 }
 
 /// The star-pattern optimum d* (competitive.hpp) for a run, or NaN where it does not apply:
-/// free space and a finite battery, r = capacity / energy per metre of straight travel,
-/// r_s = sensor range.
+/// free space, a finite battery, an energy model that charges travel only (no stop or turn
+/// costs), and the whole disc of radius r/2 around the dock inside the free part of the map
+/// (the free generator's interior is a rectangle, so its four extreme cells decide);
+/// r = capacity / energy per metre of straight travel, r_s = sensor range.
 double optimal_distance_m(const SweepPlan& plan, std::uint64_t index, const RunSpec& spec) {
   const std::size_t map = plan.coordinates(index).map;
   if (!plan.maps().at(map).free_space || !std::isfinite(spec.robot.battery_capacity)) return std::nan("");
   const EnergyModel& e = spec.robot.energy;
   const double per_metre = e.per_metre + e.per_cell / spec.map->resolution_m;
   if (!(per_metre > 0.0) || !(spec.robot.sensor.range_m > 0.0)) return std::nan("");
+  // The star pattern is optimal only when travel is all that costs energy, and only while the
+  // disc of radius r/2 the robot can reach lies inside the free map.
+  if (e.per_stop != 0.0 || std::any_of(e.per_turn.begin(), e.per_turn.end(), [](double t) { return t != 0.0; })) {
+    return std::nan("");
+  }
   const double range_m = spec.robot.battery_capacity / per_metre;
+  const Cell dock = spec.robot.dock.value_or(spec.map->start);
+  const int reach = static_cast<int>(std::ceil(range_m / 2.0 / spec.map->resolution_m));
+  for (const Cell c : {Cell{dock.x - reach, dock.y}, Cell{dock.x + reach, dock.y}, Cell{dock.x, dock.y - reach},
+                       Cell{dock.x, dock.y + reach}}) {
+    if (!spec.map->is_free(c)) return std::nan("");
+  }
   return star_pattern_optimum_m(range_m, spec.robot.sensor.range_m);
 }
 
@@ -86,6 +99,7 @@ SweepTable::SweepTable(const SweepPlan& plan) {
   };
   add("run_index");
   add("run_key");
+  add("map_class");
   for (const auto& name : config) add(name);
   add("seed");
   for (const auto& [name, value] : metric_columns(RunResult{})) add(name);
@@ -118,6 +132,7 @@ RunRows SweepTable::run(const SweepPlan& plan, std::uint64_t index, const std::s
   };
   try {
     const RunSpec spec = plan.run_spec(index);
+    set("map_class", plan.maps().at(plan.coordinates(index).map).map_class);
     for (auto& [name, value] : config_columns(spec)) set(name, std::move(value));
     const RunResult result = simulate(spec);
     for (auto& [name, value] : metric_columns(result)) set(name, std::move(value));

@@ -33,8 +33,8 @@ EnergyModel pioneer_model(const PioneerParams& p) {
   return m;
 }
 
-double positive(const nlohmann::json& j, const std::string& key, const std::string& where, bool allow_zero) {
-  const auto& v = j.at(key);
+/// Checks one number `v` found at `where`/`key`.
+double checked(const nlohmann::json& v, const std::string& key, const std::string& where, bool allow_zero) {
   if (!v.is_number()) throw ConfigError(where + "/" + key, "expected a number, got " + v.dump());
   const double x = v.get<double>();
   if (!std::isfinite(x) || x < 0.0 || (!allow_zero && x == 0.0)) {
@@ -42,6 +42,10 @@ double positive(const nlohmann::json& j, const std::string& key, const std::stri
                       "value " + v.dump() + " out of range; allowed: " + (allow_zero ? ">= 0" : "> 0"));
   }
   return x;
+}
+
+double positive(const nlohmann::json& j, const std::string& key, const std::string& where, bool allow_zero) {
+  return checked(j.at(key), key, where, allow_zero);
 }
 
 }  // namespace
@@ -104,7 +108,7 @@ EnergyModel energy_model_from_json(const nlohmann::json& j, const std::string& w
       throw ConfigError(where + "/per_turn", "expected 4 numbers (45, 90, 135, 180 degrees), got " + t.dump());
     }
     for (std::size_t k = 0; k < 4; ++k) {
-      m.per_turn[k] = positive(t, std::to_string(k), where + "/per_turn", true);
+      m.per_turn[k] = checked(t[k], std::to_string(k), where + "/per_turn", true);
     }
   }
   if (m.per_metre == 0.0 && m.per_cell == 0.0) {

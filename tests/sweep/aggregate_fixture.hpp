@@ -16,18 +16,18 @@
 namespace fsweep::testing {
 
 inline const char* const kRunsCsv =
-    "run_index,run_key,map,strategy,strategy.w1,seed,end_reason,end_detail,distance_m,energy,recharges,"
+    "run_index,run_key,map_class,map,strategy,strategy.w1,seed,end_reason,end_detail,distance_m,energy,recharges,"
     "distance_to_final_coverage_m,area_per_metre,coverage,optimal_distance_m,competitive_ratio\n"
-    "0,00000000000000a0,\"free:w=10,h=10,seed=0\",energy_aware,10,1,complete,,1,10,0,0.5,22,1,2,0.5\n"
-    "1,00000000000000b0,\"free:w=10,h=10,seed=0\",energy_aware,20,1,stuck,,1.5,50,1,1.5,6,0.8,2,0.75\n"
-    "2,00000000000000a1,\"free:w=10,h=10,seed=0\",energy_aware,10,2,complete,,2,20,0,2,16,1,2,1\n"
-    "3,00000000000000c0,\"rooms:w=10,h=10,door=2,seed=1\",closest_frontier,,1,error,"
+    "0,00000000000000a0,free,\"free:w=10,h=10,seed=0\",energy_aware,10,1,complete,,1,10,0,0.5,22,1,2,0.5\n"
+    "1,00000000000000b0,free,\"free:w=10,h=10,seed=0\",energy_aware,20,1,stuck,,1.5,50,1,1.5,6,0.8,2,0.75\n"
+    "2,00000000000000a1,free,\"free:w=10,h=10,seed=0\",energy_aware,10,2,complete,,2,20,0,2,16,1,2,1\n"
+    "3,00000000000000c0,rooms,\"rooms:w=10,h=10,door=2,seed=1\",closest_frontier,,1,error,"
     "\"planner failed, \"\"dock\"\" unreachable\",0,25,0,0,0,0.2,,\n"
-    "4,00000000000000a2,\"free:w=10,h=10,seed=0\",energy_aware,10,3,range_limited,,3,30,1,3,11."
+    "4,00000000000000a2,free,\"free:w=10,h=10,seed=7\",energy_aware,10,3,range_limited,,3,30,1,3,11."
     "666666666666666,"
     "0.5,2,1.5\n"
-    "5,00000000000000b1,\"free:w=10,h=10,seed=0\",energy_aware,20,2,complete,,2.5,10,0,2.5,5.6,1,2,1.25\n"
-    "6,00000000000000a3,\"free:w=10,h=10,seed=0\",energy_aware,10,4,complete,,4,40,0,3.5,12.5,1,2,2\n";
+    "5,00000000000000b1,free,\"free:w=10,h=10,seed=0\",energy_aware,20,2,complete,,2.5,10,0,2.5,5.6,1,2,1.25\n"
+    "6,00000000000000a3,free,\"free:w=10,h=10,seed=0\",energy_aware,10,4,complete,,4,40,0,3.5,12.5,1,2,2\n";
 
 inline const char* const kProgressCsv =
     "run_index,run_key,distance_m,explored_area_m2,coverage,energy\n"

@@ -14,11 +14,13 @@ TEST(DoneRuns, EachRowSkipsOneRun) {
   d.seal();
   EXPECT_TRUE(d.contains(7, 9));
   EXPECT_FALSE(d.contains(7, 4));
+  EXPECT_EQ(d.untaken(), 3U);
   EXPECT_TRUE(d.take(7));
   EXPECT_TRUE(d.take(7));
   EXPECT_FALSE(d.take(7));
   EXPECT_TRUE(d.take(2));
   EXPECT_FALSE(d.take(5));
+  EXPECT_EQ(d.untaken(), 0U);
 }
 
 TEST(DoneRuns, ParsesKeysAndIndices) {

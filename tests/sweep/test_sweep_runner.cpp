@@ -246,11 +246,13 @@ TEST(SweepRunner, TornLinesAreDroppedAndRedone) {
   write_file(torn + "/runs.csv", runs);
   write_file(torn + "/progress.csv", progress);
   fs::copy_file(ref + "/manifest.json", torn + "/manifest.json");
+  write_file(torn + "/progress.csv.tmp.99999", "left by a runner killed mid-rewrite");
 
   const RunnerReport r = run(small_sweep(), torn, 2);
   EXPECT_EQ(r.skipped, 10U);
   EXPECT_EQ(r.ran, 38U);
   expect_same_outputs(ref, torn);
+  EXPECT_FALSE(fs::exists(torn + "/progress.csv.tmp.99999"));
   fs::remove_all(ref);
   fs::remove_all(torn);
 }
@@ -347,36 +349,41 @@ TEST(SweepRunner, FailedRunIsRecorded) {
 }
 
 TEST(SweepRunner, CompetitiveRatioColumns) {
-  // Free space with a battery: the star-pattern optimum applies. mei2006 costs 1 per cell
-  // length (per_metre 0), so at 0.5 m per cell straight travel costs 2 per metre.
+  // The star-pattern optimum applies in free space with a battery, when only travel costs
+  // energy and the reachable disc (radius r/2 around the dock) lies inside the map. The
+  // travel-only Mei model costs 1 per cell length, so at 0.5 m per cell 2 per metre.
   const json sweep = json::parse(R"({
     "schema_version": 1,
     "name": "competitive_test",
-    "maps": ["free:w=31,h=31", "free:w=31,h=31,res=0.5", "rooms:w=30,h=24,door=3,seed=1"],
+    "maps": ["free:w=81,h=81", "free:w=161,h=161,res=0.5", "free:w=41,h=41", "rooms:w=30,h=24,door=3,seed=1"],
     "strategies": [{"name": "closest_frontier"}],
-    "robot": {"sensor": {"range_m": 5}, "battery": 60, "energy": ["distance", "mei2006"]}
+    "robot": {"sensor": {"range_m": 5}, "battery": 60,
+              "energy": ["distance", {"preset": "mei2006", "per_stop": 0, "per_turn": [0, 0, 0, 0]}, "mei2006"]}
   })");
   const std::string dir = temp_dir("competitive");
-  ASSERT_EQ(run(sweep, dir, 2).ran, 6U);
+  ASSERT_EQ(run(sweep, dir, 2).ran, 12U);
   const std::string csv = read_file(dir + "/runs.csv");
   const auto optimum = column(csv, "optimal_distance_m");
   const auto ratio = column(csv, "competitive_ratio");
   const auto distance = column(csv, "distance_m");
   // Hand calculation, d* = pi r^2 / (2 r_s) with r_s = 5 m:
-  // distance model: r = 60 / 1 = 60 m -> d* = 3600 pi / 10 = 1130.97 m (both free maps);
-  // mei2006 at 1 m/cell: r = 60 / (0 + 1 / 1) = 60 m -> the same;
-  // mei2006 at 0.5 m/cell: r = 60 / (0 + 1 / 0.5) = 30 m -> d* = 900 pi / 10 = 282.74 m.
+  // distance model: r = 60 / 1 = 60 m -> d* = 3600 pi / 10 = 1130.97 m;
+  // travel-only Mei at 1 m/cell: r = 60 / (0 + 1 / 1) = 60 m -> the same;
+  // travel-only Mei at 0.5 m/cell: r = 60 / (0 + 1 / 0.5) = 30 m -> d* = 900 pi / 10 = 282.74 m.
   const double d60 = M_PI * 60.0 * 60.0 / 10.0;
   const double d30 = M_PI * 30.0 * 30.0 / 10.0;
-  const double expected[] = {d60, d60, d60, d30};
-  for (std::size_t i = 0; i < 4; ++i) {
+  // Rows: map-major, energy fastest. Applicable: 81x81 (r/2 = 30 cells fits around the centre
+  // 40) with the two travel-only models; 161x161 at 0.5 m (r/2 = 30 m = 60 cells fits around 80)
+  // with distance (r = 60 m, r/2 = 60 cells) and travel-only Mei (r = 30 m, r/2 = 30 cells).
+  const std::vector<std::pair<std::size_t, double>> applicable{{0, d60}, {1, d60}, {3, d60}, {4, d30}};
+  for (const auto& [i, expected] : applicable) {
     ASSERT_FALSE(optimum[i].empty()) << i;
-    EXPECT_NEAR(std::stod(optimum[i]), expected[i], 1e-9 * expected[i]) << i;
-    EXPECT_NEAR(std::stod(ratio[i]), std::stod(distance[i]) / expected[i], 1e-12) << i;
-    EXPECT_GT(std::stod(ratio[i]), 0.0) << i;
+    EXPECT_NEAR(std::stod(optimum[i]), expected, 1e-9 * expected) << i;
+    EXPECT_NEAR(std::stod(ratio[i]), std::stod(distance[i]) / expected, 1e-12) << i;
   }
-  // Not free space: empty cells.
-  for (std::size_t i = 4; i < 6; ++i) {
+  // Empty: Mei with stop and turn costs (rows 2, 5, 8), the 41x41 map whose 30 m disc does not
+  // fit (rows 6-8), the rooms map (rows 9-11).
+  for (const std::size_t i : {2U, 5U, 6U, 7U, 8U, 9U, 10U, 11U}) {
     EXPECT_TRUE(optimum[i].empty()) << i;
     EXPECT_TRUE(ratio[i].empty()) << i;
   }

@@ -62,6 +62,20 @@ TEST(EnergyModel, JsonOverridesPreset) {
   EXPECT_DOUBLE_EQ(m.per_turn[1], 0.6);
 }
 
+TEST(EnergyModel, JsonPerTurnTakesFourNumbers) {
+  const auto j = nlohmann::json::parse(R"({"preset": "mei2006", "per_stop": 0, "per_turn": [0, 0.1, 0, 0]})");
+  const EnergyModel m = energy_model_from_json(j, "/robot/energy");
+  EXPECT_DOUBLE_EQ(m.per_turn[1], 0.1);
+  EXPECT_DOUBLE_EQ(m.per_stop, 0.0);
+  try {
+    (void)energy_model_from_json(nlohmann::json::parse(R"({"per_turn": [0, -1, 0, 0]})"), "/e");
+    FAIL();
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("/e/per_turn/1"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW((void)energy_model_from_json(nlohmann::json::parse(R"({"per_turn": [0, 0]})"), "/e"), ConfigError);
+}
+
 TEST(EnergyModel, BadJsonNamesPathAndAllowed) {
   try {
     (void)energy_model_from_json(nlohmann::json::parse(R"({"preset": "tesla"})"), "/robot/energy");
