@@ -1,16 +1,13 @@
 # The two commands of the README:
-#   make run   - install what is missing, build (Release), run the default exploration
+#   make run   - install what is missing, build (Release), run sweeps/default.json and plot it
 #   make test  - install what is missing, build, run the whole test suite (plus a sanitizer pass)
 .PHONY: run test build bench clean
 
 FSWEEP := build/release/bin/fsweep
-OUT    := results/default
 
 run: build
-	@$(FSWEEP) sim --map "rooms:w=120,h=80,door=3,seed=4" --strategy energy_aware \
-	  --param w1=10 --param w2=0 --param w3=9 --param w4=20 \
-	  --robot sensor.range_m=10 --robot battery=1500 --out $(OUT)
-	@echo "results: $(OUT)/run.csv, $(OUT)/progress.csv, picture: $(OUT)/trajectory.png"
+	@$(FSWEEP) run sweeps/default.json
+	@$(FSWEEP) plot results/default >/dev/null && echo "plots in results/default/plots/"
 
 build:
 	@scripts/bootstrap release

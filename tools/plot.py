@@ -71,9 +71,19 @@ def config_labels(header, rows):
     config_cols = header[header.index("config_id") + 1:header.index("n")]
     # Columns with more than one value (an empty cell, a parameter another strategy lacks, aside).
     differing = [c for c in config_cols if c != "strategy" and len({r[c] for r in rows if r[c] != ""}) > 1]
+    # A sweep's strategy labels ("EA free") stand for the strategy and its parameters.
+    # When one label covers several parameter sets (a weight grid), the parameters still show.
+    if "strategy_label" in config_cols:
+        labels_used = [r["strategy_label"] for r in rows]
+        shared = len(set(labels_used)) < len(labels_used)
+        differing = [c for c in differing
+                     if c != "strategy_label" and (shared or not c.startswith("strategy."))]
     labels = {}
     for r in rows:
-        parts = [r.get("strategy", "")] if "strategy" in config_cols else []
+        if "strategy_label" in config_cols:
+            parts = [r["strategy_label"]]
+        else:
+            parts = [r.get("strategy", "")] if "strategy" in config_cols else []
         parts += [f"{short_name(c)}={r[c]}" for c in differing if r[c] != ""]
         labels[r["config_id"]] = " ".join(p for p in parts if p) or f"config {r['config_id']}"
     return labels

@@ -53,8 +53,10 @@ Columns config_columns(const RunSpec& spec) {
   c.emplace_back("planner", spec.planner);
   if (spec.planner_params.is_object()) flatten(spec.planner_params, "planner", c);
   nlohmann::json robot = spec.robot;
-  if (!spec.robot.dock) robot["dock"] = nlohmann::json{m.start.x, m.start.y};
-  robot["dock"] = std::to_string(robot["dock"][0].get<int>()) + ";" + std::to_string(robot["dock"][1].get<int>());
+  // A dock left at its default is the map's start: written as "start", so runs on several
+  // maps of one class (whose starts differ) share the configuration; map.start has the cell.
+  robot["dock"] = spec.robot.dock ? std::to_string(spec.robot.dock->x) + ";" + std::to_string(spec.robot.dock->y)
+                                  : std::string("start");
   flatten(robot, "robot", c);
   flatten(nlohmann::json(spec.sim), "sim", c);
   c.emplace_back("seed", std::to_string(spec.seed));

@@ -19,7 +19,8 @@ using Columns = std::vector<std::pair<std::string, std::string>>;
 
 /// Configuration columns: map (source, width, height, resolution_m, start), strategy and each
 /// resolved strategy parameter (`strategy.w1`...), planner and its parameters, every robot and
-/// sim parameter (`robot.sensor.range_m`...), seed.
+/// sim parameter (`robot.sensor.range_m`...; `robot.dock` is "x;y", or "start" when it is
+/// the map's start), seed.
 [[nodiscard]] Columns config_columns(const RunSpec& spec);
 
 /// Metric columns: end_reason, end_detail and every RunMetrics field, in declaration order.

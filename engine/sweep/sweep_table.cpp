@@ -100,6 +100,7 @@ SweepTable::SweepTable(const SweepPlan& plan) {
   add("run_index");
   add("run_key");
   add("map_class");
+  add("strategy_label");
   for (const auto& name : config) add(name);
   add("seed");
   for (const auto& [name, value] : metric_columns(RunResult{})) add(name);
@@ -132,7 +133,9 @@ RunRows SweepTable::run(const SweepPlan& plan, std::uint64_t index, const std::s
   };
   try {
     const RunSpec spec = plan.run_spec(index);
-    set("map_class", plan.maps().at(plan.coordinates(index).map).map_class);
+    const RunCoordinates at = plan.coordinates(index);
+    set("map_class", plan.maps().at(at.map).map_class);
+    set("strategy_label", plan.strategies().at(at.strategy_entry).label);
     for (auto& [name, value] : config_columns(spec)) set(name, std::move(value));
     const RunResult result = simulate(spec);
     for (auto& [name, value] : metric_columns(result)) set(name, std::move(value));

@@ -2,6 +2,8 @@
 // message and exit code 2.
 #include <gtest/gtest.h>
 
+#include "cli/fsweep_process.hpp"
+
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -11,22 +13,8 @@
 
 namespace {
 
-struct Outcome {
-  int code = -1;
-  std::string output;  // stdout and stderr
-};
-
-Outcome fsweep(const std::string& args) {
-  const std::string cmd = std::string(FSWEEP_BINARY_DIR) + "/bin/fsweep " + args + " 2>&1";
-  Outcome out;
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (pipe == nullptr) return out;
-  std::array<char, 4096> buf{};
-  while (fgets(buf.data(), static_cast<int>(buf.size()), pipe) != nullptr) out.output += buf.data();
-  const int status = pclose(pipe);
-  out.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return out;
-}
+using Outcome = fsweep::testing::CliOutcome;
+Outcome fsweep(const std::string& args) { return fsweep::testing::run_fsweep(args); }
 
 std::string temp_dir(const std::string& name) {
   const auto dir = std::filesystem::temp_directory_path() / ("fsweep_cli_" + name + "_" + std::to_string(getpid()));

@@ -1,6 +1,8 @@
 // `fsweep aggregate` and `fsweep plot` end to end on a hand-written sweep directory
 // (tests/sweep/aggregate_fixture.hpp).
 #include <gtest/gtest.h>
+
+#include "cli/fsweep_process.hpp"
 #include <sys/wait.h>
 
 #include <array>
@@ -14,22 +16,8 @@
 
 namespace {
 
-struct Outcome {
-  int code = -1;
-  std::string output;  // stdout and stderr
-};
-
-Outcome fsweep_cli(const std::string& args) {
-  const std::string cmd = std::string(FSWEEP_BINARY_DIR) + "/bin/fsweep " + args + " 2>&1";
-  Outcome out;
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (pipe == nullptr) return out;
-  std::array<char, 4096> buf{};
-  while (fgets(buf.data(), static_cast<int>(buf.size()), pipe) != nullptr) out.output += buf.data();
-  const int status = pclose(pipe);
-  out.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return out;
-}
+using Outcome = fsweep::testing::CliOutcome;
+Outcome fsweep_cli(const std::string& args) { return fsweep::testing::run_fsweep(args); }
 
 std::string first_line_after_header(const std::filesystem::path& path) {
   std::ifstream f(path);

@@ -1,6 +1,8 @@
 // `fsweep run` end to end: the run count first, the outputs, resume, and exit codes.
 #include <gtest/gtest.h>
 
+#include "cli/fsweep_process.hpp"
+
 #include <unistd.h>
 
 #include <array>
@@ -13,22 +15,8 @@
 
 namespace {
 
-struct RunOutcome {
-  int code = -1;
-  std::string output;  // stdout and stderr
-};
-
-RunOutcome fsweep_run(const std::string& args) {
-  const std::string cmd = std::string(FSWEEP_BINARY_DIR) + "/bin/fsweep run " + args + " 2>&1";
-  RunOutcome out;
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (pipe == nullptr) return out;
-  std::array<char, 4096> buf{};
-  while (fgets(buf.data(), static_cast<int>(buf.size()), pipe) != nullptr) out.output += buf.data();
-  const int status = pclose(pipe);
-  out.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return out;
-}
+using RunOutcome = fsweep::testing::CliOutcome;
+RunOutcome fsweep_run(const std::string& args) { return fsweep::testing::run_fsweep("run " + args); }
 
 std::string make_dir(const std::string& name) {
   const auto dir = std::filesystem::temp_directory_path() / ("fsweep_cli_run_" + name + "_" + std::to_string(getpid()));
