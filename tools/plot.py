@@ -8,7 +8,7 @@ Reads DIR/summary.csv, DIR/progress_summary.csv and DIR/best.csv (written by
                          (Rappaport 2016, Figure 4)
   metrics.png            median with q05-q95 bars of distance, energy, coverage and distance to
                          the final coverage, per configuration
-  heatmap_<wi>_<wj>.png  weight searches (configurations differing in at least two of
+  heatmap_<wi>_<wj>.png  weight searches (at least three values in each of at least two of
                          strategy.w1..w4): the objective's median over each pair of weights, the
                          best value over the other weights and columns
 
@@ -58,6 +58,14 @@ def number(text):
         return math.nan
 
 
+def compact(v):
+    """A short label for a heat-map cell: 3 significant digits, k/M for thousands/millions."""
+    for scale, suffix in ((1e6, "M"), (1e3, "k")):
+        if abs(v) >= scale:
+            return f"{v / scale:.3g}{suffix}"
+    return f"{v:.3g}"
+
+
 def short_name(column):
     """Column name without the strategy./robot. prefix, for labels."""
     for prefix in ("strategy.", "robot."):
@@ -74,8 +82,11 @@ def config_labels(header, rows):
     # A sweep's strategy labels ("EA free") stand for the strategy and its parameters.
     # When one label covers several parameter sets (a weight grid), the parameters still show.
     if "strategy_label" in config_cols:
-        labels_used = [r["strategy_label"] for r in rows]
-        shared = len(set(labels_used)) < len(labels_used)
+        params = [c for c in config_cols if c.startswith("strategy.")]
+        sets = {}
+        for r in rows:
+            sets.setdefault(r["strategy_label"], set()).add(tuple(r[c] for c in params))
+        shared = any(len(v) > 1 for v in sets.values())
         differing = [c for c in differing
                      if c != "strategy_label" and (shared or not c.startswith("strategy."))]
     labels = {}
@@ -161,8 +172,9 @@ def plot_metrics(summary_header, summary_rows, ids, labels, note, out):
 
 def plot_heatmaps(summary_header, summary_rows, best_header, best_rows, out):
     """heatmap_<wi>_<wj>.png for every pair of varying weights; returns the files written."""
+    # A weight grid: at least three values of a weight (two weight vectors make no map).
     varying = [w for w in WEIGHTS if w in summary_header
-               and len({r[w] for r in summary_rows if r[w] != ""}) > 1]
+               and len({r[w] for r in summary_rows if r[w] != ""}) > 2]
     median_col = next((c for c in best_header if c.endswith(".median")), None)
     if len(varying) < 2 or median_col is None:
         return []
@@ -201,9 +213,10 @@ def plot_heatmaps(summary_header, summary_rows, best_header, best_rows, out):
         ax.set_yticklabels([f"{ys[k]:g}" for k in range(0, len(ys), step_y)], fontsize=8)
         ax.set_xlabel(short_name(wi), fontsize=11)
         ax.set_ylabel(short_name(wj), fontsize=11)
-        if len(xs) <= 12 and len(ys) <= 12:
+        # Values are printed only where the cells are wide enough for them.
+        if len(xs) <= 8 and len(ys) <= 12:
             for (x, y), v in cells.items():
-                ax.text(xs.index(x), ys.index(y), f"{v:.4g}", ha="center", va="center", fontsize=7, color="white",
+                ax.text(xs.index(x), ys.index(y), compact(v), ha="center", va="center", fontsize=7, color="white",
                         bbox={"facecolor": "black", "alpha": 0.25, "pad": 1, "linewidth": 0})
         # The best cell (ties: smallest weights) framed in red.
         bx, by = min(cells, key=lambda c: (-cells[c] if objective in MAXIMISED else cells[c], c))

@@ -6,9 +6,10 @@
 namespace fsweep {
 
 void GridDistanceOracle::reset(const KnownMap& known, Cell robot, Cell dock, bool allow_corner_cutting,
-                               const IncrementalDistanceField* dock_field) {
+                               IncrementalDistanceField* dock_field, std::vector<int>* pending) {
   known_ = &known;
   dock_field_ = dock_field;
+  pending_ = pending;
   robot_ = robot;
   dock_ = dock;
   corner_cutting_ = allow_corner_cutting;
@@ -45,6 +46,11 @@ std::vector<double> GridDistanceOracle::from_robot(std::span<const int> cells, d
 
 std::vector<double> GridDistanceOracle::from_dock(std::span<const int> cells, double bound_m) {
   if (dock_field_ == nullptr) return lookup(dock_search_, dock_, cells, bound_m);
+  if (pending_ != nullptr && !pending_->empty()) {
+    dock_field_->update(*known_, *pending_);
+    expansions_ += dock_field_->expansions();
+    pending_->clear();
+  }
   std::vector<double> out;
   out.reserve(cells.size());
   for (const int i : cells) {

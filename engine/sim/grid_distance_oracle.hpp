@@ -16,8 +16,11 @@ class GridDistanceOracle final : public DistanceOracle {
   /// Starts a new decision: the map, the robot and the dock may have changed. `dock_field`
   /// (may be null) is the simulation's up-to-date field from the dock; without it, dock
   /// distances are searched like robot distances.
+  /// `pending` (with dock_field) are the cells revealed since the field was last brought up to
+  /// date: they are applied on the first dock query, so runs whose strategy never asks for
+  /// dock distances never pay for the field.
   void reset(const KnownMap& known, Cell robot, Cell dock, bool allow_corner_cutting,
-             const IncrementalDistanceField* dock_field);
+             IncrementalDistanceField* dock_field, std::vector<int>* pending);
 
   [[nodiscard]] std::vector<double> from_robot(std::span<const int> cells, double bound_m) override;
   [[nodiscard]] std::vector<double> from_dock(std::span<const int> cells, double bound_m) override;
@@ -38,7 +41,8 @@ class GridDistanceOracle final : public DistanceOracle {
   Cell robot_{};
   Cell dock_{};
   bool corner_cutting_ = false;
-  const IncrementalDistanceField* dock_field_ = nullptr;
+  IncrementalDistanceField* dock_field_ = nullptr;
+  std::vector<int>* pending_ = nullptr;
   Cached robot_field_;
   Cached dock_search_;
   DistanceField scratch_;

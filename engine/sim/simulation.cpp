@@ -89,6 +89,7 @@ Simulation::Simulation(const Simulation& other)
       sensor_rng_(other.sensor_rng_),
       dock_field_(other.dock_field_),
       dock_field_ready_(other.dock_field_ready_),
+      dock_field_pending_(other.dock_field_pending_),
       reachable_(other.reachable_),
       reachable_count_(other.reachable_count_),
       known_reachable_(other.known_reachable_),
@@ -125,7 +126,7 @@ void Simulation::sense() {
   const auto revealed = sensor_.scan(*spec_.map, known_, robot_, heading_angle(heading_), sensor_rng_);
   frontiers_.update(known_, revealed);
   if (dock_field_ready_) {
-    dock_field_.update(known_, revealed);
+    dock_field_pending_.insert(dock_field_pending_.end(), revealed.begin(), revealed.end());
   } else if (known_.is_free(dock_)) {
     dock_field_.reset(known_, dock_, spec_.robot.allow_corner_cutting);
     dock_field_ready_ = true;
@@ -186,7 +187,8 @@ bool Simulation::step() {
   // 1. Observe and decide.
   const auto clusters =
       frontiers_.clusters(known_, cluster_max_length_m_, spec_.robot.allow_corner_cutting, dropped_);
-  oracle_.reset(known_, robot_, dock_, spec_.robot.allow_corner_cutting, dock_field_ready_ ? &dock_field_ : nullptr);
+  oracle_.reset(known_, robot_, dock_, spec_.robot.allow_corner_cutting, dock_field_ready_ ? &dock_field_ : nullptr,
+                &dock_field_pending_);
   const BatteryView battery{battery_.level(), battery_.capacity(), battery_.remaining_range_m()};
   const Observation obs{known_,           frontiers_, clusters,       oracle_, spec_.robot.sensor,
                         robot_,           heading_,   previous_position_, previous_goal_, dock_,

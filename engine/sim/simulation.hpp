@@ -71,6 +71,7 @@ class Simulation {
   GridDistanceOracle oracle_;
   IncrementalDistanceField dock_field_;
   bool dock_field_ready_ = false;
+  std::vector<int> dock_field_pending_;  // revealed since dock_field_ was last updated
   Grid<std::uint8_t> reachable_;
   int reachable_count_ = 0;
   int known_reachable_ = 0;

@@ -97,12 +97,25 @@ TEST(CliPlot, HeatMapForTwoVaryingWeightsInOutDir) {
       "distance_m,energy,coverage,distance_to_final_coverage_m\n"
       "0,k0,free,energy_aware,0,0,1,complete,,10,10,1,9\n"
       "1,k1,free,energy_aware,0,5,1,complete,,12,12,1,11\n"
-      "2,k2,free,energy_aware,5,0,1,complete,,14,14,1,13\n"
-      "3,k3,free,energy_aware,5,5,1,complete,,8,8,1,7\n");
+      "2,k2,free,energy_aware,0,10,1,complete,,14,14,1,13\n"
+      "3,k3,free,energy_aware,5,0,1,complete,,14,14,1,13\n"
+      "4,k4,free,energy_aware,5,5,1,complete,,16,16,1,15\n"
+      "5,k5,free,energy_aware,5,10,1,complete,,18,18,1,17\n"
+      "6,k6,free,energy_aware,10,0,1,complete,,18,18,1,17\n"
+      "7,k7,free,energy_aware,10,5,1,complete,,20,20,1,19\n"
+      "8,k8,free,energy_aware,10,10,1,complete,,11,11,1,10\n");
+  // A 3 x 3 grid of (w1, w2): heat maps need at least three values of each weight.
   fsweep::testing::write_text(dir / "progress.csv",
                               "run_index,run_key,distance_m,explored_area_m2,coverage,energy\n"
-                              "0,k0,0,1,0.1,0\n0,k0,10,9,1,10\n1,k1,0,1,0.1,0\n1,k1,12,9,1,12\n"
-                              "2,k2,0,1,0.1,0\n2,k2,14,9,1,14\n3,k3,0,1,0.1,0\n3,k3,8,9,1,8\n");
+                              "0,k0,0,1,0.1,0\n0,k0,10,9,1,10\n"
+                              "1,k1,0,1,0.1,0\n1,k1,12,9,1,12\n"
+                              "2,k2,0,1,0.1,0\n2,k2,14,9,1,14\n"
+                              "3,k3,0,1,0.1,0\n3,k3,14,9,1,14\n"
+                              "4,k4,0,1,0.1,0\n4,k4,16,9,1,16\n"
+                              "5,k5,0,1,0.1,0\n5,k5,18,9,1,18\n"
+                              "6,k6,0,1,0.1,0\n6,k6,18,9,1,18\n"
+                              "7,k7,0,1,0.1,0\n7,k7,20,9,1,20\n"
+                              "8,k8,0,1,0.1,0\n8,k8,11,9,1,11\n");
   const std::string out = (dir / "figures").string();
   ASSERT_EQ(fsweep_cli("aggregate " + dir.string()).code, 0);
   const Outcome r = fsweep_cli("plot " + dir.string() + " --out " + out);
