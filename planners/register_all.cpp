@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "planners/grid_planner.hpp"
+#include "planners/lattice_planner.hpp"
 
 namespace fsweep {
 namespace {
@@ -11,6 +12,11 @@ namespace {
 template <GridSearchKind Kind>
 std::unique_ptr<Planner> make_grid_planner(const nlohmann::json& params, const std::string& where) {
   return std::make_unique<GridPlanner>(Kind, GridPlannerParams::from_json(params, where));
+}
+
+template <LatticeSearchKind Kind>
+std::unique_ptr<Planner> make_lattice_planner(const nlohmann::json& params, const std::string& where) {
+  return std::make_unique<LatticePlanner>(Kind, LatticePlannerParams::from_json(params, where));
 }
 
 }  // namespace
@@ -21,6 +27,8 @@ std::span<const PlannerEntry> planner_table() {
   static constexpr std::array kTable{
       PlannerEntry{"astar", &make_grid_planner<GridSearchKind::AStar>},
       PlannerEntry{"dijkstra", &make_grid_planner<GridSearchKind::Dijkstra>},
+      PlannerEntry{"lattice", &make_lattice_planner<LatticeSearchKind::Dijkstra>},
+      PlannerEntry{"lattice_astar", &make_lattice_planner<LatticeSearchKind::AStar>},
   };
   return kTable;
 }

@@ -8,7 +8,9 @@
 
 #include "engine/world/config_error.hpp"
 #include "strategies/energy_aware.hpp"
+#include "strategies/orientation.hpp"
 #include "strategies/registry.hpp"
+#include "strategies/widest_frontier.hpp"
 
 namespace fsweep {
 namespace {
@@ -40,6 +42,20 @@ const std::map<std::string, Entry>& table() {
           std::string d = "path";
           if (!p.is_null() && p.contains("distance")) d = p.at("distance").get<std::string>();
           return nlohmann::json{{"distance", d}};
+        }}},
+      {"orientation",
+       {[](const nlohmann::json& p, std::uint64_t, const std::string& where) -> std::unique_ptr<Strategy> {
+          return std::make_unique<Orientation>(orientation_params_from_json(p, where));
+        },
+        [](const nlohmann::json& p) { return nlohmann::json(orientation_params_from_json(p, "")); }}},
+      {"widest_frontier",
+       {[](const nlohmann::json& p, std::uint64_t, const std::string& where) -> std::unique_ptr<Strategy> {
+          widest_frontier_params_from_json(p, where);
+          return std::make_unique<WidestFrontier>();
+        },
+        [](const nlohmann::json& p) {
+          widest_frontier_params_from_json(p, "");
+          return nlohmann::json::object();
         }}},
   };
   return entries;

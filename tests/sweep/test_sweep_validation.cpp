@@ -66,7 +66,8 @@ TEST(SweepValidation, ReportsEveryProblemAtOnceWithPathsAndAllowedValues) {
   EXPECT_HAS(m, "/nonexistent/missing.map: cannot open the file");
   EXPECT_HAS(
       m,
-      "\ns.json: /strategies/0/name: unknown strategy 'energy_awre'; known: closest_frontier, energy_aware");
+      "\ns.json: /strategies/0/name: unknown strategy 'energy_awre'; known: closest_frontier, energy_aware, "
+      "orientation, widest_frontier");
   EXPECT_HAS(
       m, "\ns.json: /strategies/1/params/w1/range: value 260 out of range; allowed: a number in [0, 250]");
 }
@@ -146,7 +147,7 @@ TEST(SweepValidation, PlannerProblems) {
   json s = minimal();
   s["planners"] = json::parse(R"(["rrt", {"type": "astar", "params": {"radius": 1}}, {"kind": "astar"}])");
   const std::string m = problems_of(s);
-  EXPECT_HAS(m, "/planners/0: unknown planner 'rrt'; known: astar, dijkstra");
+  EXPECT_HAS(m, "/planners/0: unknown planner 'rrt'; known: astar, dijkstra, lattice, lattice_astar");
   EXPECT_HAS(m, "/planners/1/params/radius: unknown key 'radius'");
   EXPECT_HAS(m, "/planners/2/kind: unknown key 'kind'; allowed: type, params");
 }

@@ -1,0 +1,305 @@
+// Hand-worked situations for Mei 2006's target selection rules: orientation (section IV-B,
+// Figures 3(b) and 4) and the widest-frontier baseline (section V-C).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "engine/world/config_error.hpp"
+#include "strategies/orientation.hpp"
+#include "strategies/registry.hpp"
+#include "strategies/widest_frontier.hpp"
+
+namespace fsweep {
+namespace {
+
+/// Euclidean distances (metres, resolution 1) from the robot; cells in `unreachable` are
+/// +infinity. nearest_from_robot: the smallest, ties to the lowest position.
+class EuclideanOracle final : public DistanceOracle {
+ public:
+  const KnownMap* known = nullptr;
+  Cell robot{};
+  std::set<int> unreachable;
+
+  std::vector<double> from_robot(std::span<const int> cells, double bound_m) override {
+    std::vector<double> out;
+    for (const int c : cells) {
+      const double d = distance(c);
+      out.push_back(d <= bound_m ? d : std::numeric_limits<double>::infinity());
+    }
+    return out;
+  }
+  std::vector<double> from_dock(std::span<const int> cells, double bound_m) override {
+    return from_robot(cells, bound_m);
+  }
+  int nearest_from_robot(std::span<const int> cells) override {
+    int best = -1;
+    double best_d = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+      if (distance(cells[i]) < best_d) {
+        best_d = distance(cells[i]);
+        best = static_cast<int>(i);
+      }
+    }
+    return best;
+  }
+
+ private:
+  double distance(int c) const {
+    return unreachable.count(c) != 0 ? std::numeric_limits<double>::infinity()
+                                     : euclidean_distance(robot, known->cell(c));
+  }
+};
+
+/// A known map drawn in ASCII: '?' unknown, '.' free, '#' occupied, 'R' the robot (free).
+struct Situation {
+  KnownMap known;
+  FrontierMap frontiers;
+  std::vector<FrontierCluster> clusters;
+  EuclideanOracle oracle;
+  SensorParams sensor;
+  Cell robot{};
+  int heading = 0;
+
+  Situation(const std::vector<std::string>& rows, double d_s, int heading_in)
+      : known(static_cast<int>(rows[0].size()), static_cast<int>(rows.size()), 1.0), heading(heading_in) {
+    for (int y = 0; y < known.height(); ++y) {
+      for (int x = 0; x < known.width(); ++x) {
+        const char ch = rows[static_cast<std::size_t>(y)][static_cast<std::size_t>(x)];
+        if (ch == 'R') robot = Cell{x, y};
+        if (ch != '?') known.reveal(known.index(Cell{x, y}), ch == '#');
+      }
+    }
+    frontiers = FrontierMap(known);
+    clusters = frontiers.clusters(known, 0.0, false);
+    sensor.range_m = d_s;
+    oracle.known = &known;
+    oracle.robot = robot;
+  }
+  Observation observe() {
+    return Observation{known,   frontiers, clusters,     oracle, sensor, robot,
+                       heading, robot,     std::nullopt, robot,  {},     1};
+  }
+  int at(int x, int y) const { return known.index(Cell{x, y}); }
+  std::vector<Cell> as_cells(const std::vector<int>& indices) const {
+    std::vector<Cell> out;
+    for (const int i : indices) out.push_back(known.cell(i));
+    return out;
+  }
+};
+
+constexpr int kEast = 0;
+constexpr int kSouth = 2;
+constexpr int kNorth = 6;
+
+// Figure 3(b): the robot R at (3, 3); the explored area holds exactly five frontier cells,
+// (2,2), (3,1), (3,2), (2,4), (4,4), of which (2,2), (3,1), (3,2) are connected. The paper's
+// (i, j) are read as (x, y) with y growing downward (our screen convention); the figure's
+// obstacles are not given in the text, so the walls below are chosen to make exactly those
+// five cells frontiers.
+const std::vector<std::string> kFigure3b = {
+    "???????",  //
+    "?#?.##?",  //
+    "?#..#??",  //
+    "?#.R.#?",  //
+    "?#.#.#?",  //
+    "???#???",  //
+    "???????",  //
+};
+
+// Figure 4: 25 explored cells (5 x 5 around the robot), the rest unknown; 8 frontier cells
+// numbered clockwise from the robot's left; the cell at the robot's left is an obstacle.
+// The robot faces north (up), so its left is west. Cells 1..8 (offsets from R):
+// (-2,-1) (-2,-2) (-1,-2) (0,-2) (1,-2) (2,-2) (2,-1) (2,0); the rest of the ring is walls.
+const std::vector<std::string> kFigure4 = {
+    "???????????",  //
+    "???????????",  //
+    "???????????",  //
+    "???.....???",  //
+    "???.....???",  //
+    "???#.R..???",  //
+    "???#...#???",  //
+    "???#####???",  //
+    "???????????",  //
+    "???????????",  //
+    "???????????",  //
+};
+
+std::vector<Cell> figure4_cells_1_to_8() {
+  return {{3, 4}, {3, 3}, {4, 3}, {5, 3}, {6, 3}, {7, 3}, {7, 4}, {7, 5}};
+}
+
+TEST(MeiFigure3b, HasTheFiveFrontierCellsOfThePaper) {
+  Situation s(kFigure3b, 3.0, kNorth);
+  const std::vector<Cell> expected = {{3, 1}, {2, 2}, {3, 2}, {2, 4}, {4, 4}};  // ascending index
+  EXPECT_EQ(s.as_cells(s.frontiers.cells()), expected);
+}
+
+TEST(MeiFigure4, HasEightFrontierCellsAndAWallAtTheLeft) {
+  Situation s(kFigure4, 4.0, kNorth);
+  EXPECT_EQ(s.frontiers.count(), 8);
+  EXPECT_EQ(s.known.state(Cell{3, 5}), CellState::Occupied);  // directly left of R (5,5)
+}
+
+TEST(Orientation, Figure4ListsTheCellsClockwiseFromTheLeft) {
+  Situation s(kFigure4, 4.0, kNorth);
+  const auto f = s.frontiers.cells();
+  EXPECT_EQ(s.as_cells(clockwise_from_left(s.known, s.robot, kNorth, f)), figure4_cells_1_to_8());
+}
+
+TEST(Orientation, Figure4StopsBeforeSevenTenthsOfTheSensingRange) {
+  // d_s = 4: 0.7 d_s = 2.8. From the head, cell 1 (3,4): cell 4 (5,3) is sqrt(5) = 2.24 away,
+  // cell 5 (6,3) sqrt(10) = 3.16: the walk ends at cell 4, straight ahead of the robot.
+  Situation s(kFigure4, 4.0, kNorth);
+  Orientation o{OrientationParams{}};
+  const Decision d = o.decide(s.observe());
+  ASSERT_EQ(d.kind, Decision::Kind::GoTo);
+  EXPECT_EQ(d.goal, (Cell{5, 3}));
+  // d_s = 10 (the paper's): every cell is within 7 of the head; the walk reaches cell 8.
+  Situation wide(kFigure4, 10.0, kNorth);
+  EXPECT_EQ(o.decide(wide.observe()).goal, (Cell{7, 5}));
+}
+
+TEST(Orientation, HeadingRotatesTheList) {
+  // Facing east the left is north: the list starts at cell 4 (5,3), runs 5, 6, 7, 8 and then
+  // wraps to 1, 2, 3. With d_s = 4 the walk stops before cell 8 (2.83 >= 2.8 from the head).
+  Situation s(kFigure4, 4.0, kEast);
+  const auto c = figure4_cells_1_to_8();
+  const std::vector<Cell> expected = {c[3], c[4], c[5], c[6], c[7], c[0], c[1], c[2]};
+  EXPECT_EQ(s.as_cells(clockwise_from_left(s.known, s.robot, kEast, s.frontiers.cells())), expected);
+  Orientation o{OrientationParams{}};
+  EXPECT_EQ(o.decide(s.observe()).goal, c[6]);
+}
+
+TEST(Orientation, Figure3bFacingNorth) {
+  // Left = west. Clockwise: (2,2) (north-west), then (3,2) and (3,1) at the same angle (north;
+  // nearer first), then (4,4) (south-east), (2,4) (south-west). d_s = 3 (0.7 d_s = 2.1): the
+  // walk goes (2,2) -> (3,2) -> (3,1) (sqrt 2 from the head) and stops at the jump to (4,4).
+  Situation s(kFigure3b, 3.0, kNorth);
+  const std::vector<Cell> order = {{2, 2}, {3, 2}, {3, 1}, {4, 4}, {2, 4}};
+  EXPECT_EQ(s.as_cells(clockwise_from_left(s.known, s.robot, kNorth, s.frontiers.cells())), order);
+  Orientation o{OrientationParams{}};
+  EXPECT_EQ(o.decide(s.observe()).goal, (Cell{3, 1}));
+}
+
+TEST(Orientation, DistanceFromTheHeadMustStayBelowTheLimit) {
+  // As above with d_s = 2: 0.7 d_s = 1.4 and (3,1) is sqrt 2 = 1.414 from the head: stop at (3,2).
+  Situation s(kFigure3b, 2.0, kNorth);
+  Orientation o{OrientationParams{}};
+  EXPECT_EQ(o.decide(s.observe()).goal, (Cell{3, 2}));
+  // head_distance_ratio 1: the limit 2 admits (3,1).
+  Orientation wide{OrientationParams{1.0}};
+  EXPECT_EQ(wide.decide(s.observe()).goal, (Cell{3, 1}));
+}
+
+TEST(Orientation, NoJumpKeepsTheHead) {
+  // Facing south the left is east: the list is (4,4), (2,4), (2,2), (3,2), (3,1). (2,4) is two
+  // columns from the head: a jump, so the target is the head itself.
+  Situation s(kFigure3b, 3.0, kSouth);
+  const std::vector<Cell> order = {{4, 4}, {2, 4}, {2, 2}, {3, 2}, {3, 1}};
+  EXPECT_EQ(s.as_cells(clockwise_from_left(s.known, s.robot, kSouth, s.frontiers.cells())), order);
+  Orientation o{OrientationParams{}};
+  EXPECT_EQ(o.decide(s.observe()).goal, (Cell{4, 4}));
+}
+
+TEST(Orientation, UnreachableCellsInTheRegionAreIgnored) {
+  // As NoJumpKeepsTheHead with (4,4) unreachable: the head is (2,4), then a jump to (2,2).
+  Situation s(kFigure3b, 3.0, kSouth);
+  s.oracle.unreachable.insert(s.at(4, 4));
+  Orientation o{OrientationParams{}};
+  EXPECT_EQ(o.decide(s.observe()).goal, (Cell{2, 4}));
+}
+
+// A corridor open at both ends: frontier cells (1,1) (7 from R) and (14,1) (6 from R).
+const std::vector<std::string> kCorridor = {
+    "?##############?",  //
+    "?.......R......?",  //
+    "?##############?",  //
+};
+
+TEST(MeiStrategies, NoFrontierInTheRegionGoesToTheClosestOutside) {
+  for (const std::string name : {"orientation", "widest_frontier"}) {
+    Situation s(kCorridor, 3.0, kEast);
+    auto strategy = make_strategy(name, nullptr, 1, "strategy");
+    EXPECT_EQ(strategy->decide(s.observe()).goal, (Cell{14, 1})) << name;
+    s.oracle.unreachable.insert(s.at(14, 1));
+    EXPECT_EQ(strategy->decide(s.observe()).goal, (Cell{1, 1})) << name;
+    s.oracle.unreachable.insert(s.at(1, 1));
+    EXPECT_EQ(strategy->decide(s.observe()).kind, Decision::Kind::Finish) << name;
+  }
+}
+
+TEST(MeiStrategies, NoFrontierLeftFinishes) {
+  const std::vector<std::string> closed = {"#####", "#.R.#", "#####"};
+  for (const std::string name : {"orientation", "widest_frontier"}) {
+    Situation s(closed, 10.0, kEast);
+    EXPECT_EQ(make_strategy(name, nullptr, 1, "strategy")->decide(s.observe()).kind, Decision::Kind::Finish);
+  }
+}
+
+TEST(WidestFrontier, Figure3bTakesTheMiddleOfTheConnectedThree) {
+  // Groups: {(3,1), (2,2), (3,2)}, {(2,4)}, {(4,4)}. The centroid of the three is (8/3, 5/3);
+  // (3,2) is nearest (0.47 against 0.75 for the others).
+  Situation s(kFigure3b, 3.0, kNorth);
+  const auto groups = frontier_groups(s.known, s.frontiers.cells());
+  ASSERT_EQ(groups.size(), 3U);
+  EXPECT_EQ(s.as_cells(groups[0]), (std::vector<Cell>{{3, 1}, {2, 2}, {3, 2}}));
+  WidestFrontier w;
+  EXPECT_EQ(w.decide(s.observe()).goal, (Cell{3, 2}));
+}
+
+TEST(WidestFrontier, Figure4TakesTheCellNearestTheCentroid) {
+  // One group of 8; centroid offset (0.25, -1.5) from R: nearest is cell 4 (5,3).
+  Situation s(kFigure4, 10.0, kNorth);
+  WidestFrontier w;
+  EXPECT_EQ(w.decide(s.observe()).goal, (Cell{5, 3}));
+}
+
+TEST(WidestFrontier, EqualGroupsBreakToTheLowestIndex) {
+  // Two frontiers of two cells each, west (1,1)-(1,2) and east (5,1)-(5,2): the west one has
+  // the lowest index; its middle is a tie broken to the lowest index, (1,1).
+  const std::vector<std::string> rows = {"#######", "?..R..?", "?.....?", "#######"};
+  Situation s(rows, 10.0, kEast);
+  WidestFrontier w;
+  EXPECT_EQ(w.decide(s.observe()).goal, (Cell{1, 1}));
+}
+
+TEST(MeiStrategies, ParamsAreValidated) {
+  EXPECT_DOUBLE_EQ(orientation_params_from_json(nullptr, "p").head_distance_ratio, 0.7);
+  EXPECT_DOUBLE_EQ(orientation_params_from_json({{"head_distance_ratio", 1.0}}, "p").head_distance_ratio,
+                   1.0);
+  EXPECT_THROW((void)orientation_params_from_json({{"head_distance_ratio", 0.0}}, "p"), ConfigError);
+  EXPECT_THROW((void)orientation_params_from_json({{"head_distance_ratio", 1.5}}, "p"), ConfigError);
+  EXPECT_THROW((void)orientation_params_from_json({{"head_distance_ratio", "x"}}, "p"), ConfigError);
+  EXPECT_THROW((void)orientation_params_from_json({{"jump_ratio", 0.5}}, "p"), ConfigError);
+  EXPECT_THROW(widest_frontier_params_from_json({{"w1", 1}}, "p"), ConfigError);
+  EXPECT_NO_THROW(widest_frontier_params_from_json(nlohmann::json::object(), "p"));
+  try {
+    (void)make_strategy("orientation", {{"head_distance_ratio", 2}}, 1, "strategy");
+    FAIL();
+  } catch (const ConfigError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("strategy/params/head_distance_ratio"), std::string::npos) << what;
+    EXPECT_NE(what.find("(0, 1]"), std::string::npos) << what;
+  }
+  EXPECT_EQ(resolved_strategy_params("orientation", nullptr), (nlohmann::json{{"head_distance_ratio", 0.7}}));
+  EXPECT_EQ(resolved_strategy_params("widest_frontier", nullptr), nlohmann::json::object());
+}
+
+TEST(MeiStrategies, RegisteredAndCloneable) {
+  Situation s(kFigure4, 4.0, kNorth);
+  for (const std::string name : {"orientation", "widest_frontier"}) {
+    auto a = make_strategy(name, nullptr, 1, "strategy");
+    EXPECT_EQ(a->name(), name);
+    auto b = a->clone();
+    EXPECT_EQ(b->name(), name);
+    EXPECT_EQ(a->decide(s.observe()).goal, b->decide(s.observe()).goal);
+  }
+}
+
+}  // namespace
+}  // namespace fsweep
