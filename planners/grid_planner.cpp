@@ -58,11 +58,8 @@ PlanResult GridPlanner::plan(const KnownMap& known, const PlanRequest& request) 
   PlanResult result;
 
   // 1. Endpoints must be known free (outside the grid counts as occupied).
-  if (!known.is_free(request.start)) {
-    result.status = PlanStatus::StartInvalid;
-  } else if (!known.is_free(request.goal)) {
-    result.status = PlanStatus::GoalInvalid;
-  } else {
+  result.status = check_endpoints(known, request);
+  if (result.status == PlanStatus::Success) {
     // 2. Search; start == goal settles the start as the goal (a one-cell path).
     GridEnvironment env(known, request.goal, kind_ == GridSearchKind::AStar, request.allow_corner_cutting);
     const SearchOutcome outcome = search_.run(env, known.index(request.start));
@@ -71,16 +68,11 @@ PlanResult GridPlanner::plan(const KnownMap& known, const PlanRequest& request) 
       result.status = PlanStatus::NoPath;
     } else {
       // 3. Cells along the parents, then the shared motion accounting.
-      result.status = PlanStatus::Success;
       const std::vector<int> states = search_.path_to(outcome.goal);
-      result.path.reserve(states.size());
-      for (const int s : states) result.path.push_back(known.cell(s));
-      const MotionCost cost =
-          measure_path(result.path, request.start_heading, request.energy, known.resolution_m());
-      result.length_m = cost.length_m;
-      result.energy = cost.energy;
-      result.stops = cost.stops;
-      result.turns = cost.turns;
+      std::vector<Cell> path;
+      path.reserve(states.size());
+      for (const int s : states) path.push_back(known.cell(s));
+      set_path(result, std::move(path), request, known.resolution_m());
     }
   }
   result.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

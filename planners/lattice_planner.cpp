@@ -98,11 +98,8 @@ PlanResult LatticePlanner::plan(const KnownMap& known, const PlanRequest& reques
   PlanResult result;
 
   // 1. Endpoints must be known free (outside the grid counts as occupied).
-  if (!known.is_free(request.start)) {
-    result.status = PlanStatus::StartInvalid;
-  } else if (!known.is_free(request.goal)) {
-    result.status = PlanStatus::GoalInvalid;
-  } else {
+  result.status = check_endpoints(known, request);
+  if (result.status == PlanStatus::Success) {
     // 2. Search from (start, start heading); start == goal settles the start as the goal.
     LatticeEnvironment env(known, request, kind_ == LatticeSearchKind::AStar);
     const int start_state = known.index(request.start) * kHeadings + request.start_heading;
@@ -113,17 +110,12 @@ PlanResult LatticePlanner::plan(const KnownMap& known, const PlanRequest& reques
     } else {
       // 3. Cells of the states along the parents, then the shared motion accounting (its
       //    energy equals the search cost: same per-step rule, no final stop).
-      result.status = PlanStatus::Success;
       const std::vector<int> states = search_.path_to(outcome.goal);
-      result.path.reserve(states.size());
-      for (const int s : states) result.path.push_back(known.cell(s / kHeadings));
-      const MotionCost cost =
-          measure_path(result.path, request.start_heading, request.energy, known.resolution_m());
-      result.length_m = cost.length_m;
-      result.energy = cost.energy;
-      result.stops = cost.stops;
-      result.turns = cost.turns;
-      assert(std::abs(cost.energy - search_.g(outcome.goal)) <= 1e-9 * (1.0 + cost.energy));
+      std::vector<Cell> path;
+      path.reserve(states.size());
+      for (const int s : states) path.push_back(known.cell(s / kHeadings));
+      set_path(result, std::move(path), request, known.resolution_m());
+      assert(std::abs(result.energy - search_.g(outcome.goal)) <= 1e-9 * (1.0 + result.energy));
     }
   }
   result.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

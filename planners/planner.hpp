@@ -46,6 +46,14 @@ struct PlanResult {
   double time_s = 0.0;
 };
 
+/// StartInvalid or GoalInvalid when that endpoint is not a known-free cell (outside the grid
+/// counts as occupied; the start is checked first), else Success. Every planner starts so.
+[[nodiscard]] PlanStatus check_endpoints(const KnownMap& known, const PlanRequest& request);
+
+/// Marks `result` successful with `path` and fills length, energy, stops and turns by the one
+/// accounting rule shared by all planners (measure_path in engine/world/motion.hpp).
+void set_path(PlanResult& result, std::vector<Cell> path, const PlanRequest& request, double resolution_m);
+
 /// A path planner. Instances keep preallocated search arrays between queries, so they are not
 /// thread-safe: use one per simulation.
 class Planner {
