@@ -23,6 +23,7 @@ constexpr const char* kPython = "/usr/bin/python3";
 struct PlotOptions {
   std::string dir;
   std::string out;  // empty: DIR/plots
+  int top = 10;     // configurations drawn, best first
 };
 
 /// Runs `args` (args[0] an absolute path) and returns its exit code (-1 if it could not run or
@@ -70,7 +71,7 @@ int run_plot(const PlotOptions& o) {
     }
   }
   const std::string out = o.out.empty() ? o.dir + "/plots" : o.out;
-  const int code = run_process({kPython, script, o.dir, "--out", out}, false);
+  const int code = run_process({kPython, script, o.dir, "--out", out, "--top", std::to_string(o.top)}, false);
   if (code != 0) {
     std::cerr << "fsweep: error: " << script << " failed (exit code " << code << ")\n";
     return 1;
@@ -88,6 +89,9 @@ Command add_plot_command(CLI::App& app) {
   sub->add_option("DIR", o->dir, "Sweep output directory (aggregated first if summary files are missing)")
       ->required();
   sub->add_option("--out", o->out, "Directory for the PNGs (default: DIR/plots)");
+  sub->add_option("--top", o->top, "Draw the best N configurations (by best.csv)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
   return [o] { return run_plot(*o); };
 }
 

@@ -120,6 +120,11 @@ TEST(CliPlot, HeatMapForTwoVaryingWeightsInOutDir) {
   ASSERT_EQ(fsweep_cli("aggregate " + dir.string()).code, 0);
   const Outcome r = fsweep_cli("plot " + dir.string() + " --out " + out);
   ASSERT_EQ(r.code, 0) << r.output;
+  // --top reaches the script; a bad value is refused with exit code 2.
+  const Outcome top = fsweep_cli("plot " + dir.string() + " --out " + out + "_top3 --top 3");
+  ASSERT_EQ(top.code, 0) << top.output;
+  EXPECT_TRUE(std::filesystem::exists(out + "_top3/progress.png"));
+  EXPECT_EQ(fsweep_cli("plot " + dir.string() + " --top 0").code, 2);
   for (const char* f : {"progress.png", "metrics.png", "heatmap_w1_w2.png"}) {
     EXPECT_TRUE(std::filesystem::exists(out + "/" + f)) << f;
   }

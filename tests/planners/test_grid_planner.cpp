@@ -70,25 +70,6 @@ TEST_P(GridPlannerBoth, GoalOutsideGridOrUnknown) {
   EXPECT_EQ(planner.plan(m.known, request_for(m.start, Cell{2, 0})).status, PlanStatus::GoalInvalid);
 }
 
-TEST_P(GridPlannerBoth, StartInvalidBeforeGoalInvalid) {
-  const auto m = known_from_ascii({"#.G", "?.."});
-  GridPlanner planner(GetParam());
-  EXPECT_EQ(planner.plan(m.known, request_for(Cell{0, 0}, m.goal)).status, PlanStatus::StartInvalid);
-  EXPECT_EQ(planner.plan(m.known, request_for(Cell{0, 1}, m.goal)).status, PlanStatus::StartInvalid);
-  EXPECT_EQ(planner.plan(m.known, request_for(Cell{-1, 0}, m.goal)).status, PlanStatus::StartInvalid);
-  // Both ends invalid: the start is reported.
-  EXPECT_EQ(planner.plan(m.known, request_for(Cell{0, 0}, Cell{0, 0})).status, PlanStatus::StartInvalid);
-}
-
-TEST_P(GridPlannerBoth, NoPathBehindWall) {
-  const auto m = known_from_ascii({"S.#..", "..#..", "..#.G"});
-  GridPlanner planner(GetParam());
-  const PlanResult r = planner.plan(m.known, request_for(m.start, m.goal));
-  EXPECT_EQ(r.status, PlanStatus::NoPath);
-  EXPECT_TRUE(r.path.empty());
-  EXPECT_GT(r.expansions, 0);
-}
-
 TEST_P(GridPlannerBoth, UnknownCellsBlock) {
   // The direct row is unknown in the middle: the path goes around through row 1.
   const auto m = known_from_ascii({"S.?.G", "....."});

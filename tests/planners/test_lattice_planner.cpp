@@ -161,24 +161,6 @@ TEST_P(LatticePlannerBoth, GoalInvalid) {
   }
 }
 
-TEST_P(LatticePlannerBoth, StartInvalidBeforeGoalInvalid) {
-  const auto m = known_from_ascii({"#.G", "?.."});
-  LatticePlanner planner(GetParam());
-  EXPECT_EQ(planner.plan(m.known, mei_request(Cell{0, 0}, m.goal)).status, PlanStatus::StartInvalid);
-  EXPECT_EQ(planner.plan(m.known, mei_request(Cell{0, 1}, m.goal)).status, PlanStatus::StartInvalid);
-  EXPECT_EQ(planner.plan(m.known, mei_request(Cell{-1, 0}, m.goal)).status, PlanStatus::StartInvalid);
-  EXPECT_EQ(planner.plan(m.known, mei_request(Cell{0, 0}, Cell{0, 0})).status, PlanStatus::StartInvalid);
-}
-
-TEST_P(LatticePlannerBoth, NoPathBehindWall) {
-  const auto m = known_from_ascii({"S.#..", "..#..", "..#.G"});
-  LatticePlanner planner(GetParam());
-  const PlanResult r = planner.plan(m.known, mei_request(m.start, m.goal));
-  EXPECT_EQ(r.status, PlanStatus::NoPath);
-  EXPECT_TRUE(r.path.empty());
-  EXPECT_GT(r.expansions, 0);
-}
-
 TEST_P(LatticePlannerBoth, StartEqualsGoalCostsNothing) {
   const auto m = known_from_ascii({"...", ".S.", "..."});
   LatticePlanner planner(GetParam());

@@ -119,6 +119,8 @@ TEST_P(PlannerConformance, StartInsideObstacleOrUnknown) {
     EXPECT_EQ(r.status, PlanStatus::StartInvalid) << start.x << "," << start.y;
     EXPECT_TRUE(r.path.empty());
   }
+  // Both ends invalid: the start is reported (check_endpoints in planner.hpp).
+  EXPECT_EQ(planner->plan(m.known, request_for(Cell{0, 0}, Cell{0, 0})).status, PlanStatus::StartInvalid);
 }
 
 TEST_P(PlannerConformance, GoalBehindWallIsNoPath) {
