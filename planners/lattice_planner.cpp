@@ -1,6 +1,5 @@
 #include "planners/lattice_planner.hpp"
 
-#include <array>
 #include <cassert>
 #include <chrono>
 #include <cmath>
@@ -9,68 +8,34 @@
 
 #include "engine/world/config_error.hpp"
 #include "engine/world/motion.hpp"
-#include "planners/octile_grid.hpp"
+#include "planners/heading_lattice.hpp"
 
 namespace fsweep {
 namespace {
 
-constexpr int kHeadings = 8;
+constexpr int kHeadings = kLatticeHeadings;
 
-/// Search environment of one query: states are `cell_index * 8 + heading`, edge costs are
-/// energies under the request's model (see lattice_planner.hpp), any state on the goal cell
-/// ends the search.
-class LatticeEnvironment {
+/// Lattice policy of `lattice` / `lattice_astar`: every step allowed; the heuristic is zero
+/// (Dijkstra) or the octile distance to the goal times the cheapest travel energy per cell.
+class OctileLatticePolicy {
  public:
-  LatticeEnvironment(const KnownMap& known, const PlanRequest& request, bool use_heuristic)
-      : known_(known),
-        goal_(request.goal),
-        goal_index_(known.index(request.goal)),
+  OctileLatticePolicy(const KnownMap& known, const PlanRequest& request, bool use_heuristic)
+      : goal_(request.goal),
         width_(known.width()),
-        allow_corner_cutting_(request.allow_corner_cutting),
-        use_heuristic_(use_heuristic) {
-    const double resolution_m = known.resolution_m();
-    travel_per_cell_ = request.energy.travel_per_cell(resolution_m);
-    for (int k = 0; k <= 4; ++k) turn_[static_cast<std::size_t>(k)] = request.energy.turn(k);
-    travel_[0] = request.energy.travel(1.0, resolution_m);
-    travel_[1] = request.energy.travel(kSqrt2, resolution_m);
-  }
+        use_heuristic_(use_heuristic),
+        travel_per_cell_(request.energy.travel_per_cell(known.resolution_m())) {}
 
-  [[nodiscard]] int state_count() const { return known_.size() * kHeadings; }
-  [[nodiscard]] double heuristic(int state) const {
+  [[nodiscard]] double heuristic(int cell) const {
     if (!use_heuristic_) return 0.0;
-    const int cell = state / kHeadings;
     return octile_distance(Cell{cell % width_, cell / width_}, goal_) * travel_per_cell_;
   }
-  Visit visit(int state, double /*g*/) const {
-    return state / kHeadings == goal_index_ ? Visit::Goal : Visit::Expand;
-  }
-  template <typename Sink>
-  void for_each_successor(int state, Sink&& sink) const {
-    const int cell = state / kHeadings;
-    const int heading = state % kHeadings;
-    const Cell c{cell % width_, cell / width_};
-    for (int next_heading = 0; next_heading < kHeadings; ++next_heading) {
-      const Cell d = kDirections[static_cast<std::size_t>(next_heading)];
-      const Cell n{c.x + d.x, c.y + d.y};
-      if (!octile_step_allowed(known_, c, n, allow_corner_cutting_)) continue;
-      const double cost = turn_[static_cast<std::size_t>(heading_difference(heading, next_heading))] +
-                          travel_[static_cast<std::size_t>(next_heading & 1)];
-      sink(known_.index(n) * kHeadings + next_heading, cost);
-    }
-  }
+  [[nodiscard]] static bool allows(int /*from*/, int /*to*/, double /*step_cells*/) { return true; }
 
  private:
-  const KnownMap& known_;
   Cell goal_;
-  int goal_index_;
   int width_;
-  bool allow_corner_cutting_;
   bool use_heuristic_;
-  double travel_per_cell_ = 0.0;
-  /// Stop + turn energy for 0..4 eighth-turns (0 for none).
-  std::array<double, 5> turn_{};
-  /// Travel energy of an orthogonal [0] and a diagonal [1] step.
-  std::array<double, 2> travel_{};
+  double travel_per_cell_;
 };
 
 }  // namespace
@@ -101,7 +66,8 @@ PlanResult LatticePlanner::plan(const KnownMap& known, const PlanRequest& reques
   result.status = check_endpoints(known, request);
   if (result.status == PlanStatus::Success) {
     // 2. Search from (start, start heading); start == goal settles the start as the goal.
-    LatticeEnvironment env(known, request, kind_ == LatticeSearchKind::AStar);
+    const OctileLatticePolicy policy(known, request, kind_ == LatticeSearchKind::AStar);
+    HeadingLattice env(known, request, policy);
     const int start_state = known.index(request.start) * kHeadings + request.start_heading;
     const SearchOutcome outcome = search_.run(env, start_state);
     result.expansions = outcome.expansions;

@@ -5,6 +5,7 @@
 
 #include "planners/grid_planner.hpp"
 #include "planners/lattice_planner.hpp"
+#include "planners/shortest_fewest_turns.hpp"
 
 namespace fsweep {
 namespace {
@@ -19,6 +20,10 @@ std::unique_ptr<Planner> make_lattice_planner(const nlohmann::json& params, cons
   return std::make_unique<LatticePlanner>(Kind, LatticePlannerParams::from_json(params, where));
 }
 
+std::unique_ptr<Planner> make_shortest_fewest_turns(const nlohmann::json& params, const std::string& where) {
+  return std::make_unique<ShortestFewestTurnsPlanner>(ShortestFewestTurnsParams::from_json(params, where));
+}
+
 }  // namespace
 
 std::span<const PlannerEntry> planner_table() {
@@ -29,6 +34,7 @@ std::span<const PlannerEntry> planner_table() {
       PlannerEntry{"dijkstra", &make_grid_planner<GridSearchKind::Dijkstra>},
       PlannerEntry{"lattice", &make_lattice_planner<LatticeSearchKind::Dijkstra>},
       PlannerEntry{"lattice_astar", &make_lattice_planner<LatticeSearchKind::AStar>},
+      PlannerEntry{"shortest_fewest_turns", &make_shortest_fewest_turns},
   };
   return kTable;
 }

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/world/config_error.hpp"
+#include "strategies/heuristics.hpp"
 #include "strategies/sensing_region.hpp"
 
 namespace fsweep {
@@ -76,7 +77,8 @@ std::size_t walk_from_head(const KnownMap& known, std::span<const int> ordered, 
 }
 
 Decision Orientation::decide(const Observation& obs) {
-  const SensingRegion region = split_by_sensing_region(obs);               // step 1
+  SensingRegion region = split_by_sensing_region(obs);  // step 1
+  restrict_to_segment(obs, region);  // the `seg` heuristic, when on (heuristics.hpp)
   if (region.inside.empty()) return closest_outside(obs, region.outside);  // steps 4, 5
   const std::vector<int> ordered =
       clockwise_from_left(obs.known, obs.robot, obs.heading, region.inside);  // step 2

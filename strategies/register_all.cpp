@@ -8,7 +8,11 @@
 
 #include "engine/world/config_error.hpp"
 #include "strategies/energy_aware.hpp"
+#include "strategies/gbl.hpp"
+#include "strategies/heuristics.hpp"
+#include "strategies/mcdm.hpp"
 #include "strategies/orientation.hpp"
+#include "strategies/random_frontier.hpp"
 #include "strategies/registry.hpp"
 #include "strategies/widest_frontier.hpp"
 
@@ -57,6 +61,25 @@ const std::map<std::string, Entry>& table() {
           widest_frontier_params_from_json(p, "");
           return nlohmann::json::object();
         }}},
+      {"gbl",
+       {[](const nlohmann::json& p, std::uint64_t seed, const std::string& where) -> std::unique_ptr<Strategy> {
+          return std::make_unique<Gbl>(gbl_params_from_json(p, where), seed);
+        },
+        [](const nlohmann::json& p) { return nlohmann::json(gbl_params_from_json(p, "")); }}},
+      {"mcdm",
+       {[](const nlohmann::json& p, std::uint64_t, const std::string& where) -> std::unique_ptr<Strategy> {
+          return std::make_unique<Mcdm>(mcdm_params_from_json(p, where));
+        },
+        [](const nlohmann::json& p) { return nlohmann::json(mcdm_params_from_json(p, "")); }}},
+      {"random_frontier",
+       {[](const nlohmann::json& p, std::uint64_t seed, const std::string& where) -> std::unique_ptr<Strategy> {
+          random_frontier_params_from_json(p, where);
+          return std::make_unique<RandomFrontier>(seed);
+        },
+        [](const nlohmann::json& p) {
+          random_frontier_params_from_json(p, "");
+          return nlohmann::json::object();
+        }}},
   };
   return entries;
 }
@@ -74,7 +97,11 @@ const Entry& find(const std::string& name, const std::string& where) {
 
 std::unique_ptr<Strategy> make_strategy(const std::string& name, const nlohmann::json& params, std::uint64_t seed,
                                         const std::string& where) {
-  return find(name, where).make(params, seed, where + "/params");
+  // Heuristics apply to any strategy and are run by the engine (heuristics.hpp): validated
+  // here, then taken out before the strategy's own parser sees the parameters.
+  const Entry& entry = find(name, where);
+  (void)heuristics_from_json(params, where + "/params");
+  return entry.make(without_heuristics(params), seed, where + "/params");
 }
 
 std::vector<std::string> strategy_names() {
@@ -84,7 +111,15 @@ std::vector<std::string> strategy_names() {
 }
 
 nlohmann::json resolved_strategy_params(const std::string& name, const nlohmann::json& params) {
-  return find(name, "strategy").resolve(params);
+  // "heuristics" is recorded (canonical order) whenever the key is given, even as [], and
+  // omitted when absent: run keys and columns of configurations without the key are unchanged,
+  // and every configuration of a sweep over [[], ["rr"], ...] has the column.
+  nlohmann::json resolved = find(name, "strategy").resolve(without_heuristics(params));
+  if (params.is_object() && params.contains("heuristics")) {
+    if (resolved.is_null()) resolved = nlohmann::json::object();
+    resolved["heuristics"] = heuristics_to_json(heuristics_from_json(params, "strategy/params"));
+  }
+  return resolved;
 }
 
 }  // namespace fsweep

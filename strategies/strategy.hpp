@@ -62,6 +62,14 @@ struct Observation {
   BatteryView battery;
   /// Decisions made so far in this run.
   int decision_index = 0;
+  /// Set by the engine when the `seg` heuristic (strategies/heuristics.hpp) restricts this
+  /// decision: one flag per cell index of `known`, 1 for the cells of the robot's current map
+  /// segment (engine/world/segmentation.hpp), 0 elsewhere. `clusters` then holds only the
+  /// clusters whose representative lies in that segment; a strategy that reads frontier cells
+  /// in another way must keep to the flagged ones too (restrict_to_segment() in
+  /// heuristics.hpp). Null when nothing is restricted: `seg` off, or no cluster
+  /// representative in the segment.
+  const std::vector<std::uint8_t>* segment_mask = nullptr;
 };
 
 /// What to do next.

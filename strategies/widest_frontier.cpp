@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/world/config_error.hpp"
+#include "strategies/heuristics.hpp"
 #include "strategies/sensing_region.hpp"
 
 namespace fsweep {
@@ -67,7 +68,8 @@ int middle_cell(const KnownMap& known, std::span<const int> group) {
 }
 
 Decision WidestFrontier::decide(const Observation& obs) {
-  const SensingRegion region = split_by_sensing_region(obs);               // 1
+  SensingRegion region = split_by_sensing_region(obs);  // 1
+  restrict_to_segment(obs, region);  // the `seg` heuristic, when on (heuristics.hpp)
   if (region.inside.empty()) return closest_outside(obs, region.outside);  // 4
   const auto groups = frontier_groups(obs.known, region.inside);           // 2
   std::size_t widest = 0;

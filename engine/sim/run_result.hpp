@@ -25,7 +25,8 @@ enum class EndReason {
 [[nodiscard]] std::string_view to_string(EndReason r);
 
 /// Per-run metrics (DESIGN.md section 6). Areas in m^2, distances in metres, energy in the
-/// energy model's unit.
+/// energy model's unit. Fields added later are declared last, so that CSV columns (in
+/// declaration order, run_table.hpp) are only ever appended.
 struct RunMetrics {
   double distance_m = 0.0;
   double energy = 0.0;
@@ -59,6 +60,32 @@ struct RunMetrics {
   double planner_time_s = 0.0;
   double decision_time_s = 0.0;
   double wall_time_s = 0.0;
+  /// Map completeness (Holz et al. 2010, section V), in [0, 1]: |K & O| / |O| (1 when O is
+  /// empty), where K is the set of known cells (free or occupied) and O the observable cells:
+  /// those a scan from some reachable free cell could see, with the run's sensor and any
+  /// heading. Under the sensor's ray rules (sensor.hpp) and a range of at least one diagonal
+  /// cell (checked by the Simulation), O is exactly R plus the 4-neighbours of R, R = the free
+  /// cells reachable from the start (observable_cells() in simulation.hpp, checked against the
+  /// rays in tests/sim/test_completeness.cpp): every cell a clear ray reaches is entered from
+  /// a free cell beside it that is 4-connected to the robot, and a 4-neighbour is always in
+  /// view. The robot only stands on cells of R, so K is inside O and completeness is
+  /// known / observable. Unlike `coverage` (free cells only) it counts the walls too: a wall
+  /// face never scanned, e.g. in a corner a re-checking robot skipped, lowers it; with
+  /// sensor misses (miss_probability) so do the missed cells.
+  /// Relation to the paper: with cell probabilities 0, 0.5 or 1, a cell's entropy is 0 bits if
+  /// known and 1 bit if unknown, so a map's entropy over O is the count of its unknown cells.
+  /// The share of the removable entropy removed, (H_0 - H_expl) / (H_0 - H_full) with H_0 the
+  /// empty map's and H_full the fully explored map's (0 over O), is exactly |K & O| / |O|.
+  /// (The paper prints c = (1 - H_full / H_expl) * 100, which would be 0 for a complete map;
+  /// we read it as this ratio.) An unknown observable cell always leaves a frontier cell next
+  /// to it, so a `complete` run without dropped goals has completeness exactly 1.
+  double completeness = 0.0;
+  /// `rr` heuristic (strategies/heuristics.hpp): journeys cut short because the goal stopped
+  /// being worth reaching, each followed by a new decision. 0 without `rr`.
+  int rr_redecisions = 0;
+  /// `seg` heuristic: time spent segmenting the known map (engine/world/segmentation.hpp), in
+  /// seconds (not part of decision_time_s). 0 without `seg`.
+  double segmentation_time_s = 0.0;
 };
 
 /// One point of the progress curve.

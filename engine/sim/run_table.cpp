@@ -90,6 +90,9 @@ Columns metric_columns(const RunResult& r) {
       {"planner_time_s", format_number(m.planner_time_s)},
       {"decision_time_s", format_number(m.decision_time_s)},
       {"wall_time_s", format_number(m.wall_time_s)},
+      {"completeness", format_number(m.completeness)},
+      {"rr_redecisions", std::to_string(m.rr_redecisions)},
+      {"segmentation_time_s", format_number(m.segmentation_time_s)},
   };
 }
 

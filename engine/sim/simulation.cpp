@@ -1,5 +1,6 @@
 #include "engine/sim/simulation.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -38,6 +39,7 @@ Simulation::Simulation(const RunSpec& spec) : spec_(spec) {
   const WorldMap& map = *spec_.map;
   resolution_m_ = map.resolution_m;
   strategy_ = make_strategy(spec_.strategy, spec_.strategy_params, derive_seed(spec_.seed, "strategy"));
+  heuristics_ = heuristics_from_json(spec_.strategy_params, "strategy/params");
   planner_ = make_planner(spec_.planner, spec_.planner_params);
   sensor_ = Sensor(spec_.robot.sensor, resolution_m_);
   sensor_rng_ = make_rng(spec_.seed, "sensor");
@@ -65,6 +67,8 @@ Simulation::Simulation(const RunSpec& spec) : spec_(spec) {
 
   reachable_ = reachable_free(map, map.start, spec_.robot.allow_corner_cutting);
   for (const auto v : reachable_.data()) reachable_count_ += v;
+  observable_ = observable_cells(map, reachable_);
+  for (const auto v : observable_.data()) observable_count_ += v;
 
   const EnergyModel& e = spec_.robot.energy;
   battery_ = Battery(spec_.robot.battery_capacity, e.per_metre + e.per_cell / resolution_m_);
@@ -94,6 +98,13 @@ Simulation::Simulation(const Simulation& other)
       reachable_count_(other.reachable_count_),
       known_reachable_(other.known_reachable_),
       dropped_(other.dropped_),
+      observable_(other.observable_),
+      observable_count_(other.observable_count_),
+      known_observable_(other.known_observable_),
+      heuristics_(other.heuristics_),
+      segmentation_(other.segmentation_),
+      segmented_known_count_(other.segmented_known_count_),
+      segment_mask_(other.segment_mask_),
       robot_(other.robot_),
       heading_(other.heading_),
       dock_(other.dock_),
@@ -133,12 +144,54 @@ void Simulation::sense() {
   }
   for (const int i : revealed) {
     if (known_.is_free(i) && reachable_[i] != 0) ++known_reachable_;
+    if (observable_[i] != 0) ++known_observable_;
   }
   if (!revealed.empty()) metrics_.distance_to_final_coverage_m = metrics_.distance_m;
 }
 
 double Simulation::coverage() const {
   return reachable_count_ > 0 ? static_cast<double>(known_reachable_) / reachable_count_ : 1.0;
+}
+
+double Simulation::completeness() const {
+  return observable_count_ > 0 ? static_cast<double>(known_observable_) / observable_count_ : 1.0;
+}
+
+const std::vector<std::uint8_t>* Simulation::segment_candidates(std::vector<FrontierCluster>& clusters) {
+  if (known_.known_count() != segmented_known_count_) {
+    const auto t0 = Clock::now();
+    segmentation_ = segment_free_space(known_);
+    segmented_known_count_ = known_.known_count();
+    metrics_.segmentation_time_s += seconds_since(t0);
+  }
+  const int mine = segmentation_.label[static_cast<std::size_t>(known_.index(robot_))];
+  const auto in_mine = [&](int i) { return segmentation_.label[static_cast<std::size_t>(i)] == mine; };
+  // The candidate of a cluster is its representative (the goal strategies choose).
+  const auto inside = [&](const FrontierCluster& c) { return in_mine(c.representative); };
+  // Only inside a room: the corridors of a building form one left-over segment, and keeping
+  // the robot in it would explore every corridor before any room (section IV-D2 wants rooms
+  // one by one).
+  if (mine < 0 || segmentation_.room[static_cast<std::size_t>(mine)] == 0 ||
+      std::none_of(clusters.begin(), clusters.end(), inside)) {
+    return nullptr;
+  }
+  std::erase_if(clusters, [&](const FrontierCluster& c) { return !inside(c); });
+  segment_mask_.assign(segmentation_.label.size(), 0);
+  for (std::size_t i = 0; i < segment_mask_.size(); ++i) segment_mask_[i] = segmentation_.label[i] == mine ? 1 : 0;
+  return &segment_mask_;
+}
+
+bool Simulation::goal_still_open(Cell goal, bool goal_was_frontier) const {
+  if (goal_was_frontier) return frontiers_.is_frontier(known_.index(goal));
+  const double r = spec_.robot.sensor.range_m / resolution_m_;
+  const double r2 = r * r * (1.0 + 1e-9) + 1e-9;  // inclusive, as the sensor's range (sensor.hpp)
+  for (const int i : frontiers_.cells()) {
+    const Cell c = known_.cell(i);
+    const double dx = c.x - goal.x;
+    const double dy = c.y - goal.y;
+    if (dx * dx + dy * dy <= r2) return true;
+  }
+  return false;
 }
 
 void Simulation::sample_progress() {
@@ -185,14 +238,14 @@ bool Simulation::step() {
   }
 
   // 1. Observe and decide.
-  const auto clusters =
-      frontiers_.clusters(known_, cluster_max_length_m_, spec_.robot.allow_corner_cutting, dropped_);
+  auto clusters = frontiers_.clusters(known_, cluster_max_length_m_, spec_.robot.allow_corner_cutting, dropped_);
+  const std::vector<std::uint8_t>* segment_mask = heuristics_.segment ? segment_candidates(clusters) : nullptr;
   oracle_.reset(known_, robot_, dock_, spec_.robot.allow_corner_cutting, dock_field_ready_ ? &dock_field_ : nullptr,
                 &dock_field_pending_);
   const BatteryView battery{battery_.level(), battery_.capacity(), battery_.remaining_range_m()};
   const Observation obs{known_,           frontiers_, clusters,       oracle_, spec_.robot.sensor,
                         robot_,           heading_,   previous_position_, previous_goal_, dock_,
-                        battery,          metrics_.decisions};
+                        battery,          metrics_.decisions, segment_mask};
   const auto t_decide = Clock::now();
   const Decision decision = strategy_->decide(obs);
   metrics_.decision_time_s += seconds_since(t_decide);
@@ -204,6 +257,8 @@ bool Simulation::step() {
     return false;
   }
   const Cell goal = decision.kind == Decision::Kind::GoTo ? decision.goal : dock_;
+  const bool recheck = heuristics_.recheck && decision.kind == Decision::Kind::GoTo && known_.in_bounds(goal);
+  const bool goal_was_frontier = recheck && frontiers_.is_frontier(known_.index(goal));
   if (decision.kind == Decision::Kind::ReturnToDock && robot_ == dock_) {
     // Algorithm 1 finishes at the dock; a strategy asking to return while there is done.
     finish();
@@ -245,6 +300,10 @@ bool Simulation::step() {
           break;
         }
         if (!move_to(plan.path[i])) break;
+        if (recheck && robot_ != goal && !goal_still_open(goal, goal_was_frontier)) {
+          ++metrics_.rr_redecisions;
+          break;
+        }
       }
       if (ended_) {
         metrics_.wall_time_s += seconds_since(t_start);
@@ -313,6 +372,7 @@ RunResult Simulation::result() const {
   r.metrics.known_area_m2 = known_.known_count() * cell_area;
   r.metrics.area_per_metre = metrics_.distance_m > 0.0 ? r.metrics.explored_area_m2 / metrics_.distance_m : 0.0;
   r.metrics.coverage = coverage();
+  r.metrics.completeness = completeness();
   r.metrics.residual_unknown_m2 = (reachable_count_ - known_reachable_) * cell_area;
   r.metrics.frontier_cells_left = frontiers_.count();
   r.progress = progress_;
@@ -333,6 +393,20 @@ RunResult Simulation::run() {
   while (step()) {
   }
   return result();
+}
+
+Grid<std::uint8_t> observable_cells(const WorldMap& map, const Grid<std::uint8_t>& reachable) {
+  Grid<std::uint8_t> out(map.width(), map.height(), 0);
+  for (int i = 0; i < reachable.size(); ++i) {
+    if (reachable[i] == 0) continue;
+    const Cell c = reachable.cell(i);
+    out[i] = 1;
+    for (int h = 0; h < 8; h += 2) {  // the 4-neighbours
+      const Cell n{c.x + kDirections[static_cast<std::size_t>(h)].x, c.y + kDirections[static_cast<std::size_t>(h)].y};
+      if (out.in_bounds(n)) out.at(n) = 1;
+    }
+  }
+  return out;
 }
 
 RunResult simulate(const RunSpec& spec) { return Simulation(spec).run(); }

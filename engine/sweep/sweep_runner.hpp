@@ -5,7 +5,8 @@
 /// Files in the output directory (the contract between runner, aggregation, merge and plots):
 /// - `runs.csv`: header `run_index,run_key,map_class,strategy_label,<config columns>,seed,<metric columns>,
 ///   optimal_distance_m,competitive_ratio`; one row per run, in run-index order. `map_class` is
-///   SweepMap::map_class, `strategy_label` the strategy entry's label. Config columns
+///   SweepMap::map_class, `strategy_label` the strategy entry's label followed by "+rr", "+seg"
+///   for each heuristic the run uses (strategies/heuristics.hpp; "cf+rr+seg"). Config columns
 ///   are the union over the sweep of run_table.hpp's config_columns() (a column a run does not
 ///   have is empty; see sweep_table.hpp); metric columns are run_table.hpp's metric_columns().
 ///   The last two columns are empty where no optimum is known: they hold the star-pattern

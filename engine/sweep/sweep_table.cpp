@@ -7,6 +7,7 @@
 #include "engine/sim/competitive.hpp"
 #include "engine/sim/run_table.hpp"
 #include "engine/sim/simulation.hpp"
+#include "strategies/heuristics.hpp"
 
 namespace fsweep {
 namespace {
@@ -135,7 +136,9 @@ RunRows SweepTable::run(const SweepPlan& plan, std::uint64_t index, const std::s
     const RunSpec spec = plan.run_spec(index);
     const RunCoordinates at = plan.coordinates(index);
     set("map_class", plan.maps().at(at.map).map_class);
-    set("strategy_label", plan.strategies().at(at.strategy_entry).label);
+    // The entry's label, plus "+rr", "+seg" for the heuristics on (strategies/heuristics.hpp).
+    const std::string heuristics = heuristics_text(heuristics_from_json(spec.strategy_params, "strategy/params"));
+    set("strategy_label", plan.strategies().at(at.strategy_entry).label + (heuristics.empty() ? "" : "+" + heuristics));
     for (auto& [name, value] : config_columns(spec)) set(name, std::move(value));
     const RunResult result = simulate(spec);
     for (auto& [name, value] : metric_columns(result)) set(name, std::move(value));

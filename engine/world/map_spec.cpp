@@ -182,11 +182,21 @@ WorldMap generate(const json& j, const Where& where) {
     p.start_x = s.x;
     p.start_y = s.y;
   }
+  WorldMap map;
   try {
-    return generate_map(p);
+    map = generate_map(p);
   } catch (const ConfigError& e) {
     throw ConfigError(where.base, e.what());
   }
+  // generate_map names the map "<kind>:w=..,h=..,seed=.."; add every other option given, in key
+  // order, so that maps differing only in, say, min_room have different names in the outputs.
+  for (const auto& [key, value] : j.items()) {
+    if (key == "generator" || key == "w" || key == "h" || key == "seed") continue;
+    std::string text = value.is_string() ? value.get<std::string>() : value.dump();
+    if (key == "start") text = std::to_string(p.start_x) + ";" + std::to_string(p.start_y);
+    map.source += "," + key + "=" + text;
+  }
+  return map;
 }
 
 std::string lower_extension(const std::string& path) {

@@ -357,43 +357,35 @@ Sensor::Sensor(const SensorParams& params, double resolution_m)
   tables_ = std::move(tables);
 }
 
-std::span<const int> Sensor::scan(const WorldMap& truth, KnownMap& known, Cell at, double heading_rad,
-                                  Rng& rng) {
-  revealed_.clear();
-  const int width = truth.width();
-  const int height = truth.height();
-  if (!tables_ || !truth.occupied.in_bounds(at)) return {};
-  const std::uint8_t* occ = truth.occupied.data().data();
+template <typename Skip, typename Opaque, typename Visit>
+void Sensor::for_each_visible(int width, int height, Cell at, double heading_rad, Skip&& skip,
+                              Opaque&& opaque, Visit&& visit) const {
   const int at_index = at.y * width + at.x;
   const bool limit_fov = params_.fov_deg < 360.0;
   const double half_fov = params_.fov_deg * (M_PI / 360.0) + kAngleSlack;
-  const bool noisy = params_.miss_probability > 0.0;
   // Whether check `c` blocks. Crossed cells lie inside the bounding box of the robot's and the
   // target's cells, so they are on the map.
   const auto blocks = [&](const Crossing& c) {
     const int a = at_index + c.dy * width + c.dx;
-    return occ[a] != 0 && occ[a + c.b_dy * width + c.b_dx] != 0;
+    return opaque(a) && opaque(a + c.b_dy * width + c.b_dx);
   };
   const Crossing* const crossings = tables_->crossings.data();
   const FaceRay* const faces = tables_->faces.data();
   const double* const angles = tables_->angles.data();
-
   const Target* const targets = tables_->targets.data();
-  // reveal() below changes cell states in place, never the storage.
-  const CellState* const known_state = known.cells().data().data();
   const std::size_t target_count = tables_->targets.size();
   for (std::size_t n = 0; n < target_count; ++n) {
     const Target& t = targets[n];
-    // 1. The target must lie on the map and still be unknown (known cells never change).
+    // 1. The target must lie on the map and not be skipped.
     const int x = at.x + t.dx;
     const int y = at.y + t.dy;
     if (x < 0 || y < 0 || x >= width || y >= height) continue;
     const int index = at_index + t.dy * width + t.dx;
-    if (known_state[index] != CellState::Unknown) continue;
+    if (skip(index)) continue;
     const bool own_cell = t.dx == 0 && t.dy == 0;
     // 2. Field of view (the robot's own cell is always seen).
     if (limit_fov && !own_cell && angle_distance(angles[n], heading_rad) > half_fov) continue;
-    // 3. Line of sight: the centre ray; for an occupied target whose centre ray is blocked at
+    // 3. Line of sight: the centre ray; for an opaque target whose centre ray is blocked at
     //    check k, the face rays not implied blocked by check k (its open_faces bits). Such a
     //    face ray does not contain check k, so its common prefix with the centre ray ends
     //    before k and is clear: only its own stored checks remain. (One branch on a rarely set
@@ -403,7 +395,7 @@ std::span<const int> Sensor::scan(const WorldMap& truth, KnownMap& known, Cell a
     while (k < t.count && !blocks(c[k])) ++k;
     if (k < t.count) {
       unsigned open = c[k].open_faces;
-      open &= 0U - static_cast<unsigned>(occ[index] != 0);
+      open &= 0U - static_cast<unsigned>(opaque(index));
       if (open == 0) continue;
       bool seen = false;
       for (unsigned f = 0; f < t.face_count && !seen; ++f) {
@@ -413,13 +405,42 @@ std::span<const int> Sensor::scan(const WorldMap& truth, KnownMap& known, Cell a
       }
       if (!seen) continue;
     }
-    // 4. Seeded miss: one draw per visible unknown cell, in table order; the robot's own cell
-    //    is never missed.
-    if (noisy && !own_cell && uniform01(rng) < params_.miss_probability) continue;
-    known.reveal(index, occ[index] != 0);
-    revealed_.push_back(index);
+    visit(index, own_cell);
   }
+}
+
+std::span<const int> Sensor::scan(const WorldMap& truth, KnownMap& known, Cell at, double heading_rad,
+                                  Rng& rng) {
+  revealed_.clear();
+  if (!tables_ || !truth.occupied.in_bounds(at)) return {};
+  const std::uint8_t* occ = truth.occupied.data().data();
+  const bool noisy = params_.miss_probability > 0.0;
+  // reveal() below changes cell states in place, never the storage.
+  const CellState* const known_state = known.cells().data().data();
+  for_each_visible(
+      truth.width(), truth.height(), at, heading_rad,
+      // Known cells never change, so only unknown targets are looked at.
+      [&](int index) { return known_state[index] != CellState::Unknown; },
+      [&](int index) { return occ[index] != 0; },
+      [&](int index, bool own_cell) {
+        // 4. Seeded miss: one draw per visible unknown cell, in table order; the robot's own
+        //    cell is never missed.
+        if (noisy && !own_cell && uniform01(rng) < params_.miss_probability) return;
+        known.reveal(index, occ[index] != 0);
+        revealed_.push_back(index);
+      });
   return revealed_;
+}
+
+ScanCounts Sensor::gain(const KnownMap& known, Cell at, double heading_rad) const {
+  ScanCounts counts;
+  if (!tables_ || !known.in_bounds(at)) return counts;
+  const CellState* const state = known.cells().data().data();
+  for_each_visible(
+      known.width(), known.height(), at, heading_rad, [](int) { return false; },
+      [&](int index) { return state[index] == CellState::Occupied; },
+      [&](int index, bool) { ++(state[index] == CellState::Unknown ? counts.unknown : counts.known); });
+  return counts;
 }
 
 bool Sensor::visible(const WorldMap& truth, Cell at, Cell target) const {

@@ -57,6 +57,15 @@ struct SensorParams {
 [[nodiscard]] SensorParams sensor_params_from_json(const nlohmann::json& j, const std::string& where);
 void to_json(nlohmann::json& j, const SensorParams& p);
 
+/// Cells a scan would see, by their state on the known map (see Sensor::gain).
+struct ScanCounts {
+  /// Visible cells that are still unknown: the cells the scan could reveal.
+  int unknown = 0;
+  /// Visible cells that are already known (free or occupied), the robot's own cell included.
+  int known = 0;
+  friend bool operator==(const ScanCounts&, const ScanCounts&) = default;
+};
+
 /// A sensor for one resolution. Precomputes, per target offset in range, the cells its rays
 /// cross, so a scan costs one table walk. Copyable value type: copies share the immutable
 /// tables and each has its own result buffer (so one instance must not scan from two threads
@@ -72,6 +81,15 @@ class Sensor {
   /// stays valid until the next call. `rng` is used only when miss_probability > 0.
   std::span<const int> scan(const WorldMap& truth, KnownMap& known, Cell at, double heading_rad, Rng& rng);
 
+  /// What a scan from `at` facing `heading_rad` would see on the robot's own map `known`, for
+  /// information-gain estimates (Holz 2010 section IV-B/C): the same range, field of view and
+  /// ray rules as scan(), with known occupied cells as the only obstacles (unknown cells are
+  /// transparent). Known free and unknown targets need their centre ray clear; known occupied
+  /// targets their centre ray or a face ray (an unknown target is not assumed to be a wall).
+  /// Noise is ignored. Cells off the map are not counted. `at` off the map: both counts 0.
+  /// Uses the same precomputed tables as scan(); does not change anything.
+  [[nodiscard]] ScanCounts gain(const KnownMap& known, Cell at, double heading_rad) const;
+
   /// True when `target` is visible from `at` on `truth` under the range and ray rules (ignores
   /// field of view and noise). Walks the rays directly, independently of the tables. For tests
   /// and for information-gain estimates.
@@ -83,6 +101,15 @@ class Sensor {
 
  private:
   struct Tables;  // defined in sensor.cpp; immutable once built
+
+  /// The one walk over the tables behind scan() and gain(), on a width x height grid: for each
+  /// target in offset-table order that is on the grid, not skip(index), inside the field of
+  /// view and in line of sight with opaque(index) as the obstacle test (for check cells and
+  /// for choosing the occupied-target rule), calls visit(index, own_cell). Defined in
+  /// sensor.cpp, the only place it is used.
+  template <typename Skip, typename Opaque, typename Visit>
+  void for_each_visible(int width, int height, Cell at, double heading_rad, Skip&& skip, Opaque&& opaque,
+                        Visit&& visit) const;
 
   SensorParams params_;
   double range_cells_ = 0.0;

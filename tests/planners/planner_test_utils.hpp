@@ -95,4 +95,14 @@ inline void expect_valid_path(const KnownMap& known, const PlanRequest& request,
   EXPECT_NEAR(result.length_m, chain_length_cells(result.path) * known.resolution_m(), 1e-9);
 }
 
+/// A query under the `mei2006` energy preset (Mei 2006 section V-A).
+inline PlanRequest mei_request(Cell start, Cell goal, int start_heading = 0) {
+  PlanRequest r;
+  r.start = start;
+  r.goal = goal;
+  r.start_heading = start_heading;
+  r.energy = energy_preset("mei2006");
+  return r;
+}
+
 }  // namespace fsweep::testing

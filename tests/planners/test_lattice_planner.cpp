@@ -20,15 +20,7 @@ namespace {
 
 using testing::expect_valid_path;
 using testing::known_from_ascii;
-
-PlanRequest mei_request(Cell start, Cell goal, int start_heading = 0) {
-  PlanRequest r;
-  r.start = start;
-  r.goal = goal;
-  r.start_heading = start_heading;
-  r.energy = energy_preset("mei2006");
-  return r;
-}
+using testing::mei_request;
 
 class LatticePlannerBoth : public ::testing::TestWithParam<LatticeSearchKind> {};
 

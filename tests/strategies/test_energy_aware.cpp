@@ -28,7 +28,8 @@ class TableOracle final : public DistanceOracle {
   int nearest_from_robot(std::span<const int> cells) override {
     int best = -1;
     for (std::size_t i = 0; i < cells.size(); ++i) {
-      if (best < 0 || robot.at(cells[i]) < robot.at(cells[static_cast<std::size_t>(best)])) best = static_cast<int>(i);
+      if (best < 0 || robot.at(cells[i]) < robot.at(cells[static_cast<std::size_t>(best)]))
+        best = static_cast<int>(i);
     }
     return best;
   }
@@ -64,7 +65,8 @@ struct Situation {
     }
   }
   Observation observe(BatteryView battery) {
-    return Observation{known, frontiers, clusters, oracle, sensor, robot, 0, previous, std::nullopt, dock, battery, 1};
+    return Observation{known, frontiers, clusters,     oracle, sensor,  robot,
+                       0,     previous,  std::nullopt, dock,   battery, 1};
   }
 };
 

@@ -569,5 +569,124 @@ TEST(SensorParams, InvalidValuesNamePathValueAndRange) {
   EXPECT_NE(error_of(nlohmann::json::array()), "");
 }
 
+// --- Sensor::gain: simulated scans on the known map (Holz 2010 sections IV-B, IV-C) ---
+
+/// The known map as a world for Sensor::visible(): known occupied cells are walls, unknown and
+/// free cells are free (gain() treats unknown cells as transparent, non-wall targets).
+WorldMap walls_of(const KnownMap& known) {
+  WorldMap w = open_world(known.width(), known.height());
+  w.resolution_m = known.resolution_m();
+  for (int i = 0; i < known.size(); ++i) w.occupied[i] = known.state(i) == CellState::Occupied ? 1 : 0;
+  return w;
+}
+
+// Range 2 cells: 13 targets, the 3 x 3 block and (+-2, 0), (0, +-2). Robot R = (3, 3).
+//   row 2: (3,2) occupied, just north of R
+//   row 3: (2,3) and (4,3) free, R free
+//   everything else unknown
+const std::vector<std::string> kGainMap = {
+    "???????",  //
+    "???????",  //
+    "???#???",  //
+    "??...??",  //
+    "???????",  //
+    "???????",  //
+    "???????",  //
+};
+
+TEST(SensorGain, HandCountedOmnidirectional) {
+  const KnownMap k = test::ascii_known(kGainMap);
+  const Sensor sensor(range(2.0), 1.0);
+  // Known: R, (2,3), (4,3), and the wall (3,2) (adjacent: nothing in between) = 4.
+  // Unknown: (3,4); the four diagonals (each corner has at least one non-occupied cell beside
+  // it); (1,3) through free (2,3); (5,3) through free (4,3); (3,5) through unknown (3,4),
+  // which is transparent = 8. Not seen: (3,1), behind the wall (an unknown target needs its
+  // centre ray). 4 + 8 + 1 = 13 targets.
+  EXPECT_EQ(sensor.gain(k, Cell{3, 3}, 0.0), (ScanCounts{8, 4}));
+}
+
+TEST(SensorGain, FieldOfViewFollowsTheHeading) {
+  const KnownMap k = test::ascii_known(kGainMap);
+  SensorParams p = range(2.0);
+  p.fov_deg = 180.0;
+  const Sensor sensor(p, 1.0);
+  // Facing east: dx >= 0 (the +-90 degree boundary is inclusive). Known: R, (4,3), the wall
+  // (3,2) at -90 degrees = 3. Unknown: (3,4) at +90, (4,2), (4,4), (5,3), (3,5) = 5.
+  EXPECT_EQ(sensor.gain(k, Cell{3, 3}, 0.0), (ScanCounts{5, 3}));
+  // Facing north (-pi/2, up the screen): dy <= 0. Known: R, (2,3), (4,3) on the boundary, the
+  // wall (3,2) = 4. Unknown: (2,2), (4,2), (1,3), (5,3) = 4; (3,1) is behind the wall.
+  EXPECT_EQ(sensor.gain(k, Cell{3, 3}, -M_PI / 2.0), (ScanCounts{4, 4}));
+}
+
+TEST(SensorGain, WallFaceSeenAtAGrazingAngle) {
+  // A straight wall in row 0 seen from (0, 1): the centre ray to (3, 0) enters (1, 0) and
+  // (2, 0), walls, but its face ray towards the robot's side stays in row 1 (free) until the
+  // face, so the wall cell counts as seen, as in scan(). Unknown row 2 is transparent.
+  const KnownMap k = test::ascii_known({
+      "####",  //
+      "....",  //
+      "????",  //
+  });
+  const Sensor sensor(range(10.0), 1.0);
+  const WorldMap w = walls_of(k);
+  EXPECT_TRUE(sensor.visible(w, Cell{0, 1}, Cell{3, 0}));
+  // Everything is in range and nothing hides anything: 8 known + 4 unknown.
+  EXPECT_EQ(sensor.gain(k, Cell{0, 1}, 0.0), (ScanCounts{4, 8}));
+}
+
+TEST(SensorGain, EqualsVisibleCellsByStateOnRandomKnownMaps) {
+  // Independent check against Sensor::visible(), which walks rays without the tables.
+  for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+    Rng rng = make_rng(seed, "gain-test");
+    KnownMap k(21, 17, 1.0);
+    for (int i = 0; i < k.size(); ++i) {
+      const double r = uniform01(rng);
+      if (r < 0.6) k.reveal(i, r < 0.25);  // 25% occupied, 35% free, the rest unknown
+    }
+    const Cell at{10, 8};
+    const WorldMap w = walls_of(k);
+    const Sensor sensor(range(6.5), 1.0);
+    ScanCounts expected;
+    for (int i = 0; i < k.size(); ++i) {
+      if (!sensor.visible(w, at, k.cell(i))) continue;
+      ++(k.state(i) == CellState::Unknown ? expected.unknown : expected.known);
+    }
+    EXPECT_EQ(sensor.gain(k, at, 0.0), expected) << "seed " << seed;
+  }
+}
+
+TEST(SensorGain, EqualsAScanOfTheKnownWallsWithFieldOfView) {
+  // A scan on a world whose walls are the known occupied cells, from an empty known map,
+  // reveals exactly the cells gain() counts; splitting them by their state on the known map
+  // gives the two counts. Checks the field of view against scan()'s.
+  Rng rng = make_rng(7, "gain-test");
+  KnownMap k(25, 25, 0.5);
+  for (int i = 0; i < k.size(); ++i) {
+    const double r = uniform01(rng);
+    if (r < 0.5) k.reveal(i, r < 0.2);  // 20% occupied, 30% free, the rest unknown
+  }
+  const Cell at{12, 12};
+  const WorldMap w = walls_of(k);
+  for (const double fov : {360.0, 180.0, 90.0}) {
+    for (const double heading : {0.0, 1.0, -2.5}) {
+      SensorParams p = range(5.0);
+      p.fov_deg = fov;
+      const auto r = scan_fresh(w, p, at, heading);
+      ScanCounts expected;
+      for (const int i : r.revealed) ++(k.state(i) == CellState::Unknown ? expected.unknown : expected.known);
+      EXPECT_EQ(Sensor(p, 0.5).gain(k, at, heading), expected) << "fov " << fov << " heading " << heading;
+    }
+  }
+}
+
+TEST(SensorGain, OffTheMapOrDefaultSensorCountsNothing) {
+  const KnownMap k = test::ascii_known(kGainMap);
+  EXPECT_EQ(Sensor(range(2.0), 1.0).gain(k, Cell{-1, 3}, 0.0), (ScanCounts{0, 0}));
+  EXPECT_EQ(Sensor().gain(k, Cell{3, 3}, 0.0), (ScanCounts{0, 0}));
+  // At the map's corner only the on-map part of the disc counts: range 1, from (0, 0) of a
+  // fully unknown map: (0,0), (1,0), (0,1) = 3 unknown.
+  EXPECT_EQ(Sensor(range(1.0), 1.0).gain(KnownMap(4, 4, 1.0), Cell{0, 0}, 0.0), (ScanCounts{3, 0}));
+}
+
 }  // namespace
 }  // namespace fsweep

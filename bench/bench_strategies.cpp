@@ -1,0 +1,95 @@
+/// @file bench_strategies.cpp
+/// Decision time of every registered strategy on one half-explored 400 x 400 `office` map
+/// (sensor range 10 m at 1 m per cell, clusters split at the sensor range as the simulation
+/// does). The map is explored once by closest_frontier until half of its free cells are
+/// known; each benchmark then times decide() on its own strategy instance, with a fresh
+/// distance oracle per decision (its searches are part of the decision, as in a run).
+
+#include <benchmark/benchmark.h>
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "engine/sim/grid_distance_oracle.hpp"
+#include "engine/sim/simulation.hpp"
+#include "engine/world/frontiers.hpp"
+#include "engine/world/map_spec.hpp"
+#include "strategies/registry.hpp"
+
+namespace fsweep {
+namespace {
+
+constexpr double kRangeM = 10.0;
+constexpr double kExploredFraction = 0.5;
+
+/// The frozen half-explored state: the robot's map, frontiers and clusters at one decision.
+struct HalfExplored {
+  std::shared_ptr<const WorldMap> map;
+  KnownMap known;
+  FrontierMap frontiers;
+  std::vector<FrontierCluster> clusters;
+  Cell robot{};
+  double explored = 0.0;  // known free cells / free cells of the map
+};
+
+const HalfExplored& half_explored() {
+  static const HalfExplored kState = [] {
+    HalfExplored h;
+    h.map = std::make_shared<const WorldMap>(load_map_spec("office:w=400,h=400,seed=1"));
+    RunSpec spec;
+    spec.map = h.map;
+    spec.strategy = "closest_frontier";
+    spec.robot.sensor.range_m = kRangeM;
+    spec.seed = 1;
+    int free_cells = 0;
+    for (int i = 0; i < h.map->occupied.size(); ++i) free_cells += h.map->occupied[i] == 0 ? 1 : 0;
+    Simulation sim(spec);
+    while (static_cast<double>(sim.known().free_count()) < kExploredFraction * free_cells && sim.step()) {
+    }
+    h.known = sim.known();
+    h.robot = sim.robot();
+    h.explored = static_cast<double>(h.known.free_count()) / free_cells;
+    h.frontiers = FrontierMap(h.known);
+    h.clusters = h.frontiers.clusters(h.known, kRangeM, false);
+    return h;
+  }();
+  return kState;
+}
+
+void decision(benchmark::State& state, const std::string& name) {
+  const HalfExplored& h = half_explored();
+  SensorParams sensor;
+  sensor.range_m = kRangeM;
+  const std::unique_ptr<Strategy> strategy = make_strategy(name, nullptr, 1);
+  GridDistanceOracle oracle;
+  const Cell dock = h.map->start;
+  long goals = 0;
+  for (auto _ : state) {
+    oracle.reset(h.known, h.robot, dock, false, nullptr, nullptr);
+    const Observation obs{h.known, h.frontiers, h.clusters,   oracle, sensor, h.robot,
+                          0,       h.robot,     std::nullopt, dock,   {},     1};
+    const Decision d = strategy->decide(obs);
+    goals += d.kind == Decision::Kind::GoTo ? 1 : 0;
+    benchmark::DoNotOptimize(d);
+  }
+  state.counters["clusters"] = static_cast<double>(h.clusters.size());
+  state.counters["explored"] = h.explored;
+  state.counters["goto_fraction"] = static_cast<double>(goals) / static_cast<double>(state.iterations());
+}
+
+/// One BM_Decision/<name> per registered strategy, so a new strategy is benchmarked without
+/// editing this file.
+const bool kRegistered = [] {
+  for (const std::string& name : strategy_names()) {
+    benchmark::RegisterBenchmark(("BM_Decision/" + name).c_str(), decision, name)
+        ->Unit(benchmark::kMillisecond)
+        ->Repetitions(5)
+        ->ReportAggregatesOnly(true);
+  }
+  return true;
+}();
+
+}  // namespace
+}  // namespace fsweep
