@@ -247,7 +247,16 @@ bool Simulation::step() {
                         robot_,           heading_,   previous_position_, previous_goal_, dock_,
                         battery,          metrics_.decisions, segment_mask};
   const auto t_decide = Clock::now();
-  const Decision decision = strategy_->decide(obs);
+  Decision decision = strategy_->decide(obs);
+  if (segment_mask != nullptr && decision.kind == Decision::Kind::Finish) {
+    // Every candidate of the robot's room failed the strategy's own tests (e.g. unreachable):
+    // the segment restriction holds only while the room offers a usable candidate.
+    clusters = frontiers_.clusters(known_, cluster_max_length_m_, spec_.robot.allow_corner_cutting, dropped_);
+    const Observation everywhere{known_,   frontiers_, clusters,           oracle_,        spec_.robot.sensor,
+                                 robot_,   heading_,   previous_position_, previous_goal_, dock_,
+                                 battery,  metrics_.decisions, nullptr};
+    decision = strategy_->decide(everywhere);
+  }
   metrics_.decision_time_s += seconds_since(t_decide);
   metrics_.planner_expansions += oracle_.expansions();
   ++metrics_.decisions;

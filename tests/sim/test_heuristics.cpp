@@ -318,5 +318,21 @@ TEST(Heuristics, EveryStrategyExploresWithEveryCombination) {
   }
 }
 
+TEST(Heuristics, SegmentationFallsBackWhenTheRoomsCandidatesAreUnusable) {
+  // A run of sweeps/paper/holz2010_offices.json (closest_frontier + rr + seg, seed
+  // 7402073645592485193) once ended `stuck` at coverage 0.67: every frontier cluster of the
+  // robot's room failed the strategy's reach test, so the restricted decision was Finish.
+  // The restriction must then be lifted for that decision, not end the run.
+  RunSpec s = spec_on(std::make_shared<const WorldMap>(
+                          load_map_spec("office:w=200,h=100,res=0.2,corridor=10,door=5,min_room=20,seed=1")),
+                      "closest_frontier", {"rr", "seg"}, 8.0);
+  s.robot.sensor.fov_deg = 180.0;
+  s.robot.sensor.miss_probability = 0.1;
+  s.seed = 7402073645592485193ULL;
+  const RunResult r = simulate(s);
+  EXPECT_EQ(r.end, EndReason::Complete) << r.end_detail;
+  EXPECT_DOUBLE_EQ(r.metrics.coverage, 1.0);
+}
+
 }  // namespace
 }  // namespace fsweep
