@@ -14,6 +14,7 @@
 #include "strategies/orientation.hpp"
 #include "strategies/random_frontier.hpp"
 #include "strategies/registry.hpp"
+#include "strategies/target_seeking.hpp"
 #include "strategies/widest_frontier.hpp"
 
 namespace fsweep {
@@ -71,6 +72,11 @@ const std::map<std::string, Entry>& table() {
           return std::make_unique<Mcdm>(mcdm_params_from_json(p, where));
         },
         [](const nlohmann::json& p) { return nlohmann::json(mcdm_params_from_json(p, "")); }}},
+      {"target_seeking",
+       {[](const nlohmann::json& p, std::uint64_t, const std::string& where) -> std::unique_ptr<Strategy> {
+          return std::make_unique<TargetSeeking>(target_seeking_params_from_json(p, where));
+        },
+        [](const nlohmann::json& p) { return nlohmann::json(target_seeking_params_from_json(p, "")); }}},
       {"random_frontier",
        {[](const nlohmann::json& p, std::uint64_t seed, const std::string& where) -> std::unique_ptr<Strategy> {
           random_frontier_params_from_json(p, where);

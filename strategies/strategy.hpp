@@ -8,6 +8,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "engine/world/frontiers.hpp"
@@ -75,12 +76,46 @@ struct Observation {
 /// What to do next.
 struct Decision {
   enum class Kind { GoTo, ReturnToDock, Finish };
+  /// Why a Finish ends the run. Explored: the engine checks for reachable frontiers left
+  /// (complete, range_limited or stuck). The other two are for navigation strategies
+  /// (target_seeking.hpp) and end the run as `target_reached` / `target_unreachable`.
+  enum class Outcome { Explored, TargetReached, TargetUnreachable };
   Kind kind = Kind::Finish;
   /// The goal cell for GoTo.
   Cell goal{};
-  static Decision go_to(Cell c) { return Decision{Kind::GoTo, c}; }
-  static Decision return_to_dock() { return Decision{Kind::ReturnToDock, {}}; }
-  static Decision finish() { return Decision{Kind::Finish, {}}; }
+  /// GoTo: travel at most this many cell steps toward `goal`, then decide again (a strategy
+  /// that re-evaluates its choice after every step sets 1). 0: travel all the way. For the
+  /// engine's stuck rule a journey cut short by this limit is not a quiet decision unless
+  /// the robot did not move (simulation.hpp).
+  int max_steps = 0;
+  /// Finish: why (see Outcome), with free text for the run's end_detail.
+  Outcome outcome = Outcome::Explored;
+  std::string detail;
+  static Decision go_to(Cell c) {
+    Decision d;
+    d.kind = Kind::GoTo;
+    d.goal = c;
+    return d;
+  }
+  static Decision return_to_dock() {
+    Decision d;
+    d.kind = Kind::ReturnToDock;
+    return d;
+  }
+  static Decision finish() { return Decision{}; }
+  /// GoTo `c`, deciding again after at most `steps` cell steps (>= 1).
+  static Decision go_toward(Cell c, int steps) {
+    Decision d = go_to(c);
+    d.max_steps = steps;
+    return d;
+  }
+  /// Finish with a navigation outcome and its detail text.
+  static Decision finish_with(Outcome outcome, std::string detail) {
+    Decision d = finish();
+    d.outcome = outcome;
+    d.detail = std::move(detail);
+    return d;
+  }
 };
 
 /// Candidates of a linear-scored strategy: cost(i) = sum_k weights[k] * features[i*K + k].
@@ -102,6 +137,9 @@ class Strategy {
   [[nodiscard]] virtual std::string name() const = 0;
   [[nodiscard]] virtual Decision decide(const Observation& obs) = 0;
   [[nodiscard]] virtual std::unique_ptr<Strategy> clone() const = 0;
+  /// The target cell of a navigation strategy (target_seeking.hpp), for the engine's target
+  /// metrics (RunMetrics::target_path_m); none for exploration strategies.
+  [[nodiscard]] virtual std::optional<Cell> target() const { return std::nullopt; }
 };
 
 /// A strategy whose choice is argmin(weights . features) over candidates. The engine may read

@@ -14,6 +14,7 @@ using Command = std::function<int()>;
 Command add_sim_command(CLI::App& app);
 Command add_plan_command(CLI::App& app);
 Command add_plan_compare_command(CLI::App& app);
+Command add_plan_bench_command(CLI::App& app);
 Command add_run_command(CLI::App& app);
 Command add_expand_command(CLI::App& app);
 Command add_aggregate_command(CLI::App& app);

@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
   commands["sim"] = fsweep::cli::add_sim_command(app);
   commands["plan"] = fsweep::cli::add_plan_command(app);
   commands["plan-compare"] = fsweep::cli::add_plan_compare_command(app);
+  commands["plan-bench"] = fsweep::cli::add_plan_bench_command(app);
   commands["run"] = fsweep::cli::add_run_command(app);
   commands["expand"] = fsweep::cli::add_expand_command(app);
   commands["aggregate"] = fsweep::cli::add_aggregate_command(app);

@@ -16,6 +16,7 @@ enum class EndReason {
   Complete,         ///< no reachable frontier left
   RangeLimited,     ///< frontiers left, but none in the battery's reach from the dock
   TargetReached,    ///< navigation runs: the target cell was reached
+  TargetUnreachable,  ///< navigation runs: the target is known to be out of reach (detail says why)
   StepLimit,        ///< the step cap was hit
   Stuck,            ///< too many decisions in a row revealed nothing
   BatteryDepleted,  ///< the battery ran out away from the dock (the reach estimate failed)
@@ -86,6 +87,15 @@ struct RunMetrics {
   /// `seg` heuristic: time spent segmenting the known map (engine/world/segmentation.hpp), in
   /// seconds (not part of decision_time_s). 0 without `seg`.
   double segmentation_time_s = 0.0;
+  /// Navigation runs (a strategy with a target, e.g. target_seeking): the distance travelled
+  /// to the target (metres), distance_m of a run that ended `target_reached`; 0 otherwise.
+  double target_path_m = 0.0;
+  /// The shortest path from the start to the target on the fully known map (metres, the
+  /// run's corner rule, octile steps); 0 without a target or when the target is not reachable.
+  double target_shortest_m = 0.0;
+  /// target_path_m / target_shortest_m, >= 1 (a competitive ratio for navigation); 0 when the
+  /// target was not reached or target_shortest_m is 0 (the robot started on the target).
+  double target_path_ratio = 0.0;
 };
 
 /// One point of the progress curve.

@@ -93,6 +93,9 @@ Columns metric_columns(const RunResult& r) {
       {"completeness", format_number(m.completeness)},
       {"rr_redecisions", std::to_string(m.rr_redecisions)},
       {"segmentation_time_s", format_number(m.segmentation_time_s)},
+      {"target_path_m", format_number(m.target_path_m)},
+      {"target_shortest_m", format_number(m.target_shortest_m)},
+      {"target_path_ratio", format_number(m.target_path_ratio)},
   };
 }
 

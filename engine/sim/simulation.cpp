@@ -26,6 +26,7 @@ std::string_view to_string(EndReason r) {
     case EndReason::Complete: return "complete";
     case EndReason::RangeLimited: return "range_limited";
     case EndReason::TargetReached: return "target_reached";
+    case EndReason::TargetUnreachable: return "target_unreachable";
     case EndReason::StepLimit: return "step_limit";
     case EndReason::Stuck: return "stuck";
     case EndReason::BatteryDepleted: return "battery_depleted";
@@ -77,6 +78,17 @@ Simulation::Simulation(const RunSpec& spec) : spec_(spec) {
   progress_step_m_ = spec_.sim.progress_step_m > 0.0 ? spec_.sim.progress_step_m : 10.0 * resolution_m_;
   max_steps_ = spec_.sim.max_steps > 0 ? spec_.sim.max_steps : 100L * reachable_count_ + 1000L;
   metrics_.reachable_area_m2 = reachable_count_ * resolution_m_ * resolution_m_;
+
+  // Navigation metrics: the shortest start-target path on the fully known map.
+  if (const auto target = strategy_->target(); target && map.is_free(*target)) {
+    DistanceField field;
+    DistanceQuery q;
+    q.allow_corner_cutting = spec_.robot.allow_corner_cutting;
+    const std::vector<int> stop{map.occupied.index(*target)};
+    q.stop_at_first_of = stop;
+    field.compute(fully_known(map), map.start, q);
+    if (field.reached(stop.front())) metrics_.target_shortest_m = field.distance_m(stop.front());
+  }
 
   trajectory_.push_back(robot_);
   sense();
@@ -261,7 +273,17 @@ bool Simulation::step() {
   metrics_.planner_expansions += oracle_.expansions();
   ++metrics_.decisions;
   if (decision.kind == Decision::Kind::Finish) {
-    finish();
+    if (decision.outcome == Decision::Outcome::TargetReached) {
+      end(EndReason::TargetReached, decision.detail);
+      metrics_.target_path_m = metrics_.distance_m;
+      if (metrics_.target_shortest_m > 0.0) {
+        metrics_.target_path_ratio = metrics_.target_path_m / metrics_.target_shortest_m;
+      }
+    } else if (decision.outcome == Decision::Outcome::TargetUnreachable) {
+      end(EndReason::TargetUnreachable, decision.detail);
+    } else {
+      finish();
+    }
     metrics_.wall_time_s += seconds_since(t_start);
     return false;
   }
@@ -277,6 +299,7 @@ bool Simulation::step() {
   previous_position_ = robot_;
   previous_goal_ = goal;
   const int known_before = known_.known_count();
+  const long steps_before = metrics_.steps;
 
   // 2. Plan and travel.
   if (goal == robot_) {
@@ -309,6 +332,7 @@ bool Simulation::step() {
           break;
         }
         if (!move_to(plan.path[i])) break;
+        if (decision.max_steps > 0 && metrics_.steps - steps_before >= decision.max_steps) break;
         if (recheck && robot_ != goal && !goal_still_open(goal, goal_was_frontier)) {
           ++metrics_.rr_redecisions;
           break;
@@ -333,7 +357,14 @@ bool Simulation::step() {
     dropped_[static_cast<std::size_t>(known_.index(goal))] = 1;
     ++metrics_.dropped_goals;
   }
-  quiet_decisions_ = revealed ? 0 : quiet_decisions_ + 1;
+  // A journey cut short by Decision::max_steps after moving is not quiet: a strategy that
+  // decides after every step crosses known space in many such decisions.
+  const bool cut_short = decision.max_steps > 0 && robot_ != goal && metrics_.steps != steps_before;
+  if (revealed) {
+    quiet_decisions_ = 0;
+  } else if (!cut_short) {
+    ++quiet_decisions_;
+  }
   if (quiet_decisions_ >= spec_.sim.stuck_decisions) {
     end(EndReason::Stuck, std::to_string(quiet_decisions_) + " decisions in a row revealed nothing");
   }

@@ -33,6 +33,12 @@ namespace fsweep {
 ///   unobservable, e.g. behind a sensor blind spot); so is a goal the planner cannot reach.
 /// - Arriving at the dock recharges the battery (a recharge is counted when it was not full).
 /// - A move the battery cannot pay for ends the run with BatteryDepleted.
+/// - A GoTo with Decision::max_steps > 0 travels at most that many cell steps, then the next
+///   step() decides again (per-step re-decisions, e.g. target_seeking). Such a journey cut
+///   short after moving is not counted as a quiet decision for `stuck_decisions` (it resets
+///   the count when it revealed cells, as any decision).
+/// - A Finish with a navigation outcome (Decision::Outcome) ends the run as TargetReached or
+///   TargetUnreachable with the decision's detail; otherwise finish() checks for frontiers.
 /// - Heuristics (strategy parameter "heuristics", strategies/heuristics.hpp):
 ///   - `rr`: after every cell step of a journey to a GoTo goal, before the goal is reached, the
 ///     goal is re-checked; the journey stops (and the next step() decides again, counted in

@@ -3,9 +3,12 @@
 /// Runs the built `fsweep` executable for command-line tests.
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <array>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 namespace fsweep::testing {
@@ -27,6 +30,23 @@ inline CliOutcome run_fsweep(const std::string& args) {
   const int status = pclose(pipe);
   out.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return out;
+}
+
+/// A fresh (removed) directory under the system temp dir, unique per process:
+/// <tmp>/fsweep_cli_<tag>_<name>_<pid>.
+inline std::string fresh_temp_dir(const std::string& tag, const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("fsweep_cli_" + tag + "_" + name + "_" + std::to_string(getpid()));
+  std::filesystem::remove_all(dir);
+  return dir.string();
+}
+
+/// Number of lines of a text file (0 when it cannot be read).
+inline int count_lines(const std::string& path) {
+  std::ifstream f(path);
+  int n = 0;
+  for (std::string line; std::getline(f, line);) ++n;
+  return n;
 }
 
 }  // namespace fsweep::testing

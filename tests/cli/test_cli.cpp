@@ -1,15 +1,15 @@
 // The `fsweep` executable end to end: outputs written, and bad input reported with one clear
 // message and exit code 2.
 #include <gtest/gtest.h>
-
-#include "cli/fsweep_process.hpp"
+#include <sys/wait.h>
 
 #include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <sys/wait.h>
+
+#include "cli/fsweep_process.hpp"
 
 namespace {
 
@@ -17,15 +17,18 @@ using Outcome = fsweep::testing::CliOutcome;
 Outcome fsweep(const std::string& args) { return fsweep::testing::run_fsweep(args); }
 
 std::string temp_dir(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / ("fsweep_cli_" + name + "_" + std::to_string(getpid()));
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("fsweep_cli_" + name + "_" + std::to_string(getpid()));
   std::filesystem::remove_all(dir);
   return dir.string();
 }
 
 TEST(Cli, SimWritesCsvProgressAndPng) {
   const std::string out = temp_dir("sim");
-  const Outcome r = fsweep("sim --map rooms:w=40,h=30,door=3,seed=1 --strategy energy_aware --param w1=10 "
-                           "--robot sensor.range_m=6 --robot battery=400 --seed 3 --out " + out);
+  const Outcome r = fsweep(
+      "sim --map rooms:w=40,h=30,door=3,seed=1 --strategy energy_aware --param w1=10 "
+      "--robot sensor.range_m=6 --robot battery=400 --seed 3 --out " +
+      out);
   ASSERT_EQ(r.code, 0) << r.output;
   EXPECT_NE(r.output.find("end: "), std::string::npos);
   for (const char* f : {"run.csv", "progress.csv", "trajectory.png"}) {
@@ -61,13 +64,15 @@ TEST(Cli, UnknownPlannerListsKnownOnes) {
 }
 
 TEST(Cli, UnknownParameterIsNamed) {
-  const Outcome r = fsweep("sim --map free:w=10,h=10 --strategy energy_aware --param w9=1 --out " + temp_dir("p"));
+  const Outcome r =
+      fsweep("sim --map free:w=10,h=10 --strategy energy_aware --param w9=1 --out " + temp_dir("p"));
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.output.find("w9"), std::string::npos) << r.output;
 }
 
 TEST(Cli, OutOfRangeValueSaysWhatIsAllowed) {
-  const Outcome r = fsweep("sim --map free:w=10,h=10 --strategy energy_aware --param w1=300 --out " + temp_dir("r"));
+  const Outcome r =
+      fsweep("sim --map free:w=10,h=10 --strategy energy_aware --param w1=300 --out " + temp_dir("r"));
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.output.find("[0, 250]"), std::string::npos) << r.output;
 }

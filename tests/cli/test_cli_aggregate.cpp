@@ -1,8 +1,6 @@
 // `fsweep aggregate` and `fsweep plot` end to end on a hand-written sweep directory
 // (tests/sweep/aggregate_fixture.hpp).
 #include <gtest/gtest.h>
-
-#include "cli/fsweep_process.hpp"
 #include <sys/wait.h>
 
 #include <array>
@@ -12,6 +10,7 @@
 #include <fstream>
 #include <string>
 
+#include "cli/fsweep_process.hpp"
 #include "sweep/aggregate_fixture.hpp"
 
 namespace {

@@ -1,8 +1,6 @@
 // `fsweep expand`: a dry run prints the run count and the first runs; a bad sweep exits 2
 // listing every problem.
 #include <gtest/gtest.h>
-
-#include "cli/fsweep_process.hpp"
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -11,6 +9,8 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+
+#include "cli/fsweep_process.hpp"
 
 namespace {
 

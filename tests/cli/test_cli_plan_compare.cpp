@@ -15,19 +15,8 @@ namespace {
 using Outcome = fsweep::testing::CliOutcome;
 Outcome fsweep(const std::string& args) { return fsweep::testing::run_fsweep(args); }
 
-std::string temp_dir(const std::string& name) {
-  const auto dir =
-      std::filesystem::temp_directory_path() / ("fsweep_cli_pc_" + name + "_" + std::to_string(getpid()));
-  std::filesystem::remove_all(dir);
-  return dir.string();
-}
-
-int count_lines(const std::string& path) {
-  std::ifstream f(path);
-  int n = 0;
-  for (std::string line; std::getline(f, line);) ++n;
-  return n;
-}
+std::string temp_dir(const std::string& name) { return fsweep::testing::fresh_temp_dir("pc", name); }
+using fsweep::testing::count_lines;
 
 /// The first `n` comma-separated fields of a CSV line.
 std::string first_fields(const std::string& line, int n) {

@@ -1,8 +1,6 @@
 // `fsweep run` end to end: the run count first, the outputs, resume, and exit codes.
 #include <gtest/gtest.h>
-
-#include "cli/fsweep_process.hpp"
-
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <array>
@@ -11,7 +9,8 @@
 #include <fstream>
 #include <sstream>
 #include <string>
-#include <sys/wait.h>
+
+#include "cli/fsweep_process.hpp"
 
 namespace {
 
@@ -19,7 +18,8 @@ using RunOutcome = fsweep::testing::CliOutcome;
 RunOutcome fsweep_run(const std::string& args) { return fsweep::testing::run_fsweep("run " + args); }
 
 std::string make_dir(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / ("fsweep_cli_run_" + name + "_" + std::to_string(getpid()));
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("fsweep_cli_run_" + name + "_" + std::to_string(getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir.string();

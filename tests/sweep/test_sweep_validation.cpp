@@ -67,7 +67,7 @@ TEST(SweepValidation, ReportsEveryProblemAtOnceWithPathsAndAllowedValues) {
   EXPECT_HAS(
       m,
       "\ns.json: /strategies/0/name: unknown strategy 'energy_awre'; known: closest_frontier, energy_aware, "
-      "gbl, mcdm, orientation, random_frontier, widest_frontier");
+      "gbl, mcdm, orientation, random_frontier, target_seeking, widest_frontier");
   EXPECT_HAS(
       m, "\ns.json: /strategies/1/params/w1/range: value 260 out of range; allowed: a number in [0, 250]");
 }
