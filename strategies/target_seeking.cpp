@@ -34,12 +34,15 @@ TargetSeekingParams target_seeking_params_from_json(const nlohmann::json& j, con
   const nlohmann::json t = j.value("target", nlohmann::json());
   if (t.is_null()) {
     p.target.reset();
+  } else if (t.is_string() && t.get<std::string>() == "random") {
+    p.random_target = true;
   } else if (!t.is_array() || t.size() != 2 || !t[0].is_number_integer() || !t[1].is_number_integer() ||
              t[0].get<long long>() < 0 || t[1].get<long long>() < 0 ||
              t[0].get<long long>() > std::numeric_limits<int>::max() ||
              t[1].get<long long>() > std::numeric_limits<int>::max()) {
-    throw ConfigError(where + "/target",
-                      "value " + t.dump() + " is not a cell; allowed: [x, y], two integers >= 0, or null");
+    throw ConfigError(
+        where + "/target",
+        "value " + t.dump() + " is not a cell; allowed: [x, y], two integers >= 0, \"random\", or null");
   } else {
     p.target = Cell{t[0].get<int>(), t[1].get<int>()};
   }
@@ -58,7 +61,9 @@ TargetSeekingParams target_seeking_params_from_json(const nlohmann::json& j, con
 }
 
 void to_json(nlohmann::json& j, const TargetSeekingParams& p) {
-  j = nlohmann::json{{"target", p.target ? nlohmann::json{p.target->x, p.target->y} : nlohmann::json()},
+  j = nlohmann::json{{"target", p.random_target ? nlohmann::json("random")
+                                : p.target      ? nlohmann::json{p.target->x, p.target->y}
+                                                : nlohmann::json()},
                      {"w1", p.w1},
                      {"w2", p.w2},
                      {"w3", p.w3},
@@ -195,6 +200,11 @@ std::optional<Cell> gradient_step(const KnownMap& known, const Sensor& sensor, C
 
 Decision TargetSeeking::decide(const Observation& obs) {
   const KnownMap& known = obs.known;
+  if (params_.random_target) {
+    throw ConfigError(
+        "strategy/params/target",
+        "\"random\" must be resolved to a cell by the simulation (resolve_random_target) first");
+  }
   if (!params_.target) {  // 0
     const FrontierChoice choice = choose_target_frontier(obs, params_);
     if (choice.goal < 0) return Decision::finish();

@@ -39,6 +39,11 @@ struct TargetSeekingParams {
   /// pure exploration, the paper's phi = 1 (section II-B): equation 12 without its target
   /// term, every reachable frontier eligible, Finish (explored) when none is left.
   std::optional<Cell> target;
+  /// JSON "target": "random": the simulation draws the target per run (a free cell reachable
+  /// from the start on the true map other than the start, uniform, stream "target" of the run
+  /// seed; Simulation's constructor) and hands the strategy the resolved [x, y]; `target` is
+  /// then empty. TargetSeeking::decide with unresolved params throws ConfigError.
+  bool random_target = false;
   /// Equation 12 weights, each in [0, 1]. Defaults: the paper's first scenario (section IV).
   double w1 = 1.0;
   double w2 = 0.9;
@@ -50,7 +55,7 @@ struct TargetSeekingParams {
 /// Reads and validates the parameters (null: every default); every problem is a ConfigError
 /// naming its JSON path (`where` + "/key") and what is allowed. "target" is null or two
 /// integers >= 0 (a target outside the map is only known at run time and ends the run as
-/// target_unreachable).
+/// target_unreachable), or "random" (random_target).
 [[nodiscard]] TargetSeekingParams target_seeking_params_from_json(const nlohmann::json& j,
                                                                   const std::string& where);
 void to_json(nlohmann::json& j, const TargetSeekingParams& p);
@@ -160,6 +165,8 @@ class TargetSeeking final : public Strategy {
  public:
   explicit TargetSeeking(const TargetSeekingParams& params) : params_(params) {}
   [[nodiscard]] std::string name() const override { return "target_seeking"; }
+  /// Throws ConfigError ("strategy/params/target") when params.random_target is set: a random
+  /// target must be resolved to a cell by the simulation first.
   [[nodiscard]] Decision decide(const Observation& obs) override;
   [[nodiscard]] std::unique_ptr<Strategy> clone() const override {
     return std::make_unique<TargetSeeking>(*this);

@@ -96,6 +96,10 @@ struct RunMetrics {
   /// target_path_m / target_shortest_m, >= 1 (a competitive ratio for navigation); 0 when the
   /// target was not reached or target_shortest_m is 0 (the robot started on the target).
   double target_path_ratio = 0.0;
+  /// The target cell of a navigation run (as given, or as drawn for `"target": "random"`);
+  /// -1 and -1 without a target.
+  int target_x = -1;
+  int target_y = -1;
 };
 
 /// One point of the progress curve.

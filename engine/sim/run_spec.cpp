@@ -1,6 +1,7 @@
 #include "engine/sim/run_spec.hpp"
 
 #include <cmath>
+#include <limits>
 
 #include "engine/world/config_error.hpp"
 
@@ -63,7 +64,23 @@ void to_json(nlohmann::json& j, const RobotParams& r) {
 SimParams sim_params_from_json(const nlohmann::json& j, const std::string& where) {
   SimParams s;
   if (j.is_null()) return s;
-  require_known_keys(j, {"cluster_max_length_m", "max_steps", "stuck_decisions", "progress_step_m"}, where);
+  require_known_keys(
+      j, {"cluster_max_length_m", "max_steps", "stuck_decisions", "progress_step_m", "stop_at_cell"}, where);
+  if (j.contains("stop_at_cell")) {
+    const auto& v = j.at("stop_at_cell");
+    if (v.is_string() && v.get<std::string>() == "random") {
+      s.stop_at_random = true;
+    } else if (v.is_array() && v.size() == 2 && v[0].is_number_integer() && v[1].is_number_integer() &&
+               v[0].get<long long>() >= 0 && v[1].get<long long>() >= 0 &&
+               v[0].get<long long>() <= std::numeric_limits<int>::max() &&
+               v[1].get<long long>() <= std::numeric_limits<int>::max()) {
+      s.stop_at_cell = Cell{v[0].get<int>(), v[1].get<int>()};
+    } else {
+      throw ConfigError(
+          where + "/stop_at_cell",
+          "value " + v.dump() + " is not a cell; allowed: [x, y], two integers >= 0, or \"random\"");
+    }
+  }
   if (j.contains("cluster_max_length_m")) s.cluster_max_length_m = number_at(j, "cluster_max_length_m", where);
   if (j.contains("progress_step_m")) s.progress_step_m = number_at(j, "progress_step_m", where);
   if (j.contains("max_steps")) {
@@ -88,6 +105,11 @@ void to_json(nlohmann::json& j, const SimParams& s) {
                      {"max_steps", s.max_steps},
                      {"stuck_decisions", s.stuck_decisions},
                      {"progress_step_m", s.progress_step_m}};
+  if (s.stop_at_random) {
+    j["stop_at_cell"] = "random";
+  } else if (s.stop_at_cell) {
+    j["stop_at_cell"] = nlohmann::json{s.stop_at_cell->x, s.stop_at_cell->y};
+  }
 }
 
 }  // namespace fsweep

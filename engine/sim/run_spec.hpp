@@ -47,6 +47,18 @@ struct SimParams {
   int stuck_decisions = 100;
   /// Progress curve sampling interval (metres of travel); <= 0: 10 x resolution.
   double progress_step_m = 0.0;
+  /// JSON "stop_at_cell": [x, y] (cells) or "random"; absent (default): no stop cell, and the
+  /// key is left out of to_json so run keys of configurations without it are unchanged.
+  /// With a stop cell any strategy becomes a navigation baseline: a journey is cut short when
+  /// the cell becomes known free; once it is known free and reachable through known free space
+  /// the robot goes there by the shortest path (instead of asking the strategy), and the run
+  /// ends `target_reached` on arrival (a cell never known free and reachable, e.g. in a wall,
+  /// leaves the run to end as the strategy's would), with the
+  /// navigation metrics (target_*) about this cell. "random" draws the cell as
+  /// `"target": "random"` does (resolve_random_target(): same stream "target" of the run seed,
+  /// so the same cell as a target_seeking run with that seed on that map).
+  std::optional<Cell> stop_at_cell;
+  bool stop_at_random = false;
 };
 
 [[nodiscard]] SimParams sim_params_from_json(const nlohmann::json& j, const std::string& where);

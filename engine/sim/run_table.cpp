@@ -96,6 +96,8 @@ Columns metric_columns(const RunResult& r) {
       {"target_path_m", format_number(m.target_path_m)},
       {"target_shortest_m", format_number(m.target_shortest_m)},
       {"target_path_ratio", format_number(m.target_path_ratio)},
+      {"target_x", std::to_string(m.target_x)},
+      {"target_y", std::to_string(m.target_y)},
   };
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 #include "engine/world/config_error.hpp"
 #include "planners/registry.hpp"
@@ -19,7 +20,36 @@ double seconds_since(Clock::time_point t0) {
 
 std::string cell_text(Cell c) { return "(" + std::to_string(c.x) + ", " + std::to_string(c.y) + ")"; }
 
+// A cell drawn uniformly among the nonzero cells of `reachable` other than `start` (row-major
+// candidates, stream "target" of `seed`); ConfigError at `where` when there is none.
+Cell draw_random_target(const Grid<std::uint8_t>& reachable, Cell start, std::uint64_t seed,
+                        const std::string& where) {
+  std::vector<Cell> candidates;  // row-major order: the draw depends only on the map and the seed
+  for (int y = 0; y < reachable.height(); ++y) {
+    for (int x = 0; x < reachable.width(); ++x) {
+      if (reachable.at(Cell{x, y}) != 0 && !(Cell{x, y} == start)) candidates.push_back(Cell{x, y});
+    }
+  }
+  if (candidates.empty()) {
+    throw ConfigError(where,
+                      "\"random\": no free cell other than the start " + cell_text(start) + " is reachable");
+  }
+  Rng rng = make_rng(seed, "target");
+  return candidates[static_cast<std::size_t>(uniform_below(rng, candidates.size()))];
+}
+
 }  // namespace
+
+nlohmann::json resolve_random_target(const nlohmann::json& strategy_params,
+                                     const Grid<std::uint8_t>& reachable, Cell start, std::uint64_t seed) {
+  if (!strategy_params.is_object()) return strategy_params;
+  const auto it = strategy_params.find("target");
+  if (it == strategy_params.end() || *it != nlohmann::json("random")) return strategy_params;
+  const Cell t = draw_random_target(reachable, start, seed, "strategy/params/target");
+  nlohmann::json resolved = strategy_params;
+  resolved["target"] = nlohmann::json{t.x, t.y};
+  return resolved;
+}
 
 std::string_view to_string(EndReason r) {
   switch (r) {
@@ -39,7 +69,15 @@ Simulation::Simulation(const RunSpec& spec) : spec_(spec) {
   if (!spec_.map) throw ConfigError("map", "no map given");
   const WorldMap& map = *spec_.map;
   resolution_m_ = map.resolution_m;
-  strategy_ = make_strategy(spec_.strategy, spec_.strategy_params, derive_seed(spec_.seed, "strategy"));
+  if (!map.is_free(map.start)) {
+    throw ConfigError("map start",
+                      "start cell " + cell_text(map.start) + " is not a free cell of " + map.source);
+  }
+  reachable_ = reachable_free(map, map.start, spec_.robot.allow_corner_cutting);
+  for (const auto v : reachable_.data()) reachable_count_ += v;
+  strategy_ = make_strategy(spec_.strategy,
+                            resolve_random_target(spec_.strategy_params, reachable_, map.start, spec_.seed),
+                            derive_seed(spec_.seed, "strategy"));
   heuristics_ = heuristics_from_json(spec_.strategy_params, "strategy/params");
   planner_ = make_planner(spec_.planner, spec_.planner_params);
   sensor_ = Sensor(spec_.robot.sensor, resolution_m_);
@@ -48,9 +86,6 @@ Simulation::Simulation(const RunSpec& spec) : spec_(spec) {
   frontiers_ = FrontierMap(known_);
   dropped_.assign(static_cast<std::size_t>(known_.size()), 0);
 
-  if (!map.is_free(map.start)) {
-    throw ConfigError("map start", "start cell " + cell_text(map.start) + " is not a free cell of " + map.source);
-  }
   robot_ = map.start;
   dock_ = spec_.robot.dock.value_or(map.start);
   if (!map.is_free(dock_)) {
@@ -66,8 +101,6 @@ Simulation::Simulation(const RunSpec& spec) : spec_(spec) {
   heading_ = spec_.robot.start_heading;
   previous_position_ = robot_;
 
-  reachable_ = reachable_free(map, map.start, spec_.robot.allow_corner_cutting);
-  for (const auto v : reachable_.data()) reachable_count_ += v;
   observable_ = observable_cells(map, reachable_);
   for (const auto v : observable_.data()) observable_count_ += v;
 
@@ -79,8 +112,17 @@ Simulation::Simulation(const RunSpec& spec) : spec_(spec) {
   max_steps_ = spec_.sim.max_steps > 0 ? spec_.sim.max_steps : 100L * reachable_count_ + 1000L;
   metrics_.reachable_area_m2 = reachable_count_ * resolution_m_ * resolution_m_;
 
-  // Navigation metrics: the shortest start-target path on the fully known map.
-  if (const auto target = strategy_->target(); target && map.is_free(*target)) {
+  stop_cell_ = spec_.sim.stop_at_random
+                   ? draw_random_target(reachable_, map.start, spec_.seed, "sim/stop_at_cell")
+                   : spec_.sim.stop_at_cell;
+  // Navigation metrics: the target cell (the strategy's, else the stop cell) and the shortest
+  // start-target path on the fully known map.
+  const std::optional<Cell> nav_target = strategy_->target() ? strategy_->target() : stop_cell_;
+  if (nav_target) {
+    metrics_.target_x = nav_target->x;
+    metrics_.target_y = nav_target->y;
+  }
+  if (const auto target = nav_target; target && map.is_free(*target)) {
     DistanceField field;
     DistanceQuery q;
     q.allow_corner_cutting = spec_.robot.allow_corner_cutting;
@@ -122,6 +164,7 @@ Simulation::Simulation(const Simulation& other)
       dock_(other.dock_),
       previous_position_(other.previous_position_),
       previous_goal_(other.previous_goal_),
+      stop_cell_(other.stop_cell_),
       battery_(other.battery_),
       resolution_m_(other.resolution_m_),
       cluster_max_length_m_(other.cluster_max_length_m_),
@@ -241,6 +284,18 @@ bool Simulation::move_to(Cell next) {
   return true;
 }
 
+void Simulation::reach_target(const std::string& detail) {
+  end(EndReason::TargetReached, detail);
+  metrics_.target_path_m = metrics_.distance_m;
+  if (metrics_.target_shortest_m > 0.0) {
+    metrics_.target_path_ratio = metrics_.target_path_m / metrics_.target_shortest_m;
+  }
+}
+
+bool Simulation::stop_cell_known_free() const {
+  return stop_cell_ && known_.in_bounds(*stop_cell_) && known_.is_free(*stop_cell_);
+}
+
 bool Simulation::step() {
   if (ended_) return false;
   const auto t_start = Clock::now();
@@ -259,7 +314,18 @@ bool Simulation::step() {
                         robot_,           heading_,   previous_position_, previous_goal_, dock_,
                         battery,          metrics_.decisions, segment_mask};
   const auto t_decide = Clock::now();
-  Decision decision = strategy_->decide(obs);
+  // sim.stop_at_cell: arrived -> target_reached; known free and reachable -> go straight there.
+  bool to_stop_cell = false;
+  if (stop_cell_known_free()) {
+    if (robot_ == *stop_cell_) {
+      reach_target("stop cell " + cell_text(robot_) + " reached");
+      metrics_.wall_time_s += seconds_since(t_start);
+      return false;
+    }
+    const std::vector<int> stop{known_.index(*stop_cell_)};
+    to_stop_cell = std::isfinite(oracle_.from_robot(stop, std::numeric_limits<double>::infinity()).front());
+  }
+  Decision decision = to_stop_cell ? Decision::go_to(*stop_cell_) : strategy_->decide(obs);
   if (segment_mask != nullptr && decision.kind == Decision::Kind::Finish) {
     // Every candidate of the robot's room failed the strategy's own tests (e.g. unreachable):
     // the segment restriction holds only while the room offers a usable candidate.
@@ -274,11 +340,7 @@ bool Simulation::step() {
   ++metrics_.decisions;
   if (decision.kind == Decision::Kind::Finish) {
     if (decision.outcome == Decision::Outcome::TargetReached) {
-      end(EndReason::TargetReached, decision.detail);
-      metrics_.target_path_m = metrics_.distance_m;
-      if (metrics_.target_shortest_m > 0.0) {
-        metrics_.target_path_ratio = metrics_.target_path_m / metrics_.target_shortest_m;
-      }
+      reach_target(decision.detail);
     } else if (decision.outcome == Decision::Outcome::TargetUnreachable) {
       end(EndReason::TargetUnreachable, decision.detail);
     } else {
@@ -300,6 +362,7 @@ bool Simulation::step() {
   previous_goal_ = goal;
   const int known_before = known_.known_count();
   const long steps_before = metrics_.steps;
+  const bool stop_known_before = stop_cell_known_free();
 
   // 2. Plan and travel.
   if (goal == robot_) {
@@ -333,6 +396,7 @@ bool Simulation::step() {
         }
         if (!move_to(plan.path[i])) break;
         if (decision.max_steps > 0 && metrics_.steps - steps_before >= decision.max_steps) break;
+        if (!stop_known_before && stop_cell_known_free()) break;  // decide again: go to the stop cell
         if (recheck && robot_ != goal && !goal_still_open(goal, goal_was_frontier)) {
           ++metrics_.rr_redecisions;
           break;

@@ -22,6 +22,16 @@
 
 namespace fsweep {
 
+/// Resolves `"target": "random"` in strategy params (any strategy with a "target" key, e.g.
+/// target_seeking): returns a copy with "target" set to [x, y], a cell drawn uniformly among the
+/// nonzero cells of `reachable` (free cells reachable from the start on the true map) other
+/// than `start`, in row-major order, with the stream "target" of `seed` (engine/world/random.hpp).
+/// Params without that value are returned unchanged. Throws ConfigError
+/// ("strategy/params/target") when no candidate cell exists.
+[[nodiscard]] nlohmann::json resolve_random_target(const nlohmann::json& strategy_params,
+                                                   const Grid<std::uint8_t>& reachable, Cell start,
+                                                   std::uint64_t seed);
+
 /// The state of one run, as a copyable value: copying a Simulation clones its strategy and
 /// planner, so a run can be forked at a decision (DESIGN.md section 7, weight search). No
 /// globals; every random stream comes from the run seed.
@@ -82,6 +92,10 @@ class Simulation {
   void sample_progress();
   void end(EndReason reason, std::string detail = {});
   void finish();
+  /// Ends the run TargetReached with `detail` and sets target_path_m and target_path_ratio.
+  void reach_target(const std::string& detail);
+  /// True when sim.stop_at_cell is set and that cell is known free.
+  [[nodiscard]] bool stop_cell_known_free() const;
   [[nodiscard]] double coverage() const;
   [[nodiscard]] double completeness() const;
   /// `seg`: restricts `clusters` to the robot's segment; returns the mask for the Observation
@@ -118,6 +132,8 @@ class Simulation {
   Cell dock_{};
   Cell previous_position_{};
   std::optional<Cell> previous_goal_;
+  /// SimParams::stop_at_cell, resolved ("random" drawn); empty without one.
+  std::optional<Cell> stop_cell_;
   Battery battery_{0.0, 1.0};
 
   double resolution_m_ = 1.0;

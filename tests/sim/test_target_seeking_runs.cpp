@@ -9,8 +9,10 @@
 #include <vector>
 
 #include "engine/sim/simulation.hpp"
+#include "engine/world/config_error.hpp"
 #include "engine/world/map_spec.hpp"
 #include "planners/registry.hpp"
+#include "strategies/registry.hpp"
 #include "world/ascii_world.hpp"
 
 namespace fsweep {
@@ -163,6 +165,117 @@ TEST(TargetSeekingRuns, ReachesRandomReachableTargetsOnGeneratedMaps) {
     EXPECT_EQ(r.trajectory.back(), t);
   }
   EXPECT_EQ(tried, 4);
+}
+
+TEST(TargetSeekingRuns, RandomTargetIsDrawnPerSeedAmongReachableFreeCells) {
+  const WorldMap map = load_map_spec("rooms:w=30,h=24,door=3,seed=5");
+  const Grid<std::uint8_t> reachable = reachable_free(map, map.start, false);
+  const json params{{"target", "random"}, {"w1", 1}, {"w2", 0.9}, {"w3", 0.4}};
+  std::vector<Cell> targets;
+  for (const std::uint64_t seed : {1U, 2U, 3U, 4U}) {
+    RunSpec spec = spec_for(map, params, 3.0);
+    spec.seed = seed;
+    const RunResult r = simulate(spec);
+    const Cell t{r.metrics.target_x, r.metrics.target_y};
+    ASSERT_TRUE(map.occupied.in_bounds(t)) << seed;
+    EXPECT_TRUE(map.is_free(t)) << seed;
+    EXPECT_NE(reachable.at(t), 0) << seed;
+    EXPECT_NE(t, map.start) << seed;
+    // Reachable targets are reached, the run's metrics are about the drawn cell.
+    EXPECT_EQ(r.end, EndReason::TargetReached) << seed << " " << r.end_detail;
+    EXPECT_EQ(r.trajectory.back(), t) << seed;
+    EXPECT_GT(r.metrics.target_shortest_m, 0.0) << seed;
+    // The same seed draws the same target (and runs the same way).
+    const RunResult again = simulate(spec);
+    EXPECT_EQ(again.metrics.target_x, t.x);
+    EXPECT_EQ(again.metrics.target_y, t.y);
+    EXPECT_EQ(again.trajectory, r.trajectory);
+    // The drawn cell is resolve_random_target's, which depends only on the stream "target".
+    const json resolved = resolve_random_target(params, reachable, map.start, seed);
+    EXPECT_EQ(resolved.at("target"), (json{t.x, t.y}));
+    EXPECT_EQ(resolved.at("w2"), params.at("w2"));
+    targets.push_back(t);
+  }
+  // Different seeds, different targets (hundreds of candidate cells).
+  for (std::size_t i = 0; i < targets.size(); ++i) {
+    for (std::size_t j = i + 1; j < targets.size(); ++j) EXPECT_NE(targets[i], targets[j]) << i << " " << j;
+  }
+  // A given target is recorded as given; no target records -1.
+  EXPECT_EQ(simulate(spec_for(test::ascii_world(kSplitRoom), json{{"target", {1, 5}}}, 2.0)).metrics.target_y,
+            5);
+  RunSpec none = spec_for(test::ascii_world(kSplitRoom), nullptr, 2.0);
+  EXPECT_EQ(simulate(none).metrics.target_x, -1);
+  // Params without "random" come back unchanged; the only candidate is taken; none is an error.
+  EXPECT_EQ(resolve_random_target(json{{"target", {2, 3}}}, reachable, map.start, 1),
+            (json{{"target", {2, 3}}}));
+  Grid<std::uint8_t> two(3, 1, 0);
+  two.at(Cell{0, 0}) = 1;
+  two.at(Cell{2, 0}) = 1;
+  EXPECT_EQ(resolve_random_target(json{{"target", "random"}}, two, Cell{0, 0}, 9).at("target"), (json{2, 0}));
+  Grid<std::uint8_t> alone(3, 1, 0);
+  alone.at(Cell{0, 0}) = 1;
+  EXPECT_THROW((void)resolve_random_target(json{{"target", "random"}}, alone, Cell{0, 0}, 9), ConfigError);
+  // The strategy accepts "random" (sweep validation builds it) but knows no cell before the
+  // simulation resolves it; the parameter is recorded as "random" (same run configuration for
+  // every drawn target).
+  EXPECT_FALSE(make_strategy("target_seeking", json{{"target", "random"}}, 1)->target().has_value());
+  EXPECT_EQ(resolved_strategy_params("target_seeking", params).at("target"), "random");
+}
+
+TEST(TargetSeekingRuns, StopAtCellTurnsClosestFrontierIntoANavigationBaseline) {
+  // Fixed cell: closest_frontier explores until (1, 5) is known free and reachable, then goes
+  // there by the shortest path and the run ends target_reached on it.
+  RunSpec spec = spec_for(test::ascii_world(kSplitRoom), nullptr, 2.0);
+  spec.strategy = "closest_frontier";
+  spec.sim = sim_params_from_json(json{{"stop_at_cell", {1, 5}}}, "sim");
+  const RunResult r = simulate(spec);
+  ASSERT_EQ(r.end, EndReason::TargetReached) << r.end_detail;
+  EXPECT_EQ(r.trajectory.back(), (Cell{1, 5}));
+  EXPECT_EQ(r.metrics.target_x, 1);
+  EXPECT_EQ(r.metrics.target_y, 5);
+  EXPECT_NEAR(r.metrics.target_shortest_m, 12.0 + 2.0 * kSqrt2, 1e-9);  // as ReachesATargetBehindAWall
+  EXPECT_DOUBLE_EQ(r.metrics.target_path_m, r.metrics.distance_m);
+  EXPECT_DOUBLE_EQ(r.metrics.target_path_ratio, r.metrics.distance_m / r.metrics.target_shortest_m);
+  // Without the stop cell the same run explores the whole room, farther.
+  RunSpec plain = spec;
+  plain.sim = SimParams{};
+  const RunResult full = simulate(plain);
+  EXPECT_EQ(full.end, EndReason::Complete);
+  EXPECT_GT(full.metrics.distance_m, r.metrics.distance_m);
+  EXPECT_EQ(full.metrics.target_x, -1);
+
+  // "random": the same cell as target_seeking's "target": "random" with the same seed.
+  const WorldMap map = load_map_spec("rooms:w=30,h=24,door=3,seed=5");
+  RunSpec ts = spec_for(map, json{{"target", "random"}}, 3.0);
+  RunSpec cf = spec_for(map, nullptr, 3.0);
+  cf.strategy = "closest_frontier";
+  cf.sim = sim_params_from_json(json{{"stop_at_cell", "random"}}, "sim");
+  for (const std::uint64_t seed : {7U, 8U}) {
+    ts.seed = seed;
+    cf.seed = seed;
+    const RunResult a = simulate(ts);
+    const RunResult b = simulate(cf);
+    EXPECT_EQ(b.end, EndReason::TargetReached) << b.end_detail;
+    EXPECT_EQ(a.metrics.target_x, b.metrics.target_x);
+    EXPECT_EQ(a.metrics.target_y, b.metrics.target_y);
+    EXPECT_EQ(b.trajectory.back(), (Cell{b.metrics.target_x, b.metrics.target_y}));
+    EXPECT_DOUBLE_EQ(a.metrics.target_shortest_m, b.metrics.target_shortest_m);
+  }
+
+  // JSON: absent -> left out of to_json (run keys unchanged); given -> written back; bad -> error.
+  EXPECT_FALSE(json(SimParams{}).contains("stop_at_cell"));
+  EXPECT_EQ(json(sim_params_from_json(json{{"stop_at_cell", {3, 4}}}, "sim")).at("stop_at_cell"),
+            (json{3, 4}));
+  EXPECT_EQ(json(sim_params_from_json(json{{"stop_at_cell", "random"}}, "sim")).at("stop_at_cell"), "random");
+  for (const json& bad :
+       {json{{"stop_at_cell", {-1, 2}}}, json{{"stop_at_cell", "near"}}, json{{"stop_at_cell", 3}}}) {
+    try {
+      (void)sim_params_from_json(bad, "sim");
+      ADD_FAILURE() << bad.dump();
+    } catch (const ConfigError& e) {
+      EXPECT_NE(std::string(e.what()).find("sim/stop_at_cell"), std::string::npos) << e.what();
+    }
+  }
 }
 
 }  // namespace
