@@ -14,6 +14,7 @@
 
 #include "engine/cli/commands.hpp"
 #include "engine/cli/kv_options.hpp"
+#include "engine/cli/output_dir.hpp"
 #include "engine/sim/run_table.hpp"
 #include "engine/world/config_error.hpp"
 #include "engine/world/energy_model.hpp"
@@ -55,11 +56,13 @@ std::ofstream open_out(const std::string& path) {
 }
 
 void write_queries_csv(const std::string& path, const std::vector<std::string>& names,
-                       const std::vector<BenchQuery>& queries, const std::vector<std::vector<BenchPlan>>& plans) {
+                       const std::vector<BenchQuery>& queries,
+                       const std::vector<std::vector<BenchPlan>>& plans) {
   std::ofstream f = open_out(path);
   f << "query,start_x,start_y,goal_x,goal_y,optimal_cells";
   for (const std::string& n : names) {
-    for (const char* col : {"status", "length_ratio", "energy", "turns", "time_s"}) f << ',' << n << '.' << col;
+    for (const char* col : {"status", "length_ratio", "energy", "turns", "time_s"})
+      f << ',' << n << '.' << col;
   }
   f << '\n';
   for (std::size_t q = 0; q < queries.size(); ++q) {
@@ -68,8 +71,8 @@ void write_queries_csv(const std::string& path, const std::vector<std::string>& 
       << format_number(b.optimal_cells);
     for (const auto& row : plans) {
       const BenchPlan& p = row[q];
-      f << ',' << to_string(p.status) << ',' << format_number(p.length_ratio) << ',' << format_number(p.energy)
-        << ',' << p.turns << ',' << format_number(p.time_s);
+      f << ',' << to_string(p.status) << ',' << format_number(p.length_ratio) << ','
+        << format_number(p.energy) << ',' << p.turns << ',' << format_number(p.time_s);
     }
     f << '\n';
   }
@@ -86,7 +89,8 @@ void write_summary_csv(const std::string& path, const std::vector<std::string>& 
   f << '\n';
   for (std::size_t i = 0; i < names.size(); ++i) {
     const BenchSummary& s = summaries[i];
-    f << names[i] << ',' << s.queries << ',' << s.solved << ',' << s.timeouts << ',' << format_number(s.success_rate);
+    f << names[i] << ',' << s.queries << ',' << s.solved << ',' << s.timeouts << ','
+      << format_number(s.success_rate);
     for (const SampleSummary& x : {s.length_ratio, s.energy, s.turns, s.time_ms}) {
       for (const double v : {x.mean, x.q05, x.q25, x.median, x.q75, x.q95}) f << ',' << csv_number(v);
     }
@@ -106,13 +110,17 @@ int run_plan_bench_command(const PlanBenchOptions& o) {
   if (params.is_object()) {
     for (const auto& [name, value] : params.items()) {
       if (seen.count(name) == 0) {
-        throw ConfigError("--planner-param", "'" + name + "' is not a benchmarked planner; write <planner>.<key>=<value>, e.g. ompl:RRTstar.time_limit_s=0.1");
+        throw ConfigError("--planner-param",
+                          "'" + name +
+                              "' is not a benchmarked planner; write <planner>.<key>=<value>, e.g. "
+                              "ompl:RRTstar.time_limit_s=0.1");
       }
     }
   }
   std::vector<std::unique_ptr<Planner>> planners;
   for (const std::string& name : names) {
-    const nlohmann::json p = params.is_object() && params.contains(name) ? params.at(name) : nlohmann::json::object();
+    const nlohmann::json p =
+        params.is_object() && params.contains(name) ? params.at(name) : nlohmann::json::object();
     planners.push_back(make_planner(name, p, "--planner-param/" + name));
   }
   const EnergyModel energy = energy_model_from_json(nlohmann::json{{"preset", o.energy}}, "--energy");
@@ -152,15 +160,14 @@ int run_plan_bench_command(const PlanBenchOptions& o) {
     std::printf("%-24s %8s %8d %8s %8s %8s %8s %8s %10s %10s\n", names[i].c_str(),
                 fixed(100.0 * s.success_rate, 1).c_str(), s.timeouts, fixed(s.length_ratio.mean, 4).c_str(),
                 fixed(s.length_ratio.median, 4).c_str(), fixed(s.length_ratio.q95, 4).c_str(),
-                fixed(s.energy.mean, 2).c_str(), fixed(s.turns.mean, 2).c_str(), fixed(s.time_ms.median, 3).c_str(),
-                fixed(s.time_ms.q95, 3).c_str());
+                fixed(s.energy.mean, 2).c_str(), fixed(s.turns.mean, 2).c_str(),
+                fixed(s.time_ms.median, 3).c_str(), fixed(s.time_ms.q95, 3).c_str());
   }
-  std::printf("(success in %%; len/opt = path length / optimal octile length, mean and quantiles over solved "
-              "queries; energy and turns means over solved; time quantiles over all queries)\n");
+  std::printf(
+      "(success in %%; len/opt = path length / optimal octile length, mean and quantiles over solved "
+      "queries; energy and turns means over solved; time quantiles over all queries)\n");
   if (!o.out.empty()) {
-    std::error_code ec;
-    std::filesystem::create_directories(o.out, ec);
-    if (ec) throw ConfigError(o.out, "cannot create directory: " + ec.message());
+    create_output_dir(o.out);
     write_queries_csv(o.out + "/queries.csv", names, queries, plans);
     write_summary_csv(o.out + "/summary.csv", names, summaries);
     std::printf("wrote %s/{queries.csv,summary.csv}\n", o.out.c_str());
@@ -176,15 +183,19 @@ Command add_plan_bench_command(CLI::App& app) {
       "plan-bench", "Benchmark planners on the same queries against the optimal octile length");
   sub->add_option("--map", o->map, "Map SPEC (fully known)")->required();
   sub->add_option("--scen", o->scen, "MovingAI scenario file (default: --pairs random reachable pairs)");
-  sub->add_option("--planners", o->planners, "Comma-separated planner names (default: every registered planner)")
+  sub->add_option("--planners", o->planners,
+                  "Comma-separated planner names (default: every registered planner)")
       ->delimiter(',');
-  sub->add_option("--planner-param", o->planner_params,
-                  "Planner parameter <planner>.<key>=<value> (repeatable), e.g. ompl:RRTstar.time_limit_s=0.1");
-  sub->add_option("--pairs", o->pairs, "Number of random reachable pairs (without --scen)")->capture_default_str();
+  sub->add_option(
+      "--planner-param", o->planner_params,
+      "Planner parameter <planner>.<key>=<value> (repeatable), e.g. ompl:RRTstar.time_limit_s=0.1");
+  sub->add_option("--pairs", o->pairs, "Number of random reachable pairs (without --scen)")
+      ->capture_default_str();
   sub->add_option("--seed", o->seed, "Seed of the pairs and of the sampling planners")->capture_default_str();
   sub->add_option("--energy", o->energy, "Energy model preset: distance, mei2006, pioneer3dx")
       ->capture_default_str();
-  sub->add_flag("--allow-corner-cutting", o->allow_corner_cutting, "Diagonal moves may pass a blocked corner");
+  sub->add_flag("--allow-corner-cutting", o->allow_corner_cutting,
+                "Diagonal moves may pass a blocked corner");
   sub->add_option("--out", o->out, "Directory for queries.csv and summary.csv");
   return [o] { return run_plan_bench_command(*o); };
 }

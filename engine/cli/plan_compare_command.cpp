@@ -17,6 +17,7 @@
 
 #include "engine/cli/commands.hpp"
 #include "engine/cli/kv_options.hpp"
+#include "engine/cli/output_dir.hpp"
 #include "engine/sim/run_table.hpp"
 #include "engine/world/config_error.hpp"
 #include "engine/world/energy_model.hpp"
@@ -236,9 +237,7 @@ int run_plan_compare(const PlanCompareOptions& o) {
   // 3. Outputs.
   print_table(o, known, energy, summary, pairs.size());
   if (!o.out.empty()) {
-    std::error_code ec;
-    std::filesystem::create_directories(o.out, ec);
-    if (ec) throw ConfigError(o.out, "cannot create directory: " + ec.message());
+    create_output_dir(o.out);
     write_pairs_csv(o.out + "/pairs.csv", o.planners, pairs, plans);
     write_summary_csv(o.out + "/summary.csv", o.planners, summary);
     write_manifest(o.out + "/manifest.json", o, known, energy, pairs.size());

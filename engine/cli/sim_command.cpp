@@ -7,6 +7,7 @@
 
 #include "engine/cli/commands.hpp"
 #include "engine/cli/kv_options.hpp"
+#include "engine/cli/output_dir.hpp"
 #include "engine/sim/run_table.hpp"
 #include "engine/sim/simulation.hpp"
 #include "engine/sim/trajectory_image.hpp"
@@ -39,9 +40,9 @@ int run_sim(const SimOptions& o) {
   spec.sim = sim_params_from_json(kv_to_json(o.sim, "--sim"), "--sim");
   spec.seed = o.seed;
 
+  create_output_dir(o.out);  // before the run, so a bad --out costs nothing
   const RunResult result = simulate(spec);
 
-  std::filesystem::create_directories(o.out);
   Columns row = config_columns(spec);
   const Columns metrics = metric_columns(result);
   row.insert(row.end(), metrics.begin(), metrics.end());
@@ -50,11 +51,12 @@ int run_sim(const SimOptions& o) {
   write_trajectory_png(o.out + "/trajectory.png", *spec.map, result, o.png_scale);
 
   const RunMetrics& m = result.metrics;
-  std::cout << "end: " << to_string(result.end) << (result.end_detail.empty() ? "" : " (" + result.end_detail + ")")
-            << "\ndistance: " << format_number(m.distance_m) << " m, energy: " << format_number(m.energy) << ' '
-            << spec.robot.energy.unit << ", coverage: " << format_number(m.coverage)
-            << ", decisions: " << m.decisions << ", recharges: " << m.recharges
-            << "\nwrote " << o.out << "/run.csv, " << o.out << "/progress.csv, " << o.out << "/trajectory.png\n";
+  std::cout << "end: " << to_string(result.end)
+            << (result.end_detail.empty() ? "" : " (" + result.end_detail + ")")
+            << "\ndistance: " << format_number(m.distance_m) << " m, energy: " << format_number(m.energy)
+            << ' ' << spec.robot.energy.unit << ", coverage: " << format_number(m.coverage)
+            << ", decisions: " << m.decisions << ", recharges: " << m.recharges << "\nwrote " << o.out
+            << "/run.csv, " << o.out << "/progress.csv, " << o.out << "/trajectory.png\n";
   return 0;
 }
 
@@ -62,17 +64,20 @@ int run_sim(const SimOptions& o) {
 
 Command add_sim_command(CLI::App& app) {
   auto o = std::make_shared<SimOptions>();
-  CLI::App* sub = app.add_subcommand("sim", "Run one exploration and write run.csv, progress.csv, trajectory.png");
-  sub->add_option("--map", o->map,
-                  "Map SPEC: a file (.map .yaml .png .pgm .txt) or a generator, e.g. rooms:w=120,h=80,door=3,seed=4")
+  CLI::App* sub =
+      app.add_subcommand("sim", "Run one exploration and write run.csv, progress.csv, trajectory.png");
+  sub->add_option(
+         "--map", o->map,
+         "Map SPEC: a file (.map .yaml .png .pgm .txt) or a generator, e.g. rooms:w=120,h=80,door=3,seed=4")
       ->required();
   sub->add_option("--strategy", o->strategy, "Strategy name")->capture_default_str();
   sub->add_option("--param", o->params, "Strategy parameter key=value (repeatable), e.g. w1=10");
   sub->add_option("--planner", o->planner, "Planner name")->capture_default_str();
   sub->add_option("--planner-param", o->planner_params, "Planner parameter key=value (repeatable)");
-  sub->add_option("--robot", o->robot,
-                  "Robot setting key=value (repeatable): sensor.range_m, sensor.fov_deg, sensor.miss_probability, "
-                  "energy (distance|mei2006|pioneer3dx), battery, dock=[x,y], start_heading, allow_corner_cutting");
+  sub->add_option(
+      "--robot", o->robot,
+      "Robot setting key=value (repeatable): sensor.range_m, sensor.fov_deg, sensor.miss_probability, "
+      "energy (distance|mei2006|pioneer3dx), battery, dock=[x,y], start_heading, allow_corner_cutting");
   sub->add_option("--sim", o->sim,
                   "Loop setting key=value (repeatable): cluster_max_length_m, max_steps, stuck_decisions, "
                   "progress_step_m");
