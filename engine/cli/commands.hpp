@@ -18,6 +18,7 @@ Command add_plan_bench_command(CLI::App& app);
 Command add_run_command(CLI::App& app);
 Command add_expand_command(CLI::App& app);
 Command add_aggregate_command(CLI::App& app);
+Command add_merge_command(CLI::App& app);
 Command add_plot_command(CLI::App& app);
 
 }  // namespace fsweep::cli

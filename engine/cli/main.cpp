@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   commands["run"] = fsweep::cli::add_run_command(app);
   commands["expand"] = fsweep::cli::add_expand_command(app);
   commands["aggregate"] = fsweep::cli::add_aggregate_command(app);
+  commands["merge"] = fsweep::cli::add_merge_command(app);
   commands["plot"] = fsweep::cli::add_plot_command(app);
   try {
     app.parse(argc, argv);
