@@ -1,6 +1,5 @@
 // CsvJournal: the append-only CSV files of a sweep, and their repair after a kill.
 #include <gtest/gtest.h>
-
 #include <unistd.h>
 
 #include <filesystem>
@@ -10,6 +9,7 @@
 
 #include "engine/sweep/csv_journal.hpp"
 #include "engine/world/config_error.hpp"
+#include "sweep/sweep_test_files.hpp"
 
 namespace fsweep {
 namespace {
@@ -21,17 +21,8 @@ std::string temp_file(const std::string& name) {
       .string();
 }
 
-std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-void write_file(const std::string& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out << text;
-}
+using testing::read_file;
+using testing::write_file;
 
 CsvJournal::RecordFilter fields_are(std::size_t n) {
   return [n](const std::vector<std::string>& f) { return f.size() == n; };

@@ -15,6 +15,7 @@
 #include "engine/sweep/sweep_plan.hpp"
 #include "engine/sweep/sweep_runner.hpp"
 #include "engine/world/config_error.hpp"
+#include "sweep/sweep_test_files.hpp"
 
 namespace fsweep {
 namespace {
@@ -22,25 +23,10 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-std::string temp_dir(const std::string& name) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("fsweep_merge_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir.string();
-}
+std::string temp_dir(const std::string& name) { return testing::fresh_dir("merge", name); }
 
-std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-void write_file(const std::string& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out << text;
-}
+using testing::read_file;
+using testing::write_file;
 
 /// 1 map x 3 strategy configurations x 2 repetitions = 6 short runs.
 json tiny_sweep() {

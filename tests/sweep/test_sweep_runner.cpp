@@ -1,7 +1,6 @@
 // The sweep runner: outputs independent of the thread count, resume after SIGKILL, torn lines,
 // Ctrl-C, changed sweeps, failed runs, the competitive-ratio columns and the manifest.
 #include <gtest/gtest.h>
-
 #include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -12,18 +11,18 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "engine/sim/run_table.hpp"
 #include "engine/sweep/csv_journal.hpp"
 #include "engine/sweep/sweep_plan.hpp"
 #include "engine/sweep/sweep_runner.hpp"
 #include "engine/world/config_error.hpp"
+#include "sweep/sweep_test_files.hpp"
 
 extern char** environ;  // NOLINT(readability-redundant-declaration): for posix_spawn
 
@@ -36,24 +35,10 @@ using nlohmann::json;
 constexpr const char* kChildSweepEnv = "FSWEEP_RUNNER_CHILD_SWEEP";
 constexpr const char* kChildOutEnv = "FSWEEP_RUNNER_CHILD_OUT";
 
-std::string temp_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("fsweep_runner_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir.string();
-}
+std::string temp_dir(const std::string& name) { return testing::fresh_dir("runner", name); }
 
-std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-void write_file(const std::string& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out << text;
-}
+using testing::read_file;
+using testing::write_file;
 
 /// 2 maps x 3 strategy configurations x 2 sensor ranges x 4 repetitions = 48 runs of varied
 /// length (so that with 2 threads they finish out of order).
@@ -394,9 +379,9 @@ TEST(SweepRunner, ManifestHasTheFields) {
   const std::string dir = temp_dir("manifest");
   const RunnerReport r = run(small_sweep(), dir, 2);
   const json m = json::parse(read_file(dir + "/manifest.json"));
-  for (const char* key : {"sweep", "sweep_file", "sweep_hash", "name", "runs", "git_revision", "compiler", "libraries",
-                          "host", "cpu_model", "threads", "start_utc", "end_utc", "wall_s", "runs_per_s", "status",
-                          "seed", "objective"}) {
+  for (const char* key : {"sweep", "sweep_file", "sweep_hash", "name", "runs", "git_revision", "compiler",
+                          "libraries", "host", "cpu_model", "threads", "start_utc", "end_utc", "wall_s",
+                          "runs_per_s", "status", "seed", "objective"}) {
     EXPECT_TRUE(m.contains(key)) << key;
   }
   EXPECT_EQ(m["sweep"], small_sweep());
