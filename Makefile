@@ -1,7 +1,12 @@
 # The two commands of the README:
-#   make run   - install what is missing, build (Release), run sweeps/default.json and plot it
-#   make test  - install what is missing, build, run the whole test suite (plus a sanitizer pass)
-.PHONY: run test build bench clean
+#   make run       - install what is missing, build (Release), run sweeps/default.json and plot it
+#   make test      - install what is missing, build, run the whole test suite (unit tests, the
+#                    single-node Slurm integration test, and a sanitizer pass)
+# and the nightly regression job (README, "Nightly regression checks"):
+#   make nightly   - build, run sweeps/nightly.json and the micro-benchmarks into results/nightly/,
+#                    compare them with results/baseline/nightly/ (exit 1 on a regression)
+#   make baseline  - the same suite and benchmarks, copied over results/baseline/nightly/
+.PHONY: run test build bench nightly baseline clean
 
 FSWEEP := build/release/bin/fsweep
 
@@ -15,11 +20,19 @@ build:
 test:
 	@scripts/bootstrap release
 	cd build/release && ctest --output-on-failure -j 2 -L unit
+	cd build/release && ctest --output-on-failure -L slurm
 	@scripts/bootstrap asan
 	cd build/asan && ctest --output-on-failure -j 2 -L sanitize
 
 bench: build
 	build/release/bin/fsweep_bench
+
+nightly: build
+	@scripts/bootstrap slurm
+	scripts/nightly
+
+baseline: build
+	scripts/nightly --baseline
 
 clean:
 	rm -rf build

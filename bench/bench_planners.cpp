@@ -1,22 +1,41 @@
-/// Micro-benchmarks of the grid planners and the distance field on den312d (MovingAI, 65x81,
-/// fully known, 1 m cells). Queries are drawn once from a fixed seed; one benchmark iteration
-/// is one query, so the reported time is per query.
+/// @file bench_planners.cpp
+/// Query time of the path planners, all on fully known maps (1 m cells):
 ///
-/// Query time of `astar`, `lattice`, `lattice_astar` and `shortest_fewest_turns` on 512x512 maps
-/// (the size asked by issue 4; no 512x512 MovingAI map is in ../shared/data/maps, so generated
-/// ones: `random` with 20% obstacles as in Mei 2006 section V-B, and `rooms`). Every benchmark
-/// runs the same 32 seeded reachable queries exactly once (random start headings, `mei2006`
-/// energy); the reported time is the mean per query and `median_ms` the median query time.
+/// - `BM_PlannerQuery/<planner>`: EVERY planner of the registry (planner_names(), so a new
+///   planner is benchmarked without editing this file) on the same fixed query set: every
+///   10th query of the MovingAI scenario den312d.map.scen (32 queries over all length buckets,
+///   optimal lengths 3.4 to 124 cells), start heading 0, `mei2006` energy, no corner cutting,
+///   seed derive_seed(1, "bench_planner_query") + query. One benchmark iteration plans the
+///   whole set once, so the reported time is per 32 queries; the counter `s_per_query` is the
+///   time per query. OMPL planners run with max_iterations = 1000 (LazyPRMstar 250: its cost
+///   grows about quadratically with the iterations, 1000 took 0.11 s per query) and a time
+///   limit (60 s) they never reach, so each query ends by a solution or by its iteration
+///   budget and does the same work every time (PRMstar is bounded the same way but checks for
+///   a solution in a second thread, so its work varies a little; see ompl_planner.hpp).
+///   `solved` is the fraction of queries solved.
+/// - `BM_AStarDen312d`, `BM_DijkstraDen312d`, `BM_DistanceFieldBounded/max_m:<m>`: the grid
+///   searches on 512 seeded random reachable pairs of den312d; one iteration is one query.
+/// - `BM_<planner>512/<map>`: issue 4's query times on 512x512 maps (no 512x512 MovingAI map
+///   is in ../shared/data/maps, so generated ones: 0 = `random` with 20% obstacles as in Mei
+///   2006 section V-B, 1 = `rooms`). Every benchmark runs the same 32 seeded reachable queries
+///   exactly once (random start headings, `mei2006` energy); the reported time is the mean per
+///   query and `median_ms` the median query time. These take about 25 s per repetition and
+///   are left out of the nightly set (`--benchmark_filter=-512`).
+///
+/// Every benchmark plans one query (`BM_PlannerQuery`: its whole set) before timing, so the
+/// planners' search arrays are allocated outside the timed loop.
 
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
+#include "engine/world/energy_model.hpp"
 #include "engine/world/known_map.hpp"
 #include "engine/world/map_loaders.hpp"
 #include "engine/world/map_spec.hpp"
@@ -24,6 +43,7 @@
 #include "engine/world/world_map.hpp"
 #include "planners/distance_field.hpp"
 #include "planners/grid_planner.hpp"
+#include "planners/planner.hpp"
 #include "planners/registry.hpp"
 
 namespace fsweep {
@@ -45,7 +65,7 @@ Cell random_free(const WorldMap& map, Rng& rng) {
 }
 
 const Den312d& den312d() {
-  static const Den312d data = [] {
+  static const Den312d kData = [] {
     Den312d d;
     d.map = load_movingai_map(std::string(FSWEEP_TEST_DATA) + "/den312d.map");
     d.known = fully_known(d.map);
@@ -59,12 +79,13 @@ const Den312d& den312d() {
     for (int i = 0; i < 512; ++i) d.sources.push_back(random_free(d.map, rng));
     return d;
   }();
-  return data;
+  return kData;
 }
 
 void run_grid_planner(benchmark::State& state, GridSearchKind kind) {
   const Den312d& d = den312d();
   GridPlanner planner(kind);
+  benchmark::DoNotOptimize(planner.plan(d.known, d.queries.front()).length_m);  // warm-up, untimed
   std::size_t i = 0;
   long expansions = 0;
   for (auto _ : state) {
@@ -77,6 +98,7 @@ void run_grid_planner(benchmark::State& state, GridSearchKind kind) {
       benchmark::Counter(static_cast<double>(expansions) / static_cast<double>(state.iterations()));
 }
 
+// NOLINTBEGIN(readability-identifier-naming): Google Benchmark's BM_ names
 void BM_AStarDen312d(benchmark::State& state) { run_grid_planner(state, GridSearchKind::AStar); }
 BENCHMARK(BM_AStarDen312d);
 
@@ -89,6 +111,7 @@ void BM_DistanceFieldBounded(benchmark::State& state) {
   DistanceField field;
   DistanceQuery query;
   query.max_distance_m = static_cast<double>(state.range(0));
+  field.compute(d.known, d.sources.front(), query);  // warm-up, untimed
   std::size_t i = 0;
   long expansions = 0;
   for (auto _ : state) {
@@ -100,7 +123,8 @@ void BM_DistanceFieldBounded(benchmark::State& state) {
   state.counters["cells/query"] =
       benchmark::Counter(static_cast<double>(expansions) / static_cast<double>(state.iterations()));
 }
-BENCHMARK(BM_DistanceFieldBounded)->Arg(10)->Arg(30)->Arg(1000);
+BENCHMARK(BM_DistanceFieldBounded)->ArgName("max_m")->Arg(10)->Arg(30)->Arg(1000);
+// NOLINTEND(readability-identifier-naming)
 
 /// A fully known 512x512 map and its fixed query set.
 struct Map512 {
@@ -137,6 +161,7 @@ const Map512& map512(int which) {
 void run_planner_512(benchmark::State& state, const char* planner_name) {
   const Map512& m = map512(static_cast<int>(state.range(0)));
   const auto planner = make_planner(planner_name, nlohmann::json::object());
+  benchmark::DoNotOptimize(planner->plan(m.known, m.queries.front()).energy);  // warm-up, untimed
   std::size_t i = 0;
   long expansions = 0;
   std::vector<double> times_ms;
@@ -152,14 +177,89 @@ void run_planner_512(benchmark::State& state, const char* planner_name) {
       benchmark::Counter(static_cast<double>(expansions) / static_cast<double>(state.iterations()));
 }
 
+// NOLINTBEGIN(readability-identifier-naming): Google Benchmark's BM_ names
 void BM_AStar512(benchmark::State& state) { run_planner_512(state, "astar"); }
 void BM_Lattice512(benchmark::State& state) { run_planner_512(state, "lattice"); }
 void BM_LatticeAStar512(benchmark::State& state) { run_planner_512(state, "lattice_astar"); }
 void BM_ShortestFewestTurns512(benchmark::State& state) { run_planner_512(state, "shortest_fewest_turns"); }
+// NOLINTEND(readability-identifier-naming)
 BENCHMARK(BM_AStar512)->Arg(0)->Arg(1)->Iterations(kQueries512)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Lattice512)->Arg(0)->Arg(1)->Iterations(kQueries512)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_LatticeAStar512)->Arg(0)->Arg(1)->Iterations(kQueries512)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ShortestFewestTurns512)->Arg(0)->Arg(1)->Iterations(kQueries512)->Unit(benchmark::kMillisecond);
+
+/// den312d, fully known, and BM_PlannerQuery's fixed query set (see the file comment).
+struct ScenarioSet {
+  KnownMap known;
+  std::vector<PlanRequest> queries;
+};
+
+constexpr std::size_t kScenarioStride = 10;
+constexpr long kOmplIterations = 1000;
+constexpr long kLazyPrmIterations = 250;
+
+const ScenarioSet& den312d_scenario() {
+  static const ScenarioSet kData = [] {
+    ScenarioSet s;
+    s.known = fully_known(load_movingai_map(std::string(FSWEEP_TEST_DATA) + "/den312d.map"));
+    const std::vector<ScenarioQuery> scen =
+        load_scenario(std::string(FSWEEP_TEST_DATA) + "/den312d.map.scen");
+    const std::uint64_t base_seed = derive_seed(1, "bench_planner_query");
+    for (std::size_t i = 0; i < scen.size(); i += kScenarioStride) {
+      if (scen[i].optimal_length <= 0.0) continue;  // 0 marks an unreachable pair
+      PlanRequest q;
+      q.start = scen[i].start;
+      q.goal = scen[i].goal;
+      q.energy = energy_preset("mei2006");
+      q.seed = base_seed + s.queries.size();
+      s.queries.push_back(q);
+    }
+    return s;
+  }();
+  return kData;
+}
+
+/// Parameters for `name` in BM_PlannerQuery: defaults, except that OMPL planners end by an
+/// iteration budget instead of the (wall-clock, so irreproducible) time limit.
+nlohmann::json planner_query_params(const std::string& name) {
+  if (name.rfind("ompl:", 0) != 0) return nlohmann::json::object();
+  const long iterations = name == "ompl:LazyPRMstar" ? kLazyPrmIterations : kOmplIterations;
+  return {{"max_iterations", iterations}, {"time_limit_s", 60.0}};
+  return nlohmann::json::object();
+}
+
+/// One iteration = the whole fixed query set, planned in order.
+void planner_query(benchmark::State& state, const std::string& name) {
+  const ScenarioSet& s = den312d_scenario();
+  const auto planner = make_planner(name, planner_query_params(name));
+  long solved = 0;
+  for (const PlanRequest& q : s.queries)
+    solved += planner->plan(s.known, q).status == PlanStatus::Success ? 1 : 0;
+  long expansions = 0;
+  for (auto _ : state) {
+    for (const PlanRequest& q : s.queries) {
+      const PlanResult r = planner->plan(s.known, q);
+      expansions += r.expansions;
+      benchmark::DoNotOptimize(r.energy);
+    }
+  }
+  const auto queries = static_cast<double>(s.queries.size());
+  state.counters["queries"] = queries;
+  state.counters["solved"] = static_cast<double>(solved) / queries;
+  state.counters["s_per_query"] = benchmark::Counter(
+      queries, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["expansions/query"] = benchmark::Counter(
+      static_cast<double>(expansions) / (queries * static_cast<double>(state.iterations())));
+}
+
+/// One BM_PlannerQuery/<name> per registered planner.
+const bool kPlannerQueriesRegistered = [] {
+  for (const std::string& name : planner_names()) {
+    benchmark::RegisterBenchmark(("BM_PlannerQuery/" + name).c_str(), planner_query, name)
+        ->Unit(benchmark::kMillisecond);
+  }
+  return true;
+}();
 
 }  // namespace
 }  // namespace fsweep

@@ -1,19 +1,164 @@
-// Full explorations of a 200x200 `rooms` map (sensor range 10 cells), one per strategy.
+/// @file bench_sim.cpp
+/// Whole runs, start to end; one benchmark iteration is one run.
+///
+/// - `BM_FullRun/<map>/<strategy>`: one run of a small in-memory sweep through the same code
+///   as `fsweep run` (SweepPlan::from_json, then SweepTable::run: RunSpec from the plan,
+///   simulate(), the runs.csv and progress.csv rows), single-threaded. Robot and settings as
+///   sweeps/default.json: sensor 8 m missing 5% of visible cells per scan (drawn from the run
+///   seed, so every iteration is the same run), `distance` energy, 500 m battery, progress
+///   every 10 m, sweep seed 1. Maps: `rooms_100x80` (rooms:w=100,h=80,res=0.5,door=3,seed=1,
+///   as in the default sweep) and `room-64-64-8` (MovingAI, tests/data, 1 m cells).
+///   Strategies: closest_frontier (`CF`) and energy_aware with the free-space weights
+///   10,0,9,20 (`EA`).
+/// - `BM_ExploreRooms200_<strategy>`: simulate() of a hand-built RunSpec on a 200x200 `rooms`
+///   map (rooms:w=200,h=200,door=3,seed=1, sensor range 10 cells, perfect sensor, run seed 0);
+///   closest_frontier, energy_aware (10,0,9,20) with unlimited battery and with a 1200 m
+///   battery.
+
 #include <benchmark/benchmark.h>
 
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <string>
+#include <utility>
 
 #include "engine/sim/simulation.hpp"
+#include "engine/sweep/sweep_plan.hpp"
+#include "engine/sweep/sweep_table.hpp"
 #include "engine/world/map_spec.hpp"
 
 namespace fsweep {
 namespace {
 
+/// A map or strategy item of the BM_FullRun sweep, with the label that names its benchmarks.
+struct Item {
+  const char* label;
+  nlohmann::json json;
+};
+
+std::array<Item, 2> full_run_maps() {
+  return {Item{"rooms_100x80",
+               {{"generator", "rooms"}, {"w", 100}, {"h", 80}, {"res", 0.5}, {"door", 3}, {"seed", 1}}},
+          Item{"room-64-64-8", {{"file", std::string(FSWEEP_TEST_DATA) + "/room-64-64-8.map"}}}};
+}
+
+std::array<Item, 2> full_run_strategies() {
+  return {Item{"CF", {{"name", "closest_frontier"}}},
+          Item{"EA", {{"name", "energy_aware"}, {"params", {{"w1", 10}, {"w2", 0}, {"w3", 9}, {"w4", 20}}}}}};
+}
+
+/// The validated BM_FullRun sweep and its runs.csv layout (built on first use).
+struct FullRunSweep {
+  SweepPlan plan;
+  SweepTable table;
+};
+
+const FullRunSweep& full_run_sweep() {
+  static const FullRunSweep kSweep = [] {
+    nlohmann::json maps = nlohmann::json::array();
+    for (const Item& m : full_run_maps()) {
+      nlohmann::json item = m.json;
+      item["label"] = m.label;
+      maps.push_back(item);
+    }
+    nlohmann::json strategies = nlohmann::json::array();
+    for (const Item& s : full_run_strategies()) {
+      nlohmann::json item = s.json;
+      item["label"] = s.label;
+      strategies.push_back(item);
+    }
+    const nlohmann::json j = {{"schema_version", kSweepSchemaVersion},
+                              {"name", "bench_full_run"},
+                              {"maps", maps},
+                              {"strategies", strategies},
+                              {"robot",
+                               {{"sensor", {{"range_m", 8}, {"miss_probability", 0.05}}},
+                                {"energy", "distance"},
+                                {"battery", 500}}},
+                              {"progress_step_m", 10},
+                              {"seed", 1}};
+    SweepPlan plan = SweepPlan::from_json(j, "bench_full_run");
+    SweepTable table(plan);
+    return FullRunSweep{std::move(plan), std::move(table)};
+  }();
+  return kSweep;
+}
+
+/// Field `column` of one CSV record (RFC 4180 quoting; the record may end with a newline).
+std::string csv_field(const std::string& record, std::size_t column) {
+  std::size_t field = 0;
+  std::string out;
+  bool quoted = false;
+  for (std::size_t i = 0; i < record.size(); ++i) {
+    const char c = record[i];
+    if (quoted) {
+      if (c == '"' && i + 1 < record.size() && record[i + 1] == '"') {
+        out += '"';
+        ++i;
+      } else if (c == '"') {
+        quoted = false;
+      } else {
+        out += c;
+      }
+    } else if (c == '"') {
+      quoted = true;
+    } else if (c == ',' || c == '\n') {
+      if (field == column) return out;
+      ++field;
+      out.clear();
+    } else {
+      out += c;
+    }
+  }
+  return field == column ? out : std::string();
+}
+
+/// Runs map `map`, strategy `strategy` of the sweep (run index map * strategies + strategy: one
+/// planner, one robot variant, one repetition).
+void full_run(benchmark::State& state, std::size_t map, std::size_t strategy) {
+  const FullRunSweep& s = full_run_sweep();
+  const std::uint64_t index = map * full_run_strategies().size() + strategy;
+  const RunCoordinates at = s.plan.coordinates(index);
+  if (at.map != map || at.strategy_entry != strategy) {
+    state.SkipWithError("run order of the bench sweep is not maps x strategies");
+    return;
+  }
+  const std::string key = s.plan.run_key(index);
+  RunRows rows;
+  for (auto _ : state) {
+    rows = s.table.run(s.plan, index, key);
+    benchmark::DoNotOptimize(rows.run_row.data());
+  }
+  if (rows.failed) {
+    state.SkipWithError(("run failed: " + rows.run_row).c_str());
+    return;
+  }
+  for (const char* column : {"distance_m", "decisions", "coverage"}) {
+    state.counters[column] = std::stod(csv_field(rows.run_row, s.table.column(column)));
+  }
+  state.SetLabel(csv_field(rows.run_row, s.table.column("end_reason")));
+}
+
+const bool kFullRunsRegistered = [] {
+  const auto maps = full_run_maps();
+  const auto strategies = full_run_strategies();
+  for (std::size_t m = 0; m < maps.size(); ++m) {
+    for (std::size_t s = 0; s < strategies.size(); ++s) {
+      const std::string name = std::string("BM_FullRun/") + maps[m].label + "/" + strategies[s].label;
+      benchmark::RegisterBenchmark(name.c_str(), full_run, m, s)->Unit(benchmark::kMillisecond);
+    }
+  }
+  return true;
+}();
+
 RunSpec rooms_spec(const std::string& strategy, nlohmann::json params, double battery) {
-  static const auto map = std::make_shared<const WorldMap>(load_map_spec("rooms:w=200,h=200,door=3,seed=1"));
+  static const auto kMap = std::make_shared<const WorldMap>(load_map_spec("rooms:w=200,h=200,door=3,seed=1"));
   RunSpec s;
-  s.map = map;
+  s.map = kMap;
   s.strategy = strategy;
   s.strategy_params = std::move(params);
   s.robot.sensor.range_m = 10.0;
@@ -32,6 +177,7 @@ void run(benchmark::State& state, const RunSpec& spec) {
   state.counters["coverage"] = r.metrics.coverage;
 }
 
+// NOLINTBEGIN(readability-identifier-naming): Google Benchmark's BM_ names
 void BM_ExploreRooms200_ClosestFrontier(benchmark::State& state) {
   run(state, rooms_spec("closest_frontier", nullptr, std::numeric_limits<double>::infinity()));
 }
@@ -42,6 +188,7 @@ void BM_ExploreRooms200_EnergyAware(benchmark::State& state) {
 void BM_ExploreRooms200_EnergyAwareBattery(benchmark::State& state) {
   run(state, rooms_spec("energy_aware", {{"w1", 10}, {"w2", 0}, {"w3", 9}, {"w4", 20}}, 1200.0));
 }
+// NOLINTEND(readability-identifier-naming)
 
 BENCHMARK(BM_ExploreRooms200_ClosestFrontier)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ExploreRooms200_EnergyAware)->Unit(benchmark::kMillisecond);

@@ -19,6 +19,8 @@ Command add_run_command(CLI::App& app);
 Command add_expand_command(CLI::App& app);
 Command add_aggregate_command(CLI::App& app);
 Command add_merge_command(CLI::App& app);
+Command add_compare_command(CLI::App& app);
+Command add_slurm_command(CLI::App& app);
 Command add_plot_command(CLI::App& app);
 
 }  // namespace fsweep::cli

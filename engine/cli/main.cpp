@@ -20,6 +20,8 @@ int main(int argc, char** argv) {
   commands["expand"] = fsweep::cli::add_expand_command(app);
   commands["aggregate"] = fsweep::cli::add_aggregate_command(app);
   commands["merge"] = fsweep::cli::add_merge_command(app);
+  commands["compare"] = fsweep::cli::add_compare_command(app);
+  commands["slurm"] = fsweep::cli::add_slurm_command(app);
   commands["plot"] = fsweep::cli::add_plot_command(app);
   try {
     app.parse(argc, argv);

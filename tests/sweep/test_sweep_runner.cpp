@@ -405,34 +405,58 @@ TEST(SweepRunner, ManifestHasTheFields) {
 }
 
 TEST(SweepRunner, ShardsPartitionTheRuns) {
+  // For N = 1 (no shard directory), 2, 3, 7 and 50 (more shards than the 48 runs, so two are
+  // empty): every run index is in exactly one shard, shard s holds the indices with
+  // index % N == s under the run key the freshly expanded plan gives that index, rerunning a
+  // shard finds all of its runs done (membership is stable under resume), and the shards'
+  // rows put together are the unsharded run's.
   const std::string ref = temp_dir("shard_ref");
-  const std::string dir = temp_dir("shards");
   ASSERT_EQ(run(small_sweep(), ref, 2).ran, 48U);
   const auto ref_rows = records(without_timing(read_file(ref + "/runs.csv")));
-  std::vector<std::string> merged(ref_rows.size());
-  merged[0] = ref_rows[0];
-  for (std::uint64_t s = 0; s < 3; ++s) {
-    RunnerOptions o;
-    o.threads = 2;
-    o.out_dir = dir;
-    o.progress = false;
-    o.shard_index = s;
-    o.shard_count = 3;
-    const RunnerReport r = run_sweep(SweepPlan::from_json(small_sweep(), ""), o);
-    EXPECT_EQ(r.total, 16U);
-    EXPECT_EQ(r.out_dir, dir + "/shard-" + std::to_string(s) + "-of-3");
-    const auto rows = records(without_timing(read_file(r.out_dir + "/runs.csv")));
-    ASSERT_EQ(rows.size(), 17U);
-    EXPECT_EQ(rows[0], ref_rows[0]);  // the whole sweep's header
-    for (std::size_t i = 1; i < rows.size(); ++i) {
-      const std::size_t index = std::stoul(split_csv_line(rows[i])[0]);
-      EXPECT_EQ(index % 3, s);
-      merged.at(index + 1) = rows[i];
+  const SweepPlan plan = SweepPlan::from_json(small_sweep(), "");
+  for (const std::uint64_t n : {1U, 2U, 3U, 7U, 50U}) {
+    SCOPED_TRACE("N=" + std::to_string(n));
+    const std::string dir = temp_dir("shards_" + std::to_string(n));
+    std::vector<std::string> merged(ref_rows.size());
+    merged[0] = ref_rows[0];
+    std::vector<int> seen(48, 0);
+    for (std::uint64_t s = 0; s < n; ++s) {
+      RunnerOptions o;
+      o.threads = 2;
+      o.out_dir = dir;
+      o.progress = false;
+      o.shard_index = s;
+      o.shard_count = n;
+      const std::uint64_t size = s < 48 ? (48 - s - 1) / n + 1 : 0;
+      const RunnerReport r = run_sweep(SweepPlan::from_json(small_sweep(), ""), o);
+      EXPECT_EQ(r.total, size);
+      EXPECT_EQ(r.ran, size);
+      EXPECT_EQ(r.out_dir, n == 1 ? dir : dir + "/shard-" + std::to_string(s) + "-of-" + std::to_string(n));
+      const auto rows = records(without_timing(read_file(r.out_dir + "/runs.csv")));
+      ASSERT_EQ(rows.size(), size + 1);
+      EXPECT_EQ(rows[0], ref_rows[0]);  // the whole sweep's header
+      for (std::size_t i = 1; i < rows.size(); ++i) {
+        const auto fields = split_csv_line(rows[i]);
+        const std::size_t index = std::stoul(fields[0]);
+        ASSERT_LT(index, 48U);
+        EXPECT_EQ(index % n, s);
+        EXPECT_EQ(fields[1], plan.run_key(index));
+        ++seen[index];
+        merged.at(index + 1) = rows[i];
+      }
+      if (s == n / 2) {  // resume: nothing left to do, files unchanged
+        const std::string before = read_file(r.out_dir + "/runs.csv");
+        const RunnerReport again = run_sweep(SweepPlan::from_json(small_sweep(), ""), o);
+        EXPECT_EQ(again.ran, 0U);
+        EXPECT_EQ(again.skipped, size);
+        EXPECT_EQ(read_file(r.out_dir + "/runs.csv"), before);
+      }
     }
+    for (std::size_t i = 0; i < seen.size(); ++i) EXPECT_EQ(seen[i], 1) << "run_index " << i;
+    EXPECT_EQ(merged, ref_rows);
+    fs::remove_all(dir);
   }
-  EXPECT_EQ(merged, ref_rows);
   fs::remove_all(ref);
-  fs::remove_all(dir);
 }
 
 TEST(SweepRunner, BadOptionsAreConfigErrors) {

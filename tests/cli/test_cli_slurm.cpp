@@ -1,0 +1,100 @@
+// `fsweep slurm` end to end without a cluster: with PATH emptied (no sbatch, no scontrol) it
+// validates the sweep, writes the scripts with absolute paths and prints them (exit 0); bad
+// input is exit 2 and writes nothing.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "cli/fsweep_process.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using fsweep::testing::run_fsweep;
+
+/// A sweep of 1 map x 2 strategies x 5 repetitions = 10 runs, written to `dir`/sweep.json.
+std::string write_sweep(const std::string& dir) {
+  fs::create_directories(dir);
+  std::string path = dir + "/sweep.json";
+  std::ofstream(path) << R"({"schema_version": 1, "name": "cli_slurm",
+    "maps": ["rooms:w=24,h=20,door=2,seed=2"],
+    "strategies": [{"name": "closest_frontier"}, {"name": "energy_aware"}],
+    "repetitions": 5, "seed": 3})";
+  return path;
+}
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+/// Runs a shell command line; exit code and its stdout and stderr.
+fsweep::testing::CliOutcome run_shell(const std::string& cmd) {
+  fsweep::testing::CliOutcome out;
+  FILE* pipe = popen((cmd + " 2>&1").c_str(), "r");
+  if (pipe == nullptr) return out;
+  char buf[4096];
+  std::size_t n = 0;
+  while ((n = std::fread(buf, 1, sizeof(buf), pipe)) > 0) out.output.append(buf, n);
+  const int status = pclose(pipe);
+  out.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return out;
+}
+
+bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+TEST(CliSlurm, WithoutSbatchWritesAndPrintsThePackedScripts) {
+  const std::string dir = fsweep::testing::fresh_temp_dir("slurm", "dry");
+  write_sweep(dir);
+  // Relative sweep path and --out, run from `dir`: the scripts must hold absolute ones.
+  const std::string cmd =
+      "cd " + dir + " && env PATH=/nonexistent " + std::string(FSWEEP_BINARY_DIR) +
+      "/bin/fsweep slurm sweep.json --tasks 4 --max-array-size 3 --cpus 2 --time 10:00 --out out";
+  const auto out = run_shell(cmd);
+  ASSERT_EQ(out.code, 0) << out.output;
+  EXPECT_TRUE(has(out.output,
+                  "sweep cli_slurm: 10 runs (2 configurations x 5 repetitions) in 4 shards of 2 to 3 runs"))
+      << out.output;
+  EXPECT_TRUE(has(out.output, "array: 3 tasks (MaxArraySize 3, from --max-array-size); packed"))
+      << out.output;
+  EXPECT_TRUE(has(out.output, "sbatch is not on PATH: not submitted")) << out.output;
+  EXPECT_TRUE(has(out.output, "--dependency=afterany:\"$array_id\"")) << out.output;
+  const std::string abs_dir = fs::canonical(dir).string();
+  const std::string array = slurp(dir + "/out/slurm/array.sbatch");
+  EXPECT_TRUE(has(array, "#SBATCH --array=0-2\n")) << array;
+  EXPECT_TRUE(has(array, "#SBATCH --cpus-per-task=2\n")) << array;
+  EXPECT_TRUE(has(array, "#SBATCH --time=10:00\n")) << array;
+  EXPECT_FALSE(has(array, "--partition")) << array;
+  EXPECT_TRUE(has(array, " run " + abs_dir + "/sweep.json --out " + abs_dir + "/out --shard")) << array;
+  EXPECT_TRUE(has(array, "cd -- " + abs_dir + " ")) << array;
+  EXPECT_TRUE(has(out.output, array)) << "the printed script differs from the file";
+  EXPECT_TRUE(has(slurp(dir + "/out/slurm/merge.sbatch"), " merge " + abs_dir + "/out\n"));
+  EXPECT_TRUE(fs::is_directory(dir + "/out/slurm/logs"));
+  fs::remove_all(dir);
+}
+
+TEST(CliSlurm, BadInputIsExit2AndWritesNothing) {
+  const std::string dir = fsweep::testing::fresh_temp_dir("slurm", "bad");
+  const std::string sweep = write_sweep(dir);
+  auto r = run_fsweep("slurm " + sweep + " --tasks 0 --dry-run --out " + dir + "/out");
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_TRUE(has(r.output, "--tasks")) << r.output;
+  r = run_fsweep("slurm " + dir + "/missing.json --tasks 2 --dry-run --out " + dir + "/out");
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_TRUE(has(r.output, "missing.json")) << r.output;
+  r = run_fsweep("slurm " + sweep + " --tasks 2 --dry-run --partition 'a b' --out " + dir + "/out");
+  EXPECT_EQ(r.code, 2) << r.output;
+  r = run_fsweep("slurm " + sweep + " --tasks 2 --dry-run --fsweep " + dir + "/no-such-fsweep --out " + dir +
+                 "/out");
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_FALSE(fs::exists(dir + "/out"));
+  fs::remove_all(dir);
+}
+
+}  // namespace
