@@ -26,7 +26,7 @@
 ///    configuration of the baseline not in NEW is `missing`; both are failures. A configuration
 ///    only in NEW is `new` (not a failure). Different manifest sweep hashes are a warning.
 /// 4. Speed, as time ratios new / baseline (> 1 = slower): the sweep's seconds per run (manifest
-///    `wall_s / runs.ran`), each configuration's median wall_time_s (judged only when the
+///    `wall_s / runs.ran`; not judged for a manifest merged from shards), each configuration's median wall_time_s (judged only when the
 ///    baseline median is at least CompareOptions::min_judged_wall_time_s), and each
 ///    micro-benchmark of bench.json (median aggregate's real_time, else the mean of the
 ///    iteration rows' real_time; by run_name) when both directories have one. Ratio

@@ -71,7 +71,10 @@ ManifestFacts read_manifest_facts(const std::string& path) {
   const auto wall_s = number_at(j, "wall_s");
   std::optional<double> ran;
   if (j.contains("runs") && j["runs"].is_object()) ran = number_at(j["runs"], "ran");
-  if (wall_s && ran && *wall_s > 0.0 && *ran > 0.0) m.seconds_per_run = *wall_s / *ran;
+  // A manifest merged from shards (merge.hpp) has the longest shard's wall time for runs spread
+  // over several processes: no per-run time of one process, so its throughput is not judged.
+  const bool merged = j.contains(json::json_pointer("/shard/merged_from"));
+  if (!merged && wall_s && ran && *wall_s > 0.0 && *ran > 0.0) m.seconds_per_run = *wall_s / *ran;
   return m;
 }
 

@@ -466,6 +466,24 @@ TEST_F(CompareTest, DifferentCpuModelInManifestIsAnotherMachine) {
   EXPECT_EQ(compare(strict).regressions, 1U);
 }
 
+TEST_F(CompareTest, MergedShardsHaveNoSweepThroughput) {
+  // fsweep merge's manifest: the longest shard's wall time for runs of several processes.
+  json m = json::parse(read_file(new_ + "/manifest.json"));
+  m["shard"] = {{"index", 0}, {"count", 1}, {"merged_from", 4}};
+  m["wall_s"] = m["wall_s"].get<double>() * 10.0;
+  write_file(new_ + "/manifest.json", m.dump(2));
+  const CompareReport r = compare();
+  EXPECT_EQ(r.regressions, 0U) << format_compare_table(r);
+  bool found = false;
+  for (const auto& k : r.checks) {
+    if (k.kind != "speed" || k.name != "sweep") continue;
+    found = true;
+    EXPECT_EQ(k.status, CheckStatus::NotJudged);
+    EXPECT_TRUE(k.current.empty());
+  }
+  EXPECT_TRUE(found);
+}
+
 TEST_F(CompareTest, BadInputIsAConfigErrorNamingTheFile) {
   fs::remove(new_ + "/manifest.json");
   try {

@@ -112,6 +112,9 @@ TEST_F(MergeTest, ShardsMergeIntoTheUnshardedOutputs) {
     EXPECT_EQ(m["runs"]["total"], 6U);
     EXPECT_EQ(m["shard"]["count"], 1U);
     EXPECT_EQ(m["status"], "complete");
+    EXPECT_EQ(m["shard"]["merged_from"], n);
+    // Throughput over the longest shard's wall time.
+    EXPECT_DOUBLE_EQ(m["runs_per_s"].get<double>(), 6.0 / m["wall_s"].get<double>());
     fs::remove_all(dir);
   }
 }
