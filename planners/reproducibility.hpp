@@ -15,10 +15,11 @@ namespace fsweep {
 /// metrics for the same run seed on the same build (README, planner table, "determinism"):
 /// - every registered planner outside OMPL (the grid planners `astar`, `dijkstra`, `lattice`,
 ///   `lattice_astar`, `shortest_fewest_turns`): deterministic, fixed tie-breaking;
-/// - `ompl:RRTConnect`, `ompl:KPIECE1`: stop at their first path, reproducible from the seed;
-/// - the anytime single-threaded OMPL planners (`ompl:RRTstar`, `ompl:InformedRRTstar`,
-///   `ompl:BITstar`, `ompl:LazyPRMstar`): only with `max_iterations` > 0, else they stop at the
-///   time limit (planners/ompl_planner.hpp, Reproducibility);
+/// - the single-threaded OMPL planners (`ompl:RRTConnect`, `ompl:KPIECE1`, `ompl:RRTstar`,
+///   `ompl:InformedRRTstar`, `ompl:BITstar`, `ompl:LazyPRMstar`): only with `max_iterations`
+///   > 0 (and a time limit it reaches first), else they stop at the time limit: the anytime
+///   planners on every query, RRTConnect and KPIECE1 on queries they cannot solve
+///   (planners/ompl_planner.hpp, Reproducibility);
 /// - `ompl:PRMstar` (ompl_planner_single_threaded() false): never.
 /// `params` maps a parameter name without the `planner.` prefix (e.g. "max_iterations") to
 /// its CSV text; a missing or empty entry is the planner's default (max_iterations 0 = none),

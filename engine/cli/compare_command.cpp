@@ -47,6 +47,10 @@ Command add_compare_command(CLI::App& app) {
          "configurations")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
+  sub->add_option("--min-runs", o->compare.min_quantile_runs,
+                  "Non-reproducible configurations with fewer runs on either side are not judged")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
   sub->add_option("--speed-tolerance", o->compare.speed_tolerance,
                   "Slower means a time ratio above 1 + this (noise of shared machines)")
       ->check(CLI::NonNegativeNumber)

@@ -21,13 +21,16 @@
 ///    tolerance x max(|baseline|, scale), scale = 1 m, 1 energy unit, 0.01 coverage (so a zero
 ///    baseline still has a band); `improved` when better by more than that. The configuration
 ///    is also regressed when its share of successful runs (end_reason `complete` or
-///    `target_reached`) drops.
+///    `target_reached`) drops. With fewer than min_quantile_runs runs on either side the
+///    configuration is `not judged` (one `runs` check): quantiles of a few runs are noise.
 /// 3. Baseline runs (by run_key) missing in NEW make their configuration `incomplete`, a
 ///    configuration of the baseline not in NEW is `missing`; both are failures. A configuration
 ///    only in NEW is `new` (not a failure). Different manifest sweep hashes are a warning.
 /// 4. Speed, as time ratios new / baseline (> 1 = slower): the sweep's seconds per run (manifest
-///    `wall_s / runs.ran`; not judged for a manifest merged from shards), each configuration's median wall_time_s (judged only when the
-///    baseline median is at least CompareOptions::min_judged_wall_time_s), and each
+///    `wall_s / runs.ran`; not judged for a manifest merged from shards), each configuration's
+///    median wall_time_s (informational, never a failure: a run's wall time depends on what
+///    runs beside it; `not judged` when the baseline median is below
+///    CompareOptions::min_judged_wall_time_s), and each
 ///    micro-benchmark of bench.json (median aggregate's real_time, else the mean of the
 ///    iteration rows' real_time; by run_name) when both directories have one. Ratio
 ///    > 1 + speed_tolerance is `slower`, < 1 / (1 + speed_tolerance) `faster`. Slower is a
@@ -56,6 +59,9 @@ struct CompareOptions {
   double speed_tolerance = 0.5;
   /// Slower is a failure even on a different machine.
   bool strict_speed = false;
+  /// Non-reproducible configurations with fewer runs than this on either side are not judged
+  /// by quantiles (their quantiles are noise); >= 1.
+  std::size_t min_quantile_runs = 8;
   /// Configurations whose baseline median wall_time_s is below this (seconds) are not judged
   /// on speed: timings of tiny runs are mostly noise.
   double min_judged_wall_time_s = 0.05;
