@@ -51,6 +51,11 @@ Command add_compare_command(CLI::App& app) {
                   "Non-reproducible configurations with fewer runs on either side are not judged")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
+  sub->add_option("--significance", o->compare.significance,
+                  "Quantile shifts beyond the tolerance count only when a one-sided Mann-Whitney test "
+                  "over the runs gives p below this")
+      ->check(CLI::Range(1e-12, 1.0))
+      ->capture_default_str();
   sub->add_option("--speed-tolerance", o->compare.speed_tolerance,
                   "Slower means a time ratio above 1 + this (noise of shared machines)")
       ->check(CLI::NonNegativeNumber)

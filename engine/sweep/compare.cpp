@@ -153,6 +153,9 @@ void compare_quantiles(const Sides& s, const std::vector<std::size_t>& base_rows
     const auto bv = sorted_values(s.base, base_rows, m.name);
     const auto nv = sorted_values(s.cur, cur_rows, m.name);
     if (bv.empty() || nv.empty()) continue;
+    // One-sided tests: is NEW worse (larger for lower-is-better metrics), is it better?
+    const double p_worse = m.lower_is_better ? mann_whitney_greater_p(bv, nv) : mann_whitney_greater_p(nv, bv);
+    const double p_better = m.lower_is_better ? mann_whitney_greater_p(nv, bv) : mann_whitney_greater_p(bv, nv);
     for (const auto& [qname, q] : kQuantiles) {
       CompareCheck k;
       k.kind = "config";
@@ -165,11 +168,12 @@ void compare_quantiles(const Sides& s, const std::vector<std::size_t>& base_rows
       k.delta = n - b;
       const double band = tol * std::max(std::abs(b), m.scale);
       k.tolerance = band;
+      k.p_value = p_worse;
       const double worse = m.lower_is_better ? n - b : b - n;  // > 0: worse
-      if (worse > band) {
+      if (worse > band && p_worse < s.options.significance) {
         k.status = CheckStatus::Regressed;
         k.failure = true;
-      } else if (-worse > band) {
+      } else if (-worse > band && p_better < s.options.significance) {
         k.status = CheckStatus::Improved;
       } else {
         k.status = CheckStatus::WithinTolerance;
@@ -198,7 +202,16 @@ void compare_quantiles(const Sides& s, const std::vector<std::size_t>& base_rows
   k.current = format_number(n);
   k.delta = n - b;
   k.tolerance = 0.0;
-  k.status = n < b - 1e-12 ? CheckStatus::Regressed : CheckStatus::WithinTolerance;
+  // The same test on the outcomes: 1 for a successful run, 0 otherwise (NEW worse = smaller).
+  const auto outcomes = [&](const RunsFile& t, const std::vector<std::size_t>& rows) {
+    std::vector<double> v;
+    const auto col = static_cast<std::size_t>(t.column("end_reason"));
+    for (const std::size_t r : rows) v.push_back(t.rows[r][col] == "complete" || t.rows[r][col] == "target_reached");
+    return v;
+  };
+  k.p_value = mann_whitney_greater_p(outcomes(s.cur, cur_rows), outcomes(s.base, base_rows));
+  k.status = n < b - 1e-12 && *k.p_value < s.options.significance ? CheckStatus::Regressed
+                                                                  : CheckStatus::WithinTolerance;
   k.failure = k.status == CheckStatus::Regressed;
   if (k.failure) worst_text = "success_share " + format_number(b) + " -> " + format_number(n);
   raise(c, k.status);
@@ -277,6 +290,10 @@ CompareReport compare_dirs(const std::string& new_dir, const std::string& baseli
                            const CompareOptions& options) {
   if (!(options.quality_tolerance >= 0.0)) throw ConfigError("--quality-tolerance", "must be >= 0");
   if (!(options.speed_tolerance >= 0.0)) throw ConfigError("--speed-tolerance", "must be >= 0");
+  if (!(options.significance > 0.0 && options.significance < 1.0)) {
+    throw ConfigError("--significance", "must be in (0, 1)");
+  }
+  if (options.min_quantile_runs < 1) throw ConfigError("--min-runs", "must be >= 1");
   for (const std::string& d : {new_dir, baseline_dir}) {
     if (!std::filesystem::is_directory(d)) throw ConfigError(d, "not a directory");
   }

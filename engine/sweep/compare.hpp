@@ -19,9 +19,11 @@
 ///    energy (lower is better) and coverage (higher is better) over the runs' non-empty cells.
 ///    A quantile is `regressed` when it is worse than the baseline's by more than
 ///    tolerance x max(|baseline|, scale), scale = 1 m, 1 energy unit, 0.01 coverage (so a zero
-///    baseline still has a band); `improved` when better by more than that. The configuration
-///    is also regressed when its share of successful runs (end_reason `complete` or
-///    `target_reached`) drops. With fewer than min_quantile_runs runs on either side the
+///    baseline still has a band), and the one-sided Mann-Whitney test of the metric's runs
+///    (compare_runs.hpp) gives p < significance for "NEW is worse"; `improved` likewise in the
+///    other direction; else `within tolerance`. The configuration is also regressed when its
+///    share of successful runs (end_reason `complete` or `target_reached`) drops with the same
+///    test on the 0/1 outcomes significant. With fewer than min_quantile_runs runs on either side the
 ///    configuration is `not judged` (one `runs` check): quantiles of a few runs are noise.
 /// 3. Baseline runs (by run_key) missing in NEW make their configuration `incomplete`, a
 ///    configuration of the baseline not in NEW is `missing`; both are failures. A configuration
@@ -62,6 +64,10 @@ struct CompareOptions {
   /// Non-reproducible configurations with fewer runs than this on either side are not judged
   /// by quantiles (their quantiles are noise); >= 1.
   std::size_t min_quantile_runs = 8;
+  /// A shift beyond the tolerance counts (regressed or improved) only when a one-sided
+  /// Mann-Whitney test over the runs rejects "no shift" at this level, in (0, 1): noise of
+  /// a varying planner is not flagged.
+  double significance = 0.01;
   /// Configurations whose baseline median wall_time_s is below this (seconds) are not judged
   /// on speed: timings of tiny runs are mostly noise.
   double min_judged_wall_time_s = 0.05;
@@ -99,6 +105,8 @@ struct CompareCheck {
   std::optional<double> delta;  ///< current - baseline (quality checks)
   std::optional<double> ratio;  ///< current / baseline time (speed and bench checks)
   std::optional<double> tolerance;  ///< absolute band (quality) or relative tolerance (speed)
+  /// Quantile and success checks: one-sided Mann-Whitney p-value that NEW is worse.
+  std::optional<double> p_value;
   CheckStatus status = CheckStatus::Match;
   bool failure = false;  ///< counts as a regression
 };
@@ -153,7 +161,7 @@ struct CompareReport {
 /// "compare: no regressions".
 [[nodiscard]] std::string format_compare_table(const CompareReport& report);
 
-/// compare.csv: header `kind,name,metric,baseline,new,delta,ratio,tolerance,status,failure`,
+/// compare.csv: header `kind,name,metric,baseline,new,delta,ratio,tolerance,p_value,status,failure`,
 /// one row per check.
 [[nodiscard]] std::string compare_csv(const CompareReport& report);
 

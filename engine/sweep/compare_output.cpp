@@ -73,7 +73,8 @@ std::string format_compare_table(const CompareReport& r) {
     for (const auto& row : rows) width[i] = std::max(width[i], row[i].size());
   }
   out << "\nquality per configuration (exact: reproducible planner, every run must match; quantiles: q25, "
-         "median, q75 of distance_m, energy, coverage within the tolerance)\n";
+         "median, q75 of distance_m, energy, coverage; regressed when worse beyond the tolerance and "
+         "significant by a one-sided Mann-Whitney test)\n";
   auto print_row = [&](const std::vector<std::string>& row) {
     std::string line;
     for (std::size_t i = 0; i < row.size(); ++i)
@@ -130,7 +131,7 @@ std::string format_compare_table(const CompareReport& r) {
 }
 
 std::string compare_csv(const CompareReport& r) {
-  std::string out = "kind,name,metric,baseline,new,delta,ratio,tolerance,status,failure\n";
+  std::string out = "kind,name,metric,baseline,new,delta,ratio,tolerance,p_value,status,failure\n";
   for (const auto& k : r.checks) {
     const std::vector<std::string> f{k.kind,
                                      k.name,
@@ -140,6 +141,7 @@ std::string compare_csv(const CompareReport& r) {
                                      optional_number(k.delta),
                                      optional_number(k.ratio),
                                      optional_number(k.tolerance),
+                                     optional_number(k.p_value),
                                      to_string(k.status),
                                      k.failure ? "yes" : "no"};
     for (std::size_t i = 0; i < f.size(); ++i) (out += i ? "," : "") += csv_field(f[i]);

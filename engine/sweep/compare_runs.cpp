@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <filesystem>
+#include <utility>
 
 #include "engine/sweep/csv_reader.hpp"
 #include "engine/world/config_error.hpp"
@@ -86,6 +87,35 @@ std::vector<double> sorted_values(const RunsFile& t, const std::vector<std::size
   }
   std::sort(v.begin(), v.end());
   return v;
+}
+
+double mann_whitney_greater_p(const std::vector<double>& a, const std::vector<double>& b) {
+  if (a.empty() || b.empty()) return 1.0;
+  // Ranks of the pooled sample, ties given their mean rank; b's rank sum gives U.
+  std::vector<std::pair<double, bool>> pooled;  // (value, from b)
+  pooled.reserve(a.size() + b.size());
+  for (const double x : a) pooled.emplace_back(x, false);
+  for (const double y : b) pooled.emplace_back(y, true);
+  std::sort(pooled.begin(), pooled.end(), [](const auto& l, const auto& r) { return l.first < r.first; });
+  const auto n = static_cast<double>(pooled.size());
+  double rank_sum_b = 0.0;
+  double tie_term = 0.0;  // sum of t^3 - t over groups of t tied values
+  for (std::size_t i = 0; i < pooled.size();) {
+    std::size_t j = i;
+    while (j < pooled.size() && pooled[j].first == pooled[i].first) ++j;
+    const double t = static_cast<double>(j - i);
+    const double mean_rank = (static_cast<double>(i + 1) + static_cast<double>(j)) / 2.0;
+    for (std::size_t k = i; k < j; ++k) rank_sum_b += pooled[k].second ? mean_rank : 0.0;
+    tie_term += t * t * t - t;
+    i = j;
+  }
+  const auto na = static_cast<double>(a.size());
+  const auto nb = static_cast<double>(b.size());
+  const double u = rank_sum_b - nb * (nb + 1.0) / 2.0;
+  const double variance = na * nb / 12.0 * ((n + 1.0) - tie_term / (n * (n - 1.0)));
+  if (!(variance > 0.0)) return 1.0;
+  const double z = (u - na * nb / 2.0 - 0.5) / std::sqrt(variance);
+  return 0.5 * std::erfc(z / std::sqrt(2.0));
 }
 
 double success_share(const RunsFile& t, const std::vector<std::size_t>& rows) {

@@ -61,6 +61,13 @@ struct Grouping {
 [[nodiscard]] std::vector<double> sorted_values(const RunsFile& t, const std::vector<std::size_t>& rows,
                                                 const std::string& name);
 
+/// One-sided Mann-Whitney (Wilcoxon rank-sum) p-value for "values of `b` tend to be larger
+/// than values of `a`": U = #{(x, y) in a x b : y > x} + #{ties} / 2, compared with its null
+/// distribution by the normal approximation with tie correction and continuity correction,
+/// p = 1 - Phi((U - n_a n_b / 2 - 1/2) / sd). 1 when either sample is empty or every value
+/// is tied. Good from about 8 values a side, which is why compare needs min_quantile_runs.
+[[nodiscard]] double mann_whitney_greater_p(const std::vector<double>& a, const std::vector<double>& b);
+
 /// Share in [0, 1] of `rows` whose end_reason is `complete` or `target_reached` (0 for none).
 [[nodiscard]] double success_share(const RunsFile& t, const std::vector<std::size_t>& rows);
 

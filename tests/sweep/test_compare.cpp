@@ -14,6 +14,7 @@
 
 #include "engine/sim/run_table.hpp"
 #include "engine/sweep/compare.hpp"
+#include "engine/sweep/compare_runs.hpp"
 #include "engine/sweep/csv_reader.hpp"
 #include "engine/sweep/sweep_plan.hpp"
 #include "engine/sweep/sweep_runner.hpp"
@@ -29,14 +30,15 @@ using nlohmann::json;
 using testing::read_file;
 using testing::write_file;
 
-/// 1 map x 2 strategies x 4 repetitions = 8 short runs, planner astar (reproducible).
+/// 1 map x 2 strategies x 8 repetitions = 16 short runs, planner astar (reproducible); 8 runs
+/// per configuration, as many as quantile checks need by default.
 json tiny_sweep() {
   return json::parse(R"({
     "schema_version": 1,
     "name": "compare_test",
     "maps": ["rooms:w=24,h=20,door=2,seed=2"],
     "strategies": [{"name": "closest_frontier"}, {"name": "energy_aware"}],
-    "repetitions": 4,
+    "repetitions": 8,
     "seed": 11
   })");
 }
@@ -183,12 +185,7 @@ class CompareTest : public ::testing::Test {
     fs::last_write_time(dir + "/summary.csv", fs::last_write_time(dir + "/runs.csv") - std::chrono::hours(1));
   }
 
-  /// The defaults, but quantiles judged from the tiny sweep's 4 runs per configuration.
-  [[nodiscard]] static CompareOptions options() {
-    CompareOptions o;
-    o.min_quantile_runs = 4;
-    return o;
-  }
+  [[nodiscard]] static CompareOptions options() { return {}; }
 
   [[nodiscard]] CompareReport compare(const CompareOptions& o = options()) const {
     return compare_dirs(new_, base_, o);
@@ -206,8 +203,8 @@ TEST_F(CompareTest, IdenticalCopyHasNoRegression) {
   for (const auto& c : r.configs) {
     EXPECT_TRUE(c.reproducible) << c.name;  // astar
     EXPECT_EQ(c.status, CheckStatus::Match) << c.name;
-    EXPECT_EQ(c.baseline_runs, 4U);
-    EXPECT_EQ(c.new_runs, 4U);
+    EXPECT_EQ(c.baseline_runs, 8U);
+    EXPECT_EQ(c.new_runs, 8U);
   }
   EXPECT_FALSE(r.sweep_hash_differs);
   EXPECT_TRUE(r.same_machine);
@@ -295,14 +292,56 @@ TEST_F(CompareTest, TooFewRunsForQuantilesAreNotJudged) {
   Table t = read_table(base_ + "/runs.csv");
   t.scale("planner", "ompl:PRMstar", "distance_m", [](std::size_t) { return 2.0; });
   write_table(new_ + "/runs.csv", t);
-  EXPECT_EQ(compare().regressions, 1U);  // judged from 4 runs: twice as long is a regression
-  const CompareReport r = compare(CompareOptions{});  // the default asks for 8 runs
+  EXPECT_EQ(compare().regressions, 1U);  // judged from 8 runs: twice as long is a regression
+  CompareOptions nine = options();
+  nine.min_quantile_runs = 9;
+  const CompareReport r = compare(nine);
   const ConfigComparison* c = config_with(r, "ompl:PRMstar");
   ASSERT_NE(c, nullptr);
   EXPECT_EQ(c->status, CheckStatus::NotJudged) << format_compare_table(r);
   EXPECT_FALSE(c->failure);
   EXPECT_EQ(r.regressions, 0U);
-  EXPECT_NE(c->worst.find("fewer than 8 runs"), std::string::npos) << c->worst;
+  EXPECT_NE(c->worst.find("fewer than 9 runs"), std::string::npos) << c->worst;
+}
+
+TEST_F(CompareTest, ShiftBeyondToleranceMustBeSignificant) {
+  make_frontier_rows_prmstar();
+  // Only 3 of the 8 runs 40% longer: the q75 moves 40%, beyond the 10% band, but a one-sided
+  // Mann-Whitney test cannot tell 3 changed runs of 8 from noise at 1% (p = 0.037).
+  Table t = read_table(base_ + "/runs.csv");
+  t.scale("planner", "ompl:PRMstar", "distance_m", [](std::size_t i) { return i < 3 ? 1.4 : 1.0; });
+  write_table(new_ + "/runs.csv", t);
+  CompareReport r = compare();
+  const ConfigComparison* c = config_with(r, "ompl:PRMstar");
+  ASSERT_NE(c, nullptr);
+  EXPECT_EQ(r.regressions, 0U) << format_compare_table(r);
+  bool p_seen = false;
+  for (const auto& k : r.checks) {
+    if (k.name != c->name || k.metric.rfind("distance_m.", 0) != 0) continue;
+    ASSERT_TRUE(k.p_value.has_value());
+    EXPECT_GE(*k.p_value, 0.01);
+    p_seen = true;
+  }
+  EXPECT_TRUE(p_seen);
+  // At the 50% level the same shift counts.
+  CompareOptions loose = options();
+  loose.significance = 0.5;
+  EXPECT_EQ(compare(loose).regressions, 1U);
+}
+
+TEST(MannWhitney, HandWorkedCases) {
+  // a = {1, 2, 3}, b = {4, 5, 6}: U = 9 (every pair), mean 4.5, variance 3 * 3 / 12 * 7 = 5.25,
+  // z = (9 - 4.5 - 0.5) / sqrt(5.25) = 1.74574, p = 1 - Phi(z) = 0.040428.
+  EXPECT_NEAR(mann_whitney_greater_p({1, 2, 3}, {4, 5, 6}), 0.040428, 1e-6);
+  // The other direction: U = 0, z = (0 - 4.5 - 0.5) / sqrt(5.25) = -2.18218, p = 0.985452.
+  EXPECT_NEAR(mann_whitney_greater_p({4, 5, 6}, {1, 2, 3}), 0.985452, 1e-6);
+  // Ties: a = {1, 2, 2}, b = {2, 3, 3}. Pooled ranks 1, 3, 3, 3 (the 2s), 5.5, 5.5 (the 3s);
+  // b's rank sum 3 + 5.5 + 5.5 = 14, U = 14 - 6 = 8; ties sum (27 - 3) + (8 - 2) = 30;
+  // variance 9 / 12 * (7 - 30 / 30) = 4.5; z = (8 - 4.5 - 0.5) / sqrt(4.5) = 1.41421,
+  // p = 0.078650.
+  EXPECT_NEAR(mann_whitney_greater_p({1, 2, 2}, {2, 3, 3}), 0.078650, 1e-6);
+  EXPECT_EQ(mann_whitney_greater_p({2, 2}, {2, 2, 2}), 1.0);  // all tied
+  EXPECT_EQ(mann_whitney_greater_p({}, {1.0}), 1.0);
 }
 
 TEST_F(CompareTest, NonReproducibleConfigurationComparedByQuantiles) {
@@ -365,14 +404,21 @@ TEST_F(CompareTest, NonReproducibleConfigurationComparedByQuantiles) {
 
 TEST_F(CompareTest, FewerCompleteRunsIsARegression) {
   make_frontier_rows_prmstar();
-  Table t = read_table(new_ + "/runs.csv");
-  bool done = false;
-  t.edit_rows("planner", "ompl:PRMstar", [&](std::vector<std::string>& r) {
-    if (!done) r[t.col("end_reason")] = "stuck";
-    done = true;
-  });
-  write_table(new_ + "/runs.csv", t);
-  const CompareReport r = compare();
+  // `count` of the 8 runs end stuck in NEW.
+  const auto stuck = [&](int count) {
+    Table t = read_table(base_ + "/runs.csv");
+    int left = count;
+    t.edit_rows("planner", "ompl:PRMstar", [&](std::vector<std::string>& r) {
+      if (left-- > 0) r[t.col("end_reason")] = "stuck";
+    });
+    write_table(new_ + "/runs.csv", t);
+    return compare();
+  };
+  // One stuck run of 8 is no evidence (one-sided Mann-Whitney on the 0/1 outcomes, p = 0.19).
+  CompareReport r = stuck(1);
+  EXPECT_EQ(r.regressions, 0U) << format_compare_table(r);
+  // Five of 8: p = 0.005.
+  r = stuck(5);
   const ConfigComparison* c = config_with(r, "ompl:PRMstar");
   ASSERT_NE(c, nullptr);
   EXPECT_EQ(c->status, CheckStatus::Regressed) << format_compare_table(r);
@@ -579,8 +625,8 @@ TEST_F(CompareTest, OutputsAreWritten) {
   const std::string out = root_ + "/out";
   write_compare_outputs(r, out);
   const std::string csv = read_file(out + "/compare.csv");
-  EXPECT_EQ(csv.rfind("kind,name,metric,baseline,new,delta,ratio,tolerance,status,failure\n", 0), 0U);
-  EXPECT_NE(csv.find("bench,BM_A,real_time_ns,1100,2200,,2,0.5,slower,yes"), std::string::npos) << csv;
+  EXPECT_EQ(csv.rfind("kind,name,metric,baseline,new,delta,ratio,tolerance,p_value,status,failure\n", 0), 0U);
+  EXPECT_NE(csv.find("bench,BM_A,real_time_ns,1100,2200,,2,0.5,,slower,yes"), std::string::npos) << csv;
   const std::string html = read_file(out + "/compare.html");
   EXPECT_NE(html.find("<svg"), std::string::npos);
   EXPECT_EQ(html.find("<script"), std::string::npos);
