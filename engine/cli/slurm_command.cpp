@@ -101,12 +101,14 @@ std::string runs_per_shard(std::uint64_t runs, std::uint64_t shards) {
   return lo == hi ? std::to_string(lo) : std::to_string(lo) + " to " + std::to_string(hi);
 }
 
-/// The merge submission as a shell line taking the array job id from $array_id.
+/// The merge submission as a shell line taking the array job id from $array_id, for users who
+/// submit by hand. Built from slurm_merge_submit_command() so both agree; the id goes in as a
+/// marker word and is swapped for the variable after quoting (shell_quote would single-quote
+/// a `$`, and the shell would then not expand it).
 std::string merge_command_line(const std::string& out_dir) {
-  constexpr std::string_view kPlaceholder = "ARRAYJOBID";
-  std::string line = shell_command(slurm_merge_submit_command(out_dir, std::string(kPlaceholder)));
-  const auto at = line.find(kPlaceholder);
-  if (at != std::string::npos) line.replace(at, kPlaceholder.size(), "\"$array_id\"");
+  constexpr std::string_view kJobIdMarker = "ARRAYJOBID";
+  std::string line = shell_command(slurm_merge_submit_command(out_dir, std::string(kJobIdMarker)));
+  line.replace(line.find(kJobIdMarker), kJobIdMarker.size(), "\"$array_id\"");
   return line;
 }
 

@@ -27,7 +27,6 @@
 namespace fsweep {
 namespace {
 
-using testing::EuclideanOracle;
 
 // A corridor (row 2) between walls, open at both ends. R = (6, 2).
 //   left end:  (1,2) free, (0,1) (0,2) (0,3) unknown        -> frontier cell (1,2)
@@ -47,42 +46,13 @@ const std::vector<std::string> kCorridor = {
     "############",  //
 };
 
-/// A known map drawn in ASCII ('?' unknown, '.' free, '#' occupied, 'R' the robot, free).
-struct Situation {
-  KnownMap known;
-  FrontierMap frontiers;
-  std::vector<FrontierCluster> clusters;
-  EuclideanOracle oracle;
-  SensorParams sensor;
-  Cell robot{};
-  int heading = 0;
-  std::optional<Cell> previous_goal;
-
+/// An ASCII situation (testing::AsciiSituation) seen with a sensor of range_m.
+struct Situation : testing::AsciiSituation {
   /// `cluster_max_length_m` as FrontierMap::clusters (<= 0: whole components).
   Situation(const std::vector<std::string>& rows, double range_m, double cluster_max_length_m = 0.0)
-      : known(static_cast<int>(rows[0].size()), static_cast<int>(rows.size()), 1.0) {
-    for (int y = 0; y < known.height(); ++y) {
-      for (int x = 0; x < known.width(); ++x) {
-        const char ch = rows[static_cast<std::size_t>(y)][static_cast<std::size_t>(x)];
-        if (ch == 'R') robot = Cell{x, y};
-        if (ch != '?') known.reveal(known.index(Cell{x, y}), ch == '#');
-      }
-    }
-    frontiers = FrontierMap(known);
-    clusters = frontiers.clusters(known, cluster_max_length_m, false);
+      : AsciiSituation(rows, cluster_max_length_m) {
     sensor.range_m = range_m;
-    oracle.known = &known;
-    oracle.robot = robot;
   }
-  void move_robot(Cell c) {
-    robot = c;
-    oracle.robot = c;
-  }
-  Observation observe() {
-    return Observation{known,   frontiers, clusters,      oracle, sensor, robot,
-                       heading, robot,     previous_goal, robot,  {},     1};
-  }
-  int at(int x, int y) const { return known.index(Cell{x, y}); }
 };
 
 std::set<std::pair<int, int>> cells_of(const std::vector<GblCandidate>& c) {

@@ -18,42 +18,12 @@
 namespace fsweep {
 namespace {
 
-using testing::EuclideanOracle;
 
-/// A known map drawn in ASCII: '?' unknown, '.' free, '#' occupied, 'R' the robot (free).
-struct Situation {
-  KnownMap known;
-  FrontierMap frontiers;
-  std::vector<FrontierCluster> clusters;
-  EuclideanOracle oracle;
-  SensorParams sensor;
-  Cell robot{};
-  int heading = 0;
-
-  Situation(const std::vector<std::string>& rows, double d_s, int heading_in)
-      : known(static_cast<int>(rows[0].size()), static_cast<int>(rows.size()), 1.0), heading(heading_in) {
-    for (int y = 0; y < known.height(); ++y) {
-      for (int x = 0; x < known.width(); ++x) {
-        const char ch = rows[static_cast<std::size_t>(y)][static_cast<std::size_t>(x)];
-        if (ch == 'R') robot = Cell{x, y};
-        if (ch != '?') known.reveal(known.index(Cell{x, y}), ch == '#');
-      }
-    }
-    frontiers = FrontierMap(known);
-    clusters = frontiers.clusters(known, 0.0, false);
+/// An ASCII situation (testing::AsciiSituation) with Mei's sensor range d_s and a heading.
+struct Situation : testing::AsciiSituation {
+  Situation(const std::vector<std::string>& rows, double d_s, int heading_in) : AsciiSituation(rows) {
     sensor.range_m = d_s;
-    oracle.known = &known;
-    oracle.robot = robot;
-  }
-  Observation observe() {
-    return Observation{known,   frontiers, clusters,     oracle, sensor, robot,
-                       heading, robot,     std::nullopt, robot,  {},     1};
-  }
-  int at(int x, int y) const { return known.index(Cell{x, y}); }
-  std::vector<Cell> as_cells(const std::vector<int>& indices) const {
-    std::vector<Cell> out;
-    for (const int i : indices) out.push_back(known.cell(i));
-    return out;
+    heading = heading_in;
   }
 };
 

@@ -7,6 +7,7 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "engine/world/config_error.hpp"
@@ -20,7 +21,6 @@ namespace fsweep {
 namespace {
 
 using nlohmann::json;
-using testing::EuclideanOracle;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
@@ -90,34 +90,9 @@ const std::vector<std::string> kRooms = {
     "???????????",  //
 };
 
-struct Situation {
-  KnownMap known;
-  FrontierMap frontiers;
-  std::vector<FrontierCluster> clusters;
-  EuclideanOracle oracle;
-  SensorParams sensor;
-  Cell robot{};
-
-  explicit Situation(std::vector<std::string> rows) {
-    for (int y = 0; y < static_cast<int>(rows.size()); ++y) {
-      auto& row = rows[static_cast<std::size_t>(y)];
-      const auto x = row.find('R');
-      if (x != std::string::npos) {
-        robot = Cell{static_cast<int>(x), y};
-        row[x] = '.';
-      }
-    }
-    known = test::ascii_known(rows);
-    frontiers = FrontierMap(known);
-    clusters = frontiers.clusters(known, 1.0, false);  // split into single cells: the strategy merges them
-    oracle.known = &known;
-    oracle.robot = robot;
-  }
-  Observation observe() {
-    return Observation{known, frontiers, clusters,     oracle, sensor, robot,
-                       0,     robot,     std::nullopt, robot,  {},     1};
-  }
-  int at(int x, int y) const { return known.index(Cell{x, y}); }
+/// Frontier clusters split into single cells (the strategy merges them).
+struct Situation : testing::AsciiSituation {
+  explicit Situation(std::vector<std::string> rows) : AsciiSituation(std::move(rows), 1.0) {}
 };
 
 TargetSeekingParams params_for(Cell target, double w1, double w2, double w3) {
