@@ -1,5 +1,6 @@
 # The two commands of the README:
-#   make run       - install what is missing, build (Release), run sweeps/default.json and plot it
+#   make run       - install what is missing, build the fsweep executable (Release), run
+#                    sweeps/default.json and plot it
 #   make test      - install what is missing, build, run the whole test suite (unit tests, the
 #                    single-node Slurm integration test, and a sanitizer pass)
 # and the nightly regression job (README, "Nightly regression checks"):
@@ -10,7 +11,8 @@
 
 FSWEEP := build/release/bin/fsweep
 
-run: build
+run:
+	@scripts/bootstrap release fsweep
 	@$(FSWEEP) run sweeps/default.json
 	@$(FSWEEP) plot results/default >/dev/null && echo "plots in results/default/plots/"
 

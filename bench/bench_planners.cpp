@@ -35,16 +35,16 @@
 #include <string>
 #include <vector>
 
-#include "engine/world/energy_model.hpp"
-#include "engine/world/known_map.hpp"
-#include "engine/world/map_loaders.hpp"
-#include "engine/world/map_spec.hpp"
-#include "engine/world/random.hpp"
-#include "engine/world/world_map.hpp"
-#include "planners/distance_field.hpp"
+#include "core/random.hpp"
 #include "planners/grid_planner.hpp"
 #include "planners/planner.hpp"
 #include "planners/registry.hpp"
+#include "search/distance_field.hpp"
+#include "world/energy_model.hpp"
+#include "world/known_map.hpp"
+#include "world/map_loaders.hpp"
+#include "world/map_spec.hpp"
+#include "world/world_map.hpp"
 
 namespace fsweep {
 namespace {

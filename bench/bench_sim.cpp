@@ -26,10 +26,10 @@
 #include <string>
 #include <utility>
 
-#include "engine/sim/simulation.hpp"
-#include "engine/sweep/sweep_plan.hpp"
-#include "engine/sweep/sweep_table.hpp"
-#include "engine/world/map_spec.hpp"
+#include "sim/simulation.hpp"
+#include "sweep/sweep_plan.hpp"
+#include "sweep/sweep_table.hpp"
+#include "world/map_spec.hpp"
 
 namespace fsweep {
 namespace {

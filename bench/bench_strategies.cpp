@@ -18,11 +18,11 @@
 #include <string>
 #include <vector>
 
-#include "engine/sim/grid_distance_oracle.hpp"
-#include "engine/sim/simulation.hpp"
-#include "engine/world/frontiers.hpp"
-#include "engine/world/map_spec.hpp"
+#include "sim/grid_distance_oracle.hpp"
+#include "sim/simulation.hpp"
 #include "strategies/registry.hpp"
+#include "world/frontiers.hpp"
+#include "world/map_spec.hpp"
 
 namespace fsweep {
 namespace {

@@ -22,11 +22,11 @@
 #include <deque>
 #include <vector>
 
-#include "engine/world/frontiers.hpp"
-#include "engine/world/known_map.hpp"
-#include "engine/world/random.hpp"
-#include "engine/world/sensor.hpp"
-#include "engine/world/world_map.hpp"
+#include "core/random.hpp"
+#include "world/frontiers.hpp"
+#include "world/known_map.hpp"
+#include "world/sensor.hpp"
+#include "world/world_map.hpp"
 
 namespace fsweep {
 namespace {

@@ -2,7 +2,7 @@
 """Figures of an aggregated sweep (run by `fsweep plot DIR`).
 
 Reads DIR/summary.csv, DIR/progress_summary.csv and DIR/best.csv (written by
-`fsweep aggregate`, engine/sweep/aggregate.hpp) and writes to --out (default DIR/plots):
+`fsweep aggregate`, src/report/aggregate.hpp) and writes to --out (default DIR/plots):
 
   progress.png           explored area vs distance: mean line and q05-q95 band per configuration
                          (Rappaport 2016, Figure 4)

@@ -11,7 +11,7 @@
 #include <string>
 
 #include "cli/fsweep_process.hpp"
-#include "sweep/aggregate_fixture.hpp"
+#include "report/aggregate_fixture.hpp"
 
 namespace {
 

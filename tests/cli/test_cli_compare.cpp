@@ -9,8 +9,8 @@
 #include <string>
 
 #include "cli/fsweep_process.hpp"
-#include "engine/sim/run_table.hpp"
-#include "engine/sweep/csv_journal.hpp"
+#include "sim/run_table.hpp"
+#include "sweep/csv_journal.hpp"
 
 namespace {
 

@@ -11,10 +11,10 @@
 #include <string_view>
 #include <vector>
 
-#include "engine/world/known_map.hpp"
-#include "engine/world/random.hpp"
-#include "planners/octile_grid.hpp"
+#include "core/random.hpp"
 #include "planners/planner.hpp"
+#include "search/octile_grid.hpp"
+#include "world/known_map.hpp"
 
 namespace fsweep::testing {
 

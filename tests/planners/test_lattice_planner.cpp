@@ -8,12 +8,12 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
-#include "engine/world/config_error.hpp"
-#include "engine/world/energy_model.hpp"
-#include "engine/world/motion.hpp"
+#include "core/config_error.hpp"
 #include "planner_test_utils.hpp"
 #include "planners/grid_planner.hpp"
 #include "planners/lattice_planner.hpp"
+#include "world/energy_model.hpp"
+#include "world/motion.hpp"
 
 namespace fsweep {
 namespace {

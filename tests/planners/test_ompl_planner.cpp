@@ -1,5 +1,5 @@
-/// OMPL planners (planners/ompl_planner.hpp) and the exact segment geometry under them
-/// (planners/ompl_segment_walk.hpp): hand-worked segment walks, valid paths and statuses for
+/// OMPL planners (src/planners/ompl_planner.hpp) and the exact segment geometry under them
+/// (src/planners/ompl_segment_walk.hpp): hand-worked segment walks, valid paths and statuses for
 /// every OMPL planner on tiny maps, parameter validation, and seed reproducibility.
 
 #include <gtest/gtest.h>
@@ -11,7 +11,7 @@
 #include <thread>
 #include <vector>
 
-#include "engine/world/config_error.hpp"
+#include "core/config_error.hpp"
 #include "planner_test_utils.hpp"
 #include "planners/ompl_planner.hpp"
 #include "planners/ompl_segment_walk.hpp"
@@ -178,7 +178,8 @@ TEST_P(OmplPlannerKinds, DiagonalGapBetweenBlockedCellsIsClosedWithoutCornerCutt
   const auto m = known_from_ascii({"S.#", ".#.", "#.G"});
   OmplPlanner planner = make_ompl(GetParam(), {{"time_limit_s", 0.05}});
   const PlanResult strict = planner.plan(m.known, request_for(m.start, m.goal, 3, false));
-  EXPECT_TRUE(strict.status == PlanStatus::Timeout || strict.status == PlanStatus::NoPath) << to_string(strict.status);
+  EXPECT_TRUE(strict.status == PlanStatus::Timeout || strict.status == PlanStatus::NoPath)
+      << to_string(strict.status);
   const PlanRequest cut = request_for(m.start, m.goal, 3, true);
   const PlanResult r = planner.plan(m.known, cut);
   if (r.status == PlanStatus::Success) expect_valid_path(m.known, cut, r);
@@ -208,7 +209,8 @@ TEST(OmplPlanner, RandomMapsWithUnknownCellsGiveValidPaths) {
       if (uniform01(cells) >= 0.1) known.reveal(i, uniform01(cells) < 0.25);
     }
     Rng rng = make_rng(map_seed, "ompl_test_queries");
-    for (const OmplPlannerKind kind : {OmplPlannerKind::RRTConnect, OmplPlannerKind::KPIECE1, OmplPlannerKind::BITstar}) {
+    for (const OmplPlannerKind kind :
+         {OmplPlannerKind::RRTConnect, OmplPlannerKind::KPIECE1, OmplPlannerKind::BITstar}) {
       OmplPlanner planner = make_ompl(kind, {{"time_limit_s", 0.05}});
       int solved = 0;
       for (int q = 0; q < 6; ++q) {
@@ -255,18 +257,25 @@ TEST(OmplPlannerParams, UnknownKeyListsKnownOnes) {
 }
 
 TEST(OmplPlannerParams, ValuesAreCheckedByOmplAndByUs) {
-  const OmplPlannerParams p =
-      OmplPlannerParams::from_json(OmplPlannerKind::RRTstar, {{"range", 2.5}, {"goal_bias", "0.1"}, {"simplify", false}}, "p");
+  const OmplPlannerParams p = OmplPlannerParams::from_json(
+      OmplPlannerKind::RRTstar, {{"range", 2.5}, {"goal_bias", "0.1"}, {"simplify", false}}, "p");
   EXPECT_EQ(p.ompl.at("range"), "2.5");
   EXPECT_EQ(p.ompl.at("goal_bias"), "0.1");
   EXPECT_FALSE(p.simplify);
-  EXPECT_THROW((void)OmplPlannerParams::from_json(OmplPlannerKind::RRTstar, {{"range", "far"}}, "p"), ConfigError);
-  EXPECT_THROW((void)OmplPlannerParams::from_json(OmplPlannerKind::RRTstar, {{"range", {1, 2}}}, "p"), ConfigError);
-  EXPECT_THROW((void)OmplPlannerParams::from_json(OmplPlannerKind::RRTstar, {{"time_limit_s", 0}}, "p"), ConfigError);
-  EXPECT_THROW((void)OmplPlannerParams::from_json(OmplPlannerKind::RRTstar, {{"time_limit_s", "1"}}, "p"), ConfigError);
-  EXPECT_THROW((void)OmplPlannerParams::from_json(OmplPlannerKind::RRTstar, {{"max_iterations", -1}}, "p"), ConfigError);
-  EXPECT_THROW((void)OmplPlannerParams::from_json(OmplPlannerKind::RRTstar, {{"max_iterations", 1.5}}, "p"), ConfigError);
-  EXPECT_THROW((void)OmplPlannerParams::from_json(OmplPlannerKind::RRTstar, nlohmann::json::array(), "p"), ConfigError);
+  EXPECT_THROW((void)OmplPlannerParams::from_json(OmplPlannerKind::RRTstar, {{"range", "far"}}, "p"),
+               ConfigError);
+  EXPECT_THROW((void)OmplPlannerParams::from_json(OmplPlannerKind::RRTstar, {{"range", {1, 2}}}, "p"),
+               ConfigError);
+  EXPECT_THROW((void)OmplPlannerParams::from_json(OmplPlannerKind::RRTstar, {{"time_limit_s", 0}}, "p"),
+               ConfigError);
+  EXPECT_THROW((void)OmplPlannerParams::from_json(OmplPlannerKind::RRTstar, {{"time_limit_s", "1"}}, "p"),
+               ConfigError);
+  EXPECT_THROW((void)OmplPlannerParams::from_json(OmplPlannerKind::RRTstar, {{"max_iterations", -1}}, "p"),
+               ConfigError);
+  EXPECT_THROW((void)OmplPlannerParams::from_json(OmplPlannerKind::RRTstar, {{"max_iterations", 1.5}}, "p"),
+               ConfigError);
+  EXPECT_THROW((void)OmplPlannerParams::from_json(OmplPlannerKind::RRTstar, nlohmann::json::array(), "p"),
+               ConfigError);
 }
 
 TEST(OmplPlannerParams, OmplParameterChangesThePlanner) {
@@ -291,13 +300,15 @@ TEST(OmplPlannerSeeds, SameSeedSamePathAlsoInParallel) {
   std::vector<PlanRequest> queries;
   const auto astar = make_planner("astar", nullptr);
   while (queries.size() < 4) {
-    const PlanRequest q = request_for(testing::random_free_cell(known, rng), testing::random_free_cell(known, rng),
-                                      100 + queries.size());
+    const PlanRequest q = request_for(testing::random_free_cell(known, rng),
+                                      testing::random_free_cell(known, rng), 100 + queries.size());
     if (astar->plan(known, q).status == PlanStatus::Success) queries.push_back(q);  // reachable
   }
   // Every single-threaded planner, ended by a solution (RRTConnect, KPIECE1) or by iterations
   // (the anytime planners).
-  const auto anytime = [](int iterations) { return nlohmann::json{{"time_limit_s", 5.0}, {"max_iterations", iterations}}; };
+  const auto anytime = [](int iterations) {
+    return nlohmann::json{{"time_limit_s", 5.0}, {"max_iterations", iterations}};
+  };
   const std::vector<std::pair<OmplPlannerKind, nlohmann::json>> setups{
       {OmplPlannerKind::RRTConnect, {{"time_limit_s", 5.0}, {"simplify", false}}},
       {OmplPlannerKind::KPIECE1, {{"time_limit_s", 5.0}}},

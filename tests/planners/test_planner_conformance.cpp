@@ -10,11 +10,11 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "engine/world/known_map.hpp"
-#include "engine/world/map_loaders.hpp"
-#include "engine/world/world_map.hpp"
 #include "planner_test_utils.hpp"
 #include "planners/registry.hpp"
+#include "world/known_map.hpp"
+#include "world/map_loaders.hpp"
+#include "world/world_map.hpp"
 
 namespace fsweep {
 namespace {

@@ -4,7 +4,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "engine/world/config_error.hpp"
+#include "core/config_error.hpp"
 #include "planners/registry.hpp"
 
 namespace fsweep {

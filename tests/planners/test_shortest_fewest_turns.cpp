@@ -10,13 +10,13 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
-#include "engine/world/config_error.hpp"
-#include "engine/world/energy_model.hpp"
-#include "engine/world/motion.hpp"
+#include "core/config_error.hpp"
 #include "planner_test_utils.hpp"
 #include "planners/grid_planner.hpp"
 #include "planners/lattice_planner.hpp"
 #include "planners/shortest_fewest_turns.hpp"
+#include "world/energy_model.hpp"
+#include "world/motion.hpp"
 
 namespace fsweep {
 namespace {

@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "engine/sim/battery.hpp"
+#include "sim/battery.hpp"
 
 namespace fsweep {
 namespace {

@@ -5,9 +5,9 @@
 #include <memory>
 #include <string>
 
-#include "engine/sim/simulation.hpp"
-#include "engine/world/map_spec.hpp"
+#include "sim/simulation.hpp"
 #include "world/ascii_world.hpp"
+#include "world/map_spec.hpp"
 
 namespace fsweep {
 namespace {

@@ -5,9 +5,9 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
-#include "engine/sim/simulation.hpp"
-#include "engine/world/map_spec.hpp"
+#include "sim/simulation.hpp"
 #include "strategies/registry.hpp"
+#include "world/map_spec.hpp"
 
 namespace fsweep {
 namespace {

@@ -1,4 +1,4 @@
-// The `rr` and `seg` heuristics (strategies/heuristics.hpp): JSON, registry, sweeps, labels,
+// The `rr` and `seg` heuristics (src/strategies/heuristics.hpp): JSON, registry, sweeps, labels,
 // and their effect in the simulation.
 #include <gtest/gtest.h>
 
@@ -7,15 +7,15 @@
 #include <set>
 #include <string>
 
-#include "engine/sim/grid_distance_oracle.hpp"
-#include "engine/sim/simulation.hpp"
-#include "engine/sweep/sweep_plan.hpp"
-#include "engine/sweep/sweep_table.hpp"
-#include "engine/world/config_error.hpp"
-#include "engine/world/map_spec.hpp"
+#include "core/config_error.hpp"
+#include "sim/grid_distance_oracle.hpp"
+#include "sim/simulation.hpp"
 #include "strategies/heuristics.hpp"
 #include "strategies/registry.hpp"
+#include "sweep/sweep_plan.hpp"
+#include "sweep/sweep_table.hpp"
 #include "world/ascii_world.hpp"
+#include "world/map_spec.hpp"
 
 namespace fsweep {
 namespace {

@@ -5,10 +5,10 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "engine/sim/simulation.hpp"
-#include "engine/world/energy_model.hpp"
-#include "engine/world/map_loaders.hpp"
-#include "engine/world/map_spec.hpp"
+#include "sim/simulation.hpp"
+#include "world/energy_model.hpp"
+#include "world/map_loaders.hpp"
+#include "world/map_spec.hpp"
 
 namespace fsweep {
 namespace {

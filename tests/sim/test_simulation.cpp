@@ -3,10 +3,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "engine/sim/simulation.hpp"
-#include "engine/world/config_error.hpp"
-#include "engine/world/map_loaders.hpp"
-#include "engine/world/map_spec.hpp"
+#include "core/config_error.hpp"
+#include "sim/simulation.hpp"
+#include "world/map_loaders.hpp"
+#include "world/map_spec.hpp"
 
 namespace fsweep {
 namespace {
@@ -136,11 +136,11 @@ TEST(Simulation, NoFrontierLeftInAClosedBoxEndsComplete) {
 
 TEST(Simulation, UnreachablePocketDoesNotCountAgainstCoverage) {
   RunSpec s;
-  s.map = std::make_shared<const WorldMap>(parse_ascii_map(
-      "#########\n"
-      "#S..#...#\n"
-      "#...#...#\n"
-      "#########\n"));
+  s.map =
+      std::make_shared<const WorldMap>(parse_ascii_map("#########\n"
+                                                       "#S..#...#\n"
+                                                       "#...#...#\n"
+                                                       "#########\n"));
   s.robot.sensor.range_m = 10.0;
   const RunResult r = simulate(s);
   EXPECT_EQ(r.end, EndReason::Complete);

@@ -1,4 +1,4 @@
-// target_seeking runs (strategies/target_seeking.hpp) through the simulation loop: the target
+// target_seeking runs (src/strategies/target_seeking.hpp) through the simulation loop: the target
 // is reached, an unreachable target ends the run with a reason, decisions are taken after
 // every step, and without a target the strategy explores completely.
 #include <gtest/gtest.h>
@@ -8,12 +8,12 @@
 #include <string>
 #include <vector>
 
-#include "engine/sim/simulation.hpp"
-#include "engine/world/config_error.hpp"
-#include "engine/world/map_spec.hpp"
+#include "core/config_error.hpp"
 #include "planners/registry.hpp"
+#include "sim/simulation.hpp"
 #include "strategies/registry.hpp"
 #include "world/ascii_world.hpp"
+#include "world/map_spec.hpp"
 
 namespace fsweep {
 namespace {

@@ -11,10 +11,10 @@
 #include <string>
 #include <vector>
 
-#include "engine/world/grid.hpp"
-#include "engine/world/known_map.hpp"
 #include "strategies/strategy.hpp"
 #include "world/ascii_world.hpp"
+#include "world/grid.hpp"
+#include "world/known_map.hpp"
 
 namespace fsweep::testing {
 

@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "engine/world/random.hpp"
+#include "core/random.hpp"
 #include "strategies/choquet.hpp"
 
 namespace fsweep {

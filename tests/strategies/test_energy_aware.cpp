@@ -5,7 +5,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 
-#include "engine/world/config_error.hpp"
+#include "core/config_error.hpp"
 #include "strategies/energy_aware.hpp"
 #include "strategies/registry.hpp"
 

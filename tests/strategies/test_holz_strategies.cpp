@@ -12,10 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "engine/sim/simulation.hpp"
-#include "engine/world/config_error.hpp"
-#include "engine/world/map_spec.hpp"
+#include "core/config_error.hpp"
 #include "planners/registry.hpp"
+#include "sim/simulation.hpp"
 #include "strategies/choquet.hpp"
 #include "strategies/gbl.hpp"
 #include "strategies/mcdm.hpp"
@@ -23,10 +22,10 @@
 #include "strategies/registry.hpp"
 #include "strategies/strategy_test_utils.hpp"
 #include "world/ascii_world.hpp"
+#include "world/map_spec.hpp"
 
 namespace fsweep {
 namespace {
-
 
 // A corridor (row 2) between walls, open at both ends. R = (6, 2).
 //   left end:  (1,2) free, (0,1) (0,2) (0,3) unknown        -> frontier cell (1,2)

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/world/config_error.hpp"
+#include "core/config_error.hpp"
 #include "strategies/orientation.hpp"
 #include "strategies/registry.hpp"
 #include "strategies/strategy_test_utils.hpp"
@@ -17,7 +17,6 @@
 
 namespace fsweep {
 namespace {
-
 
 /// An ASCII situation (testing::AsciiSituation) with Mei's sensor range d_s and a heading.
 struct Situation : testing::AsciiSituation {

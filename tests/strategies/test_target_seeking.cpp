@@ -1,5 +1,5 @@
 // Geodesic distances, the geodesic Hausdorff distance and the frontier choice of equation 12
-// (Arvanitakis et al., strategies/target_seeking.hpp), on hand-worked ASCII situations.
+// (Arvanitakis et al., src/strategies/target_seeking.hpp), on hand-worked ASCII situations.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-#include "engine/world/config_error.hpp"
+#include "core/config_error.hpp"
 #include "strategies/geodesic.hpp"
 #include "strategies/registry.hpp"
 #include "strategies/strategy_test_utils.hpp"

@@ -7,8 +7,8 @@
 #include <sstream>
 #include <string>
 
-#include "engine/sweep/csv_journal.hpp"
-#include "engine/world/config_error.hpp"
+#include "core/config_error.hpp"
+#include "sweep/csv_journal.hpp"
 #include "sweep/sweep_test_files.hpp"
 
 namespace fsweep {

@@ -1,7 +1,7 @@
 // DoneRuns: the runs a resumed sweep skips.
 #include <gtest/gtest.h>
 
-#include "engine/sweep/done_runs.hpp"
+#include "sweep/done_runs.hpp"
 
 namespace fsweep {
 namespace {

@@ -10,11 +10,11 @@
 #include <string>
 #include <vector>
 
-#include "engine/sweep/csv_journal.hpp"
-#include "engine/sweep/merge.hpp"
-#include "engine/sweep/sweep_plan.hpp"
-#include "engine/sweep/sweep_runner.hpp"
-#include "engine/world/config_error.hpp"
+#include "core/config_error.hpp"
+#include "sweep/csv_journal.hpp"
+#include "sweep/merge.hpp"
+#include "sweep/sweep_plan.hpp"
+#include "sweep/sweep_runner.hpp"
 #include "sweep/sweep_test_files.hpp"
 
 namespace fsweep {

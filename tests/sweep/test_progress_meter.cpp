@@ -1,7 +1,7 @@
 // ProgressMeter: the text of the progress bar and log lines.
 #include <gtest/gtest.h>
 
-#include "engine/sweep/progress_meter.hpp"
+#include "sweep/progress_meter.hpp"
 
 namespace fsweep {
 namespace {

@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "engine/sweep/slurm_script.hpp"
-#include "engine/world/config_error.hpp"
+#include "core/config_error.hpp"
+#include "sweep/slurm_script.hpp"
 #include "sweep/sweep_test_files.hpp"
 
 namespace fsweep {

@@ -5,8 +5,8 @@
 #include <set>
 #include <string>
 
-#include "engine/sweep/sweep_plan.hpp"
-#include "engine/world/random.hpp"
+#include "core/random.hpp"
+#include "sweep/sweep_plan.hpp"
 
 namespace fsweep {
 namespace {

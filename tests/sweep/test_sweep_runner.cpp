@@ -17,11 +17,11 @@
 #include <thread>
 #include <vector>
 
-#include "engine/sim/run_table.hpp"
-#include "engine/sweep/csv_journal.hpp"
-#include "engine/sweep/sweep_plan.hpp"
-#include "engine/sweep/sweep_runner.hpp"
-#include "engine/world/config_error.hpp"
+#include "core/config_error.hpp"
+#include "sim/run_table.hpp"
+#include "sweep/csv_journal.hpp"
+#include "sweep/sweep_plan.hpp"
+#include "sweep/sweep_runner.hpp"
 #include "sweep/sweep_test_files.hpp"
 
 extern char** environ;  // NOLINT(readability-redundant-declaration): for posix_spawn

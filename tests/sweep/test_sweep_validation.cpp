@@ -7,8 +7,8 @@
 #include <fstream>
 #include <string>
 
-#include "engine/sweep/sweep_plan.hpp"
-#include "engine/world/config_error.hpp"
+#include "core/config_error.hpp"
+#include "sweep/sweep_plan.hpp"
 
 namespace fsweep {
 namespace {

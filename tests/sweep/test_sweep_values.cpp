@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/sweep/sweep_plan.hpp"
+#include "sweep/sweep_plan.hpp"
 
 namespace fsweep {
 namespace {

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "engine/world/known_map.hpp"
-#include "engine/world/world_map.hpp"
+#include "world/known_map.hpp"
+#include "world/world_map.hpp"
 
 namespace fsweep::test {
 

@@ -2,9 +2,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "engine/world/config_error.hpp"
-#include "engine/world/energy_model.hpp"
-#include "engine/world/motion.hpp"
+#include "core/config_error.hpp"
+#include "world/energy_model.hpp"
+#include "world/motion.hpp"
 
 namespace fsweep {
 namespace {
@@ -73,7 +73,8 @@ TEST(EnergyModel, JsonPerTurnTakesFourNumbers) {
   } catch (const ConfigError& e) {
     EXPECT_NE(std::string(e.what()).find("/e/per_turn/1"), std::string::npos) << e.what();
   }
-  EXPECT_THROW((void)energy_model_from_json(nlohmann::json::parse(R"({"per_turn": [0, 0]})"), "/e"), ConfigError);
+  EXPECT_THROW((void)energy_model_from_json(nlohmann::json::parse(R"({"per_turn": [0, 0]})"), "/e"),
+               ConfigError);
 }
 
 TEST(EnergyModel, BadJsonNamesPathAndAllowed) {

@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "engine/world/frontiers.hpp"
-#include "engine/world/sensor.hpp"
 #include "world/ascii_world.hpp"
+#include "world/frontiers.hpp"
+#include "world/sensor.hpp"
 
 namespace fsweep {
 namespace {

@@ -5,8 +5,8 @@
 #include <initializer_list>
 #include <string>
 
-#include "engine/world/config_error.hpp"
-#include "engine/world/map_generators.hpp"
+#include "core/config_error.hpp"
+#include "world/map_generators.hpp"
 
 namespace fsweep {
 namespace {

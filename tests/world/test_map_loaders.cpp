@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "engine/world/config_error.hpp"
-#include "engine/world/map_loaders.hpp"
+#include "core/config_error.hpp"
+#include "world/map_loaders.hpp"
 
 namespace fsweep {
 namespace {

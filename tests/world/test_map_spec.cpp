@@ -6,10 +6,10 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "engine/world/config_error.hpp"
-#include "engine/world/map_generators.hpp"
-#include "engine/world/map_loaders.hpp"
-#include "engine/world/map_spec.hpp"
+#include "core/config_error.hpp"
+#include "world/map_generators.hpp"
+#include "world/map_loaders.hpp"
+#include "world/map_spec.hpp"
 
 namespace fsweep {
 namespace {

@@ -1,4 +1,4 @@
-/// Room segmentation (engine/world/segmentation.hpp): hand-made maps and generated buildings.
+/// Room segmentation (src/world/segmentation.hpp): hand-made maps and generated buildings.
 
 #include <gtest/gtest.h>
 
@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "engine/world/map_generators.hpp"
-#include "engine/world/segmentation.hpp"
 #include "world/ascii_world.hpp"
+#include "world/map_generators.hpp"
+#include "world/segmentation.hpp"
 
 namespace fsweep {
 namespace {

@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "engine/world/config_error.hpp"
-#include "engine/world/sensor.hpp"
+#include "core/config_error.hpp"
 #include "world/ascii_world.hpp"
+#include "world/sensor.hpp"
 
 namespace fsweep {
 namespace {

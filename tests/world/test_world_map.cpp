@@ -2,9 +2,9 @@
 // fully known map.
 #include <gtest/gtest.h>
 
-#include "engine/world/known_map.hpp"
-#include "engine/world/map_loaders.hpp"
-#include "engine/world/world_map.hpp"
+#include "world/known_map.hpp"
+#include "world/map_loaders.hpp"
+#include "world/world_map.hpp"
 
 namespace fsweep {
 namespace {

@@ -1,0 +1,44 @@
+/// @file main.cpp
+/// `fsweep`: the frontier-sweep command line. Errors in the configuration print one message
+/// naming the file, JSON path or map cell and exit with code 2.
+
+#include <iostream>
+#include <map>
+
+#include "cli/commands.hpp"
+#include "core/config_error.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"frontier-sweep: experiments on 2D frontier exploration strategies and planners"};
+  app.require_subcommand(1);
+  std::map<std::string, fsweep::cli::Command> commands;
+  commands["sim"] = fsweep::cli::add_sim_command(app);
+  commands["plan"] = fsweep::cli::add_plan_command(app);
+  commands["plan-compare"] = fsweep::cli::add_plan_compare_command(app);
+  commands["plan-bench"] = fsweep::cli::add_plan_bench_command(app);
+  commands["run"] = fsweep::cli::add_run_command(app);
+  commands["expand"] = fsweep::cli::add_expand_command(app);
+  commands["aggregate"] = fsweep::cli::add_aggregate_command(app);
+  commands["merge"] = fsweep::cli::add_merge_command(app);
+  commands["compare"] = fsweep::cli::add_compare_command(app);
+  commands["slurm"] = fsweep::cli::add_slurm_command(app);
+  commands["plot"] = fsweep::cli::add_plot_command(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 2;
+  }
+  try {
+    for (const auto& [name, run] : commands) {
+      if (app.got_subcommand(name)) return run();
+    }
+  } catch (const fsweep::ConfigError& e) {
+    std::cerr << "fsweep: error: " << e.what() << '\n';
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "fsweep: error: " << e.what() << '\n';
+    return 2;
+  }
+  return 2;
+}

@@ -1,0 +1,56 @@
+/// @file merge_command.cpp
+/// `fsweep merge DIR`: joins the shards DIR/shard-i-of-n/ of a sweep and aggregates them
+/// (merge.hpp). Exit 0 merged, 1 incomplete or duplicate runs (nothing written), 2 bad input.
+
+#include <iostream>
+#include <memory>
+
+#include "cli/commands.hpp"
+#include "sweep/merge.hpp"
+
+namespace fsweep::cli {
+namespace {
+
+/// Problems listed in full before the rest are only counted.
+constexpr std::size_t kListedProblems = 20;
+
+struct MergeCommandOptions {
+  std::string dir;
+  std::string objective;
+};
+
+int run_merge(const MergeCommandOptions& o) {
+  const MergeReport r = merge_shards(o.dir, o.objective);
+  if (!r.written) {
+    std::cerr << "fsweep merge: " << o.dir << ": " << r.problems.size() << " problem(s), nothing written ("
+              << r.rows << " runs.csv rows in the shards of a " << r.shard_count << "-way split, sweep of "
+              << r.total << " runs):\n";
+    for (std::size_t i = 0; i < r.problems.size() && i < kListedProblems; ++i)
+      std::cerr << "  " << r.problems[i] << '\n';
+    if (r.problems.size() > kListedProblems) {
+      std::cerr << "  ... and " << r.problems.size() - kListedProblems << " more\n";
+    }
+    std::cerr
+        << "rerun the failed or missing shards (fsweep run SWEEP --shard i/N resumes a partial shard)\n";
+    return 1;
+  }
+  std::cout << "merged " << r.shard_count << " shards (" << r.total << " runs) into " << o.dir
+            << "/runs.csv, progress.csv, manifest.json; wrote summary.csv, progress_summary.csv, best.csv\n";
+  return 0;
+}
+
+}  // namespace
+
+Command add_merge_command(CLI::App& app) {
+  auto o = std::make_shared<MergeCommandOptions>();
+  CLI::App* sub = app.add_subcommand(
+      "merge",
+      "Join the shards (DIR/shard-i-of-N/) of a sweep into DIR/runs.csv and progress.csv and aggregate them");
+  sub->add_option("DIR", o->dir, "Sweep output directory holding the shard-i-of-N directories")->required();
+  sub->add_option("--objective", o->objective,
+                  "Ranking of best.csv: distance_to_final_coverage_m, area_per_metre or energy (default: the "
+                  "sweep file's output.objective, else distance_to_final_coverage_m)");
+  return [o] { return run_merge(*o); };
+}
+
+}  // namespace fsweep::cli

@@ -1,0 +1,203 @@
+/// @file plan_bench_command.cpp
+/// `fsweep plan-bench`: every (or every listed) planner on the same queries of one fully known
+/// map, against the optimal octile length. The logic is in src/evaluation/plan_bench.hpp; this file
+/// parses options, prints the table and writes the files.
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <set>
+
+#include "cli/commands.hpp"
+#include "cli/kv_options.hpp"
+#include "cli/output_dir.hpp"
+#include "core/config_error.hpp"
+#include "evaluation/plan_bench.hpp"
+#include "planners/registry.hpp"
+#include "sim/run_table.hpp"
+#include "world/energy_model.hpp"
+#include "world/known_map.hpp"
+#include "world/map_loaders.hpp"
+#include "world/map_spec.hpp"
+
+namespace fsweep::cli {
+namespace {
+
+struct PlanBenchOptions {
+  std::string map;
+  std::string scen;
+  std::vector<std::string> planners;
+  std::vector<std::string> planner_params;
+  int pairs = 100;
+  std::uint64_t seed = 1;
+  std::string energy = "distance";
+  bool allow_corner_cutting = false;
+  std::string out;
+};
+
+/// A number for the table: fixed decimals, "-" for NaN.
+std::string fixed(double v, int decimals) {
+  if (std::isnan(v)) return "-";
+  std::array<char, 64> buf{};
+  std::snprintf(buf.data(), buf.size(), "%.*f", decimals, v);
+  return buf.data();
+}
+
+std::string csv_number(double v) { return std::isnan(v) ? std::string() : format_number(v); }
+
+std::ofstream open_out(const std::string& path) {
+  std::ofstream f(path, std::ios::binary | std::ios::trunc);
+  if (!f) throw ConfigError(path, "cannot open for writing");
+  return f;
+}
+
+void write_queries_csv(const std::string& path, const std::vector<std::string>& names,
+                       const std::vector<BenchQuery>& queries,
+                       const std::vector<std::vector<BenchPlan>>& plans) {
+  std::ofstream f = open_out(path);
+  f << "query,start_x,start_y,goal_x,goal_y,optimal_cells";
+  for (const std::string& n : names) {
+    for (const char* col : {"status", "length_ratio", "energy", "turns", "time_s"})
+      f << ',' << n << '.' << col;
+  }
+  f << '\n';
+  for (std::size_t q = 0; q < queries.size(); ++q) {
+    const BenchQuery& b = queries[q];
+    f << q << ',' << b.start.x << ',' << b.start.y << ',' << b.goal.x << ',' << b.goal.y << ','
+      << format_number(b.optimal_cells);
+    for (const auto& row : plans) {
+      const BenchPlan& p = row[q];
+      f << ',' << to_string(p.status) << ',' << format_number(p.length_ratio) << ','
+        << format_number(p.energy) << ',' << p.turns << ',' << format_number(p.time_s);
+    }
+    f << '\n';
+  }
+  if (!f) throw ConfigError(path, "write failed");
+}
+
+void write_summary_csv(const std::string& path, const std::vector<std::string>& names,
+                       const std::vector<BenchSummary>& summaries) {
+  std::ofstream f = open_out(path);
+  f << "planner,queries,solved,timeouts,success_rate";
+  for (const char* metric : {"length_ratio", "energy", "turns", "time_ms"}) {
+    for (const char* stat : {"mean", "q05", "q25", "median", "q75", "q95"}) f << ',' << metric << '_' << stat;
+  }
+  f << '\n';
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    const BenchSummary& s = summaries[i];
+    f << names[i] << ',' << s.queries << ',' << s.solved << ',' << s.timeouts << ','
+      << format_number(s.success_rate);
+    for (const SampleSummary& x : {s.length_ratio, s.energy, s.turns, s.time_ms}) {
+      for (const double v : {x.mean, x.q05, x.q25, x.median, x.q75, x.q95}) f << ',' << csv_number(v);
+    }
+    f << '\n';
+  }
+  if (!f) throw ConfigError(path, "write failed");
+}
+
+int run_plan_bench_command(const PlanBenchOptions& o) {
+  // 1. Planners (all registered by default) with their parameters, energy model, map, queries.
+  const std::vector<std::string> names = o.planners.empty() ? planner_names() : o.planners;
+  const nlohmann::json params = kv_to_json(o.planner_params, "--planner-param");
+  std::set<std::string> seen;
+  for (const std::string& name : names) {
+    if (!seen.insert(name).second) throw ConfigError("--planners", "planner '" + name + "' is listed twice");
+  }
+  if (params.is_object()) {
+    for (const auto& [name, value] : params.items()) {
+      if (seen.count(name) == 0) {
+        throw ConfigError("--planner-param",
+                          "'" + name +
+                              "' is not a benchmarked planner; write <planner>.<key>=<value>, e.g. "
+                              "ompl:RRTstar.time_limit_s=0.1");
+      }
+    }
+  }
+  std::vector<std::unique_ptr<Planner>> planners;
+  for (const std::string& name : names) {
+    const nlohmann::json p =
+        params.is_object() && params.contains(name) ? params.at(name) : nlohmann::json::object();
+    planners.push_back(make_planner(name, p, "--planner-param/" + name));
+  }
+  const EnergyModel energy = energy_model_from_json(nlohmann::json{{"preset", o.energy}}, "--energy");
+  const KnownMap known = fully_known(load_map_spec(o.map));
+  std::vector<BenchQuery> queries;
+  if (!o.scen.empty()) {
+    queries = bench_queries_from_scenario(load_scenario(o.scen));
+  } else {
+    PairDrawOptions draw;
+    draw.count = o.pairs;
+    draw.seed = o.seed;
+    draw.start_heading = 0;
+    draw.allow_corner_cutting = o.allow_corner_cutting;
+    queries = bench_queries_from_pairs(known, draw);
+  }
+  if (queries.empty()) throw ConfigError(o.scen, "no query with a positive optimal length");
+
+  // 2. Plans and statistics.
+  BenchSettings settings;
+  settings.energy = energy;
+  settings.allow_corner_cutting = o.allow_corner_cutting;
+  settings.seed = o.seed;
+  const auto plans = run_plan_bench(known, queries, planners, settings);
+  std::vector<BenchSummary> summaries;
+  for (const auto& row : plans) summaries.push_back(summarize_plan_bench(row));
+
+  // 3. Table and files.
+  std::printf("plan-bench: map %s (%dx%d), %zu queries (%s), seed %llu, energy %s%s\n", o.map.c_str(),
+              known.width(), known.height(), queries.size(),
+              o.scen.empty() ? "random reachable pairs, optimal = astar" : o.scen.c_str(),
+              static_cast<unsigned long long>(o.seed), energy.preset.c_str(),
+              o.allow_corner_cutting ? ", corner cutting" : "");
+  std::printf("%-24s %8s %8s %8s %8s %8s %8s %8s %10s %10s\n", "planner", "success", "timeout", "len/opt",
+              "q50", "q95", "energy", "turns", "ms q50", "ms q95");
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    const BenchSummary& s = summaries[i];
+    std::printf("%-24s %8s %8d %8s %8s %8s %8s %8s %10s %10s\n", names[i].c_str(),
+                fixed(100.0 * s.success_rate, 1).c_str(), s.timeouts, fixed(s.length_ratio.mean, 4).c_str(),
+                fixed(s.length_ratio.median, 4).c_str(), fixed(s.length_ratio.q95, 4).c_str(),
+                fixed(s.energy.mean, 2).c_str(), fixed(s.turns.mean, 2).c_str(),
+                fixed(s.time_ms.median, 3).c_str(), fixed(s.time_ms.q95, 3).c_str());
+  }
+  std::printf(
+      "(success in %%; len/opt = path length / optimal octile length, mean and quantiles over solved "
+      "queries; energy and turns means over solved; time quantiles over all queries)\n");
+  if (!o.out.empty()) {
+    create_output_dir(o.out);
+    write_queries_csv(o.out + "/queries.csv", names, queries, plans);
+    write_summary_csv(o.out + "/summary.csv", names, summaries);
+    std::printf("wrote %s/{queries.csv,summary.csv}\n", o.out.c_str());
+  }
+  return 0;
+}
+
+}  // namespace
+
+Command add_plan_bench_command(CLI::App& app) {
+  auto o = std::make_shared<PlanBenchOptions>();
+  CLI::App* sub = app.add_subcommand(
+      "plan-bench", "Benchmark planners on the same queries against the optimal octile length");
+  sub->add_option("--map", o->map, "Map SPEC (fully known)")->required();
+  sub->add_option("--scen", o->scen, "MovingAI scenario file (default: --pairs random reachable pairs)");
+  sub->add_option("--planners", o->planners,
+                  "Comma-separated planner names (default: every registered planner)")
+      ->delimiter(',');
+  sub->add_option(
+      "--planner-param", o->planner_params,
+      "Planner parameter <planner>.<key>=<value> (repeatable), e.g. ompl:RRTstar.time_limit_s=0.1");
+  sub->add_option("--pairs", o->pairs, "Number of random reachable pairs (without --scen)")
+      ->capture_default_str();
+  sub->add_option("--seed", o->seed, "Seed of the pairs and of the sampling planners")->capture_default_str();
+  sub->add_option("--energy", o->energy, "Energy model preset: distance, mei2006, pioneer3dx")
+      ->capture_default_str();
+  sub->add_flag("--allow-corner-cutting", o->allow_corner_cutting,
+                "Diagonal moves may pass a blocked corner");
+  sub->add_option("--out", o->out, "Directory for queries.csv and summary.csv");
+  return [o] { return run_plan_bench_command(*o); };
+}
+
+}  // namespace fsweep::cli

@@ -1,0 +1,107 @@
+/// @file run_command.cpp
+/// `fsweep run SWEEP.json`: the main job. Prints the run count before starting, progress on
+/// stderr, then where the results are. Exit 0 when done, 130 when interrupted (Ctrl-C, SIGTERM;
+/// rerun the same command to resume), 2 on configuration errors.
+
+#include <charconv>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <string_view>
+#include <tuple>
+
+#include "cli/commands.hpp"
+#include "core/config_error.hpp"
+#include "sweep/sweep_plan.hpp"
+#include "sweep/sweep_runner.hpp"
+
+namespace fsweep::cli {
+namespace {
+
+struct RunCommandOptions {
+  std::string sweep_file;
+  int threads = 0;
+  bool fresh = false;
+  std::string out;
+  bool quiet = false;
+  std::string shard;
+};
+
+std::string one_decimal(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof(buf), "%.1f", v);
+  return buf;
+}
+
+/// Reads "i/n" (0 <= i < n).
+std::pair<std::uint64_t, std::uint64_t> parse_shard(const std::string& s) {
+  const auto slash = s.find('/');
+  std::uint64_t i = 0;
+  std::uint64_t n = 0;
+  const auto read = [](std::string_view part, std::uint64_t& v) {
+    const auto [ptr, ec] = std::from_chars(part.data(), part.data() + part.size(), v);
+    return ec == std::errc() && ptr == part.data() + part.size() && !part.empty();
+  };
+  const std::string_view sv(s);
+  if (slash == std::string::npos || !read(sv.substr(0, slash), i) || !read(sv.substr(slash + 1), n) ||
+      n == 0 || i >= n) {
+    throw ConfigError("--shard", "expected i/n with 0 <= i < n (e.g. 3/16), got '" + s + "'");
+  }
+  return {i, n};
+}
+
+int run_command(const RunCommandOptions& o) {
+  const SweepPlan plan = SweepPlan::from_file(o.sweep_file);
+  RunnerOptions options;
+  options.threads = o.threads;
+  options.fresh = o.fresh;
+  options.out_dir = o.out;
+  options.sweep_file = o.sweep_file;
+  options.progress = !o.quiet;
+  if (!o.shard.empty()) std::tie(options.shard_index, options.shard_count) = parse_shard(o.shard);
+
+  const std::uint64_t reps = static_cast<std::uint64_t>(plan.repetitions());
+  std::cout << "sweep " << plan.name() << ": " << plan.run_count() << " runs (" << plan.configuration_count()
+            << " configurations x " << reps << " repetitions)";
+  if (options.shard_count > 1) {
+    const std::uint64_t n = plan.run_count();
+    const std::uint64_t mine =
+        n > options.shard_index ? (n - options.shard_index - 1) / options.shard_count + 1 : 0;
+    std::cout << ", shard " << options.shard_index << "/" << options.shard_count << ": " << mine << " runs";
+  }
+  std::cout << std::endl;  // before the (possibly long) run
+
+  const RunnerReport r = run_sweep(plan, options);
+  std::cout << (r.interrupted ? "interrupted: " : "done: ") << r.ran << " ran, " << r.skipped
+            << " already done, " << r.failed << " failed (end_reason error), " << r.total - r.ran - r.skipped
+            << " left; " << one_decimal(r.wall_s) << " s, " << one_decimal(r.runs_per_s) << " runs/s on "
+            << r.threads << " threads\n";
+  std::cout << "results in " << r.out_dir << "/ (runs.csv, progress.csv, manifest.json"
+            << (!r.interrupted && options.shard_count == 1 ? ", summary.csv, progress_summary.csv, best.csv"
+                                                           : "")
+            << ")\n";
+  if (r.interrupted) {
+    std::cout << "rerun the same command to resume\n";
+    return 130;
+  }
+  return 0;
+}
+
+}  // namespace
+
+Command add_run_command(CLI::App& app) {
+  auto o = std::make_shared<RunCommandOptions>();
+  CLI::App* sub = app.add_subcommand("run",
+                                     "Run a sweep file in parallel, resumably (runs.csv, progress.csv, "
+                                     "summary.csv, best.csv, manifest.json)");
+  sub->add_option("sweep", o->sweep_file, "Sweep file (JSON)")->required();
+  sub->add_option("--threads", o->threads, "Worker threads (0: all cores)")->capture_default_str();
+  sub->add_flag("--fresh", o->fresh, "Delete previous outputs and start over");
+  sub->add_option("--out", o->out, "Output directory (default: the sweep's output.dir or results/<name>)");
+  sub->add_flag("--quiet", o->quiet, "No progress on stderr");
+  sub->add_option("--shard", o->shard,
+                  "Run shard i of n (runs with index % n == i) into <out>/shard-i-of-n/, e.g. 0/4");
+  return [o] { return run_command(*o); };
+}
+
+}  // namespace fsweep::cli

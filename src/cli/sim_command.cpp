@@ -1,0 +1,90 @@
+/// @file sim_command.cpp
+/// `fsweep sim`: one exploration run, written as run.csv, progress.csv and trajectory.png.
+
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+#include "cli/commands.hpp"
+#include "cli/kv_options.hpp"
+#include "cli/output_dir.hpp"
+#include "sim/run_table.hpp"
+#include "sim/simulation.hpp"
+#include "sim/trajectory_image.hpp"
+#include "world/map_spec.hpp"
+
+namespace fsweep::cli {
+namespace {
+
+struct SimOptions {
+  std::string map;
+  std::string strategy = "closest_frontier";
+  std::vector<std::string> params;
+  std::string planner = "astar";
+  std::vector<std::string> planner_params;
+  std::vector<std::string> robot;
+  std::vector<std::string> sim;
+  std::uint64_t seed = 0;
+  std::string out = "results/sim";
+  int png_scale = 0;
+};
+
+int run_sim(const SimOptions& o) {
+  RunSpec spec;
+  spec.map = std::make_shared<const WorldMap>(load_map_spec(o.map));
+  spec.strategy = o.strategy;
+  spec.strategy_params = kv_to_json(o.params, "--param");
+  spec.planner = o.planner;
+  spec.planner_params = kv_to_json(o.planner_params, "--planner-param");
+  spec.robot = robot_params_from_json(kv_to_json(o.robot, "--robot"), "--robot");
+  spec.sim = sim_params_from_json(kv_to_json(o.sim, "--sim"), "--sim");
+  spec.seed = o.seed;
+
+  create_output_dir(o.out);  // before the run, so a bad --out costs nothing
+  const RunResult result = simulate(spec);
+
+  Columns row = config_columns(spec);
+  const Columns metrics = metric_columns(result);
+  row.insert(row.end(), metrics.begin(), metrics.end());
+  write_csv(o.out + "/run.csv", {row});
+  write_progress_csv(o.out + "/progress.csv", result);
+  write_trajectory_png(o.out + "/trajectory.png", *spec.map, result, o.png_scale);
+
+  const RunMetrics& m = result.metrics;
+  std::cout << "end: " << to_string(result.end)
+            << (result.end_detail.empty() ? "" : " (" + result.end_detail + ")")
+            << "\ndistance: " << format_number(m.distance_m) << " m, energy: " << format_number(m.energy)
+            << ' ' << spec.robot.energy.unit << ", coverage: " << format_number(m.coverage)
+            << ", decisions: " << m.decisions << ", recharges: " << m.recharges << "\nwrote " << o.out
+            << "/run.csv, " << o.out << "/progress.csv, " << o.out << "/trajectory.png\n";
+  return 0;
+}
+
+}  // namespace
+
+Command add_sim_command(CLI::App& app) {
+  auto o = std::make_shared<SimOptions>();
+  CLI::App* sub =
+      app.add_subcommand("sim", "Run one exploration and write run.csv, progress.csv, trajectory.png");
+  sub->add_option(
+         "--map", o->map,
+         "Map SPEC: a file (.map .yaml .png .pgm .txt) or a generator, e.g. rooms:w=120,h=80,door=3,seed=4")
+      ->required();
+  sub->add_option("--strategy", o->strategy, "Strategy name")->capture_default_str();
+  sub->add_option("--param", o->params, "Strategy parameter key=value (repeatable), e.g. w1=10");
+  sub->add_option("--planner", o->planner, "Planner name")->capture_default_str();
+  sub->add_option("--planner-param", o->planner_params, "Planner parameter key=value (repeatable)");
+  sub->add_option(
+      "--robot", o->robot,
+      "Robot setting key=value (repeatable): sensor.range_m, sensor.fov_deg, sensor.miss_probability, "
+      "energy (distance|mei2006|pioneer3dx), battery, dock=[x,y], start_heading, allow_corner_cutting");
+  sub->add_option("--sim", o->sim,
+                  "Loop setting key=value (repeatable): cluster_max_length_m, max_steps, stuck_decisions, "
+                  "progress_step_m");
+  sub->add_option("--seed", o->seed, "Run seed")->capture_default_str();
+  sub->add_option("--out", o->out, "Output directory")->capture_default_str();
+  sub->add_option("--png-scale", o->png_scale, "Pixels per cell in trajectory.png (0: automatic)");
+  return [o] { return run_sim(*o); };
+}
+
+}  // namespace fsweep::cli

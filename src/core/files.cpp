@@ -1,0 +1,38 @@
+#include "core/files.hpp"
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "core/config_error.hpp"
+
+namespace fsweep {
+inline namespace core {
+
+std::string temp_path(const std::string& path) { return path + ".tmp." + std::to_string(::getpid()); }
+
+void write_file_atomically(const std::string& path, std::string_view contents) {
+  const std::string tmp = temp_path(path);
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    if (!out) throw ConfigError(tmp, "cannot open for writing");
+    out.write(contents.data(), static_cast<std::streamsize>(contents.size()));
+    out.close();
+    if (!out) throw ConfigError(tmp, "write failed");
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, path, ec);
+  if (ec) throw ConfigError(path, "cannot replace: " + ec.message());
+}
+
+std::string read_first_line(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return {};
+  std::string line;
+  if (!std::getline(in, line) || in.eof()) return {};  // no newline: not a complete line
+  return line;
+}
+
+}  // namespace core
+}  // namespace fsweep

@@ -1,0 +1,81 @@
+#pragma once
+/// @file lattice_planner.hpp
+/// `lattice` and `lattice_astar`: energy-optimal paths on the (cell, heading) state lattice of
+/// Mei et al. 2006, section IV-C and Figure 6. Each known-free cell has 8 states, one per
+/// 45-degree heading; the search minimises the energy of PlanRequest::energy (the run's
+/// model, e.g. the `mei2006` preset: 1 per cell length, stop 0.5, turns 0.4/0.6/0.8/1.0), not
+/// the length, so it may return a longer path with fewer stops and turns (paper Figure 2).
+///
+/// Lattice (state ids `cell_index * 8 + heading`; headings as in grid.hpp):
+/// - the state (c, h) means "the robot is on cell c facing h"; the start state is
+///   (start, PlanRequest::start_heading) with cost 0, so the start heading counts;
+/// - from (c, h) the robot may step to the neighbour c + dir(h') in any heading h' whose step
+///   src/search/octile_grid.hpp allows (corner rule from PlanRequest::allow_corner_cutting),
+///   reaching (c + dir(h'), h') at cost energy.turn(heading_difference(h, h')) +
+///   energy.travel(step_length(h'), resolution): keeping the heading costs only travel, a
+///   change of k eighth-turns adds one stop plus the k-step turn (energy_model.hpp);
+/// - the goal is reached at any heading on the goal cell: NO final stop is charged, the same
+///   rule measure_path() applies to every planner (energy_model.hpp).
+/// This is Mei's graph with the turn charged on the edge that leaves in the new heading rather
+/// than the edge that arrives; the path costs are the same.
+
+#include <memory>
+#include <nlohmann/json_fwd.hpp>
+#include <string>
+#include <vector>
+
+#include "planners/planner.hpp"
+#include "search/grid_search.hpp"
+
+namespace fsweep {
+inline namespace planners {
+
+/// Which search a LatticePlanner runs (both return minimum-energy paths).
+enum class LatticeSearchKind {
+  /// Uniform-cost search (zero heuristic), as in the paper: registry name `lattice`.
+  Dijkstra,
+  /// A* with the octile distance to the goal times the cheapest travel energy per cell
+  /// (admissible and consistent, since turns cost >= 0): `lattice_astar`.
+  AStar,
+};
+
+/// Parameters of the lattice planners. There are none: `{}` (or null) is the only valid input
+/// and any key is a ConfigError. The energy model is not a parameter: it is the request's.
+struct LatticePlannerParams {
+  /// Reads `j` (an object or null); throws ConfigError at `where` on unknown keys.
+  [[nodiscard]] static LatticePlannerParams from_json(const nlohmann::json& j, const std::string& where);
+  /// Every violation, empty when valid.
+  [[nodiscard]] std::vector<std::string> validate() const { return {}; }
+};
+
+/// Minimum-energy planner on the heading lattice. Keeps its search arrays (8 states per cell)
+/// between queries (not thread-safe).
+///
+/// Statuses: StartInvalid if the start is outside the grid or not known free; otherwise
+/// GoalInvalid likewise for the goal; NoPath if the goal is not reachable through known-free
+/// cells; Success otherwise (start == goal gives the one-cell path at energy 0). Timeout never
+/// happens. Throws std::invalid_argument if PlanRequest::start_heading is not in 0..7.
+/// On Success, length, energy, stops and turns come from measure_path() (motion.hpp), like every
+/// planner's; the energy equals the search cost. `expansions` counts settled (cell, heading)
+/// states. Ties between equal-energy paths break as in BestFirstSearch (smaller f, larger g,
+/// smaller state id).
+class LatticePlanner final : public Planner {
+ public:
+  explicit LatticePlanner(LatticeSearchKind kind, LatticePlannerParams params = {})
+      : kind_(kind), params_(params) {}
+
+  [[nodiscard]] std::string name() const override;
+  [[nodiscard]] PlanResult plan(const KnownMap& known, const PlanRequest& request) override;
+  [[nodiscard]] std::unique_ptr<Planner> clone() const override;
+
+  [[nodiscard]] LatticeSearchKind kind() const { return kind_; }
+  [[nodiscard]] const LatticePlannerParams& params() const { return params_; }
+
+ private:
+  LatticeSearchKind kind_;
+  LatticePlannerParams params_;
+  BestFirstSearch search_;
+};
+
+}  // namespace planners
+}  // namespace fsweep

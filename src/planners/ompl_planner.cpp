@@ -1,0 +1,296 @@
+#include "planners/ompl_planner.hpp"
+
+#include <ompl/base/PlannerTerminationCondition.h>
+#include <ompl/base/ProblemDefinition.h>
+#include <ompl/base/ScopedState.h>
+#include <ompl/base/SpaceInformation.h>
+#include <ompl/base/objectives/PathLengthOptimizationObjective.h>
+#include <ompl/base/spaces/RealVectorStateSpace.h>
+#include <ompl/geometric/PathGeometric.h>
+#include <ompl/geometric/PathSimplifier.h>
+#include <ompl/geometric/planners/informedtrees/BITstar.h>
+#include <ompl/geometric/planners/kpiece/KPIECE1.h>
+#include <ompl/geometric/planners/prm/LazyPRMstar.h>
+#include <ompl/geometric/planners/prm/PRMstar.h>
+#include <ompl/geometric/planners/rrt/InformedRRTstar.h>
+#include <ompl/geometric/planners/rrt/RRTConnect.h>
+#include <ompl/geometric/planners/rrt/RRTstar.h>
+#include <ompl/util/Console.h>
+#include <ompl/util/RandomNumbers.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <mutex>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+#include "core/config_error.hpp"
+#include "core/random.hpp"
+#include "planners/ompl_segment_walk.hpp"
+#include "planners/ompl_space.hpp"
+#include "search/octile_grid.hpp"
+
+namespace fsweep {
+inline namespace planners {
+namespace {
+
+namespace ob = ompl::base;
+namespace og = ompl::geometric;
+
+/// Our own keys of the params object (the rest are OMPL parameter names).
+constexpr std::string_view kTimeLimitKey = "time_limit_s";
+constexpr std::string_view kMaxIterationsKey = "max_iterations";
+constexpr std::string_view kSimplifyKey = "simplify";
+
+/// The lock every OMPL call of this module holds (see the file comment of the header).
+std::mutex& ompl_mutex() {
+  static std::mutex mutex;
+  return mutex;
+}
+
+/// Holds the OMPL lock for its lifetime and reseeds OMPL's process-wide seed sequence, so the
+/// OMPL generators created while it lives get seeds that depend on `seed` only.
+class OmplSession {
+ public:
+  explicit OmplSession(std::uint64_t seed) : lock_(ompl_mutex()) {
+    // OMPL logs every query at info level and reports each reseeding as an error.
+    ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+    auto ompl_seed = static_cast<std::uint32_t>(derive_seed(seed, "ompl"));
+    if (ompl_seed == 0) ompl_seed = 1;  // OMPL rejects seed 0
+    ompl::RNG::setSeed(ompl_seed);
+  }
+
+ private:
+  std::lock_guard<std::mutex> lock_;
+};
+
+ob::PlannerPtr make_ompl_planner(OmplPlannerKind kind, const ob::SpaceInformationPtr& si) {
+  switch (kind) {
+    case OmplPlannerKind::RRTConnect:
+      return std::make_shared<og::RRTConnect>(si);
+    case OmplPlannerKind::RRTstar:
+      return std::make_shared<og::RRTstar>(si);
+    case OmplPlannerKind::InformedRRTstar:
+      return std::make_shared<og::InformedRRTstar>(si);
+    case OmplPlannerKind::BITstar:
+      return std::make_shared<og::BITstar>(si);
+    case OmplPlannerKind::PRMstar:
+      return std::make_shared<og::PRMstar>(si);
+    case OmplPlannerKind::LazyPRMstar:
+      return std::make_shared<og::LazyPRMstar>(si);
+    case OmplPlannerKind::KPIECE1:
+      return std::make_shared<og::KPIECE1>(si);
+  }
+  throw std::logic_error("make_ompl_planner: unknown kind");
+}
+
+/// OMPL parameter names of `kind` (caller holds an OmplSession).
+std::vector<std::string> ompl_param_names_locked(OmplPlannerKind kind) {
+  const KnownMap probe_map(1, 1, 1.0);
+  const ob::SpaceInformationPtr si = make_grid_space_information(probe_map, false);
+  std::vector<std::string> names;
+  make_ompl_planner(kind, si)->params().getParamNames(names);
+  return names;
+}
+
+/// The string OMPL's ParamSet gets for a JSON value.
+std::string ompl_value_string(const nlohmann::json& value, const std::string& where) {
+  if (value.is_string()) return value.get<std::string>();
+  if (value.is_boolean()) return value.get<bool>() ? "1" : "0";
+  if (value.is_number()) return value.dump();
+  throw ConfigError(where, "expected a string, number or boolean, got " + value.dump());
+}
+
+/// What one OMPL query gives back.
+struct OmplOutcome {
+  PlanStatus status = PlanStatus::NoPath;
+  /// The solution's states (cell units), start first.
+  std::vector<PlanePoint> points;
+  /// State and motion validity checks OMPL made while solving.
+  long checks = 0;
+};
+
+OmplOutcome solve_with_ompl(OmplPlannerKind kind, const OmplPlannerParams& params, const KnownMap& known,
+                            const PlanRequest& request) {
+  const OmplSession session(request.seed);
+  // 1. Problem: centres of the start and goal cells, shortest path length.
+  const ob::SpaceInformationPtr si = make_grid_space_information(known, request.allow_corner_cutting);
+  auto pdef = std::make_shared<ob::ProblemDefinition>(si);
+  ob::ScopedState<ob::RealVectorStateSpace> start(si->getStateSpace());
+  ob::ScopedState<ob::RealVectorStateSpace> goal(si->getStateSpace());
+  const PlanePoint s = centre_of(request.start);
+  const PlanePoint g = centre_of(request.goal);
+  start->values[0] = s.x;
+  start->values[1] = s.y;
+  goal->values[0] = g.x;
+  goal->values[1] = g.y;
+  pdef->setStartAndGoalStates(start, goal);
+  pdef->setOptimizationObjective(std::make_shared<ob::PathLengthOptimizationObjective>(si));
+
+  // 2. Planner with its OMPL parameters (validated in from_json).
+  const ob::PlannerPtr planner = make_ompl_planner(kind, si);
+  if (!planner->params().setParams(params.ompl)) {
+    throw std::logic_error("OmplPlanner: OMPL rejected parameters that from_json accepted");
+  }
+  planner->setProblemDefinition(pdef);
+  planner->setup();
+
+  // 3. Budget: time, and optionally the number of termination checks.
+  ob::PlannerTerminationCondition ptc = ob::timedPlannerTerminationCondition(params.time_limit_s);
+  std::atomic<long> checks{0};
+  if (params.max_iterations > 0) {
+    const long max_iterations = params.max_iterations;
+    ptc = ob::plannerOrTerminationCondition(ptc, ob::PlannerTerminationCondition([&checks, max_iterations] {
+                                              return checks.fetch_add(1, std::memory_order_relaxed) >=
+                                                     max_iterations;
+                                            }));
+  }
+  const ob::PlannerStatus solved = planner->solve(ptc);
+
+  OmplOutcome outcome;
+  outcome.checks = grid_validity_checks(*si);
+  const bool exact = pdef->hasExactSolution();
+  og::PathGeometric path(si);
+  if (exact) path = *pdef->getSolutionPath()->as<og::PathGeometric>();  // a deep copy
+  // Debian's OMPL 1.5.2 LazyPRM leaks its roadmap states unless cleared before destruction
+  // (OMPL issue #833); clearing is harmless for every planner.
+  planner->clear();
+  if (!exact) {
+    const bool budget =
+        solved == ob::PlannerStatus::TIMEOUT || solved == ob::PlannerStatus::APPROXIMATE_SOLUTION;
+    outcome.status = budget ? PlanStatus::Timeout : PlanStatus::NoPath;
+    return outcome;
+  }
+  // 4. The solution, simplified (every change OMPL makes is checked by our motion validator).
+  if (params.simplify) {
+    og::PathSimplifier simplifier(si);
+    simplifier.simplifyMax(path);
+  }
+  outcome.status = PlanStatus::Success;
+  for (const ob::State* state : path.getStates()) outcome.points.push_back(point_of(state));
+  return outcome;
+}
+
+}  // namespace
+
+std::string_view ompl_planner_name(OmplPlannerKind kind) {
+  switch (kind) {
+    case OmplPlannerKind::RRTConnect:
+      return "ompl:RRTConnect";
+    case OmplPlannerKind::RRTstar:
+      return "ompl:RRTstar";
+    case OmplPlannerKind::InformedRRTstar:
+      return "ompl:InformedRRTstar";
+    case OmplPlannerKind::BITstar:
+      return "ompl:BITstar";
+    case OmplPlannerKind::PRMstar:
+      return "ompl:PRMstar";
+    case OmplPlannerKind::LazyPRMstar:
+      return "ompl:LazyPRMstar";
+    case OmplPlannerKind::KPIECE1:
+      return "ompl:KPIECE1";
+  }
+  return "ompl:unknown";
+}
+
+bool ompl_planner_single_threaded(OmplPlannerKind kind) { return kind != OmplPlannerKind::PRMstar; }
+
+std::vector<std::string> ompl_planner_param_names(OmplPlannerKind kind) {
+  std::vector<std::string> names;
+  {
+    const OmplSession session(0);
+    names = ompl_param_names_locked(kind);
+  }
+  for (const std::string_view key : {kTimeLimitKey, kMaxIterationsKey, kSimplifyKey}) names.emplace_back(key);
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+OmplPlannerParams OmplPlannerParams::from_json(OmplPlannerKind kind, const nlohmann::json& j,
+                                               const std::string& where) {
+  OmplPlannerParams p;
+  if (j.is_null()) return p;
+  if (!j.is_object()) throw ConfigError(where, "expected an object of planner parameters, got " + j.dump());
+  // OMPL values are checked by setting them on a probe planner of the same kind.
+  const OmplSession session(0);
+  const KnownMap probe_map(1, 1, 1.0);
+  const ob::SpaceInformationPtr si = make_grid_space_information(probe_map, false);
+  const ob::PlannerPtr probe = make_ompl_planner(kind, si);
+  for (const auto& [key, value] : j.items()) {
+    const std::string at = where + "/" + key;
+    if (key == kTimeLimitKey) {
+      if (!value.is_number()) throw ConfigError(at, "expected a number of seconds > 0, got " + value.dump());
+      p.time_limit_s = value.get<double>();
+    } else if (key == kMaxIterationsKey) {
+      if (!value.is_number_integer()) throw ConfigError(at, "expected an integer >= 0, got " + value.dump());
+      p.max_iterations = value.get<long>();
+    } else if (key == kSimplifyKey) {
+      if (!value.is_boolean()) throw ConfigError(at, "expected true or false, got " + value.dump());
+      p.simplify = value.get<bool>();
+    } else if (probe->params().hasParam(key)) {
+      const std::string text = ompl_value_string(value, at);
+      bool accepted = false;
+      try {
+        accepted = probe->params().setParam(key, text);
+      } catch (const std::exception& e) {
+        throw ConfigError(at, "OMPL rejects '" + text + "': " + e.what());
+      }
+      if (!accepted) throw ConfigError(at, "OMPL rejects '" + text + "' for parameter '" + key + "'");
+      p.ompl[key] = text;
+    } else {
+      std::vector<std::string> known = ompl_param_names_locked(kind);
+      for (const std::string_view k : {kTimeLimitKey, kMaxIterationsKey, kSimplifyKey}) known.emplace_back(k);
+      std::sort(known.begin(), known.end());
+      throw ConfigError(at, "unknown parameter '" + key + "' of " + std::string(ompl_planner_name(kind)) +
+                                "; known parameters: " + join_names(known));
+    }
+  }
+  const std::vector<std::string> violations = p.validate();
+  if (!violations.empty()) throw ConfigError(where, join_names(violations));
+  return p;
+}
+
+std::vector<std::string> OmplPlannerParams::validate() const {
+  std::vector<std::string> violations;
+  if (!(time_limit_s > 0.0) || !std::isfinite(time_limit_s)) {
+    violations.push_back("time_limit_s must be a finite number of seconds > 0, got " +
+                         std::to_string(time_limit_s));
+  }
+  if (max_iterations < 0) {
+    violations.push_back("max_iterations must be >= 0 (0: no limit), got " + std::to_string(max_iterations));
+  }
+  return violations;
+}
+
+PlanResult OmplPlanner::plan(const KnownMap& known, const PlanRequest& request) {
+  const auto started = std::chrono::steady_clock::now();
+  PlanResult result;
+  // 1. Endpoints must be known free; start == goal needs no planner.
+  result.status = check_endpoints(known, request);
+  if (result.status == PlanStatus::Success && request.start == request.goal) {
+    set_path(result, {request.start}, request, known.resolution_m());
+  } else if (result.status == PlanStatus::Success) {
+    // 2. OMPL, then the cell chain of its polyline.
+    const OmplOutcome outcome = solve_with_ompl(kind_, params_, known, request);
+    result.expansions = outcome.checks;
+    result.status = outcome.status;
+    if (outcome.status == PlanStatus::Success) {
+      std::vector<Cell> chain = polyline_cell_chain(known, outcome.points, request.allow_corner_cutting);
+      // 3. The chain must be a valid plan by construction; anything else is a bug here.
+      bool valid = !chain.empty() && chain.front() == request.start && chain.back() == request.goal;
+      for (std::size_t i = 1; valid && i < chain.size(); ++i) {
+        valid = octile_step_allowed(known, chain[i - 1], chain[i], request.allow_corner_cutting);
+      }
+      if (!valid) throw std::logic_error(name() + ": OMPL solution does not map to a valid cell chain");
+      set_path(result, std::move(chain), request, known.resolution_m());
+    }
+  }
+  result.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  return result;
+}
+
+}  // namespace planners
+}  // namespace fsweep

@@ -1,0 +1,26 @@
+#pragma once
+/// @file registry.hpp
+/// Planner names to factories. Filled explicitly in src/planners/register_all.cpp; the same
+/// registry serves JSON, the command line and the tests.
+
+#include <memory>
+#include <nlohmann/json_fwd.hpp>
+#include <string>
+#include <vector>
+
+#include "planners/planner.hpp"
+
+namespace fsweep {
+inline namespace planners {
+
+/// Makes planner `name` with `params` (a JSON object; unknown keys are errors). Throws
+/// ConfigError at `where` for an unknown name (listing the known ones), or at `where`/params
+/// for bad parameters. `params` may be null (all defaults).
+[[nodiscard]] std::unique_ptr<Planner> make_planner(const std::string& name, const nlohmann::json& params,
+                                                    const std::string& where = "planner");
+
+/// Every registered planner name, sorted.
+[[nodiscard]] std::vector<std::string> planner_names();
+
+}  // namespace planners
+}  // namespace fsweep

@@ -1,0 +1,70 @@
+#pragma once
+/// @file shortest_fewest_turns.hpp
+/// `shortest_fewest_turns`: among all shortest 8-connected paths (octile lengths, the move rule
+/// of src/search/octile_grid.hpp, the same lengths as `dijkstra` and `astar`), the one with the
+/// least energy under PlanRequest::energy, i.e. the cheapest stops and turns by the rule of
+/// src/world/motion.hpp (the start heading counts, no final stop at the goal). It is the
+/// honest "best case" shortest-path baseline of a Mei 2006 section V-B comparison: `dijkstra`
+/// returns whichever shortest path its tie-breaking gives, often a zig-zag staircase.
+///
+/// Method (exact, no weighted sum of length and energy):
+/// 1. d(c) = shortest length from cell c to the goal (cells), by one Dijkstra from the goal
+///    (DistanceField; the move rule is symmetric), stopped once the start is settled;
+/// 2. the heading lattice of lattice_planner.hpp from (start, start_heading), restricted to
+///    steps u -> v with d(u) == w(u, v) + d(v): every path of that restricted graph is a
+///    shortest path and every shortest path is one of its paths, so minimising energy over it
+///    gives the cheapest shortest path. The search is A* with h(c) = d(c) x travel energy per
+///    cell, the exact remaining travel energy (consistent, since every restricted step lowers d
+///    by its own length), so the open list is ordered by the stop and turn energy so far.
+
+#include <memory>
+#include <nlohmann/json_fwd.hpp>
+#include <string>
+#include <vector>
+
+#include "planners/planner.hpp"
+#include "search/distance_field.hpp"
+#include "search/grid_search.hpp"
+
+namespace fsweep {
+inline namespace planners {
+
+/// Parameters of `shortest_fewest_turns`. There are none: `{}` (or null) is the only valid input
+/// and any key is a ConfigError. The energy model is the request's.
+struct ShortestFewestTurnsParams {
+  /// Reads `j` (an object or null); throws ConfigError at `where` on unknown keys.
+  [[nodiscard]] static ShortestFewestTurnsParams from_json(const nlohmann::json& j, const std::string& where);
+  /// Every violation, empty when valid.
+  [[nodiscard]] std::vector<std::string> validate() const { return {}; }
+};
+
+/// Cheapest-energy shortest-path planner (see the file comment). Keeps its distance field and
+/// lattice search arrays between queries (not thread-safe).
+///
+/// Statuses: StartInvalid if the start is outside the grid or not known free; otherwise
+/// GoalInvalid likewise for the goal; NoPath if the goal is not reachable through known-free
+/// cells; Success otherwise (start == goal gives the one-cell path at energy 0). Timeout never
+/// happens. Throws std::invalid_argument if PlanRequest::start_heading is not in 0..7.
+/// On Success the length equals the shortest length (as `dijkstra`'s, exactly in cells up to
+/// rounding), the energy is the least over all shortest paths, and length, energy, stops and
+/// turns come from measure_path() like every planner's. `expansions` counts the cells settled by
+/// the distance field plus the (cell, heading) states settled by the lattice search. Ties between
+/// equal-energy shortest paths break as in BestFirstSearch (smaller f, larger g, smaller state id).
+class ShortestFewestTurnsPlanner final : public Planner {
+ public:
+  explicit ShortestFewestTurnsPlanner(ShortestFewestTurnsParams params = {}) : params_(params) {}
+
+  [[nodiscard]] std::string name() const override { return "shortest_fewest_turns"; }
+  [[nodiscard]] PlanResult plan(const KnownMap& known, const PlanRequest& request) override;
+  [[nodiscard]] std::unique_ptr<Planner> clone() const override;
+
+  [[nodiscard]] const ShortestFewestTurnsParams& params() const { return params_; }
+
+ private:
+  ShortestFewestTurnsParams params_;
+  DistanceField to_goal_;
+  BestFirstSearch search_;
+};
+
+}  // namespace planners
+}  // namespace fsweep

@@ -1,0 +1,396 @@
+#include "report/aggregate.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+#include <unordered_map>
+#include <utility>
+
+#include "core/config_error.hpp"
+#include "core/csv_reader.hpp"
+#include "sim/run_result.hpp"
+#include "sim/run_table.hpp"
+
+namespace fsweep {
+inline namespace report {
+namespace {
+
+constexpr char kKeySeparator = '\x1f';
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+/// Distances closer than this are the same (the simulator's progress-grid tolerance).
+constexpr double kSameDistanceM = 1e-9;
+
+/// Ranking objectives of best.csv and their direction.
+struct Objective {
+  std::string_view name;
+  bool descending;
+};
+constexpr std::array<Objective, 3> kObjectives{{
+    {"distance_to_final_coverage_m", false},
+    {"area_per_metre", true},
+    {"energy", false},
+}};
+
+/// Statistics of a metric, in summary.csv's column order.
+constexpr std::array<std::string_view, 9> kStatNames{"mean",   "std", "min", "q05", "q25",
+                                                     "median", "q75", "q95", "max"};
+using Stats = std::array<double, kStatNames.size()>;
+
+/// One configuration of runs.csv: its config values, run count, end reasons and metric values.
+struct Configuration {
+  std::vector<std::string> values;
+  std::uint64_t n = 0;
+  std::vector<std::uint64_t> end_counts;     // parallel to RunsTable::end_reasons
+  std::vector<std::vector<double>> metrics;  // parallel to RunsTable::metric_names
+};
+
+/// runs.csv grouped by configuration.
+struct RunsTable {
+  std::string path;
+  std::vector<std::string> config_names;
+  std::vector<std::string> metric_names;
+  std::vector<std::string> end_reasons;  // every EndReason, then unknown ones by first appearance
+  std::vector<Configuration> configs;    // by first appearance = config_id
+  std::unordered_map<std::string, std::size_t> config_of_run;  // run_key -> config_id
+};
+
+/// Progress samples of one configuration (see progress_summary.csv in aggregate.hpp).
+struct ProgressBands {
+  /// Grid distance -> explored area of every run sampled there (all samples but each run's last).
+  std::map<double, std::vector<double>> grid;
+  /// Per run: its last grid sample's distance (-inf if none) and its final explored area.
+  std::vector<std::pair<double, double>> finals;
+  double max_final_m = -std::numeric_limits<double>::infinity();
+};
+
+/// Sorts `values` and returns their statistics (NaN for none).
+Stats describe(std::vector<double>& values) {
+  Stats s;
+  s.fill(kNaN);
+  if (values.empty()) return s;
+  std::sort(values.begin(), values.end());
+  double sum = 0.0;
+  for (const double v : values) sum += v;
+  const double n = static_cast<double>(values.size());
+  const double mean = sum / n;
+  double squares = 0.0;
+  for (const double v : values) squares += (v - mean) * (v - mean);
+  s = {mean,
+       values.size() > 1 ? std::sqrt(squares / (n - 1.0)) : 0.0,
+       values.front(),
+       quantile_sorted(values, 0.05),
+       quantile_sorted(values, 0.25),
+       quantile_sorted(values, 0.5),
+       quantile_sorted(values, 0.75),
+       quantile_sorted(values, 0.95),
+       values.back()};
+  return s;
+}
+
+std::string cell(double v) { return std::isnan(v) ? std::string() : format_number(v); }
+
+/// A CSV file written to `<path>.tmp` and renamed into place by close().
+class CsvOut {
+ public:
+  explicit CsvOut(std::string path)
+      : path_(std::move(path)), f_(path_ + ".tmp", std::ios::binary | std::ios::trunc) {
+    if (!f_) throw ConfigError(path_ + ".tmp", "cannot open for writing");
+  }
+  void row(const std::vector<std::string>& fields) {
+    for (std::size_t i = 0; i < fields.size(); ++i) f_ << (i ? "," : "") << csv_field(fields[i]);
+    f_ << '\n';
+  }
+  void close() {
+    f_.close();
+    if (!f_) throw ConfigError(path_ + ".tmp", "write failed");
+    std::filesystem::rename(path_ + ".tmp", path_);
+  }
+
+ private:
+  std::string path_;
+  std::ofstream f_;
+};
+
+RunsTable read_runs(const std::string& path) {
+  RunsTable t;
+  t.path = path;
+  CsvReader in(path);
+  const auto& header = in.header();
+  const std::size_t run_key = in.require_column("run_key");
+  const std::size_t seed = in.require_column("seed");
+  const std::size_t end_reason = in.require_column("end_reason");
+  const int end_detail = in.column("end_detail");
+  const std::size_t first_metric = (end_detail >= 0 ? static_cast<std::size_t>(end_detail) : end_reason) + 1;
+  std::vector<std::size_t> config_cols;
+  for (std::size_t i = 0; i < seed; ++i) {
+    // The map instance (its source and start) is pooled within its map_class.
+    if (header[i] == "run_index" || header[i] == "run_key" || header[i] == "map" ||
+        header[i] == "map.start") {
+      continue;
+    }
+    config_cols.push_back(i);
+    t.config_names.push_back(header[i]);
+  }
+  t.metric_names.assign(header.begin() + static_cast<std::ptrdiff_t>(first_metric), header.end());
+  for (int r = static_cast<int>(EndReason::Complete); r <= static_cast<int>(EndReason::Error); ++r) {
+    t.end_reasons.emplace_back(to_string(static_cast<EndReason>(r)));
+  }
+
+  std::unordered_map<std::string, std::size_t> config_of_key;
+  std::string key;
+  while (in.next()) {
+    const auto& f = in.fields();
+    // 1. The configuration: every config column's value, joined.
+    key.clear();
+    for (const std::size_t c : config_cols) (key += f[c]) += kKeySeparator;
+    auto [it, added] = config_of_key.try_emplace(key, t.configs.size());
+    if (added) {
+      Configuration& c = t.configs.emplace_back();
+      for (const std::size_t col : config_cols) c.values.push_back(f[col]);
+      c.end_counts.assign(t.end_reasons.size(), 0);
+      c.metrics.resize(t.metric_names.size());
+    }
+    Configuration& config = t.configs[it->second];
+    if (!t.config_of_run.try_emplace(f[run_key], it->second).second) {
+      throw ConfigError(in.where(), "run_key " + f[run_key] + " appears twice");
+    }
+    ++config.n;
+    // 2. End reason count (a reason this build does not know gets its own column).
+    const std::string& reason = f[end_reason];
+    if (reason.empty()) throw ConfigError(in.where(), "empty end_reason");
+    const auto r = std::find(t.end_reasons.begin(), t.end_reasons.end(), reason);
+    const auto r_index = static_cast<std::size_t>(r - t.end_reasons.begin());
+    if (r == t.end_reasons.end()) {
+      t.end_reasons.push_back(reason);
+      for (auto& c : t.configs) c.end_counts.push_back(0);
+    }
+    ++config.end_counts[r_index];
+    // 3. Metrics: every non-empty cell must be a number; NaN ("nan") counts as no value.
+    for (std::size_t m = 0; m < t.metric_names.size(); ++m) {
+      const std::string& text = f[first_metric + m];
+      if (text.empty()) continue;
+      const auto v = parse_number(text);
+      if (!v) {
+        throw ConfigError(in.where(), "column '" + t.metric_names[m] + "': '" + text + "' is not a number");
+      }
+      if (!std::isnan(*v)) config.metrics[m].push_back(*v);
+    }
+  }
+  return t;
+}
+
+/// Adds one run's samples (distance, area), in order, to its configuration's bands.
+void add_run_progress(const std::vector<std::pair<double, double>>& samples, ProgressBands& bands) {
+  for (std::size_t i = 0; i + 1 < samples.size(); ++i)
+    bands.grid[samples[i].first].push_back(samples[i].second);
+  const double last_grid =
+      samples.size() > 1 ? samples[samples.size() - 2].first : -std::numeric_limits<double>::infinity();
+  bands.finals.emplace_back(last_grid, samples.back().second);
+  bands.max_final_m = std::max(bands.max_final_m, samples.back().first);
+}
+
+std::vector<ProgressBands> read_progress(const std::string& path, const RunsTable& runs) {
+  std::vector<ProgressBands> bands(runs.configs.size());
+  CsvReader in(path);
+  const std::size_t run_key = in.require_column("run_key");
+  const std::size_t distance = in.require_column("distance_m");
+  const std::size_t area = in.require_column("explored_area_m2");
+  std::unordered_map<std::string, std::size_t> finished;  // run_key -> line of its first row
+  std::string current;
+  std::size_t current_line = 0;
+  std::vector<std::pair<double, double>> samples;
+  const auto flush = [&] {
+    if (samples.empty()) return;
+    const auto run = runs.config_of_run.find(current);
+    // Rows of a run without a runs.csv row (torn or failed write) are not part of the results.
+    if (run != runs.config_of_run.end()) add_run_progress(samples, bands[run->second]);
+    finished.emplace(current, current_line);
+    samples.clear();
+  };
+  while (in.next()) {
+    const auto& f = in.fields();
+    if (f[run_key] != current) {
+      flush();
+      if (const auto seen = finished.find(f[run_key]); seen != finished.end()) {
+        throw ConfigError(in.where(), "rows of run " + f[run_key] +
+                                          " are not contiguous (it started at line " +
+                                          std::to_string(seen->second) + ")");
+      }
+      current = f[run_key];
+      current_line = in.line();
+    }
+    const auto d = parse_number(f[distance]);
+    const auto a = parse_number(f[area]);
+    if (!d || !a || std::isnan(*d) || std::isnan(*a)) {
+      throw ConfigError(in.where(), "distance_m and explored_area_m2 must be numbers, got '" + f[distance] +
+                                        "', '" + f[area] + "'");
+    }
+    if (!samples.empty() && *d < samples.back().first) {
+      throw ConfigError(in.where(), "distance_m decreases within run " + current);
+    }
+    samples.emplace_back(*d, *a);
+  }
+  flush();
+  return bands;
+}
+
+void write_summary(const std::string& path, RunsTable& runs) {
+  CsvOut out(path);
+  std::vector<std::string> row{"config_id"};
+  row.insert(row.end(), runs.config_names.begin(), runs.config_names.end());
+  row.emplace_back("n");
+  for (const auto& r : runs.end_reasons) row.push_back("end." + r);
+  for (const auto& m : runs.metric_names) {
+    for (const auto s : kStatNames) row.push_back(m + "." + std::string(s));
+  }
+  out.row(row);
+  for (std::size_t id = 0; id < runs.configs.size(); ++id) {
+    Configuration& c = runs.configs[id];
+    row = {std::to_string(id)};
+    row.insert(row.end(), c.values.begin(), c.values.end());
+    row.push_back(std::to_string(c.n));
+    for (const auto count : c.end_counts) row.push_back(std::to_string(count));
+    for (auto& values : c.metrics) {
+      for (const double s : describe(values)) row.push_back(cell(s));
+    }
+    out.row(row);
+  }
+  out.close();
+}
+
+void write_progress_summary(const std::string& path, const std::string& source,
+                            std::vector<ProgressBands>& bands) {
+  CsvOut out(path);
+  out.row({"config_id", "distance_m", "n", "explored_area_m2.mean", "explored_area_m2.q05",
+           "explored_area_m2.q50", "explored_area_m2.q95"});
+  std::vector<double> values;
+  for (std::size_t id = 0; id < bands.size(); ++id) {
+    ProgressBands& b = bands[id];
+    if (b.finals.empty()) continue;
+    // Runs by their last grid sample: those before a bin count with their final area.
+    std::sort(b.finals.begin(), b.finals.end());
+    const auto write_bin = [&](double distance_m) {
+      const Stats s = describe(values);
+      if (values.size() != b.finals.size()) {
+        throw ConfigError(source, "the runs of configuration " + std::to_string(id) +
+                                      " are not sampled on a common distance grid (" +
+                                      std::to_string(values.size()) + " of " +
+                                      std::to_string(b.finals.size()) + " runs at " +
+                                      format_number(distance_m) + " m)");
+      }
+      out.row({std::to_string(id), format_number(distance_m), std::to_string(values.size()), cell(s[0]),
+               cell(s[3]), cell(s[5]), cell(s[7])});
+    };
+    std::size_t ended = 0;
+    double last_bin = -std::numeric_limits<double>::infinity();
+    for (const auto& [distance_m, sampled] : b.grid) {
+      while (ended < b.finals.size() && b.finals[ended].first < distance_m) ++ended;
+      values = sampled;
+      for (std::size_t r = 0; r < ended; ++r) values.push_back(b.finals[r].second);
+      write_bin(distance_m);
+      last_bin = distance_m;
+    }
+    // Closing bin at the longest run's end: every run with its final area.
+    if (b.max_final_m > last_bin + kSameDistanceM) {
+      values.clear();
+      for (const auto& f : b.finals) values.push_back(f.second);
+      write_bin(b.max_final_m);
+    }
+  }
+  out.close();
+}
+
+void write_best(const std::string& path, RunsTable& runs, const Objective& objective) {
+  const auto m = std::find(runs.metric_names.begin(), runs.metric_names.end(), objective.name);
+  if (m == runs.metric_names.end()) {
+    throw ConfigError(runs.path + ":1", "no column '" + std::string(objective.name) + "' for the objective");
+  }
+  const auto metric = static_cast<std::size_t>(m - runs.metric_names.begin());
+  std::vector<Stats> stats;
+  std::vector<std::size_t> order;
+  for (std::size_t id = 0; id < runs.configs.size(); ++id) {
+    stats.push_back(describe(runs.configs[id].metrics[metric]));
+    order.push_back(id);
+  }
+  // Median ascending (descending for area per metre); no value last; ties by configuration order.
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    const double x = stats[a][5];
+    const double y = stats[b][5];
+    if (std::isnan(x) || std::isnan(y)) return !std::isnan(x) && std::isnan(y);
+    return objective.descending ? x > y : x < y;
+  });
+  CsvOut out(path);
+  const std::string name(objective.name);
+  std::vector<std::string> row{"rank", "config_id", "n", name + ".median", name + ".q05", name + ".q95"};
+  row.insert(row.end(), runs.config_names.begin(), runs.config_names.end());
+  out.row(row);
+  for (std::size_t rank = 0; rank < order.size(); ++rank) {
+    const std::size_t id = order[rank];
+    const Configuration& c = runs.configs[id];
+    row = {std::to_string(rank + 1), std::to_string(id), std::to_string(c.n),
+           cell(stats[id][5]),       cell(stats[id][3]), cell(stats[id][7])};
+    row.insert(row.end(), c.values.begin(), c.values.end());
+    out.row(row);
+  }
+  out.close();
+}
+
+/// The objective: the option, else the manifest's, else the default.
+const Objective& choose_objective(const std::string& dir, const std::string& requested) {
+  std::string name = requested;
+  std::string where = "--objective";
+  const std::string manifest_path = dir + "/manifest.json";
+  if (name.empty() && std::filesystem::exists(manifest_path)) {
+    std::ifstream f(manifest_path);
+    const auto manifest = nlohmann::json::parse(f, nullptr, false);
+    if (manifest.is_discarded()) throw ConfigError(manifest_path, "not valid JSON");
+    // The sweep file's choice, else the runner's resolved one (manifest.hpp).
+    for (const char* key : {"/sweep/output/objective", "/objective"}) {
+      const auto pointer = nlohmann::json::json_pointer(key);
+      if (manifest.contains(pointer) && manifest.at(pointer).is_string()) {
+        name = manifest.at(pointer).get<std::string>();
+        where = manifest_path + ": " + key;
+        break;
+      }
+    }
+  }
+  if (name.empty()) return kObjectives[0];
+  std::vector<std::string> allowed;
+  for (const auto& o : kObjectives) {
+    if (o.name == name) return o;
+    allowed.emplace_back(o.name);
+  }
+  throw ConfigError(where, "unknown objective '" + name + "'; allowed: " + join_names(allowed));
+}
+
+}  // namespace
+
+double quantile_sorted(const std::vector<double>& sorted, double q) {
+  if (sorted.empty()) throw std::invalid_argument("quantile_sorted: no values");
+  if (!(q >= 0.0 && q <= 1.0)) throw std::invalid_argument("quantile_sorted: q outside [0, 1]");
+  // Hyndman and Fan (1996) type 7: h = (n - 1) q, interpolate between x[floor h] and x[floor h + 1].
+  const double h = static_cast<double>(sorted.size() - 1) * q;
+  const auto lo = static_cast<std::size_t>(std::floor(h));
+  const double frac = h - static_cast<double>(lo);
+  if (frac == 0.0 || lo + 1 >= sorted.size() || sorted[lo] == sorted[lo + 1]) return sorted[lo];
+  return sorted[lo] + frac * (sorted[lo + 1] - sorted[lo]);
+}
+
+void aggregate(const std::string& dir, const AggregateOptions& options) {
+  const Objective& objective = choose_objective(dir, options.objective);
+  RunsTable runs = read_runs(dir + "/runs.csv");
+  std::vector<ProgressBands> bands = read_progress(dir + "/progress.csv", runs);
+  write_best(dir + "/best.csv", runs, objective);
+  write_progress_summary(dir + "/progress_summary.csv", dir + "/progress.csv", bands);
+  write_summary(dir + "/summary.csv", runs);
+}
+
+}  // namespace report
+}  // namespace fsweep

@@ -1,0 +1,65 @@
+#pragma once
+/// @file distance_field.hpp
+/// One-to-many shortest path lengths over known free space (8-connected, octile costs),
+/// bounded by a maximum distance, with early stop at targets. Search arrays are reused
+/// between queries (reset by generation stamp, not by clearing). Moves and corner cutting follow
+/// src/search/octile_grid.hpp; the search is the generic core of src/search/grid_search.hpp with a
+/// zero heuristic.
+
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <vector>
+
+#include "search/grid_search.hpp"
+#include "world/grid.hpp"
+#include "world/known_map.hpp"
+
+namespace fsweep {
+inline namespace search {
+
+struct DistanceQuery {
+  /// Stop expanding beyond this path length (metres); cells farther away read as infinite.
+  double max_distance_m = std::numeric_limits<double>::infinity();
+  bool allow_corner_cutting = false;
+  /// When not empty: stop as soon as every cell strictly closer than the nearest target is
+  /// settled and all targets at that same distance are settled, i.e. the nearest target(s)
+  /// are exact. Other cells read as infinite unless settled. "Same distance" allows 1e-9 cells
+  /// of rounding. Indices outside the grid are ignored. The span must outlive compute() only.
+  std::span<const int> stop_at_first_of{};
+  /// When not empty (and stop_at_first_of is empty): stop as soon as every listed cell that is
+  /// reachable within the bound is settled. Listed cells read exactly; other cells read as
+  /// infinite unless settled. Indices outside the grid are ignored.
+  std::span<const int> stop_when_all_settled{};
+};
+
+class DistanceField {
+ public:
+  DistanceField() = default;
+
+  /// Dijkstra from `source` over known-free cells (a non-free source gives an empty field).
+  void compute(const KnownMap& known, Cell source, const DistanceQuery& query);
+
+  /// Path length (metres) from the source to cell `index`, or +infinity if not settled.
+  [[nodiscard]] double distance_m(int index) const;
+  [[nodiscard]] bool reached(int index) const {
+    return distance_m(index) < std::numeric_limits<double>::infinity();
+  }
+  /// The shortest path source..index as cells (empty if not reached).
+  [[nodiscard]] std::vector<Cell> path_to(int index) const;
+  /// Cells settled by the last compute().
+  [[nodiscard]] long expansions() const { return expansions_; }
+  [[nodiscard]] Cell source() const { return source_; }
+
+ private:
+  BestFirstSearch search_;                   // costs in cells; scaled to metres on read
+  std::vector<std::uint32_t> target_stamp_;  // == target_generation_: cell is a stop target
+  std::uint32_t target_generation_ = 0;
+  int width_ = 0;
+  double resolution_m_ = 1.0;
+  long expansions_ = 0;
+  Cell source_{};
+};
+
+}  // namespace search
+}  // namespace fsweep

@@ -1,0 +1,64 @@
+#pragma once
+/// @file octile_grid.hpp
+/// The 8-connected move rule over known-free cells, shared by the grid planners and the
+/// distance field (and by their tests):
+/// - a move goes to one of the 8 neighbours, which must be known free (unknown and occupied
+///   cells, and cells outside the grid, block);
+/// - orthogonal moves cost 1 cell, diagonal moves sqrt(2) cells;
+/// - without corner cutting (the default, MovingAI's rule) a diagonal move also needs both
+///   orthogonal cells it passes between to be known free;
+/// - with corner cutting a diagonal move only needs its target cell free, so it may pass one
+///   blocked corner or squeeze between two diagonally touching blocked cells (a point robot
+///   touches the shared corner point either way).
+
+#include "world/grid.hpp"
+#include "world/known_map.hpp"
+
+namespace fsweep {
+inline namespace search {
+
+/// True if the single step a -> b (8-neighbours) is allowed on `known` by the rule above.
+[[nodiscard]] inline bool octile_step_allowed(const KnownMap& known, Cell a, Cell b,
+                                              bool allow_corner_cutting) {
+  const int dx = b.x - a.x;
+  const int dy = b.y - a.y;
+  if ((dx == 0 && dy == 0) || dx < -1 || dx > 1 || dy < -1 || dy > 1) return false;
+  if (!known.is_free(a) || !known.is_free(b)) return false;
+  if (dx == 0 || dy == 0 || allow_corner_cutting) return true;
+  return known.is_free(Cell{a.x + dx, a.y}) && known.is_free(Cell{a.x, a.y + dy});
+}
+
+/// Calls `sink(next_index, cost_cells)` for every allowed move out of cell `index`, in heading
+/// order (see grid.hpp). `index` must be in the grid; its own state is not checked.
+template <typename Sink>
+inline void for_each_octile_neighbour(const KnownMap& known, int index, bool allow_corner_cutting,
+                                      Sink&& sink) {
+  const int w = known.width();
+  const int h = known.height();
+  const int x = index % w;
+  const int y = index / w;
+  const CellState* cells = known.cells().data().data();
+  const auto free_at = [cells](int i) { return cells[i] == CellState::Free; };
+
+  const bool has_e = x + 1 < w;
+  const bool has_s = y + 1 < h;
+  const bool has_w = x > 0;
+  const bool has_n = y > 0;
+  const bool e = has_e && free_at(index + 1);
+  const bool s = has_s && free_at(index + w);
+  const bool wst = has_w && free_at(index - 1);
+  const bool n = has_n && free_at(index - w);
+  const bool cut = allow_corner_cutting;
+
+  if (e) sink(index + 1, 1.0);
+  if (has_e && has_s && (cut || (e && s)) && free_at(index + w + 1)) sink(index + w + 1, kSqrt2);
+  if (s) sink(index + w, 1.0);
+  if (has_w && has_s && (cut || (wst && s)) && free_at(index + w - 1)) sink(index + w - 1, kSqrt2);
+  if (wst) sink(index - 1, 1.0);
+  if (has_w && has_n && (cut || (wst && n)) && free_at(index - w - 1)) sink(index - w - 1, kSqrt2);
+  if (n) sink(index - w, 1.0);
+  if (has_e && has_n && (cut || (e && n)) && free_at(index - w + 1)) sink(index - w + 1, kSqrt2);
+}
+
+}  // namespace search
+}  // namespace fsweep

@@ -1,0 +1,92 @@
+#include "sim/grid_distance_oracle.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace fsweep {
+inline namespace sim {
+
+void GridDistanceOracle::reset(const KnownMap& known, Cell robot, Cell dock, bool allow_corner_cutting,
+                               IncrementalDistanceField* dock_field, std::vector<int>* pending) {
+  known_ = &known;
+  dock_field_ = dock_field;
+  pending_ = pending;
+  robot_ = robot;
+  dock_ = dock;
+  corner_cutting_ = allow_corner_cutting;
+  robot_field_.bound_m = -1.0;
+  dock_search_.bound_m = -1.0;
+  expansions_ = 0;
+}
+
+std::vector<double> GridDistanceOracle::lookup(Cached& c, Cell source, std::span<const int> cells,
+                                               double bound_m) {
+  // The search stops once every asked cell is settled, so a cached field answers only the
+  // same cells with a bound at least as large.
+  if (c.bound_m < bound_m || !std::equal(cells.begin(), cells.end(), c.cells.begin(), c.cells.end())) {
+    DistanceQuery q;
+    q.max_distance_m = bound_m;
+    q.allow_corner_cutting = corner_cutting_;
+    q.stop_when_all_settled = cells;
+    c.field.compute(*known_, source, q);
+    c.bound_m = bound_m;
+    c.cells.assign(cells.begin(), cells.end());
+    expansions_ += c.field.expansions();
+  }
+  std::vector<double> out;
+  out.reserve(cells.size());
+  for (const int i : cells) {
+    const double d = c.field.distance_m(i);
+    out.push_back(d <= bound_m ? d : std::numeric_limits<double>::infinity());
+  }
+  return out;
+}
+
+std::vector<double> GridDistanceOracle::from_robot(std::span<const int> cells, double bound_m) {
+  return lookup(robot_field_, robot_, cells, bound_m);
+}
+
+std::vector<double> GridDistanceOracle::from_dock(std::span<const int> cells, double bound_m) {
+  if (dock_field_ == nullptr) return lookup(dock_search_, dock_, cells, bound_m);
+  if (pending_ != nullptr && !pending_->empty()) {
+    dock_field_->update(*known_, *pending_);
+    expansions_ += dock_field_->expansions();
+    pending_->clear();
+  }
+  std::vector<double> out;
+  out.reserve(cells.size());
+  for (const int i : cells) {
+    const double d = dock_field_->distance_m(i);
+    out.push_back(d <= bound_m ? d : std::numeric_limits<double>::infinity());
+  }
+  return out;
+}
+
+int GridDistanceOracle::nearest_from_robot(std::span<const int> cells) {
+  if (cells.empty()) return -1;
+  const DistanceField* field = &robot_field_.field;
+  const bool cached =
+      robot_field_.bound_m == std::numeric_limits<double>::infinity() &&
+      std::equal(cells.begin(), cells.end(), robot_field_.cells.begin(), robot_field_.cells.end());
+  if (!cached) {
+    DistanceQuery q;
+    q.allow_corner_cutting = corner_cutting_;
+    q.stop_at_first_of = cells;
+    scratch_.compute(*known_, robot_, q);
+    expansions_ += scratch_.expansions();
+    field = &scratch_;
+  }
+  int best = -1;
+  double best_d = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < cells.size(); ++k) {
+    const double d = field->distance_m(cells[k]);
+    if (d < best_d) {  // strict: ties keep the lowest position
+      best_d = d;
+      best = static_cast<int>(k);
+    }
+  }
+  return best;
+}
+
+}  // namespace sim
+}  // namespace fsweep

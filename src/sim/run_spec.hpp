@@ -1,0 +1,80 @@
+#pragma once
+/// @file run_spec.hpp
+/// Everything one simulation run depends on. A run is a pure function of its RunSpec.
+
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+
+#include "world/energy_model.hpp"
+#include "world/sensor.hpp"
+#include "world/world_map.hpp"
+
+namespace fsweep {
+inline namespace sim {
+
+/// The robot: sensor, motion rules, energy and battery (DESIGN.md section 3).
+struct RobotParams {
+  SensorParams sensor;
+  EnergyModel energy;
+  /// Battery capacity in the energy model's unit; +infinity = unlimited (never recharges).
+  /// With the `distance` model this is the range per charge in metres.
+  double battery_capacity = std::numeric_limits<double>::infinity();
+  /// Dock cell; default: the map's start cell.
+  std::optional<Cell> dock;
+  /// Heading at the start, 0..7 (grid.hpp: 0 east, clockwise on screen).
+  int start_heading = 0;
+  /// Diagonal moves past an occupied orthogonal neighbour (default off: MovingAI rule).
+  bool allow_corner_cutting = false;
+};
+
+/// Reads {"sensor": {...}, "energy": "mei2006" | {...}, "battery": number | null,
+/// "dock": [x, y], "start_heading": 0..7, "allow_corner_cutting": bool}.
+[[nodiscard]] RobotParams robot_params_from_json(const nlohmann::json& j, const std::string& where);
+void to_json(nlohmann::json& j, const RobotParams& r);
+
+/// Loop settings (DESIGN.md section 6).
+struct SimParams {
+  /// Frontier clusters are split into pieces of at most this length (metres); <= 0: the
+  /// sensor range (as Rappaport 2016 section 3.3).
+  double cluster_max_length_m = 0.0;
+  /// Hard cap on cell steps; 0: automatic, 100 x the reachable free cells + 1000.
+  long max_steps = 0;
+  /// End as `stuck` after this many consecutive decisions that revealed no cell.
+  int stuck_decisions = 100;
+  /// Progress curve sampling interval (metres of travel); <= 0: 10 x resolution.
+  double progress_step_m = 0.0;
+  /// JSON "stop_at_cell": [x, y] (cells) or "random"; absent (default): no stop cell, and the
+  /// key is left out of to_json so run keys of configurations without it are unchanged.
+  /// With a stop cell any strategy becomes a navigation baseline: a journey is cut short when
+  /// the cell becomes known free; once it is known free and reachable through known free space
+  /// the robot goes there by the shortest path (instead of asking the strategy), and the run
+  /// ends `target_reached` on arrival (a cell never known free and reachable, e.g. in a wall,
+  /// leaves the run to end as the strategy's would), with the
+  /// navigation metrics (target_*) about this cell. "random" draws the cell as
+  /// `"target": "random"` does (resolve_random_target(): same stream "target" of the run seed,
+  /// so the same cell as a target_seeking run with that seed on that map).
+  std::optional<Cell> stop_at_cell;
+  bool stop_at_random = false;
+};
+
+[[nodiscard]] SimParams sim_params_from_json(const nlohmann::json& j, const std::string& where);
+void to_json(nlohmann::json& j, const SimParams& s);
+
+/// One run.
+struct RunSpec {
+  std::shared_ptr<const WorldMap> map;
+  std::string strategy = "closest_frontier";
+  nlohmann::json strategy_params;  // null: defaults
+  std::string planner = "astar";
+  nlohmann::json planner_params;  // null: defaults
+  RobotParams robot;
+  SimParams sim;
+  std::uint64_t seed = 0;
+};
+
+}  // namespace sim
+}  // namespace fsweep

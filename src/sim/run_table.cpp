@@ -1,0 +1,137 @@
+#include "sim/run_table.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+
+#include "core/config_error.hpp"
+#include "strategies/registry.hpp"
+
+namespace fsweep {
+inline namespace sim {
+namespace {
+
+void flatten(const nlohmann::json& j, const std::string& prefix, Columns& out) {
+  if (j.is_object()) {
+    for (const auto& [k, v] : j.items()) flatten(v, prefix + "." + k, out);
+  } else if (j.is_number()) {
+    out.emplace_back(prefix, format_number(j.get<double>()));
+  } else if (j.is_string()) {
+    out.emplace_back(prefix, j.get<std::string>());
+  } else if (j.is_null()) {
+    out.emplace_back(prefix, "");
+  } else {
+    out.emplace_back(prefix, j.dump());
+  }
+}
+
+std::ofstream open_for_writing(const std::string& path) {
+  std::ofstream f(path, std::ios::binary | std::ios::trunc);
+  if (!f) throw ConfigError(path, "cannot open for writing");
+  return f;
+}
+
+}  // namespace
+
+std::string format_number(double v) {
+  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+  if (std::isnan(v)) return "nan";
+  char buf[64];
+  const auto res = std::to_chars(buf, buf + sizeof(buf), v);
+  return std::string(buf, res.ptr);
+}
+
+Columns config_columns(const RunSpec& spec) {
+  Columns c;
+  const WorldMap& m = *spec.map;
+  c.emplace_back("map", m.source);
+  c.emplace_back("map.width", std::to_string(m.width()));
+  c.emplace_back("map.height", std::to_string(m.height()));
+  c.emplace_back("map.resolution_m", format_number(m.resolution_m));
+  c.emplace_back("map.start", std::to_string(m.start.x) + ";" + std::to_string(m.start.y));
+  c.emplace_back("strategy", spec.strategy);
+  flatten(resolved_strategy_params(spec.strategy, spec.strategy_params), "strategy", c);
+  c.emplace_back("planner", spec.planner);
+  if (spec.planner_params.is_object()) flatten(spec.planner_params, "planner", c);
+  nlohmann::json robot = spec.robot;
+  // A dock left at its default is the map's start: written as "start", so runs on several
+  // maps of one class (whose starts differ) share the configuration; map.start has the cell.
+  robot["dock"] = spec.robot.dock
+                      ? std::to_string(spec.robot.dock->x) + ";" + std::to_string(spec.robot.dock->y)
+                      : std::string("start");
+  flatten(robot, "robot", c);
+  flatten(nlohmann::json(spec.sim), "sim", c);
+  c.emplace_back("seed", std::to_string(spec.seed));
+  return c;
+}
+
+Columns metric_columns(const RunResult& r) {
+  const RunMetrics& m = r.metrics;
+  return Columns{
+      {"end_reason", std::string(to_string(r.end))},
+      {"end_detail", r.end_detail},
+      {"distance_m", format_number(m.distance_m)},
+      {"energy", format_number(m.energy)},
+      {"stops", std::to_string(m.stops)},
+      {"turns", std::to_string(m.turns)},
+      {"turned_deg", format_number(m.turned_deg)},
+      {"decisions", std::to_string(m.decisions)},
+      {"recharges", std::to_string(m.recharges)},
+      {"steps", std::to_string(m.steps)},
+      {"distance_to_final_coverage_m", format_number(m.distance_to_final_coverage_m)},
+      {"explored_area_m2", format_number(m.explored_area_m2)},
+      {"area_per_metre", format_number(m.area_per_metre)},
+      {"known_area_m2", format_number(m.known_area_m2)},
+      {"reachable_area_m2", format_number(m.reachable_area_m2)},
+      {"coverage", format_number(m.coverage)},
+      {"residual_unknown_m2", format_number(m.residual_unknown_m2)},
+      {"frontier_cells_left", std::to_string(m.frontier_cells_left)},
+      {"dropped_goals", std::to_string(m.dropped_goals)},
+      {"plan_failures", std::to_string(m.plan_failures)},
+      {"planner_expansions", std::to_string(m.planner_expansions)},
+      {"planner_time_s", format_number(m.planner_time_s)},
+      {"decision_time_s", format_number(m.decision_time_s)},
+      {"wall_time_s", format_number(m.wall_time_s)},
+      {"completeness", format_number(m.completeness)},
+      {"rr_redecisions", std::to_string(m.rr_redecisions)},
+      {"segmentation_time_s", format_number(m.segmentation_time_s)},
+      {"target_path_m", format_number(m.target_path_m)},
+      {"target_shortest_m", format_number(m.target_shortest_m)},
+      {"target_path_ratio", format_number(m.target_path_ratio)},
+      {"target_x", std::to_string(m.target_x)},
+      {"target_y", std::to_string(m.target_y)},
+  };
+}
+
+std::string csv_field(const std::string& s) {
+  if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
+  std::string out = "\"";
+  for (const char ch : s) {
+    if (ch == '"') out += '"';
+    out += ch;
+  }
+  return out + "\"";
+}
+
+void write_csv(const std::string& path, const std::vector<Columns>& rows) {
+  auto f = open_for_writing(path);
+  if (rows.empty()) return;
+  for (std::size_t i = 0; i < rows[0].size(); ++i) f << (i ? "," : "") << csv_field(rows[0][i].first);
+  f << '\n';
+  for (const auto& row : rows) {
+    for (std::size_t i = 0; i < row.size(); ++i) f << (i ? "," : "") << csv_field(row[i].second);
+    f << '\n';
+  }
+}
+
+void write_progress_csv(const std::string& path, const RunResult& result) {
+  auto f = open_for_writing(path);
+  f << "distance_m,explored_area_m2,coverage,energy\n";
+  for (const auto& s : result.progress) {
+    f << format_number(s.distance_m) << ',' << format_number(s.explored_area_m2) << ','
+      << format_number(s.coverage) << ',' << format_number(s.energy) << '\n';
+  }
+}
+
+}  // namespace sim
+}  // namespace fsweep

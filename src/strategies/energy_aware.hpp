@@ -1,0 +1,73 @@
+#pragma once
+/// @file energy_aware.hpp
+/// Energy-aware exploration, Rappaport 2016 section 3.2 and Algorithm 1; and closest-frontier
+/// exploration (Yamauchi 1997) as its weight vector (1, 0, 0, 0).
+
+#include <array>
+#include <nlohmann/json_fwd.hpp>
+#include <string>
+
+#include "strategies/strategy.hpp"
+
+namespace fsweep {
+inline namespace strategies {
+
+/// Parameters (JSON keys as named). Weights are in [0, 250] (the paper's search range).
+struct EnergyAwareParams {
+  double w1 = 10.0;  ///< weight of d_g, robot -> frontier distance
+  double w2 = 0.0;   ///< weight of d_gb, frontier -> dock distance
+  double w3 = 9.0;   ///< weight of d_gbe, +-d_gb by state of charge (eq. 9)
+  double w4 = 20.0;  ///< weight of theta_rel in [0, 1] (eq. 10)
+  /// "path": d_g and d_gb are shortest path lengths over known free space (the paper's A*);
+  /// "octile": the 8-connected length without obstacles (exact in free space, no search; a
+  /// lower bound elsewhere);
+  /// "euclidean": straight-line distances between cell centres (the paper in free space; on
+  /// this 8-connected grid it underestimates travel by up to 8%, so a battery-limited robot
+  /// can run out on the way back: such runs end as battery_depleted).
+  std::string distance = "path";
+
+  static constexpr double kMaxWeight = 250.0;
+};
+
+/// Reads and validates the parameters; every problem is reported with its JSON path.
+[[nodiscard]] EnergyAwareParams energy_aware_params_from_json(const nlohmann::json& j,
+                                                              const std::string& where);
+void to_json(nlohmann::json& j, const EnergyAwareParams& p);
+
+/// The energy-aware strategy. For every frontier cluster representative p_f (the cluster
+/// stands for its adjacent frontier cells, split at the sensor range as in section 3.3):
+/// 1. d_g = dist(robot, p_f), d_gb = dist(p_f, dock); keep p_f only if d_l > d_g + d_gb (eq. 7),
+///    with d_l the remaining range (eq. 5, BatteryView::remaining_range_m);
+/// 2. d_gbe = -d_gb while E_l > 0.5 E_t, else +d_gb (eq. 9); an unlimited battery counts as full;
+/// 3. theta_rel = (pi - ||theta_r - theta_g| - pi|) / pi (eq. 10), theta_r the direction from the
+///    previous decision position to the robot (atan2 of (0,0) = 0 at the first decision, as in
+///    Algorithm 1), theta_g the direction from the robot to p_f;
+/// 4. choose argmin w1 d_g + w2 d_gb + w3 d_gbe + w4 theta_rel (ties: lowest cluster index).
+/// With no candidate: at the dock, finish; elsewhere return to the dock (Algorithm 1). With an
+/// unlimited battery there is nothing to return for, so it finishes directly.
+class EnergyAware final : public LinearScoredStrategy {
+ public:
+  /// `name` is the registry name ("energy_aware" or "closest_frontier").
+  EnergyAware(std::string name, const EnergyAwareParams& params);
+
+  [[nodiscard]] std::string name() const override { return name_; }
+  [[nodiscard]] Decision decide(const Observation& obs) override;
+  [[nodiscard]] Candidates candidates(const Observation& obs) override;
+  [[nodiscard]] std::span<const double> weights() const override { return weights_; }
+  [[nodiscard]] Decision on_no_candidate(const Observation& obs) override;
+  [[nodiscard]] std::unique_ptr<Strategy> clone() const override {
+    return std::make_unique<EnergyAware>(*this);
+  }
+  [[nodiscard]] const EnergyAwareParams& params() const { return params_; }
+
+  /// Feature order of candidates(): d_g (m), d_gb (m), d_gbe (m), theta_rel (1).
+  static constexpr int kFeatures = 4;
+
+ private:
+  std::string name_;
+  EnergyAwareParams params_;
+  std::array<double, 4> weights_{};
+};
+
+}  // namespace strategies
+}  // namespace fsweep

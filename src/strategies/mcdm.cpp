@@ -1,0 +1,133 @@
+#include "strategies/mcdm.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <initializer_list>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <string_view>
+
+#include "core/config_error.hpp"
+#include "strategies/choquet.hpp"
+
+namespace fsweep {
+inline namespace strategies {
+namespace {
+
+/// Criterion letters in bit order (kMcdmL, kMcdmI, kMcdmO).
+constexpr const char* kLetters = "LIO";
+
+/// The six JSON keys, i.e. subset names, of the proper non-empty subsets, by bitmask.
+const std::array<const char*, 8> kKeys{"", "L", "I", "LI", "O", "LO", "IO", ""};
+
+/// Equation 5 and its analogues: the linear map of `v` onto [0, 1] over [lo, hi]; `maximise`
+/// false turns it around (the paper's u_L). hi == lo: 1 (see Mcdm).
+double normalise(double v, double lo, double hi, bool maximise) {
+  if (!(hi > lo)) return 1.0;
+  const double t = (v - lo) / (hi - lo);
+  return maximise ? t : 1.0 - t;
+}
+
+}  // namespace
+
+McdmParams mcdm_params_from_json(const nlohmann::json& j, const std::string& where) {
+  McdmParams p;
+  if (j.is_null()) return p;
+  require_known_keys(j, {"measure"}, where);
+  if (!j.contains("measure")) return p;
+  const std::string at = where + "/measure";
+  const auto& m = j.at("measure");
+  require_known_keys(m, {"L", "I", "O", "LI", "LO", "IO"}, at);
+  std::string problems;
+  // Appends one problem: the concatenation of `parts`.
+  const auto add = [&](std::initializer_list<std::string_view> parts) {
+    if (!problems.empty()) problems += "; ";
+    for (const std::string_view part : parts) problems += part;
+  };
+  for (unsigned s = 1; s < 7; ++s) {
+    const std::string key = kKeys[s];
+    if (!m.contains(key)) {
+      add({at, "/", key, ": missing; the measure needs all of L, I, O, LI, LO, IO"});
+      continue;
+    }
+    const auto& v = m.at(key);
+    if (!v.is_number() || !(v.get<double>() >= 0.0 && v.get<double>() <= 1.0)) {
+      add({at, "/", key, ": value ", v.dump(), " not allowed; allowed: a number in [0, 1]"});
+      continue;
+    }
+    p.measure[s] = v.get<double>();
+  }
+  if (!problems.empty()) throw ConfigError("", problems);
+  // Every value is in [0, 1] and the ends are fixed, so only monotonicity can fail here.
+  for (const MeasureViolation& v : fuzzy_measure_violations(p.measure)) {
+    const std::string a = subset_name(v.subset, kLetters);
+    const std::string b = subset_name(v.superset, kLetters);
+    // The path names the user's value that is part of the pair (the larger set unless it is
+    // the fixed full set).
+    const std::string key = v.superset == 7U ? a : b;
+    add({at, "/", key, ": mu(", a, ") = ", nlohmann::json(p.measure[v.subset]).dump(), " > mu(", b,
+         ") = ", nlohmann::json(p.measure[v.superset]).dump(),
+         "; a fuzzy measure must not decrease when a criterion is added (", a, " is a subset of ", b, ")"});
+  }
+  if (!problems.empty()) throw ConfigError("", problems);
+  return p;
+}
+
+void to_json(nlohmann::json& j, const McdmParams& p) {
+  nlohmann::json m = nlohmann::json::object();
+  for (unsigned s = 1; s < 7; ++s) m[kKeys[s]] = p.measure[s];
+  j = nlohmann::json{{"measure", m}};
+}
+
+std::vector<McdmCandidate> Mcdm::evaluate(const Observation& obs) {
+  // 1. Reachable cluster representatives.
+  std::vector<int> reps;
+  reps.reserve(obs.clusters.size());
+  for (const auto& c : obs.clusters) reps.push_back(c.representative);
+  if (reps.empty()) return {};
+  const std::vector<double> length = obs.distances.from_robot(reps, std::numeric_limits<double>::infinity());
+  // 2. One simulated scan per candidate.
+  const double cell_area_m2 = obs.known.resolution_m() * obs.known.resolution_m();
+  std::vector<McdmCandidate> out;
+  for (std::size_t k = 0; k < reps.size(); ++k) {
+    if (!std::isfinite(length[k])) continue;
+    McdmCandidate c;
+    c.cell = obs.known.cell(reps[k]);
+    c.length_m = length[k];
+    const ScanCounts counts = scanner_.at(obs, c.cell);
+    c.gain_m2 = counts.unknown * cell_area_m2;
+    c.overlap_m2 = counts.known * cell_area_m2;
+    out.push_back(c);
+  }
+  if (out.empty()) return out;
+  // 3. Normalisation over this decision's candidates.
+  const auto range = [&](double McdmCandidate::*field) {
+    const auto [lo, hi] = std::minmax_element(
+        out.begin(), out.end(),
+        [&](const McdmCandidate& a, const McdmCandidate& b) { return a.*field < b.*field; });
+    return std::pair<double, double>{(*lo).*field, (*hi).*field};
+  };
+  const auto [l_lo, l_hi] = range(&McdmCandidate::length_m);
+  const auto [i_lo, i_hi] = range(&McdmCandidate::gain_m2);
+  const auto [o_lo, o_hi] = range(&McdmCandidate::overlap_m2);
+  // 4. Choquet integral (criteria in bit order L, I, O).
+  for (McdmCandidate& c : out) {
+    c.utility = {normalise(c.length_m, l_lo, l_hi, false), normalise(c.gain_m2, i_lo, i_hi, true),
+                 normalise(c.overlap_m2, o_lo, o_hi, true)};
+    c.global = choquet_integral(c.utility, params_.measure);
+  }
+  return out;
+}
+
+Decision Mcdm::decide(const Observation& obs) {
+  const std::vector<McdmCandidate> c = evaluate(obs);
+  if (c.empty()) return Decision::finish();
+  std::size_t best = 0;
+  for (std::size_t k = 1; k < c.size(); ++k) {
+    if (c[k].global > c[best].global) best = k;  // strict: ties keep the lowest cluster
+  }
+  return Decision::go_to(c[best].cell);
+}
+
+}  // namespace strategies
+}  // namespace fsweep

@@ -1,0 +1,165 @@
+#pragma once
+/// @file strategy.hpp
+/// The strategy plugin edge: an Observation in, a Decision out.
+
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/random.hpp"
+#include "world/frontiers.hpp"
+#include "world/grid.hpp"
+#include "world/known_map.hpp"
+#include "world/sensor.hpp"
+
+namespace fsweep {
+inline namespace strategies {
+
+/// Path-length queries over known free space, answered by the engine (strategies never call
+/// planners). Results are in metres; +infinity when unreachable or beyond the bound.
+class DistanceOracle {
+ public:
+  virtual ~DistanceOracle() = default;
+  /// Distances from the robot to every cell within `bound_m`.
+  [[nodiscard]] virtual std::vector<double> from_robot(std::span<const int> cells, double bound_m) = 0;
+  /// Distances from the dock to every cell within `bound_m`.
+  [[nodiscard]] virtual std::vector<double> from_dock(std::span<const int> cells, double bound_m) = 0;
+  /// Index into `cells` of the nearest cell by path length from the robot (ties: lowest
+  /// position in `cells`), or -1 when none is reachable. Stops the search early.
+  [[nodiscard]] virtual int nearest_from_robot(std::span<const int> cells) = 0;
+};
+
+/// Battery as the strategy sees it.
+struct BatteryView {
+  /// Current charge and capacity, in the energy model's unit. Unlimited: both +infinity.
+  double level = std::numeric_limits<double>::infinity();
+  double capacity = std::numeric_limits<double>::infinity();
+  /// Distance (metres) the robot can still travel: Rappaport eq. 5, d_l = E_l / P_m * v_avg,
+  /// computed by the engine as level / (energy per metre so far). +infinity when unlimited.
+  double remaining_range_m = std::numeric_limits<double>::infinity();
+  [[nodiscard]] bool unlimited() const { return capacity == std::numeric_limits<double>::infinity(); }
+};
+
+/// Everything a strategy may look at. The references stay valid for one decide() call.
+struct Observation {
+  const KnownMap& known;
+  const FrontierMap& frontiers;
+  /// Frontier clusters of this decision (split to the configured maximum length).
+  const std::vector<FrontierCluster>& clusters;
+  DistanceOracle& distances;
+  const SensorParams& sensor;
+  Cell robot;
+  /// Current heading 0..7 (grid.hpp).
+  int heading = 0;
+  /// Where the robot was at the previous decision (the start at the first decision).
+  Cell previous_position;
+  /// The previous decision's goal, if any.
+  std::optional<Cell> previous_goal;
+  Cell dock;
+  BatteryView battery;
+  /// Decisions made so far in this run.
+  int decision_index = 0;
+  /// Set by the engine when the `seg` heuristic (src/strategies/heuristics.hpp) restricts this
+  /// decision: one flag per cell index of `known`, 1 for the cells of the robot's current map
+  /// segment (src/world/segmentation.hpp), 0 elsewhere. `clusters` then holds only the
+  /// clusters whose representative lies in that segment; a strategy that reads frontier cells
+  /// in another way must keep to the flagged ones too (restrict_to_segment() in
+  /// heuristics.hpp). Null when nothing is restricted: `seg` off, or no cluster
+  /// representative in the segment.
+  const std::vector<std::uint8_t>* segment_mask = nullptr;
+};
+
+/// What to do next.
+struct Decision {
+  enum class Kind { GoTo, ReturnToDock, Finish };
+  /// Why a Finish ends the run. Explored: the engine checks for reachable frontiers left
+  /// (complete, range_limited or stuck). The other two are for navigation strategies
+  /// (target_seeking.hpp) and end the run as `target_reached` / `target_unreachable`.
+  enum class Outcome { Explored, TargetReached, TargetUnreachable };
+  Kind kind = Kind::Finish;
+  /// The goal cell for GoTo.
+  Cell goal{};
+  /// GoTo: travel at most this many cell steps toward `goal`, then decide again (a strategy
+  /// that re-evaluates its choice after every step sets 1). 0: travel all the way. For the
+  /// engine's stuck rule a journey cut short by this limit is not a quiet decision unless
+  /// the robot did not move (simulation.hpp).
+  int max_steps = 0;
+  /// Finish: why (see Outcome), with free text for the run's end_detail.
+  Outcome outcome = Outcome::Explored;
+  std::string detail;
+  static Decision go_to(Cell c) {
+    Decision d;
+    d.kind = Kind::GoTo;
+    d.goal = c;
+    return d;
+  }
+  static Decision return_to_dock() {
+    Decision d;
+    d.kind = Kind::ReturnToDock;
+    return d;
+  }
+  static Decision finish() { return Decision{}; }
+  /// GoTo `c`, deciding again after at most `steps` cell steps (>= 1).
+  static Decision go_toward(Cell c, int steps) {
+    Decision d = go_to(c);
+    d.max_steps = steps;
+    return d;
+  }
+  /// Finish with a navigation outcome and its detail text.
+  static Decision finish_with(Outcome outcome, std::string detail) {
+    Decision d = finish();
+    d.outcome = outcome;
+    d.detail = std::move(detail);
+    return d;
+  }
+};
+
+/// Candidates of a linear-scored strategy: cost(i) = sum_k weights[k] * features[i*K + k].
+struct Candidates {
+  std::vector<Cell> cells;
+  /// Row-major, cells.size() x feature_count.
+  std::vector<double> features;
+  int feature_count = 0;
+};
+
+/// Index of argmin_i weights . features_i; ties break to the lowest i. -1 when empty.
+[[nodiscard]] int argmin_linear(const Candidates& c, std::span<const double> weights);
+
+/// A frontier-selection strategy. Instances may keep state between decisions (a seeded
+/// generator, the previous goal); clone() copies that state exactly.
+class Strategy {
+ public:
+  virtual ~Strategy() = default;
+  [[nodiscard]] virtual std::string name() const = 0;
+  [[nodiscard]] virtual Decision decide(const Observation& obs) = 0;
+  [[nodiscard]] virtual std::unique_ptr<Strategy> clone() const = 0;
+  /// The target cell of a navigation strategy (target_seeking.hpp), for the engine's target
+  /// metrics (RunMetrics::target_path_m); none for exploration strategies.
+  [[nodiscard]] virtual std::optional<Cell> target() const { return std::nullopt; }
+};
+
+/// A strategy whose choice is argmin(weights . features) over candidates. The engine may read
+/// candidates() and weights() directly to evaluate many weight vectors at once (DESIGN.md 7).
+class LinearScoredStrategy : public Strategy {
+ public:
+  /// The candidates of this decision, after any feasibility filter.
+  [[nodiscard]] virtual Candidates candidates(const Observation& obs) = 0;
+  [[nodiscard]] virtual std::span<const double> weights() const = 0;
+  /// What to do when no candidate survives.
+  [[nodiscard]] virtual Decision on_no_candidate(const Observation& obs) = 0;
+
+  [[nodiscard]] Decision decide(const Observation& obs) override {
+    const Candidates c = candidates(obs);
+    const int best = argmin_linear(c, weights());
+    if (best < 0) return on_no_candidate(obs);
+    return Decision::go_to(c.cells[static_cast<std::size_t>(best)]);
+  }
+};
+
+}  // namespace strategies
+}  // namespace fsweep

@@ -1,0 +1,249 @@
+#include "strategies/target_seeking.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <nlohmann/json.hpp>
+
+#include "core/config_error.hpp"
+#include "strategies/geodesic.hpp"
+#include "strategies/widest_frontier.hpp"
+
+namespace fsweep {
+inline namespace strategies {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+std::string cell_text(Cell c) { return "(" + std::to_string(c.x) + ", " + std::to_string(c.y) + ")"; }
+
+double weight_from_json(const nlohmann::json& j, const char* key, double fallback, const std::string& where) {
+  if (!j.contains(key)) return fallback;
+  const auto& v = j.at(key);
+  if (!v.is_number() || !(v.get<double>() >= 0.0) || v.get<double>() > 1.0) {
+    throw ConfigError(where + "/" + key, "value " + v.dump() + " out of range; allowed: a number in [0, 1]");
+  }
+  return v.get<double>();
+}
+
+}  // namespace
+
+TargetSeekingParams target_seeking_params_from_json(const nlohmann::json& j, const std::string& where) {
+  TargetSeekingParams p;
+  if (j.is_null()) return p;
+  require_known_keys(j, {"target", "w1", "w2", "w3", "motion"}, where);
+  const nlohmann::json t = j.value("target", nlohmann::json());
+  if (t.is_null()) {
+    p.target.reset();
+  } else if (t.is_string() && t.get<std::string>() == "random") {
+    p.random_target = true;
+  } else if (!t.is_array() || t.size() != 2 || !t[0].is_number_integer() || !t[1].is_number_integer() ||
+             t[0].get<long long>() < 0 || t[1].get<long long>() < 0 ||
+             t[0].get<long long>() > std::numeric_limits<int>::max() ||
+             t[1].get<long long>() > std::numeric_limits<int>::max()) {
+    throw ConfigError(
+        where + "/target",
+        "value " + t.dump() + " is not a cell; allowed: [x, y], two integers >= 0, \"random\", or null");
+  } else {
+    p.target = Cell{t[0].get<int>(), t[1].get<int>()};
+  }
+  p.w1 = weight_from_json(j, "w1", p.w1, where);
+  p.w2 = weight_from_json(j, "w2", p.w2, where);
+  p.w3 = weight_from_json(j, "w3", p.w3, where);
+  if (j.contains("motion")) {
+    const auto& m = j.at("motion");
+    if (!m.is_string() || (m.get<std::string>() != "shortest_path" && m.get<std::string>() != "gradient")) {
+      throw ConfigError(where + "/motion",
+                        "value " + m.dump() + " unknown; allowed: \"shortest_path\", \"gradient\"");
+    }
+    p.motion = m.get<std::string>() == "gradient" ? TargetMotion::Gradient : TargetMotion::ShortestPath;
+  }
+  return p;
+}
+
+void to_json(nlohmann::json& j, const TargetSeekingParams& p) {
+  j = nlohmann::json{{"target", p.random_target ? nlohmann::json("random")
+                                : p.target      ? nlohmann::json{p.target->x, p.target->y}
+                                                : nlohmann::json()},
+                     {"w1", p.w1},
+                     {"w2", p.w2},
+                     {"w3", p.w3},
+                     {"motion", p.motion == TargetMotion::Gradient ? "gradient" : "shortest_path"}};
+}
+
+FrontierChoice choose_target_frontier(const Observation& obs, const TargetSeekingParams& params) {
+  const KnownMap& known = obs.known;
+  FrontierChoice choice;
+  if (params.target && !known.in_bounds(*params.target)) return choice;
+  const int target = params.target ? known.index(*params.target) : -1;
+
+  // 1. Whole frontiers from the clusters' cells.
+  std::vector<int> cells;
+  for (const auto& c : obs.clusters) cells.insert(cells.end(), c.cells.begin(), c.cells.end());
+  std::sort(cells.begin(), cells.end());
+  cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+  if (cells.empty()) return choice;
+  const auto groups = frontier_groups(known, cells);
+
+  // 2. Geodesic distances from the target through its region (all 0 without a target).
+  std::vector<double>& from_target = choice.from_target_m;
+  from_target.assign(static_cast<std::size_t>(known.size()), 0.0);
+  if (target >= 0) {
+    Grid<std::uint8_t> region = unknown_region(known, obs.frontiers);
+    if (known.is_free(target)) {
+      for (int i = 0; i < known.size(); ++i) region[i] = known.state(i) != CellState::Occupied ? 1 : 0;
+    }
+    const std::vector<int> source{target};
+    from_target = geodesic_distances(region, source, known.resolution_m());
+  }
+  const double w2 = target >= 0 ? params.w2 : 0.0;
+  const std::vector<double> from_robot = obs.distances.from_robot(cells, kInf);
+
+  // 3. Score the eligible frontiers (equation 12).
+  double best = kInf;
+  for (const auto& g : groups) {
+    ScoredFrontier f;
+    f.cells = g;
+    f.length_m = static_cast<double>(g.size()) * known.resolution_m();
+    f.hg_target_m = geodesic_hausdorff(from_target, g);
+    f.hg_robot_m = kInf;
+    for (const int q : g) {
+      const auto at = std::lower_bound(cells.begin(), cells.end(), q) - cells.begin();
+      f.hg_robot_m = std::min(f.hg_robot_m, from_robot[static_cast<std::size_t>(at)]);
+    }
+    if (!std::isfinite(f.hg_target_m) || !std::isfinite(f.hg_robot_m)) continue;
+    f.score = params.w1 / f.length_m + w2 * f.hg_target_m + params.w3 * f.hg_robot_m;
+    if (f.score < best) {  // strict: ties keep the earlier frontier
+      best = f.score;
+      choice.chosen = static_cast<int>(choice.frontiers.size());
+    }
+    choice.frontiers.push_back(std::move(f));
+  }
+  if (choice.chosen < 0) return choice;
+
+  // The goal: the member on the shortest estimated route robot -> q -> target.
+  double best_route = kInf;
+  for (const int q : choice.frontiers[static_cast<std::size_t>(choice.chosen)].cells) {
+    const auto at = std::lower_bound(cells.begin(), cells.end(), q) - cells.begin();
+    const double route = from_robot[static_cast<std::size_t>(at)] + from_target[static_cast<std::size_t>(q)];
+    if (route < best_route) {  // cells ascend: ties keep the lowest index
+      best_route = route;
+      choice.goal = q;
+    }
+  }
+  return choice;
+}
+
+ExplorationField exploration_field(const KnownMap& known, std::span<const int> chosen,
+                                   std::span<const double> from_target_m) {
+  ExplorationField out;
+  GeodesicField to_frontier = geodesic_field(known_free_cells(known), chosen, known.resolution_m());
+  out.weight.assign(static_cast<std::size_t>(known.size()), 0.0);
+  for (std::size_t p = 0; p < out.weight.size(); ++p) {
+    const int y = to_frontier.nearest_source[p];
+    if (y < 0) continue;
+    const double f = 1.0 / (to_frontier.distance_m[p] + 1.0);                     // equation 13
+    const double phi = 1.0 / (from_target_m[static_cast<std::size_t>(y)] + 1.0);  // equations 14-15
+    out.weight[p] = f * phi;
+  }
+  out.to_frontier_m = std::move(to_frontier.distance_m);
+  return out;
+}
+
+WorldMap known_as_world(const KnownMap& known) {
+  WorldMap view;
+  view.occupied = Grid<std::uint8_t>(known.width(), known.height(), 1);
+  for (int i = 0; i < known.size(); ++i) view.occupied[i] = known.is_free(i) ? 0 : 1;
+  view.resolution_m = known.resolution_m();
+  view.source = "known map";
+  return view;
+}
+
+double exploration_objective(const WorldMap& view, const Sensor& sensor, Cell at,
+                             std::span<const double> weights) {
+  const int r = static_cast<int>(std::floor(sensor.range_cells()));
+  double h = 0.0;
+  for (int y = std::max(0, at.y - r); y <= std::min(view.height() - 1, at.y + r); ++y) {
+    for (int x = std::max(0, at.x - r); x <= std::min(view.width() - 1, at.x + r); ++x) {
+      const Cell p{x, y};
+      const int i = view.occupied.index(p);
+      if (weights[static_cast<std::size_t>(i)] == 0.0 || !view.is_free(i)) continue;
+      if (p == at || sensor.visible(view, at, p)) h += weights[static_cast<std::size_t>(i)];
+    }
+  }
+  return h;
+}
+
+std::optional<Cell> gradient_step(const KnownMap& known, const Sensor& sensor, Cell robot,
+                                  const ExplorationField& field) {
+  if (!known.in_bounds(robot)) return std::nullopt;
+  const WorldMap view = known_as_world(known);
+  const double here = field.to_frontier_m[static_cast<std::size_t>(known.index(robot))];
+  double best = -1.0;
+  std::optional<Cell> step;
+  for (int h = 0; h < 8; ++h) {
+    const Cell d = kDirections[static_cast<std::size_t>(h)];
+    const Cell n{robot.x + d.x, robot.y + d.y};
+    if (!known.is_free(n)) continue;
+    if ((h & 1) != 0 &&
+        (!known.is_free(Cell{robot.x + d.x, robot.y}) || !known.is_free(Cell{robot.x, robot.y + d.y}))) {
+      continue;
+    }
+    if (!(field.to_frontier_m[static_cast<std::size_t>(known.index(n))] < here)) continue;  // progress
+    const double value = exploration_objective(view, sensor, n, field.weight);
+    if (value > best) {  // strict: ties keep the lower heading
+      best = value;
+      step = n;
+    }
+  }
+  return step;
+}
+
+Decision TargetSeeking::decide(const Observation& obs) {
+  const KnownMap& known = obs.known;
+  if (params_.random_target) {
+    throw ConfigError(
+        "strategy/params/target",
+        "\"random\" must be resolved to a cell by the simulation (resolve_random_target) first");
+  }
+  if (!params_.target) {  // 0
+    const FrontierChoice choice = choose_target_frontier(obs, params_);
+    if (choice.goal < 0) return Decision::finish();
+    return Decision::go_to(known.cell(choice.goal));
+  }
+  const Cell t = *params_.target;
+  if (!known.in_bounds(t)) {  // 1
+    return Decision::finish_with(Decision::Outcome::TargetUnreachable,
+                                 "target " + cell_text(t) + " is outside the " +
+                                     std::to_string(known.width()) + "x" + std::to_string(known.height()) +
+                                     " map");
+  }
+  if (known.state(t) == CellState::Occupied) {
+    return Decision::finish_with(Decision::Outcome::TargetUnreachable,
+                                 "target " + cell_text(t) + " is an occupied cell");
+  }
+  if (obs.robot == t) {  // 2
+    return Decision::finish_with(Decision::Outcome::TargetReached, {});
+  }
+  if (known.is_free(t)) {  // 3
+    const std::vector<int> target{known.index(t)};
+    if (std::isfinite(obs.distances.from_robot(target, kInf).front())) return Decision::go_to(t);
+  }
+  const FrontierChoice choice = choose_target_frontier(obs, params_);  // 4
+  if (choice.goal < 0) {
+    return Decision::finish_with(
+        Decision::Outcome::TargetUnreachable,
+        "no reachable frontier borders the unknown region of target " + cell_text(t));
+  }
+  if (params_.motion == TargetMotion::Gradient) {
+    const auto& chosen = choice.frontiers[static_cast<std::size_t>(choice.chosen)].cells;
+    const Sensor sensor(obs.sensor, known.resolution_m());
+    const auto step =
+        gradient_step(known, sensor, obs.robot, exploration_field(known, chosen, choice.from_target_m));
+    if (step) return Decision::go_toward(*step, 1);
+  }
+  return Decision::go_toward(known.cell(choice.goal), 1);
+}
+
+}  // namespace strategies
+}  // namespace fsweep

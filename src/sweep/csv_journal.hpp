@@ -1,0 +1,74 @@
+#pragma once
+/// @file csv_journal.hpp
+/// An append-only CSV file that survives being killed at any moment (sweep_runner.hpp).
+///
+/// Writes go through an in-memory buffer that reaches the file only on flush(), as whole
+/// write(2) calls, so the caller decides the order in which rows of several files become
+/// visible (progress rows before the runs row that completes them). A process killed in the
+/// middle of a write leaves at most one torn record at the end; repair() cuts it off.
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/files.hpp"
+
+namespace fsweep {
+inline namespace sweep {
+
+/// What repair() found.
+struct CsvRepairStats {
+  std::uint64_t kept = 0;     ///< complete records kept (the header excluded)
+  std::uint64_t dropped = 0;  ///< complete records the filter rejected
+  bool torn = false;          ///< a last record without its final newline was cut off
+  bool rewritten = false;     ///< the file was rewritten (temp file and rename), not truncated
+};
+
+/// One CSV file with a fixed header line, appended to record by record.
+class CsvJournal {
+ public:
+  /// Decides whether a complete record (its fields, unquoted) stays. Called once per record,
+  /// in file order, so it may collect state.
+  using RecordFilter = std::function<bool(const std::vector<std::string>& fields)>;
+
+  /// Opens `path` for a header `header` (one line, no newline). A missing file, or one without
+  /// a complete first line, is (re)created holding just the header (temp file and rename).
+  /// An existing file with a different header is refused with a ConfigError that names the
+  /// file and says to start over with --fresh.
+  CsvJournal(std::string path, std::string header);
+  CsvJournal(const CsvJournal&) = delete;
+  CsvJournal& operator=(const CsvJournal&) = delete;
+  /// Flushes (errors ignored) and closes.
+  ~CsvJournal();
+
+  /// Reads every record after the header (RFC 4180: quoted fields may hold commas, quotes and
+  /// newlines), keeps the complete ones `keep` accepts, and cuts off a torn last record. When
+  /// only a tail goes, the file is truncated; when a rejected record is followed by a kept one,
+  /// the file is rewritten through a temp file and rename. Call before the first append().
+  CsvRepairStats repair(const RecordFilter& keep);
+
+  /// Queues whole records (each ending in '\n'); nothing reaches the file before flush().
+  void append(std::string_view records);
+  /// Bytes queued and not yet written.
+  [[nodiscard]] std::size_t pending() const { return buffer_.size(); }
+  /// Writes the queued bytes (throws ConfigError naming the file on a write error).
+  void flush();
+
+  [[nodiscard]] const std::string& path() const { return path_; }
+
+ private:
+  void open_for_append();
+
+  std::string path_;
+  std::string header_;
+  std::string buffer_;
+  int fd_ = -1;
+};
+
+/// Splits one CSV line (no newline) into unquoted fields (RFC 4180).
+[[nodiscard]] std::vector<std::string> split_csv_line(std::string_view line);
+
+}  // namespace sweep
+}  // namespace fsweep

@@ -1,0 +1,122 @@
+#include "sweep/manifest.hpp"
+
+#include <oneapi/tbb/version.h>
+#include <unistd.h>
+
+#include <array>
+#include <cstdio>
+#include <ctime>
+#include <fstream>
+
+#include "core/random.hpp"
+#include "sweep/csv_journal.hpp"
+#include "sweep/sweep_plan.hpp"
+
+#ifndef FSWEEP_GIT_REVISION
+#define FSWEEP_GIT_REVISION "unknown"
+#endif
+
+namespace fsweep {
+inline namespace sweep {
+namespace {
+
+std::string host_name() {
+  std::array<char, 256> buf{};
+  if (::gethostname(buf.data(), buf.size() - 1) != 0) return "unknown";
+  return buf.data();
+}
+
+/// The first "model name" of /proc/cpuinfo (Linux); "unknown" elsewhere.
+std::string cpu_model() {
+  std::ifstream in("/proc/cpuinfo");
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.rfind("model name", 0) != 0) continue;
+    const auto colon = line.find(':');
+    if (colon == std::string::npos) break;
+    const auto begin = line.find_first_not_of(" \t", colon + 1);
+    return begin == std::string::npos ? std::string() : line.substr(begin);
+  }
+  return "unknown";
+}
+
+std::string compiler() {
+#if defined(__clang__)
+  return std::string("clang ") + __clang_version__;
+#elif defined(__GNUC__)
+  return std::string("gcc ") + __VERSION__;
+#else
+  return "unknown";
+#endif
+}
+
+nlohmann::json libraries() {
+  return {{"oneTBB", std::to_string(TBB_VERSION_MAJOR) + "." + std::to_string(TBB_VERSION_MINOR) + "." +
+                         std::to_string(TBB_VERSION_PATCH)},
+          {"nlohmann_json", std::to_string(NLOHMANN_JSON_VERSION_MAJOR) + "." +
+                                std::to_string(NLOHMANN_JSON_VERSION_MINOR) + "." +
+                                std::to_string(NLOHMANN_JSON_VERSION_PATCH)}};
+}
+
+}  // namespace
+
+std::string sweep_hash(const nlohmann::json& sweep) {
+  char buf[17];
+  std::snprintf(buf, sizeof(buf), "%016llx", static_cast<unsigned long long>(fnv1a(sweep.dump())));
+  return buf;
+}
+
+std::string utc_now_iso8601() {
+  const std::time_t t = std::time(nullptr);
+  std::tm tm{};
+  ::gmtime_r(&t, &tm);
+  char buf[32];
+  std::strftime(buf, sizeof(buf), "%Y-%m-%dT%H:%M:%SZ", &tm);
+  return buf;
+}
+
+nlohmann::json manifest_json(const SweepPlan& plan, const ManifestInfo& info) {
+  nlohmann::json j;
+  j["status"] = info.status;
+  j["name"] = plan.name();
+  j["sweep_file"] = info.sweep_file;
+  j["sweep_hash"] = sweep_hash(plan.source());
+  j["sweep"] = plan.source();
+  j["objective"] = plan.objective();
+  j["seed"] = plan.seed();
+  j["repetitions"] = plan.repetitions();
+  j["runs"] = {{"total", info.runs.total},
+               {"done", info.runs.done},
+               {"skipped", info.runs.skipped},
+               {"ran", info.runs.ran},
+               {"failed", info.runs.failed}};
+  j["shard"] = {{"index", info.shard_index}, {"count", info.shard_count}};
+  j["git_revision"] = FSWEEP_GIT_REVISION;
+  j["compiler"] = compiler();
+  j["libraries"] = libraries();
+  j["host"] = host_name();
+  j["cpu_model"] = cpu_model();
+  j["threads"] = info.threads;
+  j["start_utc"] = info.start_utc;
+  j["end_utc"] = info.end_utc.empty() ? nlohmann::json(nullptr) : nlohmann::json(info.end_utc);
+  j["wall_s"] = info.wall_s;
+  j["runs_per_s"] = info.runs_per_s;
+  return j;
+}
+
+void write_manifest(const std::string& path, const nlohmann::json& manifest) {
+  write_file_atomically(path, manifest.dump(2) + "\n");
+}
+
+std::optional<std::string> read_manifest_hash(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) return std::nullopt;
+  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  if (j.is_discarded() || !j.is_object() || !j.contains("sweep_hash") || !j["sweep_hash"].is_string()) {
+    return std::nullopt;
+  }
+  return j["sweep_hash"].get<std::string>();
+}
+
+}  // namespace sweep
+}  // namespace fsweep

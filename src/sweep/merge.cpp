@@ -1,0 +1,228 @@
+#include "sweep/merge.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <regex>
+#include <unordered_map>
+
+#include "core/config_error.hpp"
+#include "core/csv_reader.hpp"
+#include "report/aggregate.hpp"
+#include "sim/run_table.hpp"
+#include "sweep/csv_journal.hpp"
+#include "sweep/manifest.hpp"
+#include "sweep/sweep_plan.hpp"
+
+namespace fsweep {
+inline namespace sweep {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Shard {
+  std::uint64_t index = 0;
+  std::uint64_t count = 0;
+  std::string dir;
+  nlohmann::json manifest;
+};
+
+std::string join_fields(const std::vector<std::string>& fields) {
+  std::string out;
+  for (std::size_t i = 0; i < fields.size(); ++i) {
+    if (i > 0) out += ',';
+    out += csv_field(fields[i]);
+  }
+  return out;
+}
+
+nlohmann::json read_json(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw ConfigError(path, "cannot open the shard's manifest");
+  nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  if (j.is_discarded() || !j.is_object() || !j.contains("sweep_hash") || !j["sweep_hash"].is_string()) {
+    throw ConfigError(path, "not a sweep manifest (no sweep_hash)");
+  }
+  return j;
+}
+
+std::uint64_t parse_index(const std::string& cell, const CsvReader& r) {
+  std::uint64_t v = 0;
+  const auto [end, ec] = std::from_chars(cell.data(), cell.data() + cell.size(), v);
+  if (ec != std::errc() || end != cell.data() + cell.size() || cell.empty()) {
+    throw ConfigError(r.where(), "run_index '" + cell + "' is not a non-negative integer");
+  }
+  return v;
+}
+
+}  // namespace
+
+MergeReport merge_shards(const std::string& dir, const std::string& objective) {
+  MergeReport report;
+  if (!fs::is_directory(dir)) throw ConfigError(dir, "not a directory");
+  static const std::regex kShardName(R"(shard-(\d+)-of-(\d+))");
+  std::vector<Shard> shards;
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    std::smatch m;
+    const std::string name = entry.path().filename().string();
+    if (!entry.is_directory() || !std::regex_match(name, m, kShardName)) continue;
+    shards.push_back({std::stoull(m[1].str()), std::stoull(m[2].str()), entry.path().string(), {}});
+  }
+  if (shards.empty()) throw ConfigError(dir, "no shard directories (shard-<i>-of-<n>) to merge");
+  std::sort(shards.begin(), shards.end(), [](const Shard& a, const Shard& b) {
+    return a.count != b.count ? a.count < b.count : a.index < b.index;
+  });
+  if (shards.front().count != shards.back().count) {
+    throw ConfigError(dir, "shards of different shard counts: " + shards.front().dir + " and " +
+                               shards.back().dir + " (merge the shards of one --shard i/N split only)");
+  }
+  const std::uint64_t n = shards.front().count;
+  report.shard_count = n;
+  for (const Shard& s : shards) {
+    if (s.index >= n)
+      throw ConfigError(s.dir,
+                        "shard index " + std::to_string(s.index) + " is not below " + std::to_string(n));
+  }
+  for (Shard& s : shards) s.manifest = read_json(s.dir + "/manifest.json");
+  for (const Shard& s : shards) {
+    if (s.manifest["sweep_hash"] != shards.front().manifest["sweep_hash"]) {
+      throw ConfigError(dir, "shards of different sweeps (sweep_hash " +
+                                 s.manifest["sweep_hash"].get<std::string>() + " in " + s.dir + ", " +
+                                 shards.front().manifest["sweep_hash"].get<std::string>() + " in " +
+                                 shards.front().dir + ")");
+    }
+  }
+  {
+    std::size_t k = 0;
+    for (std::uint64_t i = 0; i < n; ++i) {
+      if (k < shards.size() && shards[k].index == i) {
+        ++k;
+      } else {
+        report.problems.push_back("missing shard directory " + dir + "/shard-" + std::to_string(i) + "-of-" +
+                                  std::to_string(n));
+      }
+    }
+  }
+
+  // The whole sweep's plan, for the total and the run keys.
+  const nlohmann::json& first = shards.front().manifest;
+  std::optional<SweepPlan> plan;
+  try {
+    if (first.contains("sweep"))
+      plan.emplace(SweepPlan::from_json(first["sweep"], first.value("sweep_file", "")));
+  } catch (const std::exception&) {
+    plan.reset();
+  }
+  if (plan) {
+    report.total = plan->run_count();
+  } else {
+    for (const Shard& s : shards)
+      report.total += s.manifest.value("/runs/total"_json_pointer, std::uint64_t{0});
+  }
+
+  // runs.csv rows by run_index; duplicates by index and by key.
+  std::string runs_header;
+  std::map<std::uint64_t, std::string> runs;
+  std::unordered_map<std::string, std::string> key_where;
+  std::map<std::uint64_t, std::string> index_where;
+  for (const Shard& s : shards) {
+    CsvReader r(s.dir + "/runs.csv");
+    const std::string header = join_fields(r.header());
+    if (runs_header.empty()) runs_header = header;
+    if (header != runs_header)
+      throw ConfigError(r.path(), "runs.csv header differs from " + shards.front().dir + "'s");
+    const std::size_t ci = r.require_column("run_index");
+    const std::size_t ck = r.require_column("run_key");
+    while (r.next()) {
+      ++report.rows;
+      const std::uint64_t idx = parse_index(r.fields()[ci], r);
+      const std::string& key = r.fields()[ck];
+      if (idx >= report.total) {
+        report.problems.push_back(r.where() + ": run_index " + std::to_string(idx) +
+                                  " is not below the sweep's " + std::to_string(report.total) + " runs");
+        continue;
+      }
+      if (const auto it = index_where.find(idx); it != index_where.end()) {
+        report.problems.push_back("duplicate run_index " + std::to_string(idx) + " (run_key " + key +
+                                  ") at " + it->second + " and " + r.where());
+        continue;
+      }
+      if (const auto it = key_where.find(key); it != key_where.end()) {
+        report.problems.push_back("duplicate run_key " + key + " (run_index " + std::to_string(idx) +
+                                  ") at " + it->second + " and " + r.where());
+      }
+      if (plan && plan->run_key(idx) != key) {
+        report.problems.push_back(r.where() + ": run_index " + std::to_string(idx) + " has run_key " + key +
+                                  ", the sweep's is " + plan->run_key(idx));
+      }
+      index_where[idx] = r.where();
+      key_where[key] = r.where();
+      runs[idx] = join_fields(r.fields());
+    }
+  }
+  for (std::uint64_t i = 0; i < report.total; ++i) {
+    if (runs.count(i) != 0) continue;
+    report.problems.push_back("missing run_index " + std::to_string(i) +
+                              (plan ? " (run_key " + plan->run_key(i) + ")" : std::string()));
+  }
+  if (!report.problems.empty()) return report;
+
+  // progress.csv rows, grouped by run_index (a run's rows keep their order).
+  std::string progress_header;
+  std::map<std::uint64_t, std::string> progress;
+  for (const Shard& s : shards) {
+    CsvReader r(s.dir + "/progress.csv");
+    const std::string header = join_fields(r.header());
+    if (progress_header.empty()) progress_header = header;
+    if (header != progress_header) {
+      throw ConfigError(r.path(), "progress.csv header differs from " + shards.front().dir + "'s");
+    }
+    const std::size_t ci = r.require_column("run_index");
+    while (r.next()) {
+      const std::uint64_t idx = parse_index(r.fields()[ci], r);
+      if (runs.count(idx) == 0) continue;  // no runs.csv row (torn write): dropped, as aggregate does
+      progress[idx] += join_fields(r.fields()) + "\n";
+    }
+  }
+
+  std::string runs_text = runs_header + "\n";
+  for (const auto& [idx, row] : runs) runs_text += row + "\n";
+  std::string progress_text = progress_header + "\n";
+  for (const auto& [idx, rows] : progress) progress_text += rows;
+
+  nlohmann::json manifest = first;
+  std::uint64_t failed = 0;
+  std::uint64_t ran = 0;
+  std::uint64_t skipped = 0;
+  double wall = 0.0;
+  for (const Shard& s : shards) {
+    failed += s.manifest.value("/runs/failed"_json_pointer, std::uint64_t{0});
+    ran += s.manifest.value("/runs/ran"_json_pointer, std::uint64_t{0});
+    skipped += s.manifest.value("/runs/skipped"_json_pointer, std::uint64_t{0});
+    wall = std::max(wall, s.manifest.value("wall_s", 0.0));
+  }
+  manifest["runs"] = {{"total", report.total},
+                      {"done", report.total},
+                      {"skipped", skipped},
+                      {"ran", ran},
+                      {"failed", failed}};
+  manifest["shard"] = {{"index", 0}, {"count", 1}, {"merged_from", n}};
+  manifest["status"] = "complete";
+  manifest["wall_s"] = wall;  // the longest shard: the elapsed time if the shards ran at once
+  manifest["runs_per_s"] = wall > 0.0 ? static_cast<double>(ran) / wall : 0.0;
+  manifest["end_utc"] = utc_now_iso8601();
+
+  write_file_atomically(dir + "/runs.csv", runs_text);
+  write_file_atomically(dir + "/progress.csv", progress_text);
+  write_manifest(dir + "/manifest.json", manifest);
+  aggregate(dir, AggregateOptions{objective});
+  report.written = true;
+  return report;
+}
+
+}  // namespace sweep
+}  // namespace fsweep

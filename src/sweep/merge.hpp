@@ -1,0 +1,41 @@
+#pragma once
+/// @file merge.hpp
+/// `fsweep merge DIR`: joins the shard outputs `DIR/shard-i-of-n/` of one sweep (sweep_runner.hpp,
+/// Sharding) into DIR/runs.csv, DIR/progress.csv and DIR/manifest.json, then aggregates them as
+/// `fsweep aggregate` does (summary.csv, progress_summary.csv, best.csv).
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace fsweep {
+inline namespace sweep {
+
+/// What merge_shards found and did.
+struct MergeReport {
+  std::uint64_t shard_count = 0;  ///< n of the shard directories
+  std::uint64_t total = 0;        ///< runs of the whole sweep
+  std::uint64_t rows = 0;         ///< runs.csv rows read over all shards
+  /// Problems that make the merge incomplete: missing shard directories, missing runs
+  /// ("run_index I (run_key K)"; the key when the sweep plan could be rebuilt), duplicates.
+  /// Empty on success.
+  std::vector<std::string> problems;
+  bool written = false;  ///< merged files and aggregates written (problems is empty)
+};
+
+/// Merges the shards under `dir`. Every shard directory (name `shard-<i>-of-<n>`) must have the
+/// same n, a manifest.json with the same sweep_hash and runs.csv / progress.csv with equal
+/// headers; otherwise (or with no shard directory, or malformed files) throws ConfigError naming
+/// the directories or the file and line (exit code 2 in the CLI). The sweep's run count and run
+/// keys come from the sweep plan rebuilt from the manifest's `sweep` (if that fails, e.g. a map
+/// file is not reachable from the current directory, the total is the sum of the shard
+/// manifests' `runs.total` and keys are not checked). Missing shard directories, run indices
+/// 0..total-1 without a row, indices outside that range, and a run_index or run_key in more than
+/// one row are listed in `problems`; then nothing is written. Otherwise writes DIR/runs.csv and
+/// DIR/progress.csv (rows ordered by run_index, a run's progress rows in their shard's order),
+/// DIR/manifest.json (the first shard's, with shard {index 0, count 1}, runs summed, status
+/// "complete") atomically, and runs aggregate(dir, {objective}).
+[[nodiscard]] MergeReport merge_shards(const std::string& dir, const std::string& objective = {});
+
+}  // namespace sweep
+}  // namespace fsweep

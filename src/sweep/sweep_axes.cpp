@@ -1,0 +1,403 @@
+/// @file sweep_axes.cpp
+/// The `strategies`, `planners` and `robot` axes of a sweep (format in sweep_plan.hpp).
+
+#include "sweep/sweep_axes.hpp"
+
+#include <algorithm>
+#include <functional>
+#include <map>
+#include <optional>
+#include <set>
+
+#include "core/config_error.hpp"
+#include "planners/registry.hpp"
+#include "strategies/registry.hpp"
+
+namespace fsweep {
+inline namespace sweep {
+namespace sweep_detail {
+namespace {
+
+using nlohmann::json;
+
+/// One swept parameter or leaf: where it is written, how, and its values.
+struct Axis {
+  std::string name;   ///< parameter name, or JSON pointer inside the robot object
+  std::string where;  ///< JSON path of the written value
+  json written;       ///< the value as written (scalar, list or range)
+  std::vector<json> values;
+};
+
+/// The message of the ConfigError `make` throws, or nothing when it succeeds.
+std::optional<std::string> failure(const std::function<void()>& make) {
+  try {
+    make();
+  } catch (const ConfigError& e) {
+    return std::string(e.what());
+  } catch (const std::exception& e) {  // a plugin reading a value of the wrong JSON type
+    return std::string(e.what());
+  }
+  return std::nullopt;
+}
+
+/// One problem for an axis whose values `bad` (index, message) failed: all of them at the
+/// axis' path, else the first at its own path, with how many more fail.
+void report_axis(const Axis& axis, const std::vector<std::pair<std::size_t, std::string>>& bad,
+                 std::vector<std::string>& problems) {
+  if (bad.empty()) return;
+  const auto& [k, message] = bad.front();
+  std::string text = strip_path(message, axis.where);
+  const std::string value = value_text(axis.values[k]);
+  if (axis.values.size() > 1 && text.find(value) == std::string::npos) text = "value " + value + ": " + text;
+  if (bad.size() == axis.values.size()) {
+    if (bad.size() > 1) text += " (all " + std::to_string(bad.size()) + " values of this axis fail)";
+    problems.push_back(axis.where + ": " + text);
+  } else {
+    if (bad.size() > 1) text += " (and " + std::to_string(bad.size() - 1) + " more values of this axis)";
+    problems.push_back(value_path(axis.written, axis.where, k) + ": " + text);
+  }
+}
+
+/// Escapes a key for a JSON pointer (RFC 6901).
+std::string pointer_token(const std::string& key) {
+  std::string out;
+  for (const char c : key) {
+    if (c == '~') {
+      out += "~0";
+    } else if (c == '/') {
+      out += "~1";
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
+/// Robot fields whose values are arrays: there only a list of arrays is a sweep.
+bool array_valued(const std::string& pointer) { return pointer == "/dock" || pointer == "/energy/per_turn"; }
+
+/// The swept leaves of the robot object, depth-first in key order.
+void collect_robot_axes(const json& node, const std::string& pointer, std::vector<Axis>& axes,
+                        std::vector<std::string>& problems) {
+  for (const auto& [key, value] : node.items()) {
+    const std::string child = pointer + "/" + pointer_token(key);
+    const bool range = value.is_object() && value.contains("range");
+    if (value.is_object() && !range) {
+      collect_robot_axes(value, child, axes, problems);
+      continue;
+    }
+    if (array_valued(child) && value.is_array() &&
+        (value.empty() ||
+         !std::all_of(value.begin(), value.end(), [](const json& e) { return e.is_array(); }))) {
+      continue;  // one array value
+    }
+    if (value.is_array() || range) {
+      const std::string where = concat({"/robot", child});
+      Axis a{child, where, value, expand_values(value, where, problems)};
+      if (!a.values.empty()) axes.push_back(std::move(a));
+    }
+  }
+}
+
+std::string robot_label(const std::vector<Axis>& axes, const std::vector<std::size_t>& digits) {
+  std::string label;
+  for (std::size_t a = 0; a < axes.size(); ++a) {
+    std::string path = axes[a].name.substr(1);
+    std::replace(path.begin(), path.end(), '/', '.');
+    const json& v = axes[a].values[digits[a]];
+    label += (label.empty() ? "" : " ") + path + "=" + (v.is_string() ? v.get<std::string>() : v.dump());
+  }
+  return label.empty() ? "-" : label;
+}
+
+}  // namespace
+
+std::vector<StrategyEntry> parse_strategies(const json& strategies, std::vector<std::string>& problems) {
+  std::vector<StrategyEntry> out;
+  if (!strategies.is_array() || strategies.empty()) {
+    problems.push_back("/strategies: expected a non-empty list of {\"name\", \"params\"} objects, got " +
+                       value_text(strategies));
+    return out;
+  }
+  const std::vector<std::string> known = strategy_names();
+  for (std::size_t i = 0; i < strategies.size(); ++i) {
+    const std::string where = "/strategies/" + std::to_string(i);
+    const json& item = strategies[i];
+    const std::size_t before = problems.size();
+    try {
+      require_known_keys(item, {"name", "label", "params", "zip"}, where);
+    } catch (const ConfigError& e) {
+      problems.emplace_back(e.what());
+      continue;
+    }
+    StrategyEntry entry;
+    // 1. Name and label.
+    if (!item.contains("name") || !item["name"].is_string()) {
+      problems.push_back(where + "/name: expected a strategy name; known: " + join_names(known));
+    } else {
+      entry.name = item["name"].get<std::string>();
+      if (std::find(known.begin(), known.end(), entry.name) == known.end()) {
+        problems.push_back(where + "/name: unknown strategy '" + entry.name +
+                           "'; known: " + join_names(known));
+      }
+    }
+    entry.label = entry.name;
+    if (item.contains("label")) {
+      if (item["label"].is_string()) {
+        entry.label = item["label"].get<std::string>();
+      } else {
+        problems.push_back(where + "/label: expected a string, got " + value_text(item["label"]));
+      }
+    }
+    // 2. Parameter axes, in key order.
+    std::map<std::string, Axis> axes;
+    const json params = item.value("params", json::object());
+    if (!params.is_object()) {
+      problems.push_back(where + "/params: expected an object {parameter: value, list or range}, got " +
+                         value_text(params));
+    } else {
+      for (const auto& [key, value] : params.items()) {
+        const std::string path = concat({where, "/params/", key});
+        Axis a{key, path, value, expand_values(value, path, problems)};
+        axes.emplace(key, std::move(a));
+      }
+    }
+    // 3. Zip groups: known parameters, each in one group, equal numbers of values.
+    std::map<std::string, std::size_t> group_of;
+    std::vector<std::vector<std::string>> zips;
+    const json zip = item.value("zip", json::array());
+    if (!zip.is_array()) problems.push_back(where + "/zip: expected a list of lists of parameter names");
+    for (std::size_t g = 0; zip.is_array() && g < zip.size(); ++g) {
+      const std::string gwhere = where + "/zip/" + std::to_string(g);
+      if (!zip[g].is_array() || zip[g].empty()) {
+        problems.push_back(gwhere + ": expected a non-empty list of parameter names, got " +
+                           value_text(zip[g]));
+        continue;
+      }
+      std::vector<std::string> names;
+      std::string counts;
+      std::set<std::size_t> sizes;
+      for (std::size_t m = 0; m < zip[g].size(); ++m) {
+        const json& n = zip[g][m];
+        const std::string name = n.is_string() ? n.get<std::string>() : n.dump();
+        if (!n.is_string() || !axes.count(name)) {
+          std::string names_given;
+          for (const auto& [k, a] : axes) names_given += (names_given.empty() ? "" : ", ") + k;
+          problems.push_back(concat({gwhere, "/", std::to_string(m), ": '", name,
+                                     "' is not a parameter of this entry; allowed: ", names_given}));
+        } else if (!group_of.emplace(name, zips.size()).second) {
+          problems.push_back(
+              concat({gwhere, "/", std::to_string(m), ": '", name, "' is already in another zip group"}));
+        } else {
+          names.push_back(name);
+          sizes.insert(axes.at(name).values.size());
+          counts += (counts.empty() ? "" : ", ") + name + ": " + std::to_string(axes.at(name).values.size());
+        }
+      }
+      if (sizes.size() > 1) {
+        problems.push_back(concat(
+            {gwhere, ": zipped parameters vary together and need equal numbers of values; got ", counts}));
+      }
+      zips.push_back(std::move(names));
+    }
+    if (problems.size() != before) continue;
+
+    // 4. Groups: singletons and zips, ordered by their smallest name (axes are in key order).
+    for (const auto& [key, axis] : axes) {
+      const auto z = group_of.find(key);
+      std::vector<std::string> names = z == group_of.end() ? std::vector<std::string>{key} : zips[z->second];
+      if (z != group_of.end() && *std::min_element(names.begin(), names.end()) != key) continue;
+      StrategyEntry::Group group;
+      group.names = names;
+      for (std::size_t k = 0; k < axis.values.size(); ++k) {
+        std::vector<json> combo;
+        combo.reserve(names.size());
+        for (const auto& n : names) combo.push_back(axes.at(n).values[k]);
+        group.combos.push_back(std::move(combo));
+      }
+      entry.groups.push_back(std::move(group));
+    }
+    std::uint64_t count = 1;
+    for (const auto& g : entry.groups) {
+      if (__builtin_mul_overflow(count, static_cast<std::uint64_t>(g.combos.size()), &count)) {
+        problems.push_back(where + "/params: more than 2^64 parameter combinations");
+        break;
+      }
+    }
+    if (problems.size() != before) continue;
+
+    // 5. Validation by the strategy itself: each value alone (others at their defaults) and
+    //    with the first value of every other axis; a value is bad when both fail.
+    const json base = entry.params_at(0);
+    auto make = [&](const json& p) { return failure([&] { (void)make_strategy(entry.name, p, 0, where); }); };
+    for (const auto& [key, axis] : axes) {
+      std::vector<std::pair<std::size_t, std::string>> bad;
+      for (std::size_t k = 0; k < axis.values.size(); ++k) {
+        const auto alone = make(json{{key, axis.values[k]}});
+        if (!alone) continue;
+        json with_base = base;
+        with_base[key] = axis.values[k];
+        if (make(with_base)) bad.emplace_back(k, *alone);
+      }
+      report_axis(axis, bad, problems);
+    }
+    if (problems.size() != before) continue;
+    for (std::size_t g = 0; g < entry.groups.size(); ++g) {
+      const auto& group = entry.groups[g];
+      for (std::size_t k = 1; k < group.combos.size() && group.names.size() > 1; ++k) {
+        json with_base = base;
+        for (std::size_t m = 0; m < group.names.size(); ++m) with_base[group.names[m]] = group.combos[k][m];
+        if (const auto e = make(with_base)) {
+          problems.push_back(where + "/zip/" + std::to_string(group_of.at(group.names[0])) + ": values " +
+                             value_text(with_base) + ": " + *e);
+          break;
+        }
+      }
+    }
+    if (const auto e = make(base); e && problems.size() == before)
+      problems.push_back(where + "/params: " + *e);
+    out.push_back(std::move(entry));
+  }
+  return out;
+}
+
+std::vector<SweepPlanner> parse_planners(const json& planners, std::vector<std::string>& problems) {
+  std::vector<SweepPlanner> out;
+  if (planners.is_null()) return {SweepPlanner{"astar", nullptr}};
+  if (!planners.is_array() || planners.empty()) {
+    problems.push_back(
+        "/planners: expected a non-empty list of {\"type\": name, \"params\": {...}} or names, got " +
+        value_text(planners));
+    return out;
+  }
+  const std::vector<std::string> known = planner_names();
+  std::set<json> seen;
+  for (std::size_t i = 0; i < planners.size(); ++i) {
+    const std::string where = "/planners/" + std::to_string(i);
+    const json& item = planners[i];
+    SweepPlanner p;
+    std::string name_path = where;
+    if (item.is_string()) {
+      p.name = item.get<std::string>();
+    } else if (item.is_object()) {
+      try {
+        require_known_keys(item, {"type", "params"}, where);
+      } catch (const ConfigError& e) {
+        problems.emplace_back(e.what());
+        continue;
+      }
+      name_path = where + "/type";
+      if (item.contains("type") && item["type"].is_string()) p.name = item["type"].get<std::string>();
+      if (item.contains("params") && !(item["params"].is_object() && item["params"].empty()))
+        p.params = item["params"];
+    } else {
+      problems.push_back(where + ": expected a planner name or {\"type\": name, \"params\": {...}}, got " +
+                         value_text(item));
+      continue;
+    }
+    if (std::find(known.begin(), known.end(), p.name) == known.end()) {
+      problems.push_back(name_path + ": unknown planner '" + p.name + "'; known: " + join_names(known));
+      continue;
+    }
+    if (const auto e = failure([&] { (void)make_planner(p.name, p.params, where); })) {
+      problems.push_back(*e);
+      continue;
+    }
+    if (!seen.insert(json{p.name, p.params}).second) {
+      problems.push_back(where + ": planner " + value_text(item) +
+                         " is listed twice; allowed: each planner once");
+      continue;
+    }
+    out.push_back(std::move(p));
+  }
+  return out;
+}
+
+std::vector<RobotVariant> parse_robots(const json& robot_in, std::vector<std::string>& problems) {
+  const json robot = robot_in.is_null() ? json::object() : robot_in;
+  if (!robot.is_object()) {
+    problems.push_back(
+        "/robot: expected an object (sensor, energy, battery, dock, start_heading, "
+        "allow_corner_cutting), got " +
+        value_text(robot));
+    return {};
+  }
+  // 1. Axes and their count.
+  const std::size_t before = problems.size();
+  std::vector<Axis> axes;
+  collect_robot_axes(robot, "", axes, problems);
+  if (problems.size() != before) return {};
+  std::uint64_t count = 1;
+  for (const auto& a : axes) {
+    if (__builtin_mul_overflow(count, static_cast<std::uint64_t>(a.values.size()), &count) ||
+        count > kMaxRobotVariants) {
+      problems.push_back("/robot: more than " + with_thousands(kMaxRobotVariants) +
+                         " robot variants; allowed: at most " + with_thousands(kMaxRobotVariants));
+      return {};
+    }
+  }
+  // 2. Each axis value alone (no other swept leaf) and with the first value of the others; a
+  //    value is bad when both fail. Then the first variant itself (values may interact).
+  json bare = robot;
+  json base = robot;
+  for (const auto& a : axes) {
+    const json::json_pointer p(a.name);
+    bare[p.parent_pointer()].erase(p.back());
+    base[p] = a.values[0];
+  }
+  auto check = [](const json& j) { return failure([&] { (void)robot_params_from_json(j, "/robot"); }); };
+  for (const auto& a : axes) {
+    std::vector<std::pair<std::size_t, std::string>> bad;
+    for (std::size_t k = 0; k < a.values.size(); ++k) {
+      json alone = bare;
+      alone[json::json_pointer(a.name)] = a.values[k];
+      const auto e = check(alone);
+      if (!e) continue;
+      json with_base = base;
+      with_base[json::json_pointer(a.name)] = a.values[k];
+      if (check(with_base)) bad.emplace_back(k, *e);
+    }
+    report_axis(a, bad, problems);
+  }
+  if (problems.size() != before) return {};
+  if (const auto e = check(base)) {
+    problems.push_back(*e);
+    return {};
+  }
+
+  // 3. Every variant, last axis fastest; each validated (values may interact).
+  std::vector<RobotVariant> out;
+  out.reserve(count);
+  std::vector<std::size_t> digits(axes.size(), 0);
+  std::set<json> seen;
+  for (std::uint64_t v = 0; v < count; ++v) {
+    std::uint64_t rest = v;
+    for (std::size_t a = axes.size(); a-- > 0;) {
+      digits[a] = static_cast<std::size_t>(rest % axes[a].values.size());
+      rest /= axes[a].values.size();
+    }
+    RobotVariant rv;
+    rv.json = base;
+    for (std::size_t a = 0; a < axes.size(); ++a)
+      rv.json[json::json_pointer(axes[a].name)] = axes[a].values[digits[a]];
+    rv.label = robot_label(axes, digits);
+    try {
+      rv.params = robot_params_from_json(rv.json, "/robot");
+    } catch (const ConfigError& e) {
+      problems.push_back("/robot: variant " + std::to_string(v) + " (" + rv.label + "): " + e.what());
+      return {};
+    }
+    if (!seen.insert(json(rv.params)).second) {
+      problems.push_back(
+          "/robot: variant " + std::to_string(v) + " (" + rv.label +
+          ") equals an earlier variant; allowed: distinct robots (equal ones would be the same runs)");
+      return {};
+    }
+    out.push_back(std::move(rv));
+  }
+  return out;
+}
+
+}  // namespace sweep_detail
+}  // namespace sweep
+}  // namespace fsweep

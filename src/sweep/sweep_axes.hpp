@@ -1,0 +1,54 @@
+#pragma once
+/// @file sweep_axes.hpp
+/// Internal to engine/sweep: parsing and validation of each axis of a sweep file (the format
+/// is documented in sweep_plan.hpp). Every function appends problems as "<JSON path>: message"
+/// to `problems` and returns what it could parse; callers throw when `problems` is not empty.
+
+#include <initializer_list>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "sweep/sweep_plan.hpp"
+
+namespace fsweep {
+inline namespace sweep {
+namespace sweep_detail {
+
+/// A JSON value for messages: its dump(), cut to about 80 characters.
+[[nodiscard]] std::string value_text(const nlohmann::json& v);
+
+/// `message` without a leading "<path>: " (ConfigErrors from the plugins repeat the path of
+/// the parameter; the sweep reports the more precise path of the offending value instead).
+[[nodiscard]] std::string strip_path(const std::string& message, const std::string& path);
+
+/// Path of value k of a sweep value written at `where`: `where` for a scalar, `where/k` for a
+/// list, `where/range` for a range.
+[[nodiscard]] std::string value_path(const nlohmann::json& written, const std::string& where, std::size_t k);
+
+/// The parts joined into one string (messages and paths built in loops).
+[[nodiscard]] std::string concat(std::initializer_list<std::string_view> parts);
+
+/// 12,345,678.
+[[nodiscard]] std::string with_thousands(std::uint64_t n);
+
+/// `maps`: loads every map (see sweep_plan.hpp).
+[[nodiscard]] std::vector<SweepMap> parse_maps(const nlohmann::json& maps,
+                                               std::vector<std::string>& problems);
+
+/// `strategies`: entries with their parameter groups, each axis value validated.
+[[nodiscard]] std::vector<StrategyEntry> parse_strategies(const nlohmann::json& strategies,
+                                                          std::vector<std::string>& problems);
+
+/// `planners` (null: the default [{"type": "astar"}]).
+[[nodiscard]] std::vector<SweepPlanner> parse_planners(const nlohmann::json& planners,
+                                                       std::vector<std::string>& problems);
+
+/// `robot` (null: {}): the cartesian product of its swept leaves, each variant validated.
+[[nodiscard]] std::vector<RobotVariant> parse_robots(const nlohmann::json& robot,
+                                                     std::vector<std::string>& problems);
+
+}  // namespace sweep_detail
+}  // namespace sweep
+}  // namespace fsweep

@@ -1,0 +1,369 @@
+/// @file sweep_plan.cpp
+/// SweepPlan: top-level validation of a sweep file, and the lazy decode of run indices.
+
+#include "sweep/sweep_plan.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+#include "core/config_error.hpp"
+#include "core/random.hpp"
+#include "strategies/registry.hpp"
+#include "sweep/sweep_axes.hpp"
+
+namespace fsweep {
+inline namespace sweep {
+namespace {
+
+using nlohmann::json;
+using sweep_detail::value_text;
+
+const std::vector<std::string> kTopLevelKeys = {"schema_version",  "name",        "description", "maps",
+                                                "strategies",      "planners",    "robot",       "sim",
+                                                "progress_step_m", "repetitions", "seed",        "output"};
+const std::vector<std::string> kObjectives = {"distance_to_final_coverage_m", "area_per_metre", "energy"};
+
+bool valid_name(const std::string& name) {
+  if (name.empty() || name == "." || name == "..") return false;
+  return std::all_of(name.begin(), name.end(), [](unsigned char c) {
+    return std::isalnum(c) != 0 || c == '_' || c == '.' || c == '-';
+  });
+}
+
+bool is_uint(const json& v) {
+  return v.is_number_unsigned() || (v.is_number_integer() && v.get<std::int64_t>() >= 0);
+}
+
+/// Duplicate keys of one object, found while parsing (nlohmann keeps only the last).
+class DuplicateKeyFinder {
+ public:
+  bool operator()(int /*depth*/, json::parse_event_t event, json& parsed) {
+    switch (event) {
+      case json::parse_event_t::object_start:
+        stack_.push_back(Frame{true, {}, {}, 0});
+        break;
+      case json::parse_event_t::array_start:
+        stack_.push_back(Frame{false, {}, {}, 0});
+        break;
+      case json::parse_event_t::key: {
+        Frame& top = stack_.back();
+        top.key = parsed.get<std::string>();
+        if (!top.keys.insert(top.key).second) {
+          problems_.push_back(path() + ": duplicate key '" + top.key +
+                              "'; allowed: each key once (JSON keeps only "
+                              "the last)");
+        }
+        break;
+      }
+      case json::parse_event_t::object_end:
+      case json::parse_event_t::array_end:
+        stack_.pop_back();
+        element_done();
+        break;
+      case json::parse_event_t::value:
+        element_done();
+        break;
+    }
+    return true;
+  }
+  [[nodiscard]] const std::vector<std::string>& problems() const { return problems_; }
+
+ private:
+  struct Frame {
+    bool object;
+    std::set<std::string> keys;
+    std::string key;
+    std::size_t index;
+  };
+  void element_done() {
+    if (!stack_.empty() && !stack_.back().object) ++stack_.back().index;
+  }
+  [[nodiscard]] std::string path() const {
+    std::string p;
+    for (const auto& f : stack_) p += "/" + (f.object ? f.key : std::to_string(f.index));
+    return p;
+  }
+  std::vector<Frame> stack_;
+  std::vector<std::string> problems_;
+};
+
+}  // namespace
+
+SweepPlan SweepPlan::from_json(const json& sweep, const std::string& file) { return build(sweep, file, {}); }
+
+SweepPlan SweepPlan::from_file(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    throw ConfigError(path, std::filesystem::exists(path, ec)
+                                ? "cannot read the sweep file: not a regular file"
+                                : "cannot read the sweep file: no such file");
+  }
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  if (!in) throw ConfigError(path, "cannot read the sweep file");
+  const std::string text = buffer.str();
+  auto finder = std::make_shared<DuplicateKeyFinder>();
+  json sweep;
+  try {
+    sweep = json::parse(text, [finder](int d, json::parse_event_t e, json& p) { return (*finder)(d, e, p); });
+  } catch (const json::parse_error& e) {
+    // e.byte: 1-based position of the offending character.
+    const std::size_t end = std::min<std::size_t>(e.byte == 0 ? 0 : e.byte - 1, text.size());
+    const auto line = 1 + std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(end), '\n');
+    const std::size_t last_newline = text.rfind('\n', end == 0 ? 0 : end - 1);
+    const std::size_t column = last_newline == std::string::npos || end == 0 ? end + 1 : end - last_newline;
+    std::string detail = e.what();
+    if (const std::size_t cut = detail.find(": ", detail.find("column")); cut != std::string::npos) {
+      detail = detail.substr(cut + 2);
+    }
+    throw ConfigError(path, "invalid JSON at line " + std::to_string(line) + ", column " +
+                                std::to_string(column) + ": " + detail);
+  }
+  return build(sweep, path, finder->problems());
+}
+
+SweepPlan SweepPlan::build(const json& sweep, const std::string& file, std::vector<std::string> problems) {
+  SweepPlan plan;
+  plan.source_ = sweep;
+  const json empty;
+  auto get = [&](const char* key) -> const json& {
+    return sweep.is_object() && sweep.contains(key) ? sweep.at(key) : empty;
+  };
+  if (!sweep.is_object())
+    problems.push_back("/: expected a JSON object with schema_version, name, maps, strategies");
+
+  // 1. Keys, version, name and scalars.
+  if (sweep.is_object()) {
+    for (const auto& [key, value] : sweep.items()) {
+      if (std::find(kTopLevelKeys.begin(), kTopLevelKeys.end(), key) == kTopLevelKeys.end()) {
+        problems.push_back(sweep_detail::concat(
+            {"/", key, ": unknown key '", key, "'; allowed: ", join_names(kTopLevelKeys)}));
+      }
+    }
+  }
+  const json& version = get("schema_version");
+  if (version.is_null()) {
+    problems.push_back("/schema_version: missing; allowed: " + std::to_string(kSweepSchemaVersion));
+  } else if (!version.is_number_integer() || version.get<std::int64_t>() != kSweepSchemaVersion) {
+    problems.push_back("/schema_version: value " + value_text(version) + " not supported; allowed: " +
+                       std::to_string(kSweepSchemaVersion) + " (the version this build reads)");
+  }
+  const json& name = get("name");
+  if (!name.is_string() || !valid_name(name.get<std::string>())) {
+    problems.push_back(
+        "/name: " + (name.is_null() ? std::string("missing") : "value " + value_text(name) + " not allowed") +
+        "; allowed: a string of letters, digits, '_', '.', '-' (it names the output folder)");
+  } else {
+    plan.name_ = name.get<std::string>();
+  }
+  if (const json& d = get("description"); d.is_string()) {
+    plan.description_ = d.get<std::string>();
+  } else if (!d.is_null()) {
+    problems.push_back("/description: expected a string, got " + value_text(d));
+  }
+  if (const json& r = get("repetitions"); !r.is_null()) {
+    if (!r.is_number_integer() || r.get<std::int64_t>() < 1 ||
+        r.get<std::int64_t>() > std::numeric_limits<int>::max()) {
+      problems.push_back("/repetitions: value " + value_text(r) + " not allowed; allowed: an integer >= 1");
+    } else {
+      plan.repetitions_ = r.get<int>();
+    }
+  }
+  if (const json& s = get("seed"); !s.is_null()) {
+    if (!is_uint(s)) {
+      problems.push_back("/seed: value " + value_text(s) + " not allowed; allowed: an integer in [0, 2^64)");
+    } else {
+      plan.seed_ = s.get<std::uint64_t>();
+    }
+  }
+  plan.output_dir_ = "results/" + plan.name_;
+  if (const json& o = get("output"); !o.is_null()) {
+    try {
+      require_known_keys(o, {"dir", "objective"}, "/output");
+      if (o.contains("dir")) {
+        if (!o["dir"].is_string() || o["dir"].get<std::string>().empty()) {
+          problems.push_back("/output/dir: value " + value_text(o["dir"]) +
+                             " not allowed; allowed: a non-empty path");
+        } else {
+          plan.output_dir_ = o["dir"].get<std::string>();
+        }
+      }
+      if (o.contains("objective")) {
+        const json& obj = o["objective"];
+        if (!obj.is_string() ||
+            std::find(kObjectives.begin(), kObjectives.end(), obj.get<std::string>()) == kObjectives.end()) {
+          problems.push_back("/output/objective: value " + value_text(obj) +
+                             " not allowed; allowed: " + join_names(kObjectives));
+        } else {
+          plan.objective_ = obj.get<std::string>();
+        }
+      }
+    } catch (const ConfigError& e) {
+      problems.emplace_back(e.what());
+    }
+  }
+  // 2. Loop settings; progress_step_m at the top level or in sim.
+  json sim = get("sim");
+  if (const json& step = get("progress_step_m"); !step.is_null()) {
+    if (sim.is_object() && sim.contains("progress_step_m")) {
+      problems.push_back("/progress_step_m: also given as /sim/progress_step_m; allowed: one of the two");
+    } else if (sim.is_null() || sim.is_object()) {
+      sim["progress_step_m"] = step;
+    }
+  }
+  try {
+    plan.sim_ = sim_params_from_json(sim, "/sim");
+  } catch (const ConfigError& e) {
+    problems.emplace_back(e.what());
+  }
+
+  // 3. The axes.
+  plan.maps_ = sweep_detail::parse_maps(get("maps"), problems);
+  plan.strategies_ = sweep_detail::parse_strategies(get("strategies"), problems);
+  plan.planners_ = sweep_detail::parse_planners(get("planners"), problems);
+  plan.robots_ = sweep_detail::parse_robots(get("robot"), problems);
+
+  // 4. Robot against maps: the dock is a free cell, the sensor sees the 8 neighbours.
+  std::set<std::pair<std::pair<int, int>, std::size_t>> docks_checked;
+  std::set<std::pair<double, double>> ranges_checked;
+  for (const auto& r : plan.robots_) {
+    for (std::size_t m = 0; m < plan.maps_.size(); ++m) {
+      const WorldMap& map = *plan.maps_[m].map;
+      if (r.params.dock && docks_checked.insert({{r.params.dock->x, r.params.dock->y}, m}).second &&
+          !map.is_free(*r.params.dock)) {
+        problems.push_back("/robot/dock: cell (" + std::to_string(r.params.dock->x) + ", " +
+                           std::to_string(r.params.dock->y) + ") is outside or occupied in map " +
+                           plan.maps_[m].label + "; allowed: a free cell of every map");
+      }
+      const double range = r.params.sensor.range_m;
+      if (ranges_checked.insert({range, map.resolution_m}).second &&
+          range / map.resolution_m < std::sqrt(2.0)) {
+        problems.push_back("/robot/sensor/range_m: value " + json(range).dump() +
+                           " m is below one diagonal cell of map " + plan.maps_[m].label +
+                           "; allowed: >= sqrt(2) x resolution (" +
+                           json(std::sqrt(2.0) * map.resolution_m).dump() + " m)");
+      }
+    }
+  }
+
+  // 5. Counts fit in 64 bits.
+  for (const auto& e : plan.strategies_) {
+    std::uint64_t total = 0;
+    if (__builtin_add_overflow(plan.strategy_offsets_.back(), e.count(), &total)) {
+      problems.push_back("/strategies: more than 2^64 strategy configurations");
+      break;
+    }
+    plan.strategy_offsets_.push_back(total);
+  }
+  if (problems.empty()) {
+    std::uint64_t n = 1;
+    bool overflow = false;
+    for (const std::uint64_t f :
+         {static_cast<std::uint64_t>(plan.maps_.size()), plan.strategy_offsets_.back(),
+          static_cast<std::uint64_t>(plan.planners_.size()), static_cast<std::uint64_t>(plan.robots_.size()),
+          static_cast<std::uint64_t>(plan.repetitions_)}) {
+      overflow = overflow || __builtin_mul_overflow(n, f, &n);
+    }
+    if (overflow) problems.push_back("/: the sweep has more than 2^64 runs; allowed: fewer");
+  }
+
+  if (!problems.empty()) {
+    const std::string where = file.empty() ? "sweep" : file;
+    std::string text = std::to_string(problems.size()) + (problems.size() == 1 ? " problem" : " problems") +
+                       " in the sweep:";
+    for (const auto& p : problems) text += sweep_detail::concat({"\n", where, ": ", p});
+    throw ConfigError(where, text);
+  }
+  return plan;
+}
+
+std::uint64_t SweepPlan::configuration_count() const {
+  return static_cast<std::uint64_t>(maps_.size()) * strategy_offsets_.back() *
+         static_cast<std::uint64_t>(planners_.size()) * static_cast<std::uint64_t>(robots_.size());
+}
+
+std::uint64_t SweepPlan::run_count() const {
+  return configuration_count() * static_cast<std::uint64_t>(repetitions_);
+}
+
+RunCoordinates SweepPlan::coordinates(std::uint64_t index) const {
+  if (index >= run_count()) {
+    throw std::out_of_range("run index " + std::to_string(index) + " out of range; the sweep has " +
+                            std::to_string(run_count()) + " runs");
+  }
+  RunCoordinates c;
+  c.index = index;
+  std::uint64_t rest = index;
+  const auto take = [&rest](std::uint64_t radix) {
+    const std::uint64_t digit = rest % radix;
+    rest /= radix;
+    return digit;
+  };
+  c.repetition = static_cast<int>(take(static_cast<std::uint64_t>(repetitions_)));
+  c.robot = static_cast<std::size_t>(take(robots_.size()));
+  c.planner = static_cast<std::size_t>(take(planners_.size()));
+  const std::uint64_t strategy = take(strategy_offsets_.back());
+  c.map = static_cast<std::size_t>(rest);
+  // strategy_offsets_ = [0, n0, n0 + n1, ...]: the entry is the last offset <= strategy.
+  const auto it = std::upper_bound(strategy_offsets_.begin(), strategy_offsets_.end(), strategy);
+  c.strategy_entry = static_cast<std::size_t>(it - strategy_offsets_.begin() - 1);
+  c.strategy_combo = strategy - strategy_offsets_[c.strategy_entry];
+  return c;
+}
+
+RunSpec SweepPlan::run_spec(std::uint64_t index) const {
+  const RunCoordinates c = coordinates(index);
+  RunSpec spec;
+  spec.map = maps_[c.map].map;
+  const StrategyEntry& entry = strategies_[c.strategy_entry];
+  spec.strategy = entry.name;
+  spec.strategy_params = entry.params_at(c.strategy_combo);
+  spec.planner = planners_[c.planner].name;
+  spec.planner_params = planners_[c.planner].params;
+  spec.robot = robots_[c.robot].params;
+  spec.sim = sim_;
+  spec.seed = derive_seed(seed_, "repetition/" + std::to_string(c.repetition));
+  return spec;
+}
+
+json SweepPlan::run_key_json(std::uint64_t index) const {
+  const RunCoordinates c = coordinates(index);
+  const RunSpec spec = run_spec(index);
+  json robot = spec.robot;
+  if (!spec.robot.dock) robot["dock"] = json{spec.map->start.x, spec.map->start.y};
+  return json{{"map", maps_[c.map].spec},
+              {"strategy", spec.strategy},
+              {"strategy_params", resolved_strategy_params(spec.strategy, spec.strategy_params)},
+              {"planner", spec.planner},
+              {"planner_params", spec.planner_params},
+              {"robot", robot},
+              {"sim", spec.sim},
+              {"seed", spec.seed}};
+}
+
+std::string SweepPlan::run_key(std::uint64_t index) const {
+  char buf[17];
+  std::snprintf(buf, sizeof(buf), "%016llx",
+                static_cast<unsigned long long>(fnv1a(run_key_json(index).dump())));
+  return buf;
+}
+
+std::vector<std::pair<std::string, std::uint64_t>> SweepPlan::axes() const {
+  return {{"maps", maps_.size()},
+          {"strategy configurations", strategy_offsets_.back()},
+          {"planners", planners_.size()},
+          {"robots", robots_.size()},
+          {"repetitions", static_cast<std::uint64_t>(repetitions_)}};
+}
+
+}  // namespace sweep
+}  // namespace fsweep

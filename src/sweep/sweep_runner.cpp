@@ -1,0 +1,302 @@
+#include "sweep/sweep_runner.hpp"
+
+#include <fcntl.h>
+#include <oneapi/tbb/global_control.h>
+#include <oneapi/tbb/info.h>
+#include <oneapi/tbb/parallel_pipeline.h>
+#include <oneapi/tbb/task_arena.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <optional>
+
+#include "core/config_error.hpp"
+#include "report/aggregate.hpp"
+#include "sweep/csv_journal.hpp"
+#include "sweep/done_runs.hpp"
+#include "sweep/manifest.hpp"
+#include "sweep/progress_meter.hpp"
+#include "sweep/sweep_table.hpp"
+
+namespace fsweep {
+inline namespace sweep {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+/// Runs in flight or waiting for the in-order writer, per thread.
+constexpr std::size_t kTokensPerThread = 16;
+
+constexpr const char* kOutputFiles[] = {"runs.csv",    "progress.csv", "manifest.json",
+                                        "summary.csv", "best.csv",     "progress_summary.csv"};
+
+/// Set by SIGINT/SIGTERM while run_sweep runs (a signal handler can only reach a global).
+std::atomic<bool> stop_requested{false};  // NOLINT(cppcoreguidelines-avoid-non-const-global-variables)
+static_assert(std::atomic<bool>::is_always_lock_free);
+
+extern "C" void on_stop_signal(int /*signal*/) { stop_requested.store(true); }
+
+/// Installs the stop handlers for its lifetime. SA_RESETHAND: a second signal kills.
+class StopSignals {
+ public:
+  StopSignals() {
+    stop_requested.store(false);
+    struct sigaction sa {};
+    sa.sa_handler = on_stop_signal;
+    sigemptyset(&sa.sa_mask);
+    sa.sa_flags = SA_RESETHAND | SA_RESTART;
+    ::sigaction(SIGINT, &sa, &old_int_);
+    ::sigaction(SIGTERM, &sa, &old_term_);
+  }
+  StopSignals(const StopSignals&) = delete;
+  StopSignals& operator=(const StopSignals&) = delete;
+  ~StopSignals() {
+    ::sigaction(SIGINT, &old_int_, nullptr);
+    ::sigaction(SIGTERM, &old_term_, nullptr);
+  }
+
+ private:
+  struct sigaction old_int_ {};
+  struct sigaction old_term_ {};
+};
+
+/// An exclusive flock on `<dir>/.fsweep.lock` for its lifetime.
+class DirectoryLock {
+ public:
+  explicit DirectoryLock(const std::string& dir) {
+    const std::string path = dir + "/.fsweep.lock";
+    fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if (fd_ < 0) throw ConfigError(dir, "cannot create " + path + " (is the output directory writable?)");
+    if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+      ::close(fd_);
+      throw ConfigError(dir, "another fsweep run is writing to this directory");
+    }
+  }
+  DirectoryLock(const DirectoryLock&) = delete;
+  DirectoryLock& operator=(const DirectoryLock&) = delete;
+  ~DirectoryLock() { ::close(fd_); }
+
+ private:
+  int fd_ = -1;
+};
+
+std::string output_directory(const SweepPlan& plan, const RunnerOptions& o) {
+  std::string dir = o.out_dir.empty() ? plan.output_dir() : o.out_dir;
+  if (dir.empty()) dir = ".";
+  if (o.shard_count > 1) {
+    dir += "/shard-" + std::to_string(o.shard_index) + "-of-" + std::to_string(o.shard_count);
+  }
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec || !fs::is_directory(dir))
+    throw ConfigError(dir, "cannot create the output directory: " + ec.message());
+  return dir;
+}
+
+/// Runs of the shard: indices i < n with i % count == index.
+std::uint64_t shard_size(std::uint64_t n, std::uint64_t index, std::uint64_t count) {
+  return n > index ? (n - index - 1) / count + 1 : 0;
+}
+
+/// What survives of earlier invocations: the done runs, after repairing both files.
+struct Resumed {
+  DoneRuns done;
+  std::uint64_t failed = 0;  ///< done rows whose end_reason is `error`
+};
+
+Resumed repair_outputs(const SweepTable& table, CsvJournal& runs, CsvJournal& progress) {
+  Resumed r;
+  const std::size_t fields = table.columns().size();
+  const std::size_t key_col = table.column("run_key");
+  const std::size_t index_col = table.column("run_index");
+  const std::size_t end_col = table.column("end_reason");
+  const std::string error(to_string(EndReason::Error));
+  (void)runs.repair([&](const std::vector<std::string>& f) {
+    if (f.size() != fields) return false;
+    const auto key = parse_run_key(f[key_col]);
+    const auto index = parse_run_index(f[index_col]);
+    if (!key || !index) return false;
+    r.done.add(*key, *index);
+    if (f[end_col] == error) ++r.failed;
+    return true;
+  });
+  r.done.seal();
+  (void)progress.repair([&](const std::vector<std::string>& f) {
+    if (f.size() != SweepTable::kProgressFields) return false;
+    const auto key = parse_run_key(f[1]);
+    const auto index = parse_run_index(f[0]);
+    return key && index && r.done.contains(*key, *index);
+  });
+  return r;
+}
+
+/// One run moving through the pipeline.
+struct Job {
+  std::uint64_t index = 0;
+  std::string key;  // empty: computed by the worker
+  RunRows rows;
+};
+
+}  // namespace
+
+RunnerReport run_sweep(const SweepPlan& plan, const RunnerOptions& options) {
+  // 1. Options, directory, lock, previous outputs.
+  if (options.threads < 0)
+    throw ConfigError("--threads", "must be >= 0 (0: all cores), got " + std::to_string(options.threads));
+  if (options.shard_count == 0 || options.shard_index >= options.shard_count) {
+    throw ConfigError("--shard", "must be i/n with 0 <= i < n, got " + std::to_string(options.shard_index) +
+                                     "/" + std::to_string(options.shard_count));
+  }
+  const int threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
+  const auto wall_start = Clock::now();
+  RunnerReport report;
+  report.threads = threads;
+  report.out_dir = output_directory(plan, options);
+  const std::string& dir = report.out_dir;
+  const DirectoryLock lock(dir);
+
+  // Temp files of a runner killed while replacing a file ("runs.csv.tmp.<pid>").
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    const std::string name = entry.path().filename().string();
+    for (const char* f : {"runs.csv", "progress.csv", "manifest.json"}) {
+      if (name.starts_with(std::string(f) + ".tmp.")) fs::remove(entry.path());
+    }
+  }
+
+  const std::string manifest_path = dir + "/manifest.json";
+  const std::string hash = sweep_hash(plan.source());
+  if (options.fresh) {
+    for (const char* f : kOutputFiles) fs::remove(dir + "/" + f);
+  } else if (const auto old = read_manifest_hash(manifest_path); old && *old != hash) {
+    throw ConfigError(dir, "holds the outputs of a different sweep file (hash " + *old + ", this one " +
+                               hash + "); use --fresh to start over, or another output directory");
+  }
+
+  const SweepTable table(plan);
+  CsvJournal runs(dir + "/runs.csv", table.header());
+  CsvJournal progress(dir + "/progress.csv", SweepTable::progress_header());
+  Resumed resumed = repair_outputs(table, runs, progress);
+
+  ManifestInfo info;
+  info.sweep_file = options.sweep_file;
+  info.threads = threads;
+  info.shard_index = options.shard_index;
+  info.shard_count = options.shard_count;
+  info.start_utc = utc_now_iso8601();
+  info.status = "running";
+  info.runs.total = shard_size(plan.run_count(), options.shard_index, options.shard_count);
+  info.runs.done = resumed.done.size();
+  info.runs.failed = resumed.failed;
+  write_manifest(manifest_path, manifest_json(plan, info));
+  report.total = info.runs.total;
+
+  // 2. The pipeline: dispatch in index order (skipping done runs), simulate in parallel, write
+  //    in index order.
+  ProgressMeter meter(report.total, "runs", options.progress);
+  std::atomic<std::uint64_t> skipped{0};
+  std::uint64_t next = options.shard_index;
+  bool announced_stop = false;
+  const auto flush_both = [&] {
+    progress.flush();  // progress rows first: a runs.csv row marks its run as done
+    runs.flush();
+  };
+
+  auto dispatch = [&](tbb::flow_control& fc) -> Job {
+    while (true) {
+      if (stop_requested.load()) {
+        if (!announced_stop && options.progress) {
+          std::fputs("\nfsweep: stopping: finishing the runs in flight (press Ctrl-C again to abort)\n",
+                     stderr);
+        }
+        announced_stop = true;
+        fc.stop();
+        return {};
+      }
+      if (next >= plan.run_count()) {
+        fc.stop();
+        return {};
+      }
+      Job job;
+      job.index = next;
+      next += options.shard_count;
+      if (resumed.done.untaken() > 0) {  // run keys in this serial stage only while resuming
+        job.key = plan.run_key(job.index);
+        const auto key = parse_run_key(job.key);
+        if (key && resumed.done.take(*key)) {
+          skipped.fetch_add(1);
+          continue;
+        }
+      }
+      return job;
+    }
+  };
+  auto simulate_run = [&](Job job) -> Job {
+    if (job.key.empty()) job.key = plan.run_key(job.index);
+    job.rows = table.run(plan, job.index, job.key);
+    return job;
+  };
+  auto write = [&](const Job& job) {
+    progress.append(job.rows.progress_rows);
+    runs.append(job.rows.run_row);
+    ++report.ran;
+    if (job.rows.failed) ++report.failed;
+    flush_both();  // two write(2) calls per run: nothing next to a simulation
+    const std::uint64_t s = skipped.load();
+    meter.update(s + report.ran, s);
+  };
+
+  try {
+    const StopSignals signals;  // only while dispatching: Ctrl-C during aggregation kills
+    // More threads than cores: oneTBB caps its workers at the core count unless told.
+    std::optional<tbb::global_control> allow;
+    if (threads > tbb::info::default_concurrency()) {
+      allow.emplace(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
+    }
+    tbb::task_arena arena(threads);
+    arena.execute([&] {
+      tbb::parallel_pipeline(kTokensPerThread * static_cast<std::size_t>(threads),
+                             tbb::make_filter<void, Job>(tbb::filter_mode::serial_in_order, dispatch) &
+                                 tbb::make_filter<Job, Job>(tbb::filter_mode::parallel, simulate_run) &
+                                 tbb::make_filter<Job, void>(tbb::filter_mode::serial_in_order, write));
+    });
+    flush_both();
+  } catch (...) {
+    info.status = "failed";
+    info.end_utc = utc_now_iso8601();
+    try {
+      flush_both();
+      write_manifest(manifest_path, manifest_json(plan, info));
+    } catch (...) {  // NOLINT(bugprone-empty-catch): the first error is the one to report
+    }
+    throw;
+  }
+
+  // 3. Counts, manifest, aggregation.
+  report.skipped = skipped.load();
+  meter.finish(report.skipped + report.ran, report.skipped);
+  report.interrupted = stop_requested.load() && report.skipped + report.ran < report.total;
+  report.wall_s = std::chrono::duration<double>(Clock::now() - wall_start).count();
+  report.runs_per_s = report.wall_s > 0 ? static_cast<double>(report.ran) / report.wall_s : 0.0;
+
+  info.runs.skipped = report.skipped;
+  info.runs.ran = report.ran;
+  info.runs.done = report.skipped + report.ran;
+  info.runs.failed = resumed.failed + report.failed;
+  info.end_utc = utc_now_iso8601();
+  info.wall_s = report.wall_s;
+  info.runs_per_s = report.runs_per_s;
+  info.status = report.interrupted ? "interrupted" : "complete";
+  write_manifest(manifest_path, manifest_json(plan, info));
+
+  if (!report.interrupted && options.shard_count == 1) aggregate(dir, {});
+  return report;
+}
+
+}  // namespace sweep
+}  // namespace fsweep

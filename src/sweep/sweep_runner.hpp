@@ -1,0 +1,112 @@
+#pragma once
+/// @file sweep_runner.hpp
+/// Runs a SweepPlan in parallel (oneTBB) and writes its outputs, resumably.
+///
+/// Files in the output directory (the contract between runner, aggregation, merge and plots):
+/// - `runs.csv`: header `run_index,run_key,map_class,strategy_label,<config columns>,seed,<metric columns>,
+///   optimal_distance_m,competitive_ratio`; one row per run, in run-index order. `map_class` is
+///   SweepMap::map_class, `strategy_label` the strategy entry's label followed by "+rr", "+seg"
+///   for each heuristic the run uses (src/strategies/heuristics.hpp; "cf+rr+seg"). Config columns
+///   are the union over the sweep of run_table.hpp's config_columns() (a column a run does not
+///   have is empty; see sweep_table.hpp); metric columns are run_table.hpp's metric_columns().
+///   The last two columns are empty where no optimum is known: they hold the star-pattern
+///   optimum d* = pi r^2 / (2 r_s) (competitive.hpp) and distance_m / d* for runs on a `free`
+///   map with a finite battery, r = battery capacity / energy per metre of straight travel
+///   (per_metre + per_cell / resolution), r_s = sensor range_m.
+///   A run that fails (planner error, step cap, a plugin throwing ConfigError) is a row with its
+///   end_reason and end_detail; an exception leaves the metric cells empty. It never stops the
+///   sweep.
+/// - `progress.csv`: `run_index,run_key,distance_m,explored_area_m2,coverage,energy`, the runs'
+///   progress samples, grouped by run in run-index order. A run's progress rows reach the file
+///   before its runs.csv row, so a run counts as done exactly when its runs.csv row is complete.
+/// - `manifest.json` (manifest.hpp): the sweep file's contents and FNV-1a hash, run counts
+///   (total, done, skipped as already done, ran, failed), git revision, compiler, library
+///   versions, host, CPU model, threads, start and end time (UTC, ISO 8601), wall seconds,
+///   runs/s, status ("running" while running, then "complete", "interrupted" or "failed").
+///   Written at the start and at the end, each time through a temp file and rename.
+/// - `summary.csv`, `progress_summary.csv`, `best.csv`: written by aggregate.hpp after a
+///   complete, unsharded run.
+/// - `.fsweep.lock`: an flock held while running; a second runner on the same directory is
+///   refused (the kernel drops the lock when the process dies, even by SIGKILL). Temp files a
+///   killed runner left (`runs.csv.tmp.<pid>`, ...) are deleted on start.
+///
+/// Determinism: workers run whole runs; rows pass through a bounded reorder stage (a oneTBB
+/// parallel_pipeline whose serial in-order output stage writes them) and are written in
+/// run-index order, so the files are byte-identical for any thread count (timing columns
+/// aside: `*_time_s` columns measure this machine and are excluded from comparisons). At most
+/// 16 x threads runs are in flight or waiting to be written, whatever the sweep's size.
+///
+/// Durability: each run's rows are written (write(2), no fsync) as soon as the in-order writer
+/// reaches it, its progress rows before its runs.csv row. SIGKILL at any moment loses only the
+/// runs in flight and leaves at most a torn last record in each file.
+///
+/// Resume: on start, runs.csv must have this sweep's header (else ConfigError: use `fresh`);
+/// a torn last record (no final newline) and records with the wrong field count are cut off.
+/// The done runs are the (run_key, run_index) pairs of its rows, kept as 16 bytes per row.
+/// progress.csv is cut to complete records and loses the rows of runs without a runs.csv row
+/// (truncated when they form its tail, rewritten through a temp file otherwise). Runs are then
+/// dispatched in index order, skipping a run whose key is among the done ones (each done row
+/// skips one run: a sweep listing the same configuration twice keeps both). Because a sweep is
+/// always written in index order, the done runs form a prefix of the run order and the resumed
+/// files are byte-identical to an uninterrupted run's. Were they not a prefix (rows written by
+/// another tool, or rows of keys this sweep does not have, which are kept), every run would
+/// still appear exactly once but the order of rows would differ. If the sweep file's hash
+/// differs from the manifest's, the runner refuses unless `fresh`.
+///
+/// Signals: SIGINT/SIGTERM stop dispatching new runs; runs in flight finish and are written,
+/// the files are flushed, the manifest says "interrupted", and run_sweep returns with
+/// `interrupted` set. A second SIGINT/SIGTERM kills the process (default action; the files stay
+/// repairable). The previous handlers are restored on return. Not reentrant: one run_sweep per
+/// process at a time.
+///
+/// Sharding (DESIGN.md 7): shard i of n runs the indices with index % n == i and writes to
+/// `<out>/shard-i-of-n/` with the whole sweep's header, so shards concatenate row-wise; each
+/// shard resumes on its own; aggregation is left to the merge.
+
+#include <cstdint>
+#include <string>
+
+#include "sweep/sweep_plan.hpp"
+
+namespace fsweep {
+inline namespace sweep {
+
+struct RunnerOptions {
+  /// Worker threads; 0 = all cores (oneTBB's default concurrency). Negative: ConfigError.
+  int threads = 0;
+  /// Delete previous outputs (runs.csv, progress.csv, manifest.json, summary.csv,
+  /// progress_summary.csv, best.csv; nothing else) and start over.
+  bool fresh = false;
+  /// Output directory; empty = the plan's. Created when missing.
+  std::string out_dir;
+  /// Path of the sweep file, recorded in the manifest (may be empty).
+  std::string sweep_file;
+  /// Progress on stderr: a bar with runs done, runs/s and ETA on a terminal, a line every few
+  /// seconds otherwise; false = silent.
+  bool progress = true;
+  /// Shard i of n (DESIGN.md 7): only runs with index % n == i. n = 1: all runs. n = 0 or
+  /// i >= n: ConfigError.
+  std::uint64_t shard_index = 0;
+  std::uint64_t shard_count = 1;
+};
+
+struct RunnerReport {
+  std::uint64_t total = 0;    ///< runs in the sweep (or shard)
+  std::uint64_t skipped = 0;  ///< already in the outputs
+  std::uint64_t ran = 0;      ///< simulated now
+  std::uint64_t failed = 0;   ///< of those simulated now, ended with EndReason::Error
+  bool interrupted = false;   ///< stopped by a signal before every run was done
+  int threads = 0;            ///< worker threads used
+  double wall_s = 0.0;
+  double runs_per_s = 0.0;  ///< ran / wall_s
+  std::string out_dir;      ///< where the files are (with the shard subdirectory)
+};
+
+/// Runs the plan. Throws ConfigError for unusable outputs (unwritable directory, another runner
+/// on it, a sweep file changed since the outputs were made without `fresh`, runs.csv with other
+/// columns) and for bad options; write errors during the run also throw ConfigError naming the
+/// file (the manifest then says "failed").
+[[nodiscard]] RunnerReport run_sweep(const SweepPlan& plan, const RunnerOptions& options);
+
+}  // namespace sweep
+}  // namespace fsweep

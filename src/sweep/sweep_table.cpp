@@ -1,0 +1,176 @@
+#include "sweep/sweep_table.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "sim/competitive.hpp"
+#include "sim/run_table.hpp"
+#include "sim/simulation.hpp"
+#include "strategies/heuristics.hpp"
+
+namespace fsweep {
+inline namespace sweep {
+namespace {
+
+constexpr const char* kProgressHeader = "run_index,run_key,distance_m,explored_area_m2,coverage,energy";
+
+std::string join_record(const std::vector<std::string>& fields) {
+  std::string s;
+  for (std::size_t i = 0; i < fields.size(); ++i) {
+    if (i > 0) s += ',';
+    s += csv_field(fields[i]);
+  }
+  s += '\n';
+  return s;
+}
+
+/// The star-pattern optimum d* (competitive.hpp) for a run, or NaN where it does not apply:
+/// free space, a finite battery, an energy model that charges travel only (no stop or turn
+/// costs), and the whole disc of radius r/2 around the dock inside the free part of the map
+/// (the free generator's interior is a rectangle, so its four extreme cells decide);
+/// r = capacity / energy per metre of straight travel, r_s = sensor range.
+double optimal_distance_m(const SweepPlan& plan, std::uint64_t index, const RunSpec& spec) {
+  const std::size_t map = plan.coordinates(index).map;
+  if (!plan.maps().at(map).free_space || !std::isfinite(spec.robot.battery_capacity)) return std::nan("");
+  const EnergyModel& e = spec.robot.energy;
+  const double per_metre = e.per_metre + e.per_cell / spec.map->resolution_m;
+  if (!(per_metre > 0.0) || !(spec.robot.sensor.range_m > 0.0)) return std::nan("");
+  // The star pattern is optimal only when travel is all that costs energy, and only while the
+  // disc of radius r/2 the robot can reach lies inside the free map.
+  if (e.per_stop != 0.0 ||
+      std::any_of(e.per_turn.begin(), e.per_turn.end(), [](double t) { return t != 0.0; })) {
+    return std::nan("");
+  }
+  const double range_m = spec.robot.battery_capacity / per_metre;
+  const Cell dock = spec.robot.dock.value_or(spec.map->start);
+  const int reach = static_cast<int>(std::ceil(range_m / 2.0 / spec.map->resolution_m));
+  for (const Cell c : {Cell{dock.x - reach, dock.y}, Cell{dock.x + reach, dock.y},
+                       Cell{dock.x, dock.y - reach}, Cell{dock.x, dock.y + reach}}) {
+    if (!spec.map->is_free(c)) return std::nan("");
+  }
+  return star_pattern_optimum_m(range_m, spec.robot.sensor.range_m);
+}
+
+}  // namespace
+
+std::uint64_t representative_run(const SweepPlan& plan, std::size_t strategy_entry, std::size_t planner,
+                                 std::size_t robot) {
+  const auto axes = plan.axes();
+  if (axes.size() != 5) throw std::logic_error("SweepPlan::axes(): expected 5 axes");
+  const std::uint64_t planners = axes[2].second;
+  const std::uint64_t robots = axes[3].second;
+  const auto reps = static_cast<std::uint64_t>(plan.repetitions());
+  std::uint64_t strategy = 0;
+  for (std::size_t e = 0; e < strategy_entry; ++e) strategy += plan.strategies()[e].count();
+  const std::uint64_t index = ((strategy * planners + planner) * robots + robot) * reps;
+  const RunCoordinates c = plan.coordinates(index);
+  if (c.strategy_entry != strategy_entry || c.strategy_combo != 0 || c.planner != planner ||
+      c.robot != robot || c.map != 0 || c.repetition != 0 || strategy >= axes[1].second) {
+    throw std::logic_error("SweepPlan run order differs from the documented one");
+  }
+  return index;
+}
+
+SweepTable::SweepTable(const SweepPlan& plan) {
+  // 1. Config columns: each representative's list merged in, a new column going right after
+  //    the column that precedes it in that list (so strategy.w1..w4 join strategy.distance).
+  std::vector<std::string> config;
+  const auto axes = plan.axes();
+  if (plan.run_count() > 0) {
+    for (std::size_t e = 0; e < plan.strategies().size(); ++e) {
+      for (std::size_t p = 0; p < axes.at(2).second; ++p) {
+        for (std::size_t r = 0; r < axes.at(3).second; ++r) {
+          std::size_t cursor = 0;  // insertion point
+          for (const auto& [name, value] : config_columns(plan.run_spec(representative_run(plan, e, p, r)))) {
+            if (name == "seed") continue;
+            const auto it = std::find(config.begin(), config.end(), name);
+            if (it != config.end()) {
+              cursor = static_cast<std::size_t>(it - config.begin()) + 1;
+            } else {
+              config.insert(config.begin() + static_cast<std::ptrdiff_t>(cursor), name);
+              ++cursor;
+            }
+          }
+        }
+      }
+    }
+  }
+  // 2. The whole row.
+  auto add = [this](const std::string& name) {
+    if (position_.emplace(name, columns_.size()).second) columns_.push_back(name);
+  };
+  add("run_index");
+  add("run_key");
+  add("map_class");
+  add("strategy_label");
+  for (const auto& name : config) add(name);
+  add("seed");
+  for (const auto& [name, value] : metric_columns(RunResult{})) add(name);
+  add("optimal_distance_m");
+  add("competitive_ratio");
+}
+
+std::string SweepTable::header() const {
+  std::string s;
+  for (std::size_t i = 0; i < columns_.size(); ++i) s += (i > 0 ? "," : "") + csv_field(columns_[i]);
+  return s;
+}
+
+std::string SweepTable::progress_header() { return kProgressHeader; }
+
+std::size_t SweepTable::column(std::string_view name) const { return position_.at(std::string(name)); }
+
+RunRows SweepTable::run(const SweepPlan& plan, std::uint64_t index, const std::string& run_key) const {
+  RunRows out;
+  std::vector<std::string> fields(columns_.size());
+  fields[0] = std::to_string(index);
+  fields[1] = run_key;
+  const auto set = [&](const std::string& name, std::string value) {
+    const auto it = position_.find(name);
+    if (it == position_.end()) {
+      throw std::runtime_error("column '" + name +
+                               "' of this run is not in the sweep's runs.csv header "
+                               "(the representative run of its strategy entry lacks it)");
+    }
+    fields[it->second] = std::move(value);
+  };
+  try {
+    const RunSpec spec = plan.run_spec(index);
+    const RunCoordinates at = plan.coordinates(index);
+    set("map_class", plan.maps().at(at.map).map_class);
+    // The entry's label, plus "+rr", "+seg" for the heuristics on (src/strategies/heuristics.hpp).
+    const std::string heuristics =
+        heuristics_text(heuristics_from_json(spec.strategy_params, "strategy/params"));
+    set("strategy_label",
+        plan.strategies().at(at.strategy_entry).label + (heuristics.empty() ? "" : "+" + heuristics));
+    for (auto& [name, value] : config_columns(spec)) set(name, std::move(value));
+    const RunResult result = simulate(spec);
+    for (auto& [name, value] : metric_columns(result)) set(name, std::move(value));
+    const double optimum = optimal_distance_m(plan, index, spec);
+    if (!std::isnan(optimum)) {
+      set("optimal_distance_m", format_number(optimum));
+      set("competitive_ratio", format_number(result.metrics.distance_m / optimum));
+    }
+    out.failed = result.end == EndReason::Error;
+    const std::string prefix = fields[0] + ',' + csv_field(run_key) + ',';
+    for (const ProgressSample& s : result.progress) {
+      out.progress_rows += prefix + format_number(s.distance_m) + ',' + format_number(s.explored_area_m2) +
+                           ',' + format_number(s.coverage) + ',' + format_number(s.energy) + '\n';
+    }
+  } catch (const std::exception& e) {
+    // The run failed before producing a result: the metric cells stay empty.
+    for (const auto& [name, value] : metric_columns(RunResult{})) fields[position_.at(name)].clear();
+    fields[position_.at("optimal_distance_m")].clear();
+    fields[position_.at("competitive_ratio")].clear();
+    fields[position_.at("end_reason")] = std::string(to_string(EndReason::Error));
+    fields[position_.at("end_detail")] = e.what();
+    out.progress_rows.clear();
+    out.failed = true;
+  }
+  out.run_row = join_record(fields);
+  return out;
+}
+
+}  // namespace sweep
+}  // namespace fsweep

@@ -1,0 +1,68 @@
+#pragma once
+/// @file sweep_table.hpp
+/// The columns of a sweep's runs.csv and progress.csv (layout in sweep_runner.hpp), and one
+/// run turned into its rows.
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include "sweep/sweep_plan.hpp"
+
+namespace fsweep {
+inline namespace sweep {
+
+/// One run's output, formatted.
+struct RunRows {
+  /// The runs.csv record, with its newline.
+  std::string run_row;
+  /// The run's progress.csv records (zero or more), each with its newline.
+  std::string progress_rows;
+  /// The run ended with EndReason::Error (or threw).
+  bool failed = false;
+};
+
+/// runs.csv columns of one sweep: `run_index, run_key`, the union of config_columns() (seed
+/// last), the metric columns, `optimal_distance_m, competitive_ratio`.
+///
+/// The union is taken over one representative run per (strategy entry, planner, robot variant),
+/// in that order: the config columns depend on those and not on the map, the parameter values or
+/// the repetition, so the header costs a few decodes even for 10^9 runs. Order: the first
+/// representative's columns; a column first seen later goes right after the column preceding it
+/// in that representative's list (so one strategy's parameters stay together). A
+/// run whose configuration has a column outside the union (a strategy parameter whose nested
+/// keys change with its value) is recorded as an `error` row saying so.
+class SweepTable {
+ public:
+  explicit SweepTable(const SweepPlan& plan);
+
+  [[nodiscard]] const std::vector<std::string>& columns() const { return columns_; }
+  /// The runs.csv header line (no newline).
+  [[nodiscard]] std::string header() const;
+  /// The progress.csv header line (no newline).
+  [[nodiscard]] static std::string progress_header();
+  /// Number of progress.csv fields.
+  static constexpr std::size_t kProgressFields = 6;
+  /// Position of a runs.csv column; throws std::out_of_range for an unknown name.
+  [[nodiscard]] std::size_t column(std::string_view name) const;
+
+  /// Simulates run `index` of `plan` (key `run_key`) and formats its rows. Never throws for a
+  /// failing run: an exception from the plan, the plugins or the simulation becomes an `error`
+  /// row with the message as end_detail and the metric cells empty. Thread-safe (const).
+  [[nodiscard]] RunRows run(const SweepPlan& plan, std::uint64_t index, const std::string& run_key) const;
+
+ private:
+  std::vector<std::string> columns_;
+  std::unordered_map<std::string, std::size_t> position_;
+};
+
+/// Index of the run at the given axis positions (repetition 0): the inverse of
+/// SweepPlan::coordinates() for the header's representatives. Throws std::logic_error when the
+/// plan's run order is not the documented one.
+[[nodiscard]] std::uint64_t representative_run(const SweepPlan& plan, std::size_t strategy_entry,
+                                               std::size_t planner, std::size_t robot);
+
+}  // namespace sweep
+}  // namespace fsweep

@@ -1,0 +1,108 @@
+#pragma once
+/// @file frontiers.hpp
+/// Frontier cells, maintained incrementally, and their clusters.
+///
+/// Definition: a frontier cell is a known-free cell with an unknown 8-neighbour that is not
+/// sealed off from it. A diagonal neighbour is sealed when both cells beside the diagonal are
+/// occupied: then neither the sensor (see sensor.hpp) nor the robot can get through, and such
+/// a neighbour alone does not make a frontier. Every frontier cell therefore has an unknown
+/// neighbour that a scan from the cell itself can see.
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "world/grid.hpp"
+#include "world/known_map.hpp"
+
+namespace fsweep {
+inline namespace world {
+
+/// True when cell `index` of `known` is a frontier cell (the definition above, from scratch).
+[[nodiscard]] bool is_frontier_cell(const KnownMap& known, int index);
+
+/// A group of frontier cells: a connected component (see FrontierMap::clusters), or a piece of
+/// one after splitting.
+struct FrontierCluster {
+  /// Member cell indices, ascending.
+  std::vector<int> cells;
+  /// The member nearest to the members' centroid (ties: lowest index).
+  int representative = -1;
+  /// Centroid of the member cell centres (cells).
+  double centroid_x = 0.0;
+  double centroid_y = 0.0;
+  /// Length (metres): member count times resolution.
+  double length_m = 0.0;
+};
+
+/// The set of frontier cells of a KnownMap, kept up to date from the cells each scan reveals.
+/// Copyable value type. The frontier cells are kept in a list as well as flagged per cell, so
+/// that cells() and clusters() cost O(F log F) in the number F of frontier cells, not O(map).
+///
+/// Not thread-safe on one object: cells() and clusters() are const but reorganise that list
+/// (sorting cells added since the last call, dropping removed ones) and clusters() uses
+/// per-cell scratch marks, so no member may run concurrently with them on the same object.
+/// Distinct objects (copies) are independent.
+class FrontierMap {
+ public:
+  FrontierMap() = default;
+  explicit FrontierMap(const KnownMap& known);
+
+  /// Updates after `revealed` cells became known: only those cells and their 8-neighbours can
+  /// change status. O(|revealed|) (amortised).
+  void update(const KnownMap& known, std::span<const int> revealed);
+
+  /// Rebuilds from scratch (used by tests to check update()). O(map).
+  void rebuild(const KnownMap& known);
+
+  [[nodiscard]] bool is_frontier(int index) const {
+    return (flags_[static_cast<std::size_t>(index)] & kFrontier) != 0;
+  }
+  [[nodiscard]] int count() const { return count_; }
+  /// Frontier cell indices in ascending order. O(F + A log A) for A cells added since the
+  /// last call of cells() or clusters().
+  [[nodiscard]] std::vector<int> cells() const;
+
+  /// Clusters of the frontier cells not `excluded` (may be empty; else one flag per cell).
+  ///
+  /// Connectivity follows the robot's motion rule, so that the members of one cluster are
+  /// mutually reachable through known free cells (frontier cells are known free): two
+  /// frontier cells that are orthogonal neighbours always connect; diagonal neighbours
+  /// connect only when both cells beside that diagonal are known free, or when
+  /// `allow_corner_cutting` is set (the same flag as the planners' and simulator's).
+  ///
+  /// Each connected component is split into pieces of at most max_length_m / resolution cells
+  /// (rounded down, at least 1; max_length_m <= 0: no splitting), each itself connected: a
+  /// piece is grown by a breadth-first walk (neighbours in heading order, see grid.hpp) from
+  /// the lowest-index cell of the component not yet in a piece, over such cells only, and
+  /// closed when it holds that many cells or the walk runs out; then the next piece starts
+  /// from the lowest-index cell left. Pieces can therefore be shorter than the limit.
+  ///
+  /// Clusters are ordered by their lowest member index. O(F log F) for F frontier cells.
+  [[nodiscard]] std::vector<FrontierCluster> clusters(const KnownMap& known, double max_length_m,
+                                                      bool allow_corner_cutting,
+                                                      std::span<const std::uint8_t> excluded = {}) const;
+
+ private:
+  // flags_ bits per cell.
+  static constexpr std::uint8_t kFrontier = 1;  // the cell is a frontier cell
+  static constexpr std::uint8_t kListed = 2;    // the cell is in list_ (frontier or stale)
+  static constexpr std::uint8_t kPlaced = 4;    // clusters() scratch: already in a piece
+
+  /// Marks cell `i` frontier or not, keeping list_ and the counts in step.
+  void set(int i, bool frontier);
+  /// Drops stale entries from list_ and sorts it (merging the unsorted tail).
+  void normalise() const;
+
+  mutable std::vector<std::uint8_t> flags_;
+  /// Every frontier cell once, plus `stale_` cells that stopped being frontiers; entries
+  /// [0, sorted_) are ascending.
+  mutable std::vector<int> list_;
+  mutable std::size_t sorted_ = 0;
+  mutable std::size_t stale_ = 0;
+  int count_ = 0;
+  int width_ = 0;
+};
+
+}  // namespace world
+}  // namespace fsweep

@@ -1,0 +1,33 @@
+#pragma once
+/// @file motion.hpp
+/// Measuring an 8-connected cell path: length, energy, stops and turns, with one rule shared
+/// by planners and the simulator (see energy_model.hpp).
+
+#include <span>
+#include <vector>
+
+#include "world/energy_model.hpp"
+#include "world/grid.hpp"
+
+namespace fsweep {
+inline namespace world {
+
+/// Motion totals of a path.
+struct MotionCost {
+  double length_m = 0.0;
+  double energy = 0.0;
+  int stops = 0;
+  int turns = 0;
+  /// Sum of absolute turn angles (degrees).
+  double turned_deg = 0.0;
+  /// Heading after the last step (the start heading for an empty path).
+  int final_heading = 0;
+};
+
+/// Costs of following `path` (consecutive cells are 8-neighbours; path[0] is the start)
+/// from `start_heading`. Every heading change is one stop plus one turn.
+[[nodiscard]] MotionCost measure_path(std::span<const Cell> path, int start_heading,
+                                      const EnergyModel& energy, double resolution_m);
+
+}  // namespace world
+}  // namespace fsweep

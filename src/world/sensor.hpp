@@ -1,0 +1,121 @@
+#pragma once
+/// @file sensor.hpp
+/// Omnidirectional range sensor with optional field of view and seeded per-cell misses.
+///
+/// Visibility rule (precise, tested in tests/world/test_sensor.cpp):
+/// - Range: a cell is in range when the Euclidean distance between the centres of the robot's
+///   cell and the target cell is <= range_m / resolution_m (cells). The boundary is included.
+/// - Field of view: with fov_deg < 360 the direction to the target cell centre must lie within
+///   +-fov_deg/2 of the heading (inclusive). The robot's own cell is always seen.
+/// - Rays: a ray is a segment from the centre of the robot's cell to an end point, walked cell
+///   by cell (Amanatides-Woo, in exact integer arithmetic on doubled coordinates: cell x spans
+///   [2x, 2x+2], its centre is at 2x+1). A ray is clear when every cell it enters strictly
+///   before its end point, other than the target, is not occupied. Where it passes exactly
+///   through a grid corner it touches the two cells beside the corner only at that point: it
+///   is blocked there only if both of those cells are occupied (a diagonal gap between two
+///   occupied cells is opaque; a gap with one free side is see-through).
+/// - Free targets: visible when the centre ray (end point: the target's centre) is clear.
+/// - Occupied targets: visible when the centre ray is clear, or a face ray is clear. A face
+///   ray ends at the midpoint of a face of the target that looks toward the robot: with
+///   dx = target.x - robot.x != 0, the vertical face on the robot's side (end point
+///   x = 2*target.x + 1 - sign(dx), y = 2*target.y + 1); with dy != 0, the horizontal face on
+///   the robot's side (likewise). The end point lies on the target's boundary, so the target
+///   is only touched there and the last cell the ray enters is the one in front of that face,
+///   which must be free. (A laser hits a wall's face, not its centre: along a straight wall,
+///   a wall cell at a grazing angle is seen although its centre ray first enters the side of
+///   its neighbour.) Face rays change only what is visible, not range or field of view, which
+///   are still measured to the target's centre. Visibility is therefore symmetric between two
+///   free cells but not in general when one of them is occupied.
+///   Occupied cells that are visible are themselves observed.
+/// - Noise: with miss_probability p > 0 every visible, still unknown cell stays unknown with
+///   probability p on this scan (drawn from the run's "sensor" stream in a fixed cell order).
+
+#include <cstdint>
+#include <memory>
+#include <nlohmann/json_fwd.hpp>
+#include <span>
+#include <vector>
+
+#include "core/random.hpp"
+#include "world/grid.hpp"
+#include "world/known_map.hpp"
+#include "world/world_map.hpp"
+
+namespace fsweep {
+inline namespace world {
+
+struct SensorParams {
+  /// Sensing radius (metres), > 0.
+  double range_m = 10.0;
+  /// Field of view (degrees), in (0, 360]; 360 = omnidirectional.
+  double fov_deg = 360.0;
+  /// Probability that a visible unknown cell is missed on one scan, in [0, 1).
+  double miss_probability = 0.0;
+};
+
+/// Reads {"range_m", "fov_deg", "miss_probability"}; throws ConfigError at `where`.
+[[nodiscard]] SensorParams sensor_params_from_json(const nlohmann::json& j, const std::string& where);
+void to_json(nlohmann::json& j, const SensorParams& p);
+
+/// Cells a scan would see, by their state on the known map (see Sensor::gain).
+struct ScanCounts {
+  /// Visible cells that are still unknown: the cells the scan could reveal.
+  int unknown = 0;
+  /// Visible cells that are already known (free or occupied), the robot's own cell included.
+  int known = 0;
+  friend bool operator==(const ScanCounts&, const ScanCounts&) = default;
+};
+
+/// A sensor for one resolution. Precomputes, per target offset in range, the cells its rays
+/// cross, so a scan costs one table walk. Copyable value type: copies share the immutable
+/// tables and each has its own result buffer (so one instance must not scan from two threads
+/// at once, but copies may).
+class Sensor {
+ public:
+  Sensor() = default;
+  Sensor(const SensorParams& params, double resolution_m);
+
+  /// Scans from `at` facing `heading_rad` (radians, clockwise on screen from +x, as
+  /// heading_angle()). Reveals visible unknown cells of `truth` into `known` and returns the
+  /// indices of the cells revealed by this scan, in increasing offset-table order. The span
+  /// stays valid until the next call. `rng` is used only when miss_probability > 0.
+  std::span<const int> scan(const WorldMap& truth, KnownMap& known, Cell at, double heading_rad, Rng& rng);
+
+  /// What a scan from `at` facing `heading_rad` would see on the robot's own map `known`, for
+  /// information-gain estimates (Holz 2010 section IV-B/C): the same range, field of view and
+  /// ray rules as scan(), with known occupied cells as the only obstacles (unknown cells are
+  /// transparent). Known free and unknown targets need their centre ray clear; known occupied
+  /// targets their centre ray or a face ray (an unknown target is not assumed to be a wall).
+  /// Noise is ignored. Cells off the map are not counted. `at` off the map: both counts 0.
+  /// Uses the same precomputed tables as scan(); does not change anything.
+  [[nodiscard]] ScanCounts gain(const KnownMap& known, Cell at, double heading_rad) const;
+
+  /// True when `target` is visible from `at` on `truth` under the range and ray rules (ignores
+  /// field of view and noise). Walks the rays directly, independently of the tables. For tests
+  /// and for information-gain estimates.
+  [[nodiscard]] bool visible(const WorldMap& truth, Cell at, Cell target) const;
+
+  [[nodiscard]] const SensorParams& params() const { return params_; }
+  /// Sensing radius in cells.
+  [[nodiscard]] double range_cells() const { return range_cells_; }
+
+ private:
+  struct Tables;  // defined in sensor.cpp; immutable once built
+
+  /// The one walk over the tables behind scan() and gain(), on a width x height grid: for each
+  /// target in offset-table order that is on the grid, not skip(index), inside the field of
+  /// view and in line of sight with opaque(index) as the obstacle test (for check cells and
+  /// for choosing the occupied-target rule), calls visit(index, own_cell). Defined in
+  /// sensor.cpp, the only place it is used.
+  template <typename Skip, typename Opaque, typename Visit>
+  void for_each_visible(int width, int height, Cell at, double heading_rad, Skip&& skip, Opaque&& opaque,
+                        Visit&& visit) const;
+
+  SensorParams params_;
+  double range_cells_ = 0.0;
+  std::shared_ptr<const Tables> tables_;  // null for a default-constructed sensor
+  std::vector<int> revealed_;
+};
+
+}  // namespace world
+}  // namespace fsweep

@@ -1,0 +1,60 @@
+#include "world/world_map.hpp"
+
+#include <algorithm>
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+namespace fsweep {
+inline namespace world {
+
+int WorldMap::free_count() const {
+  return static_cast<int>(std::count(occupied.data().begin(), occupied.data().end(), std::uint8_t{0}));
+}
+
+/// Breadth-first search over free cells. A diagonal step from c to c + (dx, dy) needs both
+/// orthogonal cells c + (dx, 0) and c + (0, dy) free unless corner cutting is allowed (the
+/// MovingAI convention, DESIGN.md section 3). A `from` that is not free yields an all-zero grid.
+Grid<std::uint8_t> reachable_free(const WorldMap& map, Cell from, bool allow_corner_cutting) {
+  Grid<std::uint8_t> reached(map.width(), map.height(), 0);
+  if (!map.is_free(from)) return reached;
+  std::vector<int> queue;
+  queue.reserve(static_cast<std::size_t>(map.occupied.size()));
+  reached.at(from) = 1;
+  queue.push_back(map.occupied.index(from));
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    const Cell c = map.occupied.cell(queue[head]);
+    for (int h = 0; h < 8; ++h) {
+      const Cell d = kDirections[static_cast<std::size_t>(h)];
+      const Cell n{c.x + d.x, c.y + d.y};
+      if (!map.is_free(n) || reached.at(n) != 0) continue;
+      if ((h & 1) != 0 && !allow_corner_cutting &&
+          (!map.is_free(Cell{c.x + d.x, c.y}) || !map.is_free(Cell{c.x, c.y + d.y}))) {
+        continue;
+      }
+      reached.at(n) = 1;
+      queue.push_back(map.occupied.index(n));
+    }
+  }
+  return reached;
+}
+
+Cell nearest_free_cell(const WorldMap& map, Cell near) {
+  Cell best{-1, -1};
+  long long best_d2 = std::numeric_limits<long long>::max();
+  for (int i = 0; i < map.occupied.size(); ++i) {
+    if (!map.is_free(i)) continue;
+    const Cell c = map.occupied.cell(i);
+    const long long dx = c.x - near.x;
+    const long long dy = c.y - near.y;
+    const long long d2 = dx * dx + dy * dy;
+    if (d2 < best_d2) {  // strict: the lowest index wins ties
+      best_d2 = d2;
+      best = c;
+    }
+  }
+  return best;
+}
+
+}  // namespace world
+}  // namespace fsweep

@@ -1,0 +1,43 @@
+#pragma once
+/// @file world_map.hpp
+/// Ground truth: which cells are free and which are occupied.
+
+#include <cstdint>
+#include <string>
+
+#include "world/grid.hpp"
+
+namespace fsweep {
+inline namespace world {
+
+/// Ground-truth occupancy of one map. Cells outside the grid count as occupied.
+struct WorldMap {
+  /// 1 = occupied, 0 = free.
+  Grid<std::uint8_t> occupied;
+  /// Edge length of one square cell (metres), > 0.
+  double resolution_m = 1.0;
+  /// Where the robot starts and (by default) where the dock is. Always a free cell.
+  Cell start{0, 0};
+  /// Human-readable origin: a file path or a generator spec.
+  std::string source;
+
+  [[nodiscard]] int width() const { return occupied.width(); }
+  [[nodiscard]] int height() const { return occupied.height(); }
+  [[nodiscard]] bool is_free(Cell c) const { return occupied.in_bounds(c) && occupied.at(c) == 0; }
+  [[nodiscard]] bool is_free(int index) const { return occupied[index] == 0; }
+  /// Number of free cells in the whole grid.
+  [[nodiscard]] int free_count() const;
+};
+
+/// Free cells reachable from `from` by 8-connected moves (no corner cutting unless
+/// `allow_corner_cutting`). Result: 1 for reachable cells, 0 otherwise. `from` must be free
+/// (an occupied or outside `from` gives an all-zero grid).
+[[nodiscard]] Grid<std::uint8_t> reachable_free(const WorldMap& map, Cell from,
+                                                bool allow_corner_cutting = false);
+
+/// The first free cell in row-major order nearest (Euclidean, ties by index) to `near`;
+/// used by generators that must guarantee a free start. Returns {-1,-1} when no cell is free.
+[[nodiscard]] Cell nearest_free_cell(const WorldMap& map, Cell near);
+
+}  // namespace world
+}  // namespace fsweep

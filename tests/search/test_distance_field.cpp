@@ -1,0 +1,182 @@
+#include <gtest/gtest.h>
+
+#include <limits>
+#include <vector>
+
+#include "planners/grid_planner.hpp"
+#include "planners/planner_test_utils.hpp"
+#include "search/distance_field.hpp"
+
+namespace fsweep {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+DistanceQuery bounded_query(double max_distance_m) {
+  DistanceQuery q;
+  q.max_distance_m = max_distance_m;
+  return q;
+}
+
+DistanceQuery corner_cutting(bool allow) {
+  DistanceQuery q;
+  q.allow_corner_cutting = allow;
+  return q;
+}
+
+TEST(DistanceField, MatchesPlannerLengths) {
+  GridPlanner astar(GridSearchKind::AStar);
+  DistanceField field;
+  for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+    const KnownMap known = testing::random_known_map(35, 28, 0.3, seed, 0.25);
+    Rng rng = make_rng(seed, "queries");
+    for (int q = 0; q < 6; ++q) {
+      const bool cut = q % 3 == 2;
+      const Cell source = testing::random_free_cell(known, rng);
+      field.compute(known, source, corner_cutting(cut));
+      EXPECT_EQ(field.source(), source);
+      for (int t = 0; t < 15; ++t) {
+        const Cell target = testing::random_free_cell(known, rng);
+        PlanRequest req;
+        req.start = source;
+        req.goal = target;
+        req.allow_corner_cutting = cut;
+        const PlanResult plan = astar.plan(known, req);
+        const int i = known.index(target);
+        if (plan.status == PlanStatus::Success) {
+          EXPECT_NEAR(field.distance_m(i), plan.length_m, 1e-9);
+          const std::vector<Cell> path = field.path_to(i);
+          ASSERT_FALSE(path.empty());
+          EXPECT_EQ(path.front(), source);
+          EXPECT_EQ(path.back(), target);
+          EXPECT_NEAR(testing::chain_length_cells(path) * 0.25, field.distance_m(i), 1e-9);
+        } else {
+          EXPECT_EQ(plan.status, PlanStatus::NoPath);
+          EXPECT_FALSE(field.reached(i));
+          EXPECT_TRUE(field.path_to(i).empty());
+        }
+      }
+    }
+  }
+}
+
+TEST(DistanceField, BoundRespected) {
+  const KnownMap known = testing::random_known_map(60, 60, 0.2, 7, 0.5);
+  const Cell source{30, 30};
+  ASSERT_TRUE(known.is_free(source));
+  DistanceField full;
+  full.compute(known, source, {});
+  DistanceField bounded;
+  bounded.compute(known, source, bounded_query(6.0));
+  int inside = 0;
+  for (int i = 0; i < known.size(); ++i) {
+    const double d = full.distance_m(i);
+    if (d <= 6.0) {
+      ++inside;
+      EXPECT_DOUBLE_EQ(bounded.distance_m(i), d);
+    } else {
+      EXPECT_EQ(bounded.distance_m(i), kInf) << "cell " << i << " at " << d << " m";
+    }
+  }
+  EXPECT_GT(inside, 50);
+  EXPECT_EQ(bounded.expansions(), inside);
+  EXPECT_LT(bounded.expansions(), full.expansions());
+}
+
+TEST(DistanceField, BoundIsInclusive) {
+  // A cell exactly on the bound (in metres, up to rounding) is reached.
+  const auto m = testing::known_from_ascii({"S..........."}, 0.1);
+  DistanceField field;
+  field.compute(m.known, m.start, bounded_query(1.0));
+  EXPECT_TRUE(field.reached(10));
+  EXPECT_FALSE(field.reached(11));
+  // 0.3 / 0.1 is 2.9999999999999996 in doubles; the cell 3 steps away is still on the bound.
+  field.compute(m.known, m.start, bounded_query(0.3));
+  EXPECT_TRUE(field.reached(3));
+  EXPECT_FALSE(field.reached(4));
+}
+
+TEST(DistanceField, EarlyStopReturnsExactNearestTarget) {
+  const KnownMap known = testing::random_known_map(50, 50, 0.2, 11);
+  const Cell source{25, 25};
+  ASSERT_TRUE(known.is_free(source));
+  DistanceField full;
+  full.compute(known, source, {});
+  Rng rng = make_rng(11, "targets");
+  DistanceField early;  // reused: earlier rounds' targets must not stop later rounds
+  for (int round = 0; round < 20; ++round) {
+    std::vector<int> targets;
+    targets.reserve(5);
+    for (int k = 0; k < 5; ++k) targets.push_back(known.index(testing::random_free_cell(known, rng)));
+    double nearest = kInf;
+    for (const int t : targets) nearest = std::min(nearest, full.distance_m(t));
+
+    early.compute(known, source, DistanceQuery{.stop_at_first_of = targets});
+    for (const int t : targets) {
+      if (full.distance_m(t) == nearest && nearest < kInf) {
+        EXPECT_DOUBLE_EQ(early.distance_m(t), nearest);  // the nearest target(s): exact
+      } else if (early.reached(t)) {
+        EXPECT_DOUBLE_EQ(early.distance_m(t), full.distance_m(t));  // settled ones are exact too
+      }
+    }
+    // Every cell strictly closer than the nearest target is settled; nothing farther is.
+    for (int i = 0; i < known.size(); ++i) {
+      if (full.distance_m(i) < nearest) {
+        EXPECT_TRUE(early.reached(i));
+      }
+      if (early.reached(i)) {
+        EXPECT_LE(early.distance_m(i), nearest + 1e-9);
+      }
+    }
+    if (nearest < kInf) {
+      EXPECT_LT(early.expansions(), full.expansions());
+    }
+  }
+}
+
+TEST(DistanceField, EarlyStopSettlesAllTiedTargets) {
+  // Two targets at 3 + sqrt(2) cells, reached by paths whose steps come in different orders.
+  const auto m = testing::known_from_ascii({".........", ".........", "....S....", ".........", "........."});
+  const std::vector<int> targets{m.known.index(Cell{0, 1}), m.known.index(Cell{8, 3}),
+                                 m.known.index(Cell{8, 0})};
+  DistanceField field;
+  field.compute(m.known, m.start, DistanceQuery{.stop_at_first_of = targets});
+  EXPECT_DOUBLE_EQ(field.distance_m(targets[0]), 3.0 + kSqrt2);
+  EXPECT_DOUBLE_EQ(field.distance_m(targets[1]), 3.0 + kSqrt2);
+  EXPECT_FALSE(field.reached(targets[2]));  // 2 + 2 sqrt(2) is farther
+}
+
+TEST(DistanceField, SourceAsTargetStopsImmediately) {
+  const auto m = testing::known_from_ascii({"S....", "....."});
+  const std::vector<int> targets{m.known.index(m.start), 4};
+  DistanceField field;
+  field.compute(m.known, m.start, DistanceQuery{.stop_at_first_of = targets});
+  EXPECT_EQ(field.distance_m(m.known.index(m.start)), 0.0);
+  EXPECT_EQ(field.expansions(), 1);
+  EXPECT_FALSE(field.reached(4));
+}
+
+TEST(DistanceField, NonFreeSourceGivesEmptyField) {
+  const auto m = testing::known_from_ascii({"S.#", "..?"});
+  DistanceField field;
+  field.compute(m.known, m.start, {});
+  EXPECT_TRUE(field.reached(1));
+  for (const Cell bad : {Cell{2, 0}, Cell{2, 1}, Cell{-1, 0}, Cell{3, 1}}) {
+    field.compute(m.known, bad, {});  // also forgets the previous field
+    for (int i = 0; i < m.known.size(); ++i) EXPECT_FALSE(field.reached(i));
+    EXPECT_EQ(field.expansions(), 0);
+    EXPECT_TRUE(field.path_to(0).empty());
+  }
+}
+
+TEST(DistanceField, CornerCuttingFlagHonoured) {
+  const auto m = testing::known_from_ascii({"S#", "#."});
+  DistanceField field;
+  field.compute(m.known, m.start, {});
+  EXPECT_FALSE(field.reached(3));
+  field.compute(m.known, m.start, corner_cutting(true));
+  EXPECT_DOUBLE_EQ(field.distance_m(3), kSqrt2);
+}
+
+}  // namespace
+}  // namespace fsweep
