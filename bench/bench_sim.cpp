@@ -127,10 +127,9 @@ void full_run(benchmark::State& state, std::size_t map, std::size_t strategy) {
     state.SkipWithError("run order of the bench sweep is not maps x strategies");
     return;
   }
-  const std::string key = s.plan.run_key(index);
   RunRows rows;
   for (auto _ : state) {
-    rows = s.table.run(s.plan, index, key);
+    rows = s.table.run(s.plan, s.plan.run(index));
     benchmark::DoNotOptimize(rows.run_row.data());
   }
   if (rows.failed) {
@@ -159,8 +158,7 @@ RunSpec rooms_spec(const std::string& strategy, nlohmann::json params, double ba
   static const auto kMap = std::make_shared<const WorldMap>(load_map_spec("rooms:w=200,h=200,door=3,seed=1"));
   RunSpec s;
   s.map = kMap;
-  s.strategy = strategy;
-  s.strategy_params = std::move(params);
+  s.strategy = configure_strategy(strategy, std::move(params));
   s.robot.sensor.range_m = 10.0;
   s.robot.battery_capacity = battery;
   return s;

@@ -46,7 +46,7 @@ const HalfExplored& half_explored() {
     h.map = std::make_shared<const WorldMap>(load_map_spec("office:w=400,h=400,seed=1"));
     RunSpec spec;
     spec.map = h.map;
-    spec.strategy = "closest_frontier";
+    spec.strategy = configure_strategy("closest_frontier", nullptr);
     spec.robot.sensor.range_m = kRangeM;
     spec.seed = 1;
     int free_cells = 0;

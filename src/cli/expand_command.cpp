@@ -95,12 +95,13 @@ void print_runs(const SweepPlan& plan, std::uint64_t from, std::uint64_t limit) 
   std::vector<std::vector<std::string>> rows{
       {"index", "run_key", "map", "strategy", "planner", "robot", "rep", "seed"}};
   for (std::uint64_t i = from; i < end; ++i) {
-    const RunCoordinates c = plan.coordinates(i);
-    const RunSpec spec = plan.run_spec(i);
+    const SweepRun run = plan.run(i);
+    const RunCoordinates& c = run.at;
+    const RunSpec& spec = run.spec;
     const StrategyEntry& entry = plan.strategies()[c.strategy_entry];
-    const std::string params = params_text(spec.strategy_params);
+    const std::string params = params_text(entry.params_at(c.strategy_combo));  // as written
     const SweepPlanner& planner = plan.planners()[c.planner];
-    rows.push_back({std::to_string(i), plan.run_key(i), plan.maps()[c.map].label,
+    rows.push_back({std::to_string(i), run.key, plan.maps()[c.map].label,
                     entry.label + (params.empty() ? "" : " " + params),
                     planner.name + (planner.params.is_null() ? "" : " " + planner.params.dump()),
                     plan.robots()[c.robot].label, std::to_string(c.repetition), std::to_string(spec.seed)});

@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
   commands["compare"] = fsweep::cli::add_compare_command(app);
   commands["slurm"] = fsweep::cli::add_slurm_command(app);
   commands["plot"] = fsweep::cli::add_plot_command(app);
+  commands["describe"] = fsweep::cli::add_describe_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -22,6 +22,7 @@ struct SimOptions {
   std::vector<std::string> params;
   std::string planner = "astar";
   std::vector<std::string> planner_params;
+  std::vector<std::string> heuristics;
   std::vector<std::string> robot;
   std::vector<std::string> sim;
   std::uint64_t seed = 0;
@@ -32,10 +33,14 @@ struct SimOptions {
 int run_sim(const SimOptions& o) {
   RunSpec spec;
   spec.map = std::make_shared<const WorldMap>(load_map_spec(o.map));
-  spec.strategy = o.strategy;
-  spec.strategy_params = kv_to_json(o.params, "--param");
-  spec.planner = o.planner;
-  spec.planner_params = kv_to_json(o.planner_params, "--planner-param");
+  spec.strategy = configure_strategy(o.strategy, kv_to_json(o.params, "--param"), "--strategy", "--param");
+  if (!o.heuristics.empty()) {
+    nlohmann::json names = nlohmann::json::array();
+    for (const std::string& h : o.heuristics) names.push_back(h);
+    spec.heuristics = heuristics_from_json(names, "--heuristics");
+  }
+  spec.planner = configure_planner(o.planner, kv_to_json(o.planner_params, "--planner-param"), "--planner",
+                                   "--planner-param");
   spec.robot = robot_params_from_json(kv_to_json(o.robot, "--robot"), "--robot");
   spec.sim = sim_params_from_json(kv_to_json(o.sim, "--sim"), "--sim");
   spec.seed = o.seed;
@@ -72,6 +77,8 @@ Command add_sim_command(CLI::App& app) {
       ->required();
   sub->add_option("--strategy", o->strategy, "Strategy name")->capture_default_str();
   sub->add_option("--param", o->params, "Strategy parameter key=value (repeatable), e.g. w1=10");
+  sub->add_option("--heuristics", o->heuristics, "Heuristics of Holz 2010 IV-D (repeatable): rr, seg")
+      ->delimiter(',');
   sub->add_option("--planner", o->planner, "Planner name")->capture_default_str();
   sub->add_option("--planner-param", o->planner_params, "Planner parameter key=value (repeatable)");
   sub->add_option(

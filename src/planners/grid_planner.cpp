@@ -44,12 +44,6 @@ class GridEnvironment {
 
 }  // namespace
 
-GridPlannerParams GridPlannerParams::from_json(const nlohmann::json& j, const std::string& where) {
-  if (j.is_null()) return {};
-  require_known_keys(j, {}, where);
-  return {};
-}
-
 std::string GridPlanner::name() const { return kind_ == GridSearchKind::AStar ? "astar" : "dijkstra"; }
 
 std::unique_ptr<Planner> GridPlanner::clone() const { return std::make_unique<GridPlanner>(kind_, params_); }

@@ -1,8 +1,8 @@
 #pragma once
 /// @file grid_planner.hpp
 /// `dijkstra` and `astar`: optimal 8-connected planners over known-free cells with octile
-/// costs (DESIGN.md section 5). Moves follow src/search/octile_grid.hpp (no corner cutting unless
-/// PlanRequest::allow_corner_cutting), so lengths match MovingAI's optimal lengths.
+/// costs (docs/architecture.md, "Plugins and their parameters"). Moves follow src/search/octile_grid.hpp (no
+/// corner cutting unless PlanRequest::allow_corner_cutting), so lengths match MovingAI's optimal lengths.
 
 #include <memory>
 #include <nlohmann/json_fwd.hpp>
@@ -26,12 +26,7 @@ enum class GridSearchKind {
 /// Parameters of the grid planners. There are none yet: `{}` (or null) is the only valid
 /// input and any key is a ConfigError. Tie-breaking is fixed, not a parameter: see
 /// BestFirstSearch (smaller f, then larger g, then smaller cell index).
-struct GridPlannerParams {
-  /// Reads `j` (an object or null); throws ConfigError at `where` on unknown keys.
-  [[nodiscard]] static GridPlannerParams from_json(const nlohmann::json& j, const std::string& where);
-  /// Every violation, empty when valid.
-  [[nodiscard]] std::vector<std::string> validate() const { return {}; }
-};
+struct GridPlannerParams {};
 
 /// Optimal grid planner. Keeps its search arrays between queries (not thread-safe).
 ///

@@ -41,12 +41,6 @@ class OctileLatticePolicy {
 
 }  // namespace
 
-LatticePlannerParams LatticePlannerParams::from_json(const nlohmann::json& j, const std::string& where) {
-  if (j.is_null()) return {};
-  require_known_keys(j, {}, where);
-  return {};
-}
-
 std::string LatticePlanner::name() const {
   return kind_ == LatticeSearchKind::AStar ? "lattice_astar" : "lattice";
 }

@@ -41,12 +41,7 @@ enum class LatticeSearchKind {
 
 /// Parameters of the lattice planners. There are none: `{}` (or null) is the only valid input
 /// and any key is a ConfigError. The energy model is not a parameter: it is the request's.
-struct LatticePlannerParams {
-  /// Reads `j` (an object or null); throws ConfigError at `where` on unknown keys.
-  [[nodiscard]] static LatticePlannerParams from_json(const nlohmann::json& j, const std::string& where);
-  /// Every violation, empty when valid.
-  [[nodiscard]] std::vector<std::string> validate() const { return {}; }
-};
+struct LatticePlannerParams {};
 
 /// Minimum-energy planner on the heading lattice. Keeps its search arrays (8 states per cell)
 /// between queries (not thread-safe).

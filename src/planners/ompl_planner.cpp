@@ -130,10 +130,10 @@ OmplOutcome solve_with_ompl(OmplPlannerKind kind, const OmplPlannerParams& param
   pdef->setStartAndGoalStates(start, goal);
   pdef->setOptimizationObjective(std::make_shared<ob::PathLengthOptimizationObjective>(si));
 
-  // 2. Planner with its OMPL parameters (validated in from_json).
+  // 2. Planner with its OMPL parameters (validated by ompl_planner_params()).
   const ob::PlannerPtr planner = make_ompl_planner(kind, si);
   if (!planner->params().setParams(params.ompl)) {
-    throw std::logic_error("OmplPlanner: OMPL rejected parameters that from_json accepted");
+    throw std::logic_error("OmplPlanner: OMPL rejected parameters that ompl_planner_params() accepted");
   }
   planner->setProblemDefinition(pdef);
   planner->setup();
@@ -209,60 +209,62 @@ std::vector<std::string> ompl_planner_param_names(OmplPlannerKind kind) {
   return names;
 }
 
-OmplPlannerParams OmplPlannerParams::from_json(OmplPlannerKind kind, const nlohmann::json& j,
-                                               const std::string& where) {
-  OmplPlannerParams p;
-  if (j.is_null()) return p;
-  if (!j.is_object()) throw ConfigError(where, "expected an object of planner parameters, got " + j.dump());
-  // OMPL values are checked by setting them on a probe planner of the same kind.
+ParamDecl<OmplPlannerParams> ompl_planner_params(OmplPlannerKind kind) {
+  using P = OmplPlannerParams;
+  ParamDecl<P> d;
+  d.number(std::string(kTimeLimitKey), &P::time_limit_s,
+           "planning time budget per query (simplification comes on top)")
+      .above(0)
+      .unit("s");
+  d.integer(std::string(kMaxIterationsKey), &P::max_iterations,
+            "iteration budget per query: times the planner may test its termination condition; 0: none "
+            "(with it, single-threaded planners are reproducible)")
+      .at_least(0);
+  d.boolean(std::string(kSimplifyKey), &P::simplify,
+            "run OMPL's PathSimplifier (simplifyMax) on the solution");
+  // OMPL's own parameters of this planner, as its ParamSet declares them (value and range
+  // suggestion read from a probe planner; a value is checked by setting it on a probe).
   const OmplSession session(0);
   const KnownMap probe_map(1, 1, 1.0);
   const ob::SpaceInformationPtr si = make_grid_space_information(probe_map, false);
   const ob::PlannerPtr probe = make_ompl_planner(kind, si);
-  for (const auto& [key, value] : j.items()) {
-    const std::string at = where + "/" + key;
-    if (key == kTimeLimitKey) {
-      if (!value.is_number()) throw ConfigError(at, "expected a number of seconds > 0, got " + value.dump());
-      p.time_limit_s = value.get<double>();
-    } else if (key == kMaxIterationsKey) {
-      if (!value.is_number_integer()) throw ConfigError(at, "expected an integer >= 0, got " + value.dump());
-      p.max_iterations = value.get<long>();
-    } else if (key == kSimplifyKey) {
-      if (!value.is_boolean()) throw ConfigError(at, "expected true or false, got " + value.dump());
-      p.simplify = value.get<bool>();
-    } else if (probe->params().hasParam(key)) {
-      const std::string text = ompl_value_string(value, at);
-      bool accepted = false;
+  std::map<std::string, std::string> defaults;
+  probe->params().getParams(defaults);
+  const std::string planner = std::string(ompl_planner_name(kind)).substr(5);
+  for (const auto& [name, value] : defaults) {
+    ParamSpec spec;
+    spec.name = name;
+    spec.type = ParamType::Custom;
+    spec.doc = "OMPL parameter of " + planner + " (set through its ParamSet)";
+    const std::string range = probe->params()[name].getRangeSuggestion();
+    spec.allowed_text = "a value OMPL accepts (string, number or boolean)" +
+                        (range.empty() ? "" : "; OMPL suggests " + range);
+    spec.custom_check = [kind, name = name](const nlohmann::json& v) -> std::vector<std::string> {
+      std::string text;
       try {
-        accepted = probe->params().setParam(key, text);
-      } catch (const std::exception& e) {
-        throw ConfigError(at, "OMPL rejects '" + text + "': " + e.what());
+        text = ompl_value_string(v, name);
+      } catch (const ConfigError&) {
+        return {"expected a string, number or boolean, got " + v.dump()};
       }
-      if (!accepted) throw ConfigError(at, "OMPL rejects '" + text + "' for parameter '" + key + "'");
-      p.ompl[key] = text;
-    } else {
-      std::vector<std::string> known = ompl_param_names_locked(kind);
-      for (const std::string_view k : {kTimeLimitKey, kMaxIterationsKey, kSimplifyKey}) known.emplace_back(k);
-      std::sort(known.begin(), known.end());
-      throw ConfigError(at, "unknown parameter '" + key + "' of " + std::string(ompl_planner_name(kind)) +
-                                "; known parameters: " + join_names(known));
-    }
+      const OmplSession check_session(0);
+      const KnownMap map(1, 1, 1.0);
+      const ob::PlannerPtr p = make_ompl_planner(kind, make_grid_space_information(map, false));
+      try {
+        if (p->params().setParam(name, text)) return {};
+      } catch (const std::exception& e) {
+        return {"OMPL rejects '" + text + "': " + e.what()};
+      }
+      return {"OMPL rejects '" + text + "' for parameter '" + name + "'"};
+    };
+    d.custom(
+        std::move(spec),
+        [name = name](P& p, const nlohmann::json& v) { p.ompl[name] = ompl_value_string(v, name); },
+        [name = name, value = value](const P& p) {
+          const auto it = p.ompl.find(name);
+          return nlohmann::json(it == p.ompl.end() ? value : it->second);
+        });
   }
-  const std::vector<std::string> violations = p.validate();
-  if (!violations.empty()) throw ConfigError(where, join_names(violations));
-  return p;
-}
-
-std::vector<std::string> OmplPlannerParams::validate() const {
-  std::vector<std::string> violations;
-  if (!(time_limit_s > 0.0) || !std::isfinite(time_limit_s)) {
-    violations.push_back("time_limit_s must be a finite number of seconds > 0, got " +
-                         std::to_string(time_limit_s));
-  }
-  if (max_iterations < 0) {
-    violations.push_back("max_iterations must be >= 0 (0: no limit), got " + std::to_string(max_iterations));
-  }
-  return violations;
+  return d;
 }
 
 PlanResult OmplPlanner::plan(const KnownMap& known, const PlanRequest& request) {

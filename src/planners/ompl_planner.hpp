@@ -29,6 +29,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/params.hpp"
 #include "planners/planner.hpp"
 
 namespace fsweep {
@@ -54,18 +55,15 @@ struct OmplPlannerParams {
   long max_iterations = 0;
   /// Run OMPL's PathSimplifier (simplifyMax) on the solution.
   bool simplify = true;
-  /// OMPL parameter values as strings, by OMPL parameter name (validated by from_json).
+  /// OMPL parameter values as strings, by OMPL parameter name: only those given (the others
+  /// keep OMPL's defaults).
   std::map<std::string, std::string> ompl;
-
-  /// Reads `j` (an object or null) for planner `kind`. Throws ConfigError at `where` (or
-  /// `where`/key) for a key that is neither ours nor an OMPL parameter of that planner (the
-  /// message lists the known ones), a wrong type, or a value OMPL or validate() rejects.
-  /// OMPL values may be JSON strings, numbers or booleans (true = "1", false = "0").
-  [[nodiscard]] static OmplPlannerParams from_json(OmplPlannerKind kind, const nlohmann::json& j,
-                                                   const std::string& where);
-  /// Every violation of our own ranges, empty when valid.
-  [[nodiscard]] std::vector<std::string> validate() const;
 };
+
+/// The declared parameters (core/params.hpp) of planner `kind`: ours (time_limit_s,
+/// max_iterations, simplify) and every OMPL parameter its ParamSet declares, with OMPL's
+/// default value and range suggestion; a value is checked by setting it on a probe planner.
+[[nodiscard]] ParamDecl<OmplPlannerParams> ompl_planner_params(OmplPlannerKind kind);
 
 /// Sorted names of our own keys and of every OMPL parameter `kind` declares.
 [[nodiscard]] std::vector<std::string> ompl_planner_param_names(OmplPlannerKind kind);
@@ -83,7 +81,7 @@ struct OmplPlannerParams {
 /// (its sampling effort; simplification not included).
 class OmplPlanner final : public Planner {
  public:
-  /// `params` must come from OmplPlannerParams::from_json for the same kind (or be defaults).
+  /// `params` must come from ompl_planner_params(kind) (or be defaults).
   explicit OmplPlanner(OmplPlannerKind kind, OmplPlannerParams params = {})
       : kind_(kind), params_(std::move(params)) {}
 

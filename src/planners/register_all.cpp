@@ -1,56 +1,64 @@
-#include "planners/register_all.hpp"
+/// @file register_all.cpp
+/// The one place where planners are registered.
 
-#include <array>
 #include <nlohmann/json.hpp>
 
 #include "planners/grid_planner.hpp"
 #include "planners/lattice_planner.hpp"
 #include "planners/ompl_planner.hpp"
+#include "planners/registry.hpp"
 #include "planners/shortest_fewest_turns.hpp"
 
 namespace fsweep {
 inline namespace planners {
 namespace {
 
-template <GridSearchKind Kind>
-std::unique_ptr<Planner> make_grid_planner(const nlohmann::json& params, const std::string& where) {
-  return std::make_unique<GridPlanner>(Kind, GridPlannerParams::from_json(params, where));
-}
+using Made = std::unique_ptr<Planner>;
 
-template <LatticeSearchKind Kind>
-std::unique_ptr<Planner> make_lattice_planner(const nlohmann::json& params, const std::string& where) {
-  return std::make_unique<LatticePlanner>(Kind, LatticePlannerParams::from_json(params, where));
-}
-
-template <OmplPlannerKind Kind>
-std::unique_ptr<Planner> make_ompl_planner(const nlohmann::json& params, const std::string& where) {
-  return std::make_unique<OmplPlanner>(Kind, OmplPlannerParams::from_json(Kind, params, where));
-}
-
-std::unique_ptr<Planner> make_shortest_fewest_turns(const nlohmann::json& params, const std::string& where) {
-  return std::make_unique<ShortestFewestTurnsPlanner>(ShortestFewestTurnsParams::from_json(params, where));
+PlannerRegistry make_registry() {
+  PlannerRegistry r("planner");
+  r.add<GridPlannerParams>("astar",
+                           "optimal 8-connected grid A*, octile heuristic (lengths match MovingAI's)",
+                           ParamDecl<GridPlannerParams>{}, [](const GridPlannerParams& p) -> Made {
+                             return std::make_unique<GridPlanner>(GridSearchKind::AStar, p);
+                           });
+  r.add<GridPlannerParams>("dijkstra", "optimal 8-connected grid Dijkstra", ParamDecl<GridPlannerParams>{},
+                           [](const GridPlannerParams& p) -> Made {
+                             return std::make_unique<GridPlanner>(GridSearchKind::Dijkstra, p);
+                           });
+  r.add<LatticePlannerParams>("lattice",
+                              "Mei 2006 minimum-energy planner on the (cell, heading) lattice, Dijkstra",
+                              ParamDecl<LatticePlannerParams>{}, [](const LatticePlannerParams& p) -> Made {
+                                return std::make_unique<LatticePlanner>(LatticeSearchKind::Dijkstra, p);
+                              });
+  r.add<LatticePlannerParams>("lattice_astar",
+                              "the lattice planner with A* (admissible octile x cheapest travel energy)",
+                              ParamDecl<LatticePlannerParams>{}, [](const LatticePlannerParams& p) -> Made {
+                                return std::make_unique<LatticePlanner>(LatticeSearchKind::AStar, p);
+                              });
+  r.add<ShortestFewestTurnsParams>(
+      "shortest_fewest_turns", "the least-energy path among all shortest paths (Mei 2006's honest baseline)",
+      ParamDecl<ShortestFewestTurnsParams>{}, [](const ShortestFewestTurnsParams& p) -> Made {
+        return std::make_unique<ShortestFewestTurnsPlanner>(p);
+      });
+  for (const OmplPlannerKind kind :
+       {OmplPlannerKind::RRTConnect, OmplPlannerKind::RRTstar, OmplPlannerKind::InformedRRTstar,
+        OmplPlannerKind::BITstar, OmplPlannerKind::PRMstar, OmplPlannerKind::LazyPRMstar,
+        OmplPlannerKind::KPIECE1}) {
+    const std::string name(ompl_planner_name(kind));
+    r.add<OmplPlannerParams>(
+        name, "OMPL's " + name.substr(5) + " geometric planner over the known map (R2, exact motion checks)",
+        std::function<ParamDecl<OmplPlannerParams>()>([kind] { return ompl_planner_params(kind); }),
+        [kind](const OmplPlannerParams& p) -> Made { return std::make_unique<OmplPlanner>(kind, p); });
+  }
+  return r;
 }
 
 }  // namespace
 
-std::span<const PlannerEntry> planner_table() {
-  // Add new planners here (one line each); the registry, the CLI and the conformance tests
-  // pick them up from this table.
-  static constexpr std::array kTable{
-      PlannerEntry{"astar", &make_grid_planner<GridSearchKind::AStar>},
-      PlannerEntry{"dijkstra", &make_grid_planner<GridSearchKind::Dijkstra>},
-      PlannerEntry{"lattice", &make_lattice_planner<LatticeSearchKind::Dijkstra>},
-      PlannerEntry{"lattice_astar", &make_lattice_planner<LatticeSearchKind::AStar>},
-      PlannerEntry{"shortest_fewest_turns", &make_shortest_fewest_turns},
-      PlannerEntry{"ompl:RRTConnect", &make_ompl_planner<OmplPlannerKind::RRTConnect>},
-      PlannerEntry{"ompl:RRTstar", &make_ompl_planner<OmplPlannerKind::RRTstar>},
-      PlannerEntry{"ompl:InformedRRTstar", &make_ompl_planner<OmplPlannerKind::InformedRRTstar>},
-      PlannerEntry{"ompl:BITstar", &make_ompl_planner<OmplPlannerKind::BITstar>},
-      PlannerEntry{"ompl:PRMstar", &make_ompl_planner<OmplPlannerKind::PRMstar>},
-      PlannerEntry{"ompl:LazyPRMstar", &make_ompl_planner<OmplPlannerKind::LazyPRMstar>},
-      PlannerEntry{"ompl:KPIECE1", &make_ompl_planner<OmplPlannerKind::KPIECE1>},
-  };
-  return kTable;
+const PlannerRegistry& planner_registry() {
+  static const PlannerRegistry registry = make_registry();
+  return registry;
 }
 
 }  // namespace planners

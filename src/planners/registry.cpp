@@ -1,28 +1,21 @@
 #include "planners/registry.hpp"
 
-#include <algorithm>
 #include <nlohmann/json.hpp>
-
-#include "core/config_error.hpp"
-#include "planners/register_all.hpp"
 
 namespace fsweep {
 inline namespace planners {
 
-std::unique_ptr<Planner> make_planner(const std::string& name, const nlohmann::json& params,
-                                      const std::string& where) {
-  for (const PlannerEntry& entry : planner_table()) {
-    if (entry.name == name) return entry.make(params, where + "/params");
-  }
-  throw ConfigError(where, "unknown planner '" + name + "'; known planners: " + join_names(planner_names()));
+PlannerConfig configure_planner(const std::string& name, const nlohmann::json& params,
+                                const std::string& where, const std::string& params_where) {
+  return planner_registry().configure(name, params, where, params_where);
 }
 
-std::vector<std::string> planner_names() {
-  std::vector<std::string> names;
-  for (const PlannerEntry& entry : planner_table()) names.emplace_back(entry.name);
-  std::sort(names.begin(), names.end());
-  return names;
+std::unique_ptr<Planner> make_planner(const std::string& name, const nlohmann::json& params,
+                                      const std::string& where) {
+  return configure_planner(name, params, where).make();
 }
+
+std::vector<std::string> planner_names() { return planner_registry().names(); }
 
 }  // namespace planners
 }  // namespace fsweep

@@ -52,13 +52,6 @@ class ShortestPathPolicy {
 
 }  // namespace
 
-ShortestFewestTurnsParams ShortestFewestTurnsParams::from_json(const nlohmann::json& j,
-                                                               const std::string& where) {
-  if (j.is_null()) return {};
-  require_known_keys(j, {}, where);
-  return {};
-}
-
 std::unique_ptr<Planner> ShortestFewestTurnsPlanner::clone() const {
   return std::make_unique<ShortestFewestTurnsPlanner>(params_);
 }

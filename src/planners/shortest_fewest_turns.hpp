@@ -31,12 +31,7 @@ inline namespace planners {
 
 /// Parameters of `shortest_fewest_turns`. There are none: `{}` (or null) is the only valid input
 /// and any key is a ConfigError. The energy model is the request's.
-struct ShortestFewestTurnsParams {
-  /// Reads `j` (an object or null); throws ConfigError at `where` on unknown keys.
-  [[nodiscard]] static ShortestFewestTurnsParams from_json(const nlohmann::json& j, const std::string& where);
-  /// Every violation, empty when valid.
-  [[nodiscard]] std::vector<std::string> validate() const { return {}; }
-};
+struct ShortestFewestTurnsParams {};
 
 /// Cheapest-energy shortest-path planner (see the file comment). Keeps its distance field and
 /// lattice search arrays between queries (not thread-safe).

@@ -26,8 +26,8 @@ enum class EndReason {
 
 [[nodiscard]] std::string_view to_string(EndReason r);
 
-/// Per-run metrics (DESIGN.md section 6). Areas in m^2, distances in metres, energy in the
-/// energy model's unit. Fields added later are declared last, so that CSV columns (in
+/// Per-run metrics (docs/architecture.md, "The simulation loop and metrics"). Areas in m^2, distances in
+/// metres, energy in the energy model's unit. Fields added later are declared last, so that CSV columns (in
 /// declaration order, run_table.hpp) are only ever appended.
 struct RunMetrics {
   double distance_m = 0.0;

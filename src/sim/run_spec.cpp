@@ -121,5 +121,11 @@ void to_json(nlohmann::json& j, const SimParams& s) {
   }
 }
 
+nlohmann::json recorded_strategy_params(const RunSpec& spec) {
+  nlohmann::json params = spec.strategy.params;
+  if (spec.heuristics) params["heuristics"] = heuristics_to_json(*spec.heuristics);
+  return params;
+}
+
 }  // namespace sim
 }  // namespace fsweep

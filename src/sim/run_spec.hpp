@@ -9,6 +9,9 @@
 #include <optional>
 #include <string>
 
+#include "planners/registry.hpp"
+#include "sim/heuristics.hpp"
+#include "strategies/registry.hpp"
 #include "world/energy_model.hpp"
 #include "world/sensor.hpp"
 #include "world/world_map.hpp"
@@ -16,7 +19,7 @@
 namespace fsweep {
 inline namespace sim {
 
-/// The robot: sensor, motion rules, energy and battery (DESIGN.md section 3).
+/// The robot: sensor, motion rules, energy and battery (docs/architecture.md, "Robot, motion and energy").
 struct RobotParams {
   SensorParams sensor;
   EnergyModel energy;
@@ -36,7 +39,7 @@ struct RobotParams {
 [[nodiscard]] RobotParams robot_params_from_json(const nlohmann::json& j, const std::string& where);
 void to_json(nlohmann::json& j, const RobotParams& r);
 
-/// Loop settings (DESIGN.md section 6).
+/// Loop settings (docs/architecture.md, "The simulation loop and metrics").
 struct SimParams {
   /// Frontier clusters are split into pieces of at most this length (metres); <= 0: the
   /// sensor range (as Rappaport 2016 section 3.3).
@@ -67,14 +70,22 @@ void to_json(nlohmann::json& j, const SimParams& s);
 /// One run.
 struct RunSpec {
   std::shared_ptr<const WorldMap> map;
-  std::string strategy = "closest_frontier";
-  nlohmann::json strategy_params;  // null: defaults
-  std::string planner = "astar";
-  nlohmann::json planner_params;  // null: defaults
+  /// The strategy, resolved once (strategies/registry.hpp): name, resolved params, maker.
+  StrategyConfig strategy = configure_strategy("closest_frontier", nullptr);
+  /// The rr/seg heuristics (sim/heuristics.hpp). Empty: none, and none recorded (run keys
+  /// and columns of configurations that never name heuristics stay as they were); given,
+  /// even as none, they are recorded with the strategy's params (`strategy.heuristics`).
+  std::optional<Heuristics> heuristics;
+  /// The planner, resolved once (planners/registry.hpp): name, resolved params, maker.
+  PlannerConfig planner = configure_planner("astar", nullptr);
   RobotParams robot;
   SimParams sim;
   std::uint64_t seed = 0;
 };
+
+/// The strategy parameters as run keys and output columns record them: the resolved params,
+/// plus "heuristics" (canonical list) when RunSpec::heuristics is given.
+[[nodiscard]] nlohmann::json recorded_strategy_params(const RunSpec& spec);
 
 }  // namespace sim
 }  // namespace fsweep

@@ -5,7 +5,6 @@
 #include <fstream>
 
 #include "core/config_error.hpp"
-#include "strategies/registry.hpp"
 
 namespace fsweep {
 inline namespace sim {
@@ -49,10 +48,10 @@ Columns config_columns(const RunSpec& spec) {
   c.emplace_back("map.height", std::to_string(m.height()));
   c.emplace_back("map.resolution_m", format_number(m.resolution_m));
   c.emplace_back("map.start", std::to_string(m.start.x) + ";" + std::to_string(m.start.y));
-  c.emplace_back("strategy", spec.strategy);
-  flatten(resolved_strategy_params(spec.strategy, spec.strategy_params), "strategy", c);
-  c.emplace_back("planner", spec.planner);
-  if (spec.planner_params.is_object()) flatten(spec.planner_params, "planner", c);
+  c.emplace_back("strategy", spec.strategy.name);
+  flatten(recorded_strategy_params(spec), "strategy", c);
+  c.emplace_back("planner", spec.planner.name);
+  flatten(spec.planner.params, "planner", c);  // every resolved parameter, defaults included
   nlohmann::json robot = spec.robot;
   // A dock left at its default is the map's start: written as "start", so runs on several
   // maps of one class (whose starts differ) share the configuration; map.start has the cell.

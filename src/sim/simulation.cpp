@@ -84,11 +84,14 @@ Simulation::Simulation(const RunSpec& spec) : spec_(spec) {
   }
   reachable_ = reachable_free(map, map.start, spec_.robot.allow_corner_cutting);
   for (const auto v : reachable_.data()) reachable_count_ += v;
-  strategy_ = make_strategy(spec_.strategy,
-                            resolve_random_target(spec_.strategy_params, reachable_, map.start, spec_.seed),
-                            derive_seed(spec_.seed, "strategy"));
-  heuristics_ = heuristics_from_json(spec_.strategy_params, "strategy/params");
-  planner_ = make_planner(spec_.planner, spec_.planner_params);
+  const nlohmann::json strategy_params =
+      resolve_random_target(spec_.strategy.params, reachable_, map.start, spec_.seed);
+  const StrategyConfig& strategy = strategy_params == spec_.strategy.params
+                                       ? spec_.strategy
+                                       : configure_strategy(spec_.strategy.name, strategy_params);
+  strategy_ = strategy.make(derive_seed(spec_.seed, "strategy"));
+  heuristics_ = spec_.heuristics.value_or(Heuristics{});
+  planner_ = spec_.planner.make();
   sensor_ = Sensor(spec_.robot.sensor, resolution_m_);
   sensor_rng_ = make_rng(spec_.seed, "sensor");
   known_ = KnownMap(map.width(), map.height(), resolution_m_);

@@ -1,7 +1,7 @@
 #pragma once
 /// @file simulation.hpp
-/// The exploration loop (DESIGN.md section 6): sense, update frontiers, ask the strategy,
-/// plan, move cell by cell sensing after every step, repeat until an end reason applies.
+/// The exploration loop (docs/architecture.md, "The simulation loop and metrics"): sense, update frontiers,
+/// ask the strategy, plan, move cell by cell sensing after every step, repeat until an end reason applies.
 
 #include <cstdint>
 #include <memory>
@@ -11,9 +11,9 @@
 #include "planners/planner.hpp"
 #include "sim/battery.hpp"
 #include "sim/grid_distance_oracle.hpp"
+#include "sim/heuristics.hpp"
 #include "sim/run_result.hpp"
 #include "sim/run_spec.hpp"
-#include "strategies/heuristics.hpp"
 #include "strategies/strategy.hpp"
 #include "world/frontiers.hpp"
 #include "world/known_map.hpp"
@@ -34,8 +34,8 @@ inline namespace sim {
                                                    std::uint64_t seed);
 
 /// The state of one run, as a copyable value: copying a Simulation clones its strategy and
-/// planner, so a run can be forked at a decision (DESIGN.md section 7, weight search). No
-/// globals; every random stream comes from the run seed.
+/// planner, so a run can be forked at a decision (docs/architecture.md, "Sweeps, keys, shards and the weight
+/// search", weight search). No globals; every random stream comes from the run seed.
 ///
 /// Rules of the loop:
 /// - The robot senses at the start and after every cell step.
@@ -50,7 +50,7 @@ inline namespace sim {
 ///   the count when it revealed cells, as any decision).
 /// - A Finish with a navigation outcome (Decision::Outcome) ends the run as TargetReached or
 ///   TargetUnreachable with the decision's detail; otherwise finish() checks for frontiers.
-/// - Heuristics (strategy parameter "heuristics", src/strategies/heuristics.hpp):
+/// - Heuristics (RunSpec::heuristics, src/sim/heuristics.hpp):
 ///   - `rr`: after every cell step of a journey to a GoTo goal, before the goal is reached, the
 ///     goal is re-checked; the journey stops (and the next step() decides again, counted in
 ///     rr_redecisions) when it is no longer open. A goal that was a frontier cell when chosen

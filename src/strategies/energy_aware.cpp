@@ -20,43 +20,33 @@ double theta_rel(double theta_r, double theta_g) {
 
 }  // namespace
 
-EnergyAwareParams energy_aware_params_from_json(const nlohmann::json& j, const std::string& where) {
-  EnergyAwareParams p;
-  if (j.is_null()) return p;
-  require_known_keys(j, {"w1", "w2", "w3", "w4", "distance"}, where);
-  std::string problems;
-  auto weight = [&](const char* key, double& out) {
-    if (!j.contains(key)) return;
-    const auto& v = j.at(key);
-    if (!v.is_number() || v.get<double>() < 0.0 || v.get<double>() > EnergyAwareParams::kMaxWeight) {
-      problems += (problems.empty() ? "" : "; ") + where + "/" + key + ": value " + v.dump() +
-                  " out of range; allowed: a number in [0, 250]";
-      return;
-    }
-    out = v.get<double>();
-  };
-  weight("w1", p.w1);
-  weight("w2", p.w2);
-  weight("w3", p.w3);
-  weight("w4", p.w4);
-  if (j.contains("distance")) {
-    const auto& v = j.at("distance");
-    const bool known_mode =
-        v.is_string() && (v.get<std::string>() == "path" || v.get<std::string>() == "octile" ||
-                          v.get<std::string>() == "euclidean");
-    if (!known_mode) {
-      problems += (problems.empty() ? "" : "; ") + where + "/distance: value " + v.dump() +
-                  " not allowed; allowed: \"path\", \"octile\", \"euclidean\"";
-    } else {
-      p.distance = v.get<std::string>();
-    }
-  }
-  if (!problems.empty()) throw ConfigError("", problems);
-  return p;
+namespace {
+
+const std::vector<std::string> kDistanceModes{"path", "octile", "euclidean"};
+constexpr const char* kDistanceDoc =
+    "how d_g and d_gb are measured: shortest path over known free space (the paper's A*), "
+    "octile length without obstacles, or straight line between cell centres";
+
+}  // namespace
+
+ParamDecl<EnergyAwareParams> energy_aware_params() {
+  ParamDecl<EnergyAwareParams> d;
+  const double max = EnergyAwareParams::kMaxWeight;
+  d.number("w1", &EnergyAwareParams::w1, "weight of d_g, robot to frontier distance (Rappaport 2016 eq. 8)")
+      .range(0, max);
+  d.number("w2", &EnergyAwareParams::w2, "weight of d_gb, frontier to dock distance (eq. 8)").range(0, max);
+  d.number("w3", &EnergyAwareParams::w3, "weight of d_gbe, -d_gb above half charge, +d_gb below (eq. 9)")
+      .range(0, max);
+  d.number("w4", &EnergyAwareParams::w4, "weight of theta_rel in [0, 1], the turn toward the goal (eq. 10)")
+      .range(0, max);
+  d.choice("distance", &EnergyAwareParams::distance, kDistanceModes, kDistanceDoc);
+  return d;
 }
 
-void to_json(nlohmann::json& j, const EnergyAwareParams& p) {
-  j = nlohmann::json{{"w1", p.w1}, {"w2", p.w2}, {"w3", p.w3}, {"w4", p.w4}, {"distance", p.distance}};
+ParamDecl<ClosestFrontierParams> closest_frontier_params() {
+  ParamDecl<ClosestFrontierParams> d;
+  d.choice("distance", &ClosestFrontierParams::distance, kDistanceModes, kDistanceDoc);
+  return d;
 }
 
 EnergyAware::EnergyAware(std::string name, const EnergyAwareParams& params)
@@ -85,7 +75,8 @@ Candidates EnergyAware::candidates(const Observation& obs) {
       d_gb.push_back(metric(obs.known.cell(r), obs.dock) * res);
     }
   } else {
-    // Both legs must be shorter than d_l, so d_l bounds both searches (DESIGN.md section 4).
+    // Both legs must be shorter than d_l, so d_l bounds both searches (docs/architecture.md, "Plugins and
+    // their parameters").
     d_g = obs.distances.from_robot(reps, d_l);
     // With an unlimited battery d_gb matters only through its weights: skip that search if
     // both are zero (the features then read 0, which those weights ignore).

@@ -7,6 +7,7 @@
 #include <nlohmann/json_fwd.hpp>
 #include <string>
 
+#include "core/params.hpp"
 #include "strategies/strategy.hpp"
 
 namespace fsweep {
@@ -29,10 +30,14 @@ struct EnergyAwareParams {
   static constexpr double kMaxWeight = 250.0;
 };
 
-/// Reads and validates the parameters; every problem is reported with its JSON path.
-[[nodiscard]] EnergyAwareParams energy_aware_params_from_json(const nlohmann::json& j,
-                                                              const std::string& where);
-void to_json(nlohmann::json& j, const EnergyAwareParams& p);
+/// The declared parameters (core/params.hpp): w1..w4 in [0, 250], distance.
+[[nodiscard]] ParamDecl<EnergyAwareParams> energy_aware_params();
+
+/// closest_frontier's parameters: energy_aware with weights (1, 0, 0, 0) and its distance mode.
+struct ClosestFrontierParams {
+  std::string distance = "path";  ///< as EnergyAwareParams::distance
+};
+[[nodiscard]] ParamDecl<ClosestFrontierParams> closest_frontier_params();
 
 /// The energy-aware strategy. For every frontier cluster representative p_f (the cluster
 /// stands for its adjacent frontier cells, split at the sensor range as in section 3.3):

@@ -31,40 +31,18 @@ double GainScanner::scan_heading(const Observation& obs, Cell p) {
   return std::atan2(static_cast<double>(p.y - obs.robot.y), static_cast<double>(p.x - obs.robot.x));
 }
 
-GblParams gbl_params_from_json(const nlohmann::json& j, const std::string& where) {
-  GblParams p;
-  if (j.is_null()) return p;
-  require_known_keys(j, {"samples", "radius_m", "lambda"}, where);
-  std::string problems;
-  const auto problem = [&](const char* key, const nlohmann::json& v, const char* allowed) {
-    problems += (problems.empty() ? "" : "; ") + where + "/" + key + ": value " + v.dump() +
-                " not allowed; allowed: " + allowed;
-  };
-  if (j.contains("samples")) {
-    const auto& v = j.at("samples");
-    if (!v.is_number_integer() || v.get<long long>() < 1 || v.get<long long>() > 100000) {
-      problem("samples", v, "an integer in [1, 100000]");
-    } else {
-      p.samples = v.get<int>();
-    }
-  }
-  const auto non_negative = [&](const char* key, double& out, const char* allowed) {
-    if (!j.contains(key)) return;
-    const auto& v = j.at(key);
-    if (!v.is_number() || !std::isfinite(v.get<double>()) || v.get<double>() < 0.0) {
-      problem(key, v, allowed);
-      return;
-    }
-    out = v.get<double>();
-  };
-  non_negative("radius_m", p.radius_m, "a finite number >= 0 (metres)");
-  non_negative("lambda", p.lambda, "a finite number >= 0 (per metre)");
-  if (!problems.empty()) throw ConfigError("", problems);
-  return p;
-}
-
-void to_json(nlohmann::json& j, const GblParams& p) {
-  j = nlohmann::json{{"samples", p.samples}, {"radius_m", p.radius_m}, {"lambda", p.lambda}};
+ParamDecl<GblParams> gbl_params() {
+  ParamDecl<GblParams> d;
+  d.integer("samples", &GblParams::samples, "random draws of candidate locations per decision")
+      .range(1, 100000);
+  d.number("radius_m", &GblParams::radius_m,
+           "candidates are known free cells within this distance of a frontier cell (0: the frontier cell)")
+      .at_least(0)
+      .unit("m");
+  d.number("lambda", &GblParams::lambda, "weight of travel cost in I(p) exp(-lambda L(p)) (Holz 2010 eq. 3)")
+      .at_least(0)
+      .unit("1/m");
+  return d;
 }
 
 Gbl::Gbl(const GblParams& params, std::uint64_t seed) : params_(params), rng_(make_rng(seed, "gbl")) {}

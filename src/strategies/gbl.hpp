@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "core/params.hpp"
 #include "core/random.hpp"
 #include "strategies/strategy.hpp"
 #include "world/sensor.hpp"
@@ -51,8 +52,8 @@ struct GblParams {
 };
 
 /// Reads and validates the parameters; every problem is reported with its JSON path.
-[[nodiscard]] GblParams gbl_params_from_json(const nlohmann::json& j, const std::string& where);
-void to_json(nlohmann::json& j, const GblParams& p);
+/// The declared parameters (core/params.hpp).
+[[nodiscard]] ParamDecl<GblParams> gbl_params();
 
 /// One evaluated candidate of a GBL decision.
 struct GblCandidate {

@@ -30,53 +30,72 @@ double normalise(double v, double lo, double hi, bool maximise) {
 
 }  // namespace
 
-McdmParams mcdm_params_from_json(const nlohmann::json& j, const std::string& where) {
-  McdmParams p;
-  if (j.is_null()) return p;
-  require_known_keys(j, {"measure"}, where);
-  if (!j.contains("measure")) return p;
-  const std::string at = where + "/measure";
-  const auto& m = j.at("measure");
-  require_known_keys(m, {"L", "I", "O", "LI", "LO", "IO"}, at);
-  std::string problems;
-  // Appends one problem: the concatenation of `parts`.
-  const auto add = [&](std::initializer_list<std::string_view> parts) {
-    if (!problems.empty()) problems += "; ";
-    for (const std::string_view part : parts) problems += part;
-  };
+namespace {
+
+/// The problems of a JSON fuzzy measure (see mcdm_params()); on success `out` holds it.
+std::vector<std::string> measure_problems(const nlohmann::json& m, std::array<double, 8>* out) {
+  std::vector<std::string> problems;
+  if (!m.is_object())
+    return {
+        "expected an object {\"L\": ..., \"I\": ..., \"O\": ..., \"LI\": ..., "
+        "\"LO\": ..., \"IO\": ...}, got " +
+        m.dump()};
+  for (const auto& [key, value] : m.items()) {
+    if (std::find(kKeys.begin() + 1, kKeys.end() - 1, key) == kKeys.end() - 1) {
+      problems.push_back(key + ": unknown subset; allowed: L, I, O, LI, LO, IO");
+    }
+  }
+  std::array<double, 8> measure{0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0};
   for (unsigned s = 1; s < 7; ++s) {
     const std::string key = kKeys[s];
     if (!m.contains(key)) {
-      add({at, "/", key, ": missing; the measure needs all of L, I, O, LI, LO, IO"});
+      problems.push_back(key + ": missing; the measure needs all of L, I, O, LI, LO, IO");
       continue;
     }
     const auto& v = m.at(key);
     if (!v.is_number() || !(v.get<double>() >= 0.0 && v.get<double>() <= 1.0)) {
-      add({at, "/", key, ": value ", v.dump(), " not allowed; allowed: a number in [0, 1]"});
+      problems.push_back(key + ": value " + v.dump() + " not allowed; allowed: a number in [0, 1]");
       continue;
     }
-    p.measure[s] = v.get<double>();
+    measure[s] = v.get<double>();
   }
-  if (!problems.empty()) throw ConfigError("", problems);
+  if (!problems.empty()) return problems;
   // Every value is in [0, 1] and the ends are fixed, so only monotonicity can fail here.
-  for (const MeasureViolation& v : fuzzy_measure_violations(p.measure)) {
+  for (const MeasureViolation& v : fuzzy_measure_violations(measure)) {
     const std::string a = subset_name(v.subset, kLetters);
     const std::string b = subset_name(v.superset, kLetters);
-    // The path names the user's value that is part of the pair (the larger set unless it is
-    // the fixed full set).
+    // Names the user's value that is part of the pair (the larger set unless it is the fixed
+    // full set).
     const std::string key = v.superset == 7U ? a : b;
-    add({at, "/", key, ": mu(", a, ") = ", nlohmann::json(p.measure[v.subset]).dump(), " > mu(", b,
-         ") = ", nlohmann::json(p.measure[v.superset]).dump(),
-         "; a fuzzy measure must not decrease when a criterion is added (", a, " is a subset of ", b, ")"});
+    problems.push_back(key + ": mu(" + a + ") = " + nlohmann::json(measure[v.subset]).dump() + " > mu(" + b +
+                       ") = " + nlohmann::json(measure[v.superset]).dump() +
+                       "; a fuzzy measure must not decrease when a criterion is added (" + a +
+                       " is a subset of " + b + ")");
   }
-  if (!problems.empty()) throw ConfigError("", problems);
-  return p;
+  if (problems.empty() && out != nullptr) *out = measure;
+  return problems;
 }
 
-void to_json(nlohmann::json& j, const McdmParams& p) {
-  nlohmann::json m = nlohmann::json::object();
-  for (unsigned s = 1; s < 7; ++s) m[kKeys[s]] = p.measure[s];
-  j = nlohmann::json{{"measure", m}};
+}  // namespace
+
+ParamDecl<McdmParams> mcdm_params() {
+  ParamDecl<McdmParams> d;
+  ParamSpec spec;
+  spec.name = "measure";
+  spec.type = ParamType::Custom;
+  spec.doc =
+      "fuzzy measure of the Choquet integral over the criteria L (travel), I (gain), O (overlap); "
+      "default Holz 2010 Table I";
+  spec.allowed_text = "an object of the subsets L, I, O, LI, LO, IO, each a number in [0, 1], monotone";
+  spec.custom_check = [](const nlohmann::json& v) { return measure_problems(v, nullptr); };
+  d.custom(
+      std::move(spec), [](McdmParams& p, const nlohmann::json& v) { (void)measure_problems(v, &p.measure); },
+      [](const McdmParams& p) {
+        nlohmann::json m = nlohmann::json::object();
+        for (unsigned s = 1; s < 7; ++s) m[kKeys[s]] = p.measure[s];
+        return m;
+      });
+  return d;
 }
 
 std::vector<McdmCandidate> Mcdm::evaluate(const Observation& obs) {

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "core/params.hpp"
 #include "strategies/gbl.hpp"
 #include "strategies/strategy.hpp"
 
@@ -29,11 +30,10 @@ struct McdmParams {
   std::array<double, 8> measure{0.0, 0.2, 0.4, 0.9, 0.4, 0.6, 0.8, 1.0};
 };
 
-/// Reads and validates the parameters: each value a number in [0, 1] and the measure monotone
-/// (mu(A) <= mu(B) for A a subset of B). Every problem is reported with its JSON path
-/// (`where/measure/<subset>`) and, for monotonicity, the offending pair of subsets.
-[[nodiscard]] McdmParams mcdm_params_from_json(const nlohmann::json& j, const std::string& where);
-void to_json(nlohmann::json& j, const McdmParams& p);
+/// The declared parameters (core/params.hpp): "measure", an object of the six proper
+/// non-empty subsets of {L, I, O} (all six required), each a number in [0, 1], monotone
+/// (mu(A) <= mu(B) for A a subset of B; a violation names the pair of subsets).
+[[nodiscard]] ParamDecl<McdmParams> mcdm_params();
 
 /// One evaluated candidate of an MCDM decision.
 struct McdmCandidate {

@@ -6,29 +6,19 @@
 #include <nlohmann/json.hpp>
 
 #include "core/config_error.hpp"
-#include "strategies/heuristics.hpp"
 #include "strategies/sensing_region.hpp"
 
 namespace fsweep {
 inline namespace strategies {
 
-OrientationParams orientation_params_from_json(const nlohmann::json& j, const std::string& where) {
-  OrientationParams p;
-  if (j.is_null()) return p;
-  require_known_keys(j, {"head_distance_ratio"}, where);
-  if (j.contains("head_distance_ratio")) {
-    const auto& v = j.at("head_distance_ratio");
-    if (!v.is_number() || !(v.get<double>() > 0.0) || v.get<double>() > 1.0) {
-      throw ConfigError("", where + "/head_distance_ratio: value " + v.dump() +
-                                " out of range; allowed: a number in (0, 1]");
-    }
-    p.head_distance_ratio = v.get<double>();
-  }
-  return p;
-}
-
-void to_json(nlohmann::json& j, const OrientationParams& p) {
-  j = nlohmann::json{{"head_distance_ratio", p.head_distance_ratio}};
+ParamDecl<OrientationParams> orientation_params() {
+  ParamDecl<OrientationParams> d;
+  d.number("head_distance_ratio", &OrientationParams::head_distance_ratio,
+           "the walk along the clockwise list stops before the first cell at least this times d_s from "
+           "the list head (Mei 2006 section IV-B step 3(b))")
+      .range(0, 1)
+      .above(0);
+  return d;
 }
 
 std::vector<int> clockwise_from_left(const KnownMap& known, Cell robot, int heading,
@@ -79,7 +69,7 @@ std::size_t walk_from_head(const KnownMap& known, std::span<const int> ordered, 
 
 Decision Orientation::decide(const Observation& obs) {
   SensingRegion region = split_by_sensing_region(obs);  // step 1
-  restrict_to_segment(obs, region);                     // the `seg` heuristic, when on (heuristics.hpp)
+  restrict_to_segment(obs, region);  // the `seg` heuristic, when on (src/sim/heuristics.hpp)
   if (region.inside.empty()) return closest_outside(obs, region.outside);  // steps 4, 5
   const std::vector<int> ordered =
       clockwise_from_left(obs.known, obs.robot, obs.heading, region.inside);  // step 2

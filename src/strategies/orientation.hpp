@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "core/params.hpp"
 #include "strategies/strategy.hpp"
 
 namespace fsweep {
@@ -22,9 +23,8 @@ struct OrientationParams {
 };
 
 /// Reads and validates the parameters; every problem is reported with its JSON path.
-[[nodiscard]] OrientationParams orientation_params_from_json(const nlohmann::json& j,
-                                                             const std::string& where);
-void to_json(nlohmann::json& j, const OrientationParams& p);
+/// The declared parameters (core/params.hpp).
+[[nodiscard]] ParamDecl<OrientationParams> orientation_params();
 
 /// Section IV-B step 2: `cells` (indices of `known`) ordered clockwise on screen starting from
 /// the robot's left. The left is heading_angle(heading) - 90 degrees (heading 0 = east: the

@@ -10,11 +10,6 @@
 namespace fsweep {
 inline namespace strategies {
 
-void random_frontier_params_from_json(const nlohmann::json& j, const std::string& where) {
-  if (j.is_null()) return;
-  require_known_keys(j, {}, where);
-}
-
 Decision RandomFrontier::decide(const Observation& obs) {
   std::vector<int> reps;
   reps.reserve(obs.clusters.size());

@@ -13,10 +13,6 @@
 namespace fsweep {
 inline namespace strategies {
 
-/// Validates the (empty) parameters: null or an object without keys; anything else is a
-/// ConfigError at `where`.
-void random_frontier_params_from_json(const nlohmann::json& j, const std::string& where);
-
 /// Random frontier: the representatives of obs.clusters that the robot can reach
 /// (obs.distances), in cluster order; the goal is the one at position uniform_below(count) of
 /// the strategy's generator (stream "random_frontier" of the seed given at construction; one

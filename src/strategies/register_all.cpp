@@ -1,15 +1,11 @@
 /// @file register_all.cpp
 /// The one place where strategies are registered.
 
-#include <algorithm>
-#include <functional>
-#include <map>
 #include <nlohmann/json.hpp>
 
 #include "core/config_error.hpp"
 #include "strategies/energy_aware.hpp"
 #include "strategies/gbl.hpp"
-#include "strategies/heuristics.hpp"
 #include "strategies/mcdm.hpp"
 #include "strategies/orientation.hpp"
 #include "strategies/random_frontier.hpp"
@@ -21,115 +17,79 @@ namespace fsweep {
 inline namespace strategies {
 namespace {
 
-struct Entry {
-  std::function<std::unique_ptr<Strategy>(const nlohmann::json&, std::uint64_t, const std::string&)> make;
-  std::function<nlohmann::json(const nlohmann::json&)> resolve;
-};
+using Made = std::unique_ptr<Strategy>;
 
-const std::map<std::string, Entry>& table() {
-  static const std::map<std::string, Entry> entries = {
-      {"energy_aware",
-       {[](const nlohmann::json& p, std::uint64_t, const std::string& where) -> std::unique_ptr<Strategy> {
-          return std::make_unique<EnergyAware>("energy_aware", energy_aware_params_from_json(p, where));
-        },
-        [](const nlohmann::json& p) { return nlohmann::json(energy_aware_params_from_json(p, "")); }}},
-      {"closest_frontier",
-       {[](const nlohmann::json& p, std::uint64_t, const std::string& where) -> std::unique_ptr<Strategy> {
-          EnergyAwareParams ea;
-          ea.w1 = 1.0;
-          ea.w2 = ea.w3 = ea.w4 = 0.0;
-          if (!p.is_null()) {
-            require_known_keys(p, {"distance"}, where);
-            ea.distance = energy_aware_params_from_json(p, where).distance;
-          }
-          return std::make_unique<EnergyAware>("closest_frontier", ea);
-        },
-        [](const nlohmann::json& p) {
-          std::string d = "path";
-          if (!p.is_null() && p.contains("distance")) d = p.at("distance").get<std::string>();
-          return nlohmann::json{{"distance", d}};
-        }}},
-      {"orientation",
-       {[](const nlohmann::json& p, std::uint64_t, const std::string& where) -> std::unique_ptr<Strategy> {
-          return std::make_unique<Orientation>(orientation_params_from_json(p, where));
-        },
-        [](const nlohmann::json& p) { return nlohmann::json(orientation_params_from_json(p, "")); }}},
-      {"widest_frontier",
-       {[](const nlohmann::json& p, std::uint64_t, const std::string& where) -> std::unique_ptr<Strategy> {
-          widest_frontier_params_from_json(p, where);
-          return std::make_unique<WidestFrontier>();
-        },
-        [](const nlohmann::json& p) {
-          widest_frontier_params_from_json(p, "");
-          return nlohmann::json::object();
-        }}},
-      {"gbl",
-       {[](const nlohmann::json& p, std::uint64_t seed,
-           const std::string& where) -> std::unique_ptr<Strategy> {
-          return std::make_unique<Gbl>(gbl_params_from_json(p, where), seed);
-        },
-        [](const nlohmann::json& p) { return nlohmann::json(gbl_params_from_json(p, "")); }}},
-      {"mcdm",
-       {[](const nlohmann::json& p, std::uint64_t, const std::string& where) -> std::unique_ptr<Strategy> {
-          return std::make_unique<Mcdm>(mcdm_params_from_json(p, where));
-        },
-        [](const nlohmann::json& p) { return nlohmann::json(mcdm_params_from_json(p, "")); }}},
-      {"target_seeking",
-       {[](const nlohmann::json& p, std::uint64_t, const std::string& where) -> std::unique_ptr<Strategy> {
-          return std::make_unique<TargetSeeking>(target_seeking_params_from_json(p, where));
-        },
-        [](const nlohmann::json& p) { return nlohmann::json(target_seeking_params_from_json(p, "")); }}},
-      {"random_frontier",
-       {[](const nlohmann::json& p, std::uint64_t seed,
-           const std::string& where) -> std::unique_ptr<Strategy> {
-          random_frontier_params_from_json(p, where);
-          return std::make_unique<RandomFrontier>(seed);
-        },
-        [](const nlohmann::json& p) {
-          random_frontier_params_from_json(p, "");
-          return nlohmann::json::object();
-        }}},
-  };
-  return entries;
-}
-
-const Entry& find(const std::string& name, const std::string& where) {
-  const auto& t = table();
-  const auto it = t.find(name);
-  if (it == t.end()) {
-    throw ConfigError(where, "unknown strategy '" + name + "'; known: " + join_names(strategy_names()));
-  }
-  return it->second;
+StrategyRegistry make_registry() {
+  StrategyRegistry r("strategy");
+  r.add<EnergyAwareParams>(
+      "energy_aware",
+      "energy-aware exploration, Rappaport 2016 Algorithm 1 (cost eq. 8, return threshold eq. 7)",
+      energy_aware_params(), [](const EnergyAwareParams& p, std::uint64_t) -> Made {
+        return std::make_unique<EnergyAware>("energy_aware", p);
+      });
+  r.add<ClosestFrontierParams>(
+      "closest_frontier",
+      "nearest frontier by path length (Yamauchi 1997): energy_aware with weights (1, 0, 0, 0)",
+      closest_frontier_params(), [](const ClosestFrontierParams& p, std::uint64_t) -> Made {
+        EnergyAwareParams ea;
+        ea.w1 = 1.0;
+        ea.w2 = ea.w3 = ea.w4 = 0.0;
+        ea.distance = p.distance;
+        return std::make_unique<EnergyAware>("closest_frontier", ea);
+      });
+  r.add<OrientationParams>(
+      "orientation",
+      "frontier cells of the sensing region walked clockwise from the robot's left (Mei 2006 IV-B)",
+      orientation_params(),
+      [](const OrientationParams& p, std::uint64_t) -> Made { return std::make_unique<Orientation>(p); });
+  r.add<NoParams>("widest_frontier",
+                  "middle cell of the largest frontier group in the sensing region (Mei 2006's baseline)",
+                  ParamDecl<NoParams>{},
+                  [](const NoParams&, std::uint64_t) -> Made { return std::make_unique<WidestFrontier>(); });
+  r.add<GblParams>(
+      "gbl",
+      "Gonzalez-Banos and Latombe: sampled candidates maximising I(p) exp(-lambda L(p)) (Holz 2010 eq. 3)",
+      gbl_params(),
+      [](const GblParams& p, std::uint64_t seed) -> Made { return std::make_unique<Gbl>(p, seed); });
+  r.add<McdmParams>(
+      "mcdm", "Basilico and Amigoni: criteria L, I, O aggregated by a Choquet integral (Holz 2010 Table I)",
+      mcdm_params(), [](const McdmParams& p, std::uint64_t) -> Made { return std::make_unique<Mcdm>(p); });
+  r.add<TargetSeekingParams>(
+      "target_seeking", "Arvanitakis et al.: reach a target in unknown space, frontier cost eq. 12",
+      target_seeking_params(),
+      [](const TargetSeekingParams& p, std::uint64_t) -> Made { return std::make_unique<TargetSeeking>(p); });
+  r.add<NoParams>("random_frontier", "a reachable frontier cluster drawn uniformly (seeded); a baseline",
+                  ParamDecl<NoParams>{}, [](const NoParams&, std::uint64_t seed) -> Made {
+                    return std::make_unique<RandomFrontier>(seed);
+                  });
+  return r;
 }
 
 }  // namespace
 
+const StrategyRegistry& strategy_registry() {
+  static const StrategyRegistry registry = make_registry();
+  return registry;
+}
+
+StrategyConfig configure_strategy(const std::string& name, const nlohmann::json& params,
+                                  const std::string& where, const std::string& params_where) {
+  const std::string at = params_where.empty() ? where + "/params" : params_where;
+  if (params.is_object() && params.contains("heuristics")) {
+    throw ConfigError(
+        param_path(at, "heuristics"),
+        "heuristics are no longer a strategy parameter; give them beside \"params\" in the "
+        "strategy entry: \"heuristics\": [\"rr\", \"seg\"] (or a list of such lists to sweep them)");
+  }
+  return strategy_registry().configure(name, params, where, at);
+}
+
 std::unique_ptr<Strategy> make_strategy(const std::string& name, const nlohmann::json& params,
                                         std::uint64_t seed, const std::string& where) {
-  // Heuristics apply to any strategy and are run by the engine (heuristics.hpp): validated
-  // here, then taken out before the strategy's own parser sees the parameters.
-  const Entry& entry = find(name, where);
-  (void)heuristics_from_json(params, where + "/params");
-  return entry.make(without_heuristics(params), seed, where + "/params");
+  return configure_strategy(name, params, where).make(seed);
 }
 
-std::vector<std::string> strategy_names() {
-  std::vector<std::string> names;
-  for (const auto& [name, entry] : table()) names.push_back(name);
-  return names;
-}
-
-nlohmann::json resolved_strategy_params(const std::string& name, const nlohmann::json& params) {
-  // "heuristics" is recorded (canonical order) whenever the key is given, even as [], and
-  // omitted when absent: run keys and columns of configurations without the key are unchanged,
-  // and every configuration of a sweep over [[], ["rr"], ...] has the column.
-  nlohmann::json resolved = find(name, "strategy").resolve(without_heuristics(params));
-  if (params.is_object() && params.contains("heuristics")) {
-    if (resolved.is_null()) resolved = nlohmann::json::object();
-    resolved["heuristics"] = heuristics_to_json(heuristics_from_json(params, "strategy/params"));
-  }
-  return resolved;
-}
+std::vector<std::string> strategy_names() { return strategy_registry().names(); }
 
 }  // namespace strategies
 }  // namespace fsweep

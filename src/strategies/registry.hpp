@@ -1,7 +1,8 @@
 #pragma once
 /// @file registry.hpp
-/// Strategy names to factories, filled explicitly in src/strategies/register_all.cpp. The same
-/// registry serves JSON, the command line and the tests.
+/// The strategy registry (core/registry.hpp), filled explicitly in
+/// src/strategies/register_all.cpp. The same registry serves JSON, the command line
+/// (`fsweep describe strategy`) and the tests.
 
 #include <cstdint>
 #include <memory>
@@ -9,23 +10,35 @@
 #include <string>
 #include <vector>
 
+#include "core/registry.hpp"
 #include "strategies/strategy.hpp"
 
 namespace fsweep {
 inline namespace strategies {
 
-/// Makes strategy `name` with `params` (JSON object or null for defaults; unknown keys are
-/// errors) and the run seed (for strategies with random parts). Throws ConfigError at `where`
-/// for an unknown name, listing the known ones.
+/// Strategies, made from their typed params and the run seed (for strategies with random parts).
+using StrategyRegistry = Registry<std::unique_ptr<Strategy>, std::uint64_t>;
+/// A strategy resolved once: name, resolved params (every parameter), maker.
+using StrategyConfig = StrategyRegistry::Configured;
+
+/// Every registered strategy.
+[[nodiscard]] const StrategyRegistry& strategy_registry();
+
+/// Resolves strategy `name` with `params` (JSON object or null for defaults). Throws ConfigError
+/// at `where` for an unknown name (listing the known ones) and one ConfigError listing every
+/// bad parameter at `params_where`/<key> (default `where`/params). A "heuristics" key is refused with a
+/// message naming its new place (a sibling of "params" in a sweep's strategy entry; src/sim/heuristics.hpp).
+[[nodiscard]] StrategyConfig configure_strategy(const std::string& name, const nlohmann::json& params,
+                                                const std::string& where = "strategy",
+                                                const std::string& params_where = {});
+
+/// configure_strategy(name, params, where).make(seed).
 [[nodiscard]] std::unique_ptr<Strategy> make_strategy(const std::string& name, const nlohmann::json& params,
                                                       std::uint64_t seed,
                                                       const std::string& where = "strategy");
 
 /// Every registered strategy name, sorted.
 [[nodiscard]] std::vector<std::string> strategy_names();
-
-/// The resolved parameters of a strategy (defaults filled in), for outputs.
-[[nodiscard]] nlohmann::json resolved_strategy_params(const std::string& name, const nlohmann::json& params);
 
 }  // namespace strategies
 }  // namespace fsweep

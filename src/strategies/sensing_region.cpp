@@ -40,5 +40,17 @@ Decision closest_outside(const Observation& obs, const std::vector<int>& outside
   return Decision::go_to(obs.known.cell(outside[static_cast<std::size_t>(best)]));
 }
 
+void restrict_to_segment(const Observation& obs, SensingRegion& region) {
+  if (obs.segment_mask == nullptr) return;
+  const auto& mask = *obs.segment_mask;
+  const auto in_segment = [&](int i) { return mask[static_cast<std::size_t>(i)] != 0; };
+  if (std::none_of(region.inside.begin(), region.inside.end(), in_segment) &&
+      std::none_of(region.outside.begin(), region.outside.end(), in_segment)) {
+    return;
+  }
+  std::erase_if(region.inside, [&](int i) { return !in_segment(i); });
+  std::erase_if(region.outside, [&](int i) { return !in_segment(i); });
+}
+
 }  // namespace strategies
 }  // namespace fsweep

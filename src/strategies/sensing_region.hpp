@@ -35,5 +35,12 @@ struct SensingRegion {
 /// lowest index), or Decision::finish() when none is reachable.
 [[nodiscard]] Decision closest_outside(const Observation& obs, const std::vector<int>& outside);
 
+/// For the sensing-region rules of orientation and widest_frontier (which read frontier cells
+/// rather than obs.clusters): when obs.segment_mask is set (the `seg` heuristic restricts this
+/// decision, src/sim/heuristics.hpp), keeps in `region.inside` and `region.outside` only the
+/// cells of the robot's segment, unless none of either list is in it; then, and when the mask
+/// is null, leaves `region` unchanged. Order is kept.
+void restrict_to_segment(const Observation& obs, SensingRegion& region);
+
 }  // namespace strategies
 }  // namespace fsweep

@@ -144,7 +144,8 @@ class Strategy {
 };
 
 /// A strategy whose choice is argmin(weights . features) over candidates. The engine may read
-/// candidates() and weights() directly to evaluate many weight vectors at once (DESIGN.md 7).
+/// candidates() and weights() directly to evaluate many weight vectors at once (docs/architecture.md,
+/// "Sweeps, keys, shards and the weight search").
 class LinearScoredStrategy : public Strategy {
  public:
   /// The candidates of this decision, after any feasibility filter.

@@ -17,58 +17,48 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 std::string cell_text(Cell c) { return "(" + std::to_string(c.x) + ", " + std::to_string(c.y) + ")"; }
 
-double weight_from_json(const nlohmann::json& j, const char* key, double fallback, const std::string& where) {
-  if (!j.contains(key)) return fallback;
-  const auto& v = j.at(key);
-  if (!v.is_number() || !(v.get<double>() >= 0.0) || v.get<double>() > 1.0) {
-    throw ConfigError(where + "/" + key, "value " + v.dump() + " out of range; allowed: a number in [0, 1]");
-  }
-  return v.get<double>();
-}
-
 }  // namespace
 
-TargetSeekingParams target_seeking_params_from_json(const nlohmann::json& j, const std::string& where) {
-  TargetSeekingParams p;
-  if (j.is_null()) return p;
-  require_known_keys(j, {"target", "w1", "w2", "w3", "motion"}, where);
-  const nlohmann::json t = j.value("target", nlohmann::json());
-  if (t.is_null()) {
-    p.target.reset();
-  } else if (t.is_string() && t.get<std::string>() == "random") {
-    p.random_target = true;
-  } else if (!t.is_array() || t.size() != 2 || !t[0].is_number_integer() || !t[1].is_number_integer() ||
-             t[0].get<long long>() < 0 || t[1].get<long long>() < 0 ||
-             t[0].get<long long>() > std::numeric_limits<int>::max() ||
-             t[1].get<long long>() > std::numeric_limits<int>::max()) {
-    throw ConfigError(
-        where + "/target",
-        "value " + t.dump() + " is not a cell; allowed: [x, y], two integers >= 0, \"random\", or null");
-  } else {
-    p.target = Cell{t[0].get<int>(), t[1].get<int>()};
-  }
-  p.w1 = weight_from_json(j, "w1", p.w1, where);
-  p.w2 = weight_from_json(j, "w2", p.w2, where);
-  p.w3 = weight_from_json(j, "w3", p.w3, where);
-  if (j.contains("motion")) {
-    const auto& m = j.at("motion");
-    if (!m.is_string() || (m.get<std::string>() != "shortest_path" && m.get<std::string>() != "gradient")) {
-      throw ConfigError(where + "/motion",
-                        "value " + m.dump() + " unknown; allowed: \"shortest_path\", \"gradient\"");
-    }
-    p.motion = m.get<std::string>() == "gradient" ? TargetMotion::Gradient : TargetMotion::ShortestPath;
-  }
-  return p;
-}
-
-void to_json(nlohmann::json& j, const TargetSeekingParams& p) {
-  j = nlohmann::json{{"target", p.random_target ? nlohmann::json("random")
-                                : p.target      ? nlohmann::json{p.target->x, p.target->y}
-                                                : nlohmann::json()},
-                     {"w1", p.w1},
-                     {"w2", p.w2},
-                     {"w3", p.w3},
-                     {"motion", p.motion == TargetMotion::Gradient ? "gradient" : "shortest_path"}};
+ParamDecl<TargetSeekingParams> target_seeking_params() {
+  ParamDecl<TargetSeekingParams> d;
+  ParamSpec target;
+  target.name = "target";
+  target.type = ParamType::Custom;
+  target.nullable = true;
+  target.doc = "the cell to reach; null: pure exploration (phi = 1, section II-B); \"random\": drawn per run";
+  target.allowed_text = "[x, y], two integers >= 0 (cells), or \"random\"";
+  target.custom_check = [](const nlohmann::json& t) -> std::vector<std::string> {
+    if (t.is_string() && t.get<std::string>() == "random") return {};
+    const auto cell_coordinate = [](const nlohmann::json& v) {
+      return v.is_number_integer() && v.get<long long>() >= 0 &&
+             v.get<long long>() <= std::numeric_limits<int>::max();
+    };
+    if (t.is_array() && t.size() == 2 && cell_coordinate(t[0]) && cell_coordinate(t[1])) return {};
+    return {"value " + t.dump() + " is not a cell; allowed: [x, y], two integers >= 0, \"random\", or null"};
+  };
+  d.custom(
+      std::move(target),
+      [](TargetSeekingParams& p, const nlohmann::json& t) {
+        p.target.reset();
+        p.random_target = t.is_string();
+        if (t.is_array()) p.target = Cell{t[0].get<int>(), t[1].get<int>()};
+      },
+      [](const TargetSeekingParams& p) {
+        return p.random_target ? nlohmann::json("random")
+               : p.target      ? nlohmann::json{p.target->x, p.target->y}
+                               : nlohmann::json();
+      });
+  d.number("w1", &TargetSeekingParams::w1, "weight of 1/L, L the frontier's length (Arvanitakis eq. 12)")
+      .range(0, 1);
+  d.number("w2", &TargetSeekingParams::w2,
+           "weight of Hg(target, frontier), the geodesic Hausdorff distance (eq. 12)")
+      .range(0, 1);
+  d.number("w3", &TargetSeekingParams::w3, "weight of Hg(robot, frontier) (eq. 12)").range(0, 1);
+  d.choice("motion", &TargetSeekingParams::motion,
+           {{"shortest_path", TargetMotion::ShortestPath}, {"gradient", TargetMotion::Gradient}},
+           "each motion: one step along a shortest path to the chosen frontier, or the gradient step of "
+           "eq. 2, 10, 13-15");
+  return d;
 }
 
 FrontierChoice choose_target_frontier(const Observation& obs, const TargetSeekingParams& params) {

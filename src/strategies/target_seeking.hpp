@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "core/params.hpp"
 #include "strategies/strategy.hpp"
 #include "world/sensor.hpp"
 #include "world/world_map.hpp"
@@ -53,13 +54,10 @@ struct TargetSeekingParams {
   TargetMotion motion = TargetMotion::ShortestPath;
 };
 
-/// Reads and validates the parameters (null: every default); every problem is a ConfigError
-/// naming its JSON path (`where` + "/key") and what is allowed. "target" is null or two
-/// integers >= 0 (a target outside the map is only known at run time and ends the run as
-/// target_unreachable), or "random" (random_target).
-[[nodiscard]] TargetSeekingParams target_seeking_params_from_json(const nlohmann::json& j,
-                                                                  const std::string& where);
-void to_json(nlohmann::json& j, const TargetSeekingParams& p);
+/// The declared parameters (core/params.hpp). "target" is null, two integers >= 0 (a target
+/// outside the map is only known at run time and ends the run as target_unreachable), or
+/// "random" (random_target).
+[[nodiscard]] ParamDecl<TargetSeekingParams> target_seeking_params();
 
 /// One frontier scored by equation 12.
 struct ScoredFrontier {

@@ -5,16 +5,10 @@
 #include <nlohmann/json.hpp>
 
 #include "core/config_error.hpp"
-#include "strategies/heuristics.hpp"
 #include "strategies/sensing_region.hpp"
 
 namespace fsweep {
 inline namespace strategies {
-
-void widest_frontier_params_from_json(const nlohmann::json& j, const std::string& where) {
-  if (j.is_null()) return;
-  require_known_keys(j, {}, where);
-}
 
 std::vector<std::vector<int>> frontier_groups(const KnownMap& known, std::span<const int> cells) {
   std::vector<std::vector<int>> groups;
@@ -70,7 +64,7 @@ int middle_cell(const KnownMap& known, std::span<const int> group) {
 
 Decision WidestFrontier::decide(const Observation& obs) {
   SensingRegion region = split_by_sensing_region(obs);  // 1
-  restrict_to_segment(obs, region);                     // the `seg` heuristic, when on (heuristics.hpp)
+  restrict_to_segment(obs, region);  // the `seg` heuristic, when on (src/sim/heuristics.hpp)
   if (region.inside.empty()) return closest_outside(obs, region.outside);  // 4
   const auto groups = frontier_groups(obs.known, region.inside);           // 2
   std::size_t widest = 0;

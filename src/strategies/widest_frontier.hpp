@@ -14,10 +14,6 @@
 namespace fsweep {
 inline namespace strategies {
 
-/// Validates the (empty) parameters: null or an object without keys; anything else is a
-/// ConfigError at `where`. The rule has no tunable constant in the paper.
-void widest_frontier_params_from_json(const nlohmann::json& j, const std::string& where);
-
 /// Section V-C "clusters the frontier cells ... into groups ... connected as neighbors":
 /// the 8-connected components of `cells` (indices of `known`, ascending), plain 8-neighbour
 /// adjacency as in the paper's grid (section IV-A), without FrontierMap's corner rule. Each

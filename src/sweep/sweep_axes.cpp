@@ -11,6 +11,7 @@
 
 #include "core/config_error.hpp"
 #include "planners/registry.hpp"
+#include "sim/heuristics.hpp"
 #include "strategies/registry.hpp"
 
 namespace fsweep {
@@ -125,7 +126,7 @@ std::vector<StrategyEntry> parse_strategies(const json& strategies, std::vector<
     const json& item = strategies[i];
     const std::size_t before = problems.size();
     try {
-      require_known_keys(item, {"name", "label", "params", "zip"}, where);
+      require_known_keys(item, {"name", "label", "params", "heuristics", "zip"}, where);
     } catch (const ConfigError& e) {
       problems.emplace_back(e.what());
       continue;
@@ -161,6 +162,24 @@ std::vector<StrategyEntry> parse_strategies(const json& strategies, std::vector<
         Axis a{key, path, value, expand_values(value, path, problems)};
         axes.emplace(key, std::move(a));
       }
+    }
+    // The heuristics (a simulation setting, src/sim/heuristics.hpp) sit beside the params: one
+    // list of names, or a list of such lists to sweep them. They vary as an axis of the entry
+    // named "heuristics", so they order and zip like a parameter.
+    if (item.contains("heuristics")) {
+      const std::string path = where + "/heuristics";
+      const json& h = item["heuristics"];
+      const bool swept = h.is_array() && !h.empty() &&
+                         std::all_of(h.begin(), h.end(), [](const json& e) { return e.is_array(); });
+      Axis a{"heuristics", path, h, swept ? expand_values(h, path, problems) : std::vector<json>{h}};
+      for (std::size_t k = 0; k < a.values.size(); ++k) {
+        try {
+          (void)heuristics_from_json(a.values[k], swept ? value_path(h, path, k) : path);
+        } catch (const ConfigError& e) {
+          problems.emplace_back(e.what());
+        }
+      }
+      if (axes.count("heuristics") == 0) axes.emplace("heuristics", std::move(a));
     }
     // 3. Zip groups: known parameters, each in one group, equal numbers of values.
     std::map<std::string, std::size_t> group_of;
@@ -226,36 +245,36 @@ std::vector<StrategyEntry> parse_strategies(const json& strategies, std::vector<
     }
     if (problems.size() != before) continue;
 
-    // 5. Validation by the strategy itself: each value alone (others at their defaults) and
-    //    with the first value of every other axis; a value is bad when both fail.
-    const json base = entry.params_at(0);
-    auto make = [&](const json& p) { return failure([&] { (void)make_strategy(entry.name, p, 0, where); }); };
-    for (const auto& [key, axis] : axes) {
-      std::vector<std::pair<std::size_t, std::string>> bad;
-      for (std::size_t k = 0; k < axis.values.size(); ++k) {
-        const auto alone = make(json{{key, axis.values[k]}});
-        if (!alone) continue;
-        json with_base = base;
-        with_base[key] = axis.values[k];
-        if (make(with_base)) bad.emplace_back(k, *alone);
-      }
-      report_axis(axis, bad, problems);
-    }
-    if (problems.size() != before) continue;
-    for (std::size_t g = 0; g < entry.groups.size(); ++g) {
-      const auto& group = entry.groups[g];
-      for (std::size_t k = 1; k < group.combos.size() && group.names.size() > 1; ++k) {
-        json with_base = base;
-        for (std::size_t m = 0; m < group.names.size(); ++m) with_base[group.names[m]] = group.combos[k][m];
-        if (const auto e = make(with_base)) {
-          problems.push_back(where + "/zip/" + std::to_string(group_of.at(group.names[0])) + ": values " +
-                             value_text(with_base) + ": " + *e);
-          break;
+    // 5. Every value of every parameter axis against the strategy's declaration
+    //    (core/params.hpp); parameters are independent, so no combination needs checking.
+    if (strategy_registry().contains(entry.name)) {
+      const ParamSpecs& specs = strategy_registry().params(entry.name);
+      for (const auto& [key, axis] : axes) {
+        if (axis.where == where + "/heuristics") continue;
+        if (key == "heuristics") {
+          try {
+            (void)configure_strategy(entry.name, json{{key, nullptr}}, where);
+          } catch (const ConfigError& e) {
+            problems.emplace_back(e.what());
+          }
+          continue;
         }
+        const auto spec = std::find_if(specs.begin(), specs.end(),
+                                       [&key = key](const ParamSpec& s) { return s.name == key; });
+        if (spec == specs.end()) {
+          std::vector<std::string> names;
+          for (const auto& s : specs) names.push_back(s.name);
+          problems.push_back(axis.where + ": unknown key '" + key +
+                             "'; allowed: " + (names.empty() ? std::string("none") : join_names(names)));
+          continue;
+        }
+        std::vector<std::pair<std::size_t, std::string>> bad;
+        for (std::size_t k = 0; k < axis.values.size(); ++k) {
+          if (auto problem = spec->check(axis.values[k])) bad.emplace_back(k, std::move(*problem));
+        }
+        report_axis(axis, bad, problems);
       }
     }
-    if (const auto e = make(base); e && problems.size() == before)
-      problems.push_back(where + "/params: " + *e);
     out.push_back(std::move(entry));
   }
   return out;

@@ -16,6 +16,8 @@
 
 #include "core/config_error.hpp"
 #include "core/random.hpp"
+#include "planners/registry.hpp"
+#include "sim/heuristics.hpp"
 #include "strategies/registry.hpp"
 #include "sweep/sweep_axes.hpp"
 
@@ -320,42 +322,64 @@ RunCoordinates SweepPlan::coordinates(std::uint64_t index) const {
   return c;
 }
 
-RunSpec SweepPlan::run_spec(std::uint64_t index) const {
-  const RunCoordinates c = coordinates(index);
+RunSpec SweepPlan::spec_at(const RunCoordinates& c) const {
   RunSpec spec;
   spec.map = maps_[c.map].map;
   const StrategyEntry& entry = strategies_[c.strategy_entry];
-  spec.strategy = entry.name;
-  spec.strategy_params = entry.params_at(c.strategy_combo);
-  spec.planner = planners_[c.planner].name;
-  spec.planner_params = planners_[c.planner].params;
+  nlohmann::json params = entry.params_at(c.strategy_combo);
+  if (params.is_object() && params.contains("heuristics")) {  // the entry's "heuristics" axis
+    spec.heuristics = heuristics_from_json(params["heuristics"], "heuristics");
+    params.erase("heuristics");
+    if (params.empty()) params = nullptr;
+  }
+  spec.strategy = configure_strategy(entry.name, params, "/strategies/" + std::to_string(c.strategy_entry));
+  spec.planner = configure_planner(planners_[c.planner].name, planners_[c.planner].params,
+                                   "/planners/" + std::to_string(c.planner));
   spec.robot = robots_[c.robot].params;
   spec.sim = sim_;
   spec.seed = derive_seed(seed_, "repetition/" + std::to_string(c.repetition));
   return spec;
 }
 
-json SweepPlan::run_key_json(std::uint64_t index) const {
-  const RunCoordinates c = coordinates(index);
-  const RunSpec spec = run_spec(index);
+json SweepPlan::key_json_of(const RunCoordinates& c, const RunSpec& spec) const {
   json robot = spec.robot;
   if (!spec.robot.dock) robot["dock"] = json{spec.map->start.x, spec.map->start.y};
   return json{{"map", maps_[c.map].spec},
-              {"strategy", spec.strategy},
-              {"strategy_params", resolved_strategy_params(spec.strategy, spec.strategy_params)},
-              {"planner", spec.planner},
-              {"planner_params", spec.planner_params},
+              {"strategy", spec.strategy.name},
+              {"strategy_params", recorded_strategy_params(spec)},
+              {"planner", spec.planner.name},
+              // The planner params as written (null when absent or empty), not the resolved ones:
+              // run keys stay the same when a planner gains a parameter with a default.
+              {"planner_params", planners_[c.planner].params},
               {"robot", robot},
               {"sim", spec.sim},
               {"seed", spec.seed}};
 }
 
-std::string SweepPlan::run_key(std::uint64_t index) const {
+namespace {
+
+std::string key_of(const json& key_json) {
   char buf[17];
-  std::snprintf(buf, sizeof(buf), "%016llx",
-                static_cast<unsigned long long>(fnv1a(run_key_json(index).dump())));
+  std::snprintf(buf, sizeof(buf), "%016llx", static_cast<unsigned long long>(fnv1a(key_json.dump())));
   return buf;
 }
+
+}  // namespace
+
+SweepRun SweepPlan::run(std::uint64_t index) const {
+  SweepRun r;
+  r.at = coordinates(index);
+  r.spec = spec_at(r.at);
+  r.key_json = key_json_of(r.at, r.spec);
+  r.key = key_of(r.key_json);
+  return r;
+}
+
+RunSpec SweepPlan::run_spec(std::uint64_t index) const { return spec_at(coordinates(index)); }
+
+json SweepPlan::run_key_json(std::uint64_t index) const { return run(index).key_json; }
+
+std::string SweepPlan::run_key(std::uint64_t index) const { return run(index).key; }
 
 std::vector<std::pair<std::string, std::uint64_t>> SweepPlan::axes() const {
   return {{"maps", maps_.size()},

@@ -1,6 +1,7 @@
 #pragma once
 /// @file sweep_plan.hpp
-/// A sweep file, validated and expanded lazily into runs (DESIGN.md section 7).
+/// A sweep file, validated and expanded lazily into runs (docs/architecture.md, "Sweeps, keys, shards and the
+/// weight search").
 ///
 /// # Format (schema_version 1)
 ///
@@ -121,7 +122,8 @@ struct SweepMap {
   /// Canonical JSON object of the source (what the run key hashes; see above).
   nlohmann::json spec;
   std::shared_ptr<const WorldMap> map;
-  /// True for the `free` generator (the star-pattern optimum of DESIGN.md 7 applies).
+  /// True for the `free` generator (the star-pattern optimum of docs/architecture.md, "Sweeps, keys, shards
+  /// and the weight search" applies).
   bool free_space = false;
 };
 
@@ -170,6 +172,16 @@ struct RunCoordinates {
   int repetition = 0;
 };
 
+/// One run of a sweep, resolved once: its place on every axis, its RunSpec (plugins
+/// configured, typed), the canonical JSON its key hashes and the key. The run key, the runs.csv
+/// columns (config_columns(spec)) and the Simulation all read this one value.
+struct SweepRun {
+  RunCoordinates at;
+  RunSpec spec;
+  nlohmann::json key_json;
+  std::string key;
+};
+
 /// A validated sweep. Cheap to query from many threads (all methods are const and pure).
 class SweepPlan {
  public:
@@ -202,6 +214,8 @@ class SweepPlan {
   [[nodiscard]] std::uint64_t strategy_configuration_count() const { return strategy_offsets_.back(); }
   /// Mixed-radix decode of `index` (< run_count(); throws std::out_of_range otherwise).
   [[nodiscard]] RunCoordinates coordinates(std::uint64_t index) const;
+  /// Run `index` resolved once (see SweepRun).
+  [[nodiscard]] SweepRun run(std::uint64_t index) const;
   /// The fully resolved run (map shared, not copied).
   [[nodiscard]] RunSpec run_spec(std::uint64_t index) const;
   /// 16 lowercase hex digits: FNV-1a 64 of the canonical JSON (see above). Stable across
@@ -221,6 +235,8 @@ class SweepPlan {
  private:
   static SweepPlan build(const nlohmann::json& sweep, const std::string& file,
                          std::vector<std::string> problems);
+  [[nodiscard]] RunSpec spec_at(const RunCoordinates& c) const;
+  [[nodiscard]] nlohmann::json key_json_of(const RunCoordinates& c, const RunSpec& spec) const;
 
   std::string name_;
   std::string description_;

@@ -139,7 +139,9 @@ Resumed repair_outputs(const SweepTable& table, CsvJournal& runs, CsvJournal& pr
 /// One run moving through the pipeline.
 struct Job {
   std::uint64_t index = 0;
-  std::string key;  // empty: computed by the worker
+  /// The run resolved once (plan.run()): by the dispatcher while resuming (its key decides
+  /// whether the run is done), else by the worker.
+  std::shared_ptr<const SweepRun> run;
   RunRows rows;
 };
 
@@ -226,8 +228,8 @@ RunnerReport run_sweep(const SweepPlan& plan, const RunnerOptions& options) {
       job.index = next;
       next += options.shard_count;
       if (resumed.done.untaken() > 0) {  // run keys in this serial stage only while resuming
-        job.key = plan.run_key(job.index);
-        const auto key = parse_run_key(job.key);
+        job.run = std::make_shared<const SweepRun>(plan.run(job.index));
+        const auto key = parse_run_key(job.run->key);
         if (key && resumed.done.take(*key)) {
           skipped.fetch_add(1);
           continue;
@@ -237,8 +239,9 @@ RunnerReport run_sweep(const SweepPlan& plan, const RunnerOptions& options) {
     }
   };
   auto simulate_run = [&](Job job) -> Job {
-    if (job.key.empty()) job.key = plan.run_key(job.index);
-    job.rows = table.run(plan, job.index, job.key);
+    if (!job.run) job.run = std::make_shared<const SweepRun>(plan.run(job.index));
+    job.rows = table.run(plan, *job.run);
+    job.run.reset();  // the resolved run is not needed past the simulation
     return job;
   };
   auto write = [&](const Job& job) {

@@ -5,9 +5,9 @@
 #include <stdexcept>
 
 #include "sim/competitive.hpp"
+#include "sim/heuristics.hpp"
 #include "sim/run_table.hpp"
 #include "sim/simulation.hpp"
-#include "strategies/heuristics.hpp"
 
 namespace fsweep {
 inline namespace sweep {
@@ -121,7 +121,9 @@ std::string SweepTable::progress_header() { return kProgressHeader; }
 
 std::size_t SweepTable::column(std::string_view name) const { return position_.at(std::string(name)); }
 
-RunRows SweepTable::run(const SweepPlan& plan, std::uint64_t index, const std::string& run_key) const {
+RunRows SweepTable::run(const SweepPlan& plan, const SweepRun& run) const {
+  const std::uint64_t index = run.at.index;
+  const std::string& run_key = run.key;
   RunRows out;
   std::vector<std::string> fields(columns_.size());
   fields[0] = std::to_string(index);
@@ -136,12 +138,11 @@ RunRows SweepTable::run(const SweepPlan& plan, std::uint64_t index, const std::s
     fields[it->second] = std::move(value);
   };
   try {
-    const RunSpec spec = plan.run_spec(index);
-    const RunCoordinates at = plan.coordinates(index);
+    const RunSpec& spec = run.spec;
+    const RunCoordinates& at = run.at;
     set("map_class", plan.maps().at(at.map).map_class);
-    // The entry's label, plus "+rr", "+seg" for the heuristics on (src/strategies/heuristics.hpp).
-    const std::string heuristics =
-        heuristics_text(heuristics_from_json(spec.strategy_params, "strategy/params"));
+    // The entry's label, plus "+rr", "+seg" for the heuristics on (src/sim/heuristics.hpp).
+    const std::string heuristics = heuristics_text(spec.heuristics.value_or(Heuristics{}));
     set("strategy_label",
         plan.strategies().at(at.strategy_entry).label + (heuristics.empty() ? "" : "+" + heuristics));
     for (auto& [name, value] : config_columns(spec)) set(name, std::move(value));

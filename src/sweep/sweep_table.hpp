@@ -48,10 +48,10 @@ class SweepTable {
   /// Position of a runs.csv column; throws std::out_of_range for an unknown name.
   [[nodiscard]] std::size_t column(std::string_view name) const;
 
-  /// Simulates run `index` of `plan` (key `run_key`) and formats its rows. Never throws for a
-  /// failing run: an exception from the plan, the plugins or the simulation becomes an `error`
-  /// row with the message as end_detail and the metric cells empty. Thread-safe (const).
-  [[nodiscard]] RunRows run(const SweepPlan& plan, std::uint64_t index, const std::string& run_key) const;
+  /// Simulates `run` (resolved by plan.run()) and formats its rows. Never throws for a failing
+  /// run: an exception from the plugins or the simulation becomes an `error` row with the
+  /// message as end_detail and the metric cells empty. Thread-safe (const).
+  [[nodiscard]] RunRows run(const SweepPlan& plan, const SweepRun& run) const;
 
  private:
   std::vector<std::string> columns_;

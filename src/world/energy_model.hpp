@@ -1,10 +1,9 @@
 #pragma once
 /// @file energy_model.hpp
-/// What motion costs: per distance, per stop, per turn (DESIGN.md section 3).
+/// What motion costs: per distance, per stop, per turn (docs/architecture.md, "Robot, motion and energy").
 ///
-/// Deviation from DESIGN.md (which places EnergyModel in engine/sim): planners must report
-/// path energy under the run's model and the lattice planner searches on it, and planners may
-/// not depend on sim, so the model lives at the root of the DAG, in world. Battery stays in sim.
+/// The model lives in `world`, below planners and sim: planners report path energy under the
+/// run's model and the lattice planner searches on it. Battery stays in sim.
 ///
 /// Accounting rule used by every planner and by the simulator: a path costs its travel
 /// energy plus, for every heading change (including the change from the start heading to the
@@ -13,6 +12,8 @@
 #include <array>
 #include <nlohmann/json_fwd.hpp>
 #include <string>
+
+#include "core/registry.hpp"
 
 namespace fsweep {
 inline namespace world {
@@ -45,17 +46,23 @@ struct EnergyModel {
   }
 };
 
-/// The named presets, with DESIGN.md's numbers:
+/// The energy presets (core/registry.hpp), each with its declared overrides:
 /// - `distance`: 1 per metre, nothing else;
 /// - `mei2006`: 1 per cell length, stop 0.5, turns 0.4/0.6/0.8/1.0 (Mei et al. 2006, Fig. 6);
 /// - `pioneer3dx`: Rappaport 2016 eq. 2-3 (moving 22.38 W at 1.2 m/s, standing 13.5 W), in Wh;
 ///   a stop stands still for `stop_time_s` (1 s), a turn rotates at `turn_rate_deg_s`
 ///   (90 deg/s) drawing the moving power.
+/// Every preset takes per_metre, per_cell, per_stop and per_turn overrides; travel must cost
+/// energy (per_metre or per_cell > 0).
+using EnergyRegistry = Registry<EnergyModel>;
+[[nodiscard]] const EnergyRegistry& energy_registry();
+
+/// Preset `name` with its defaults. Throws ConfigError for an unknown name, listing the known.
 [[nodiscard]] EnergyModel energy_preset(const std::string& name);
 
-/// Reads `{"preset": "mei2006", "per_stop": 0.7, ...}` (every field optional, preset first,
-/// then overrides; pioneer3dx also takes moving_power_w, standing_power_w, speed_mps,
-/// stop_time_s, turn_rate_deg_s). Throws ConfigError naming `where` on unknown keys or values.
+/// Reads "mei2006" or `{"preset": "mei2006", "per_stop": 0.7, ...}` (preset default
+/// "distance", then its declared overrides). Throws one ConfigError naming `where`/key for
+/// every unknown key or bad value.
 [[nodiscard]] EnergyModel energy_model_from_json(const nlohmann::json& j, const std::string& where);
 
 void to_json(nlohmann::json& j, const EnergyModel& m);

@@ -1,6 +1,7 @@
 #include "world/map_generators.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstddef>
 #include <iomanip>
@@ -39,7 +40,7 @@ void require_range(const std::string& where, const char* key, long long value, l
 }
 
 /// Free space and random obstacles (see map_generators.hpp).
-Occupancy make_free(const GeneratorParams& p) {
+Occupancy make_free(const GeneratorParams& p, Rng& /*rng*/) {
   Occupancy g(p.width, p.height, kFree);
   if (p.border) frame(g, p.wall);
   return g;
@@ -146,10 +147,174 @@ void validate(const GeneratorParams& p, const std::string& where) {
   }
 }
 
+/// The generator kinds, in documentation order: name, doc, the keys it reads besides the common
+/// w, h, res, seed, start, and its maker.
+struct KindEntry {
+  const char* name;
+  const char* doc;
+  std::vector<const char*> keys;
+  Occupancy (*make)(const GeneratorParams&, Rng&);
+};
+
+const std::vector<KindEntry>& kind_table() {
+  static const std::vector<KindEntry> kinds{
+      {"free", "no obstacles, an optional occupied frame", {"border", "wall"}, &make_free},
+      {"random",
+       "every cell occupied with probability p (no connectivity guarantee)",
+       {"border", "wall", "p"},
+       &make_random},
+      {"rooms",
+       "recursive division into rooms joined by doors",
+       {"door", "min_room", "wall"},
+       &generator_detail::make_rooms},
+      {"office",
+       "corridors with bands of rooms, one door per room",
+       {"door", "min_room", "wall", "corridor"},
+       &generator_detail::make_office},
+      {"manhattan",
+       "a street grid of square blocks (parks, buildings with alleys)",
+       {"block", "street"},
+       &generator_detail::make_manhattan},
+      {"oldtown",
+       "narrow winding lanes joining a few open squares",
+       {"squares", "lane"},
+       &generator_detail::make_oldtown},
+  };
+  return kinds;
+}
+
+const KindEntry& kind_entry(const std::string& kind, const std::string& where) {
+  for (const KindEntry& k : kind_table()) {
+    if (kind == k.name) return k;
+  }
+  throw ConfigError(where,
+                    "unknown generator kind '" + kind + "'; allowed: " + join_names(generator_kinds()));
+}
+
+/// One declared generator key (map-spec name, its member, range and doc).
+void declare_key(ParamDecl<GeneratorParams>& d, const std::string& key) {
+  using P = GeneratorParams;
+  const auto integer = [&](int P::*member, double lo, double hi, const char* doc) {
+    d.integer(key, member, doc).range(lo, hi).unit("cells");
+  };
+  if (key == "w") return integer(&P::width, 1, 65536, "map width");
+  if (key == "h") return integer(&P::height, 1, 65536, "map height");
+  if (key == "door") return integer(&P::door, 1, 100000, "door width (at most min_room)");
+  if (key == "min_room") return integer(&P::min_room, 1, 100000, "rooms are not split below this size");
+  if (key == "wall") return integer(&P::wall, 1, 100000, "wall (and frame) thickness");
+  if (key == "block") return integer(&P::block, 1, 100000, "building block edge");
+  if (key == "street") return integer(&P::street, 1, 100000, "street width");
+  if (key == "corridor") return integer(&P::corridor, 1, 100000, "corridor width");
+  if (key == "squares") return integer(&P::squares, 0, 1000, "number of open squares");
+  if (key == "lane") return integer(&P::lane, 1, 100000, "lane width");
+  if (key == "res") {
+    d.number("res", &P::resolution_m, "cell size").above(0).unit("m");
+    return;
+  }
+  if (key == "p") {
+    d.number("p", &P::obstacle_probability, "probability that a cell is occupied").range(0, 1);
+    return;
+  }
+  ParamSpec spec;
+  spec.name = key;
+  spec.type = ParamType::Custom;
+  if (key == "seed") {
+    spec.doc = "generator seed (stream \"map\")";
+    spec.allowed_text = "an integer >= 0";
+    spec.custom_check = [](const nlohmann::json& v) -> std::vector<std::string> {
+      if (v.is_number_unsigned() || (v.is_number_integer() && v.get<std::int64_t>() >= 0)) return {};
+      return {"'seed' must be a non-negative integer, got " + v.dump()};
+    };
+    d.custom(
+        std::move(spec), [](P& p, const nlohmann::json& v) { p.seed = v.get<std::uint64_t>(); },
+        [](const P& p) { return nlohmann::json(p.seed); });
+  } else if (key == "border") {
+    spec.doc = "an occupied frame `wall` cells thick around the map";
+    spec.allowed_text = "true, false, 1 or 0";
+    spec.custom_check = [](const nlohmann::json& v) -> std::vector<std::string> {
+      if (v.is_boolean() || (v.is_number_integer() && (v.get<long long>() == 0 || v.get<long long>() == 1))) {
+        return {};
+      }
+      return {"'border' must be true, false, 1 or 0, got " + v.dump()};
+    };
+    d.custom(
+        std::move(spec),
+        [](P& p, const nlohmann::json& v) {
+          p.border = v.is_boolean() ? v.get<bool>() : v.get<long long>() == 1;
+        },
+        [](const P& p) { return nlohmann::json(p.border); });
+  } else if (key == "start") {
+    spec.nullable = true;
+    spec.doc = "start cell (default: the free cell nearest the centre in the largest free component)";
+    spec.allowed_text = "[x, y] or \"x;y\", non-negative integers";
+    spec.custom_check = [](const nlohmann::json& v) -> std::vector<std::string> {
+      if (parse_cell_pair(v)) return {};
+      return {"start must be two non-negative integer cell coordinates, [x, y] or \"x;y\", got " + v.dump()};
+    };
+    d.custom(
+        std::move(spec),
+        [](P& p, const nlohmann::json& v) {
+          const auto c = parse_cell_pair(v);
+          p.start_x = c ? c->x : -1;
+          p.start_y = c ? c->y : -1;
+        },
+        [](const P& p) {
+          return p.start_x < 0 ? nlohmann::json() : nlohmann::json{p.start_x, p.start_y};
+        });
+  } else {
+    throw std::logic_error("generator key '" + key + "' is not declared");
+  }
+}
+
+GeneratorRegistry make_registry() {
+  GeneratorRegistry r("generator");
+  for (const KindEntry& k : kind_table()) {
+    ParamDecl<GeneratorParams> d;
+    for (const char* key : {"w", "h", "res", "seed", "start"}) declare_key(d, key);
+    for (const char* key : k.keys) declare_key(d, key);
+    const std::string name = k.name;
+    r.add<GeneratorParams>(name, k.doc, d, [name](const GeneratorParams& params) {
+      GeneratorParams p = params;
+      p.kind = name;
+      return generate_map(p);
+    });
+  }
+  return r;
+}
+
 }  // namespace
 
+std::optional<Cell> parse_cell_pair(const nlohmann::json& v) {
+  double x = -1.0;
+  double y = -1.0;
+  if (v.is_array() && v.size() == 2 && v[0].is_number() && v[1].is_number()) {
+    x = v[0].get<double>();
+    y = v[1].get<double>();
+  } else if (v.is_string()) {
+    const std::string s = v.get<std::string>();
+    const std::size_t cut = s.find(';');
+    if (cut == std::string::npos) return std::nullopt;
+    const char* mid = s.data() + cut;
+    const char* end = s.data() + s.size();
+    const auto rx = std::from_chars(s.data(), mid, x);
+    const auto ry = std::from_chars(mid + 1, end, y);
+    if (rx.ec != std::errc() || rx.ptr != mid || ry.ec != std::errc() || ry.ptr != end) return std::nullopt;
+  } else {
+    return std::nullopt;
+  }
+  if (x != std::floor(x) || y != std::floor(y) || x < 0 || y < 0 || x > 1e9 || y > 1e9) return std::nullopt;
+  return Cell{static_cast<int>(x), static_cast<int>(y)};
+}
+
+const GeneratorRegistry& generator_registry() {
+  static const GeneratorRegistry registry = make_registry();
+  return registry;
+}
+
 std::vector<std::string> generator_kinds() {
-  return {"free", "random", "rooms", "office", "manhattan", "oldtown"};
+  std::vector<std::string> names;
+  for (const KindEntry& k : kind_table()) names.emplace_back(k.name);
+  return names;
 }
 
 WorldMap generate_map(const GeneratorParams& params) {
@@ -160,20 +325,7 @@ WorldMap generate_map(const GeneratorParams& params) {
   map.resolution_m = params.resolution_m;
   map.source = params.kind + ":w=" + std::to_string(params.width) + ",h=" + std::to_string(params.height) +
                ",seed=" + std::to_string(params.seed);
-  const std::string& k = params.kind;
-  if (k == "free") {
-    map.occupied = make_free(params);
-  } else if (k == "random") {
-    map.occupied = make_random(params, rng);
-  } else if (k == "rooms") {
-    map.occupied = generator_detail::make_rooms(params, rng);
-  } else if (k == "office") {
-    map.occupied = generator_detail::make_office(params, rng);
-  } else if (k == "manhattan") {
-    map.occupied = generator_detail::make_manhattan(params, rng);
-  } else {
-    map.occupied = generator_detail::make_oldtown(params, rng);
-  }
+  map.occupied = kind_entry(params.kind, where).make(params, rng);
   if (params.start_x >= 0) {
     const Cell s{params.start_x, params.start_y};
     const std::string cell = "start cell (" + std::to_string(s.x) + ", " + std::to_string(s.y) + ")";

@@ -44,9 +44,11 @@
 
 #include <cstdint>
 #include <nlohmann/json_fwd.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "core/registry.hpp"
 #include "world/world_map.hpp"
 
 namespace fsweep {
@@ -84,6 +86,14 @@ struct GeneratorParams {
 
 /// The generator kinds generate_map accepts, in documentation order.
 [[nodiscard]] std::vector<std::string> generator_kinds();
+
+/// The generators as plugins (core/registry.hpp): each kind with its declared map-spec keys
+/// (w, h, res, seed, start and the kind's own); the maker calls generate_map().
+using GeneratorRegistry = Registry<WorldMap>;
+[[nodiscard]] const GeneratorRegistry& generator_registry();
+
+/// A cell from [x, y] or "x;y" (non-negative integers up to 10^9); nothing for anything else.
+[[nodiscard]] std::optional<Cell> parse_cell_pair(const nlohmann::json& v);
 
 }  // namespace world
 }  // namespace fsweep

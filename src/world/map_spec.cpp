@@ -44,18 +44,6 @@ std::vector<FileKind> file_kinds() {
           {".pgm", {"res", "start", "threshold", "mpp", "size"}}};
 }
 
-/// Keys a generator kind accepts besides `generator` (see map_generators.hpp for their meaning).
-std::vector<std::string> generator_keys(const std::string& kind) {
-  std::vector<std::string> keys{"w", "h", "res", "seed", "start"};
-  if (kind == "free") keys.insert(keys.end(), {"border", "wall"});
-  if (kind == "random") keys.insert(keys.end(), {"border", "wall", "p"});
-  if (kind == "rooms") keys.insert(keys.end(), {"door", "min_room", "wall"});
-  if (kind == "office") keys.insert(keys.end(), {"door", "min_room", "wall", "corridor"});
-  if (kind == "manhattan") keys.insert(keys.end(), {"block", "street"});
-  if (kind == "oldtown") keys.insert(keys.end(), {"squares", "lane"});
-  return keys;
-}
-
 void require_keys(const json& j, const std::string& source_key, const std::vector<std::string>& allowed,
                   const std::string& what, const Where& where) {
   for (const auto& [key, value] : j.items()) {
@@ -145,47 +133,17 @@ WorldMap generate(const json& j, const Where& where) {
                       "unknown map kind '" + p.kind + "'; allowed generators: " + join_names(kinds) +
                           "; or a file ending in .map, .txt, .yaml, .yml, .png, .pgm");
   }
-  require_keys(j, "generator", generator_keys(p.kind), "generator '" + p.kind + "'", where);
-  const auto int_key = [&](const char* key, int& out) {
-    if (j.contains(key)) out = get_int(j, key, where);
-  };
-  int_key("w", p.width);
-  int_key("h", p.height);
-  int_key("door", p.door);
-  int_key("min_room", p.min_room);
-  int_key("wall", p.wall);
-  int_key("block", p.block);
-  int_key("street", p.street);
-  int_key("corridor", p.corridor);
-  int_key("squares", p.squares);
-  int_key("lane", p.lane);
-  if (j.contains("res")) p.resolution_m = get_positive(j, "res", where);
-  if (j.contains("p")) p.obstacle_probability = get_number(j, "p", where);
-  if (j.contains("seed")) {
-    const json& v = j.at("seed");
-    if (!v.is_number_unsigned() && !(v.is_number_integer() && v.get<std::int64_t>() >= 0)) {
-      throw ConfigError(where.key("seed"), "'seed' must be a non-negative integer, got " + v.dump());
-    }
-    p.seed = v.get<std::uint64_t>();
-  }
-  if (j.contains("border")) {
-    const json& v = j.at("border");
-    if (v.is_boolean()) {
-      p.border = v.get<bool>();
-    } else if (v.is_number_integer() && (v.get<long long>() == 0 || v.get<long long>() == 1)) {
-      p.border = v.get<long long>() == 1;
-    } else {
-      throw ConfigError(where.key("border"), "'border' must be true, false, 1 or 0, got " + v.dump());
-    }
-  }
-  if (j.contains("start")) {
-    const Cell s = get_start(j, where);
-    p.start_x = s.x;
-    p.start_y = s.y;
-  }
+  json params = j;
+  params.erase("generator");
+  // The declared keys of this kind (map_generators.hpp, generator_registry()); a spec string
+  // names the key after the spec, a JSON object by its path.
+  const auto configured = generator_registry().configure(
+      p.kind, params, where.key("generator"),
+      where.json_path ? where.base : where.base + " (generator '" + p.kind + "')");
+  const std::optional<Cell> start = j.contains("start") ? parse_cell_pair(j.at("start")) : std::nullopt;
   WorldMap map;
   try {
-    map = generate_map(p);
+    map = configured.make();
   } catch (const ConfigError& e) {
     throw ConfigError(where.base, e.what());
   }
@@ -194,7 +152,10 @@ WorldMap generate(const json& j, const Where& where) {
   for (const auto& [key, value] : j.items()) {
     if (key == "generator" || key == "w" || key == "h" || key == "seed") continue;
     std::string text = value.is_string() ? value.get<std::string>() : value.dump();
-    if (key == "start") text = std::to_string(p.start_x) + ";" + std::to_string(p.start_y);
+    if (key == "start") {
+      if (!start) continue;  // null: the default start
+      text = std::to_string(start->x) + ";" + std::to_string(start->y);
+    }
     map.source += "," + key + "=" + text;
   }
   return map;

@@ -14,7 +14,8 @@ int WorldMap::free_count() const {
 
 /// Breadth-first search over free cells. A diagonal step from c to c + (dx, dy) needs both
 /// orthogonal cells c + (dx, 0) and c + (0, dy) free unless corner cutting is allowed (the
-/// MovingAI convention, DESIGN.md section 3). A `from` that is not free yields an all-zero grid.
+/// MovingAI convention, docs/architecture.md, "Robot, motion and energy"). A `from` that is not free yields
+/// an all-zero grid.
 Grid<std::uint8_t> reachable_free(const WorldMap& map, Cell from, bool allow_corner_cutting) {
   Grid<std::uint8_t> reached(map.width(), map.height(), 0);
   if (!map.is_free(from)) return reached;

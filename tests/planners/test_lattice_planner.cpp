@@ -12,6 +12,7 @@
 #include "planner_test_utils.hpp"
 #include "planners/grid_planner.hpp"
 #include "planners/lattice_planner.hpp"
+#include "planners/registry.hpp"
 #include "world/energy_model.hpp"
 #include "world/motion.hpp"
 
@@ -219,9 +220,9 @@ TEST(LatticePlanner, UsesTheRequestEnergyModel) {
 }
 
 TEST(LatticePlanner, ParamsRejectUnknownKeys) {
-  EXPECT_NO_THROW((void)LatticePlannerParams::from_json(nlohmann::json(), "/planners/0"));
-  EXPECT_NO_THROW((void)LatticePlannerParams::from_json(nlohmann::json::object(), "/planners/0"));
-  EXPECT_THROW((void)LatticePlannerParams::from_json(nlohmann::json{{"heuristic", 1}}, "/planners/0"),
+  EXPECT_NO_THROW((void)configure_planner("lattice", nlohmann::json(), "/planners/0"));
+  EXPECT_NO_THROW((void)configure_planner("lattice", nlohmann::json::object(), "/planners/0"));
+  EXPECT_THROW((void)configure_planner("lattice", nlohmann::json{{"heuristic", 1}}, "/planners/0"),
                ConfigError);
 }
 

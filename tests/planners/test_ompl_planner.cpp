@@ -53,7 +53,7 @@ PlanRequest request_for(Cell start, Cell goal, std::uint64_t seed = 7, bool cut 
 }
 
 OmplPlanner make_ompl(OmplPlannerKind kind, const nlohmann::json& params) {
-  return OmplPlanner(kind, OmplPlannerParams::from_json(kind, params, "planner/params"));
+  return OmplPlanner(kind, ompl_planner_params(kind).read(params, "planner/params"));
 }
 
 // --- Segment geometry (hand-worked) ---------------------------------------------------------
@@ -257,24 +257,24 @@ TEST(OmplPlannerParams, UnknownKeyListsKnownOnes) {
 }
 
 TEST(OmplPlannerParams, ValuesAreCheckedByOmplAndByUs) {
-  const OmplPlannerParams p = OmplPlannerParams::from_json(
-      OmplPlannerKind::RRTstar, {{"range", 2.5}, {"goal_bias", "0.1"}, {"simplify", false}}, "p");
+  const OmplPlannerParams p = ompl_planner_params(OmplPlannerKind::RRTstar)
+                                  .read({{"range", 2.5}, {"goal_bias", "0.1"}, {"simplify", false}}, "p");
   EXPECT_EQ(p.ompl.at("range"), "2.5");
   EXPECT_EQ(p.ompl.at("goal_bias"), "0.1");
   EXPECT_FALSE(p.simplify);
-  EXPECT_THROW((void)OmplPlannerParams::from_json(OmplPlannerKind::RRTstar, {{"range", "far"}}, "p"),
+  EXPECT_THROW((void)ompl_planner_params(OmplPlannerKind::RRTstar).read({{"range", "far"}}, "p"),
                ConfigError);
-  EXPECT_THROW((void)OmplPlannerParams::from_json(OmplPlannerKind::RRTstar, {{"range", {1, 2}}}, "p"),
+  EXPECT_THROW((void)ompl_planner_params(OmplPlannerKind::RRTstar).read({{"range", {1, 2}}}, "p"),
                ConfigError);
-  EXPECT_THROW((void)OmplPlannerParams::from_json(OmplPlannerKind::RRTstar, {{"time_limit_s", 0}}, "p"),
+  EXPECT_THROW((void)ompl_planner_params(OmplPlannerKind::RRTstar).read({{"time_limit_s", 0}}, "p"),
                ConfigError);
-  EXPECT_THROW((void)OmplPlannerParams::from_json(OmplPlannerKind::RRTstar, {{"time_limit_s", "1"}}, "p"),
+  EXPECT_THROW((void)ompl_planner_params(OmplPlannerKind::RRTstar).read({{"time_limit_s", "1"}}, "p"),
                ConfigError);
-  EXPECT_THROW((void)OmplPlannerParams::from_json(OmplPlannerKind::RRTstar, {{"max_iterations", -1}}, "p"),
+  EXPECT_THROW((void)ompl_planner_params(OmplPlannerKind::RRTstar).read({{"max_iterations", -1}}, "p"),
                ConfigError);
-  EXPECT_THROW((void)OmplPlannerParams::from_json(OmplPlannerKind::RRTstar, {{"max_iterations", 1.5}}, "p"),
+  EXPECT_THROW((void)ompl_planner_params(OmplPlannerKind::RRTstar).read({{"max_iterations", 1.5}}, "p"),
                ConfigError);
-  EXPECT_THROW((void)OmplPlannerParams::from_json(OmplPlannerKind::RRTstar, nlohmann::json::array(), "p"),
+  EXPECT_THROW((void)ompl_planner_params(OmplPlannerKind::RRTstar).read(nlohmann::json::array(), "p"),
                ConfigError);
 }
 

@@ -1,5 +1,5 @@
-/// Every registered planner through the same checks (STYLE.md "Tests"): valid 8-connected,
-/// collision-free paths over known-free cells that start and end right, and the documented
+/// Every registered planner through the same checks (docs/architecture.md, "Plugins and their parameters"):
+/// valid 8-connected, collision-free paths over known-free cells that start and end right, and the documented
 /// statuses for invalid or unreachable endpoints. Optimality is not checked here (sampling
 /// planners are not optimal); the grid planners' optimality is in test_scenario_check.cpp.
 

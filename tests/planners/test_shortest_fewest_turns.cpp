@@ -14,6 +14,7 @@
 #include "planner_test_utils.hpp"
 #include "planners/grid_planner.hpp"
 #include "planners/lattice_planner.hpp"
+#include "planners/registry.hpp"
 #include "planners/shortest_fewest_turns.hpp"
 #include "world/energy_model.hpp"
 #include "world/motion.hpp"
@@ -214,9 +215,10 @@ TEST(ShortestFewestTurns, StatusesAndStartEqualsGoal) {
 }
 
 TEST(ShortestFewestTurns, ParamsRejectUnknownKeys) {
-  EXPECT_NO_THROW((void)ShortestFewestTurnsParams::from_json(nlohmann::json(), "p"));
-  EXPECT_NO_THROW((void)ShortestFewestTurnsParams::from_json(nlohmann::json::object(), "p"));
-  EXPECT_THROW((void)ShortestFewestTurnsParams::from_json(nlohmann::json{{"weight", 1}}, "p"), ConfigError);
+  EXPECT_NO_THROW((void)configure_planner("shortest_fewest_turns", nlohmann::json(), "p"));
+  EXPECT_NO_THROW((void)configure_planner("shortest_fewest_turns", nlohmann::json::object(), "p"));
+  EXPECT_THROW((void)configure_planner("shortest_fewest_turns", nlohmann::json{{"weight", 1}}, "p"),
+               ConfigError);
 }
 
 }  // namespace

@@ -17,7 +17,7 @@ TEST(FieldOfView, EveryStrategyExploresWith180Degrees) {
   for (const auto& name : strategy_names()) {
     RunSpec s;
     s.map = map;
-    s.strategy = name;
+    s.strategy = configure_strategy(name, nullptr);
     s.robot.sensor.range_m = 5.0;
     s.robot.sensor.fov_deg = 180.0;
     s.seed = 5;

@@ -9,9 +9,10 @@
 
 #include "core/config_error.hpp"
 #include "sim/grid_distance_oracle.hpp"
+#include "sim/heuristics.hpp"
 #include "sim/simulation.hpp"
-#include "strategies/heuristics.hpp"
 #include "strategies/registry.hpp"
+#include "strategies/sensing_region.hpp"
 #include "sweep/sweep_plan.hpp"
 #include "sweep/sweep_table.hpp"
 #include "world/ascii_world.hpp"
@@ -33,9 +34,8 @@ std::string error_of(const std::function<void()>& f) {
 
 TEST(Heuristics, ParsesNamesInAnyOrder) {
   EXPECT_EQ(heuristics_from_json(nullptr, "p"), Heuristics{});
-  EXPECT_EQ(heuristics_from_json(json{{"w1", 1}}, "p"), Heuristics{});
-  EXPECT_EQ(heuristics_from_json(json{{"heuristics", json::array()}}, "p"), Heuristics{});
-  const Heuristics both = heuristics_from_json(json{{"heuristics", {"seg", "rr"}}}, "p");
+  EXPECT_EQ(heuristics_from_json(json::array(), "p"), Heuristics{});
+  const Heuristics both = heuristics_from_json(json{"seg", "rr"}, "p");
   EXPECT_TRUE(both.recheck);
   EXPECT_TRUE(both.segment);
   EXPECT_EQ(heuristics_to_json(both), json({"rr", "seg"}));  // canonical order
@@ -44,43 +44,37 @@ TEST(Heuristics, ParsesNamesInAnyOrder) {
 }
 
 TEST(Heuristics, BadValuesNameThePathAndTheKnownNames) {
-  const std::string unknown = error_of([] {
-    (void)heuristics_from_json(json{{"heuristics", {"rr", "x"}}}, "/s/params");
-  });
-  EXPECT_NE(unknown.find("/s/params/heuristics/1"), std::string::npos) << unknown;
+  const std::string unknown = error_of([] { (void)heuristics_from_json(json{"rr", "x"}, "/s/heuristics"); });
+  EXPECT_NE(unknown.find("/s/heuristics/1"), std::string::npos) << unknown;
   EXPECT_NE(unknown.find("unknown heuristic 'x'; known: rr, seg"), std::string::npos) << unknown;
-  const std::string twice = error_of([] {
-    (void)heuristics_from_json(json{{"heuristics", {"seg", "seg"}}}, "p");
-  });
-  EXPECT_NE(twice.find("p/heuristics/1"), std::string::npos) << twice;
+  const std::string twice = error_of([] { (void)heuristics_from_json(json{"seg", "seg"}, "p"); });
+  EXPECT_NE(twice.find("p/1"), std::string::npos) << twice;
   EXPECT_NE(twice.find("twice"), std::string::npos) << twice;
-  const std::string scalar = error_of([] { (void)heuristics_from_json(json{{"heuristics", "rr"}}, "p"); });
+  const std::string scalar = error_of([] { (void)heuristics_from_json(json("rr"), "p"); });
   EXPECT_NE(scalar.find("expected a list of heuristic names"), std::string::npos) << scalar;
-  const std::string number = error_of([] { (void)heuristics_from_json(json{{"heuristics", {1}}}, "p"); });
-  EXPECT_NE(number.find("p/heuristics/0: expected a heuristic name"), std::string::npos) << number;
+  const std::string number = error_of([] { (void)heuristics_from_json(json{1}, "p"); });
+  EXPECT_NE(number.find("p/0: expected a heuristic name"), std::string::npos) << number;
 }
 
-TEST(Heuristics, RegistryStripsThemForEveryStrategy) {
+TEST(Heuristics, AreNoLongerAStrategyParameter) {
+  // The old spelling (inside a strategy's params) is refused with the new key named.
   for (const auto& name : strategy_names()) {
-    EXPECT_NO_THROW((void)make_strategy(name, json{{"heuristics", {"rr", "seg"}}}, 1)) << name;
-    EXPECT_NO_THROW((void)make_strategy(name, json{{"heuristics", json::array()}}, 1)) << name;
-    const std::string bad = error_of([&] { (void)make_strategy(name, json{{"heuristics", {"rx"}}}, 1); });
-    EXPECT_NE(bad.find("strategy/params/heuristics/0: unknown heuristic 'rx'; known: rr, seg"),
+    const std::string old = error_of([&] { (void)make_strategy(name, json{{"heuristics", {"rr"}}}, 1); });
+    EXPECT_NE(old.find("strategy/params/heuristics: heuristics are no longer a strategy parameter"),
               std::string::npos)
-        << bad;
-    // Resolved parameters: unchanged without the key, the canonical list with it (even []).
-    const json plain = resolved_strategy_params(name, nullptr);
-    EXPECT_FALSE(plain.is_object() && plain.contains("heuristics")) << name;
-    json expected = plain.is_null() ? json::object() : plain;
-    expected["heuristics"] = json({"rr", "seg"});
-    EXPECT_EQ(resolved_strategy_params(name, json{{"heuristics", {"seg", "rr"}}}), expected) << name;
-    expected["heuristics"] = json::array();
-    EXPECT_EQ(resolved_strategy_params(name, json{{"heuristics", json::array()}}), expected) << name;
+        << old;
+    EXPECT_NE(old.find("beside \"params\""), std::string::npos) << old;
   }
-  EXPECT_EQ(without_heuristics(json{{"heuristics", {"rr"}}}), json(nullptr));
-  EXPECT_EQ(without_heuristics(json{{"heuristics", {"rr"}}, {"distance", "path"}}),
-            json({{"distance", "path"}}));
-  EXPECT_EQ(without_heuristics(json::object()), json::object());
+}
+
+TEST(Heuristics, AreRecordedWithTheStrategyParamsOnlyWhenGiven) {
+  RunSpec spec;
+  spec.strategy = configure_strategy("closest_frontier", nullptr);
+  EXPECT_EQ(recorded_strategy_params(spec), json({{"distance", "path"}}));
+  spec.heuristics = Heuristics{};
+  EXPECT_EQ(recorded_strategy_params(spec), json({{"distance", "path"}, {"heuristics", json::array()}}));
+  spec.heuristics = heuristics_from_json(json{"seg", "rr"}, "h");
+  EXPECT_EQ(recorded_strategy_params(spec)["heuristics"], json({"rr", "seg"}));
 }
 
 TEST(Heuristics, RestrictToSegmentKeepsTheSegmentsCellsWhenItHasAny) {
@@ -160,7 +154,7 @@ TEST(Heuristics, CellReadingStrategiesKeepToTheSegmentMask) {
 json heuristic_sweep() {
   return json::parse(R"({"schema_version": 1, "name": "h", "maps": ["rooms:w=40,h=30,door=3,seed=1"],
       "strategies": [{"name": "closest_frontier",
-                      "params": {"heuristics": [[], ["rr"], ["seg"], ["seg", "rr"]]}}],
+                      "heuristics": [[], ["rr"], ["seg"], ["seg", "rr"]]}],
       "robot": {"sensor": {"range_m": 6}}})");
 }
 
@@ -182,14 +176,14 @@ TEST(Heuristics, SweepsVaryThemWithDistinctKeysColumnsAndLabels) {
   const std::vector<std::string> labels{"closest_frontier", "closest_frontier+rr", "closest_frontier+seg",
                                         "closest_frontier+rr+seg"};
   for (std::uint64_t i = 0; i < 4; ++i) {
-    const std::string row = table.run(plan, i, plan.run_key(i)).run_row;
+    const std::string row = table.run(plan, plan.run(i)).run_row;
     EXPECT_NE(row.find("," + labels[i] + ","), std::string::npos) << row;
   }
 }
 
 TEST(Heuristics, SweepsWithoutThemKeepTheirRunKeys) {
   json s = heuristic_sweep();
-  s["strategies"][0].erase("params");
+  s["strategies"][0].erase("heuristics");
   const SweepPlan plan = SweepPlan::from_json(s, "h.json");
   EXPECT_EQ(plan.run_key_json(0)["strategy_params"], json({{"distance", "path"}}));
   EXPECT_EQ(SweepTable(plan).header().find("heuristics"), std::string::npos);
@@ -197,21 +191,33 @@ TEST(Heuristics, SweepsWithoutThemKeepTheirRunKeys) {
 
 TEST(Heuristics, SweepValidationReportsBadValues) {
   json s = heuristic_sweep();
-  s["strategies"][0]["params"]["heuristics"] = json::parse(R"([["rr"], ["rr", "rr"]])");
+  s["strategies"][0]["heuristics"] = json::parse(R"([["rr"], ["rr", "rr"]])");
   const std::string twice = error_of([&] { (void)SweepPlan::from_json(s, "h.json"); });
-  EXPECT_NE(twice.find("/strategies/0/params/heuristics"), std::string::npos) << twice;
+  EXPECT_NE(twice.find("/strategies/0/heuristics/1/1"), std::string::npos) << twice;
   EXPECT_NE(twice.find("twice"), std::string::npos) << twice;
-  s["strategies"][0]["params"]["heuristics"] = json({"rr", "seg"});  // a list of two scalar values
-  const std::string flat = error_of([&] { (void)SweepPlan::from_json(s, "h.json"); });
-  EXPECT_NE(flat.find("list of lists"), std::string::npos) << flat;
+  s["strategies"][0]["heuristics"] = json({"rr", "seg"});  // one value: both heuristics
+  const SweepPlan one = SweepPlan::from_json(s, "h.json");
+  EXPECT_EQ(one.run_count(), 1U);
+  EXPECT_EQ(one.run_key_json(0)["strategy_params"]["heuristics"], json({"rr", "seg"}));
+  s["strategies"][0]["heuristics"] = json({"rr", "x"});
+  const std::string unknown = error_of([&] { (void)SweepPlan::from_json(s, "h.json"); });
+  EXPECT_NE(unknown.find("/strategies/0/heuristics/1: unknown heuristic 'x'"), std::string::npos) << unknown;
+  // The old spelling inside params names the new key.
+  json old = heuristic_sweep();
+  old["strategies"][0].erase("heuristics");
+  old["strategies"][0]["params"] = json::parse(R"({"heuristics": [[], ["rr"]]})");
+  const std::string moved = error_of([&] { (void)SweepPlan::from_json(old, "h.json"); });
+  EXPECT_NE(moved.find("/strategies/0/params/heuristics: heuristics are no longer a strategy parameter"),
+            std::string::npos)
+      << moved;
 }
 
 RunSpec spec_on(std::shared_ptr<const WorldMap> map, const std::string& strategy, json heuristics,
                 double range_m) {
   RunSpec s;
   s.map = std::move(map);
-  s.strategy = strategy;
-  s.strategy_params = json{{"heuristics", std::move(heuristics)}};
+  s.strategy = configure_strategy(strategy, nullptr);
+  s.heuristics = heuristics_from_json(heuristics, "heuristics");
   s.robot.sensor.range_m = range_m;
   s.seed = 3;
   return s;

@@ -16,8 +16,8 @@ namespace {
 RunSpec mei_spec(const std::string& map_spec, const std::string& strategy, const std::string& planner) {
   RunSpec s;
   s.map = std::make_shared<const WorldMap>(load_map_spec(map_spec));
-  s.strategy = strategy;
-  s.planner = planner;
+  s.strategy = configure_strategy(strategy, nullptr);
+  s.planner = configure_planner(planner, nullptr);
   s.robot.sensor.range_m = 10.0;  // d_s = 10 cells at resolution 1 (section V-A)
   s.seed = 1;
   return s;

@@ -14,8 +14,7 @@ namespace {
 RunSpec spec_for(const std::string& map_spec, const std::string& strategy, nlohmann::json params = nullptr) {
   RunSpec s;
   s.map = std::make_shared<const WorldMap>(load_map_spec(map_spec));
-  s.strategy = strategy;
-  s.strategy_params = std::move(params);
+  s.strategy = configure_strategy(strategy, std::move(params));
   s.robot.sensor.range_m = 6.0;
   s.seed = 7;
   return s;

@@ -34,8 +34,7 @@ const std::vector<std::string> kSplitRoom = {
 RunSpec spec_for(const WorldMap& map, const json& params, double range_m) {
   RunSpec spec;
   spec.map = std::make_shared<const WorldMap>(map);
-  spec.strategy = "target_seeking";
-  spec.strategy_params = params;
+  spec.strategy = configure_strategy("target_seeking", params);
   spec.robot.sensor.range_m = range_m;
   spec.seed = 3;
   return spec;
@@ -143,7 +142,7 @@ TEST(TargetSeekingRuns, WithoutTargetExploresCompletelyWithEveryGridPlanner) {
     const WorldMap map = load_map_spec(map_text);
     for (const char* planner : {"astar", "dijkstra"}) {
       RunSpec spec = spec_for(map, nullptr, 5.0);
-      spec.planner = planner;
+      spec.planner = configure_planner(planner, nullptr);
       const RunResult r = simulate(spec);
       EXPECT_EQ(r.end, EndReason::Complete) << map_text << " " << planner << ": " << r.end_detail;
       EXPECT_DOUBLE_EQ(r.metrics.coverage, 1.0) << map_text << " " << planner;
@@ -219,14 +218,14 @@ TEST(TargetSeekingRuns, RandomTargetIsDrawnPerSeedAmongReachableFreeCells) {
   // simulation resolves it; the parameter is recorded as "random" (same run configuration for
   // every drawn target).
   EXPECT_FALSE(make_strategy("target_seeking", json{{"target", "random"}}, 1)->target().has_value());
-  EXPECT_EQ(resolved_strategy_params("target_seeking", params).at("target"), "random");
+  EXPECT_EQ(configure_strategy("target_seeking", params).params.at("target"), "random");
 }
 
 TEST(TargetSeekingRuns, StopAtCellTurnsClosestFrontierIntoANavigationBaseline) {
   // Fixed cell: closest_frontier explores until (1, 5) is known free and reachable, then goes
   // there by the shortest path and the run ends target_reached on it.
   RunSpec spec = spec_for(test::ascii_world(kSplitRoom), nullptr, 2.0);
-  spec.strategy = "closest_frontier";
+  spec.strategy = configure_strategy("closest_frontier", nullptr);
   spec.sim = sim_params_from_json(json{{"stop_at_cell", {1, 5}}}, "sim");
   const RunResult r = simulate(spec);
   ASSERT_EQ(r.end, EndReason::TargetReached) << r.end_detail;
@@ -248,7 +247,7 @@ TEST(TargetSeekingRuns, StopAtCellTurnsClosestFrontierIntoANavigationBaseline) {
   const WorldMap map = load_map_spec("rooms:w=30,h=24,door=3,seed=5");
   RunSpec ts = spec_for(map, json{{"target", "random"}}, 3.0);
   RunSpec cf = spec_for(map, nullptr, 3.0);
-  cf.strategy = "closest_frontier";
+  cf.strategy = configure_strategy("closest_frontier", nullptr);
   cf.sim = sim_params_from_json(json{{"stop_at_cell", "random"}}, "sim");
   for (const std::uint64_t seed : {7U, 8U}) {
     ts.seed = seed;

@@ -164,7 +164,7 @@ TEST(ClosestFrontier, IsEnergyAwareWithWeights1000) {
 TEST(EnergyAware, ParamsValidateEveryProblemWithPath) {
   const auto j = nlohmann::json::parse(R"({"w1": 300, "w4": -1, "distance": "manhattan"})");
   try {
-    (void)energy_aware_params_from_json(j, "/strategies/0/params");
+    (void)energy_aware_params().read(j, "/strategies/0/params");
     FAIL();
   } catch (const ConfigError& e) {
     const std::string m = e.what();

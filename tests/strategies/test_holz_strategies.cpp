@@ -248,18 +248,18 @@ TEST(Gbl, FieldOfViewUsesTheDirectionFromTheRobot) {
 }
 
 TEST(Gbl, ParamsAreValidatedAndResolved) {
-  const GblParams d = gbl_params_from_json(nullptr, "p");
+  const GblParams d = gbl_params().read(nullptr, "p");
   EXPECT_EQ(d.samples, 30);
   EXPECT_DOUBLE_EQ(d.radius_m, 1.0);
   EXPECT_DOUBLE_EQ(d.lambda, 0.2);
-  EXPECT_EQ(resolved_strategy_params("gbl", nullptr),
+  EXPECT_EQ(configure_strategy("gbl", nullptr).params,
             (nlohmann::json{{"samples", 30}, {"radius_m", 1.0}, {"lambda", 0.2}}));
-  EXPECT_EQ(resolved_strategy_params("gbl", {{"samples", 5}}),
+  EXPECT_EQ(configure_strategy("gbl", {{"samples", 5}}).params,
             (nlohmann::json{{"samples", 5}, {"radius_m", 1.0}, {"lambda", 0.2}}));
   for (const auto& bad :
        {nlohmann::json{{"samples", 0}}, nlohmann::json{{"samples", 2.5}}, nlohmann::json{{"radius_m", -1}},
         nlohmann::json{{"lambda", "x"}}, nlohmann::json{{"lambda", -0.1}}, nlohmann::json{{"seed", 1}}}) {
-    EXPECT_THROW((void)gbl_params_from_json(bad, "p"), ConfigError) << bad.dump();
+    EXPECT_THROW((void)gbl_params().read(bad, "p"), ConfigError) << bad.dump();
   }
   try {
     (void)make_strategy("gbl", {{"samples", 0}, {"lambda", -1}}, 1, "strategy");
@@ -311,7 +311,7 @@ TEST(Mcdm, AdditiveMeasureIsTheWeightedAverage) {
   // mu(L) .5, mu(I) .25, mu(O) .25 and sums for pairs: the weighted average
   //   A: .25/3 + .25 * 2/3 = .25   B: .5 + .25 = .75   C: .25 + .25 = .5   -> B
   Situation s(kCorridor, 1.5, 1.0);
-  Mcdm mcdm(mcdm_params_from_json(
+  Mcdm mcdm(mcdm_params().read(
       {{"measure", {{"L", 0.5}, {"I", 0.25}, {"O", 0.25}, {"LI", 0.75}, {"LO", 0.75}, {"IO", 0.5}}}}, "p"));
   const auto c = mcdm.evaluate(s.observe());
   ASSERT_EQ(c.size(), 3U);
@@ -338,11 +338,11 @@ TEST(Mcdm, EqualCriterionAndSingleCandidateGetUtilityOne) {
 }
 
 TEST(Mcdm, ParamsAreValidatedWithPathAndPair) {
-  EXPECT_EQ(resolved_strategy_params("mcdm", nullptr),
+  EXPECT_EQ(configure_strategy("mcdm", nullptr).params,
             (nlohmann::json{
                 {"measure", {{"L", 0.2}, {"I", 0.4}, {"O", 0.4}, {"LI", 0.9}, {"LO", 0.6}, {"IO", 0.8}}}}));
   const nlohmann::json good = {{"L", 0.2}, {"I", 0.4}, {"O", 0.4}, {"LI", 0.9}, {"LO", 0.6}, {"IO", 0.8}};
-  EXPECT_NO_THROW((void)mcdm_params_from_json({{"measure", good}}, "p"));
+  EXPECT_NO_THROW((void)mcdm_params().read({{"measure", good}}, "p"));
   const auto error = [](const nlohmann::json& params) -> std::string {
     try {
       (void)make_strategy("mcdm", params, 1, "strategy");
@@ -356,19 +356,19 @@ TEST(Mcdm, ParamsAreValidatedWithPathAndPair) {
   bad["L"] = 0.7;
   bad["LI"] = 0.5;
   std::string what = error({{"measure", bad}});
-  EXPECT_NE(what.find("strategy/params/measure/LI: mu(L) = 0.7 > mu(LI) = 0.5"), std::string::npos) << what;
-  EXPECT_NE(what.find("strategy/params/measure/LO: mu(L) = 0.7 > mu(LO) = 0.6"), std::string::npos) << what;
+  EXPECT_NE(what.find("strategy/params/measure: LI: mu(L) = 0.7 > mu(LI) = 0.5"), std::string::npos) << what;
+  EXPECT_NE(what.find("; LO: mu(L) = 0.7 > mu(LO) = 0.6"), std::string::npos) << what;
   EXPECT_EQ(what.find("measure/IO"), std::string::npos) << what;
   // Out of range, missing, unknown subset, wrong type.
   bad = good;
   bad["O"] = 1.5;
   what = error({{"measure", bad}});
-  EXPECT_NE(what.find("strategy/params/measure/O: value 1.5"), std::string::npos) << what;
+  EXPECT_NE(what.find("strategy/params/measure: O: value 1.5"), std::string::npos) << what;
   EXPECT_NE(what.find("[0, 1]"), std::string::npos) << what;
   bad = good;
   bad.erase("IO");
   what = error({{"measure", bad}});
-  EXPECT_NE(what.find("strategy/params/measure/IO: missing"), std::string::npos) << what;
+  EXPECT_NE(what.find("strategy/params/measure: IO: missing"), std::string::npos) << what;
   bad = good;
   bad["LIO"] = 1.0;
   EXPECT_NE(error({{"measure", bad}}).find("strategy/params/measure"), std::string::npos);
@@ -413,7 +413,7 @@ TEST(RandomFrontier, CloneCopiesTheGeneratorAndNothingReachableFinishes) {
   for (int x = 0; x < 12; ++x) s.oracle.unreachable.insert(s.at(x, 2));
   EXPECT_EQ(rf.decide(s.observe()).kind, Decision::Kind::Finish);
   EXPECT_THROW((void)make_strategy("random_frontier", {{"p", 1}}, 1, "strategy"), ConfigError);
-  EXPECT_EQ(resolved_strategy_params("random_frontier", nullptr), nlohmann::json::object());
+  EXPECT_EQ(configure_strategy("random_frontier", nullptr).params, nlohmann::json::object());
 }
 
 // ---------------------------------------------------------------- every strategy x planner
@@ -429,7 +429,7 @@ TEST(StrategyConformance, RegisteredCloneableAndNamed) {
     const Decision db = b->decide(s.observe());
     EXPECT_EQ(da.kind, db.kind) << name;
     EXPECT_EQ(da.goal, db.goal) << name;
-    (void)resolved_strategy_params(name, nullptr);
+    (void)configure_strategy(name, nullptr);
   }
   for (const char* name : {"gbl", "mcdm", "random_frontier"}) {
     const auto names = strategy_names();
@@ -447,8 +447,8 @@ TEST(StrategyConformance, EveryStrategyWithEveryPlannerCompletesSmallMaps) {
         if (planner.rfind("ompl:", 0) == 0 && planner != "ompl:RRTConnect") continue;
         RunSpec spec;
         spec.map = map;
-        spec.strategy = strategy;
-        spec.planner = planner;
+        spec.strategy = configure_strategy(strategy, nullptr);
+        spec.planner = configure_planner(planner, nullptr);
         spec.robot.sensor.range_m = 5.0;
         spec.seed = 2;
         const RunResult r = simulate(spec);
@@ -469,8 +469,8 @@ TEST(HolzExploration, McdmWithAllWeightOnTravelIsClosestFrontier) {
   spec.robot.sensor.range_m = 6.0;
   spec.seed = 4;
   const RunResult cf = simulate(spec);
-  spec.strategy = "mcdm";
-  spec.strategy_params = {{"measure", {{"L", 1}, {"I", 0}, {"O", 0}, {"LI", 1}, {"LO", 1}, {"IO", 0}}}};
+  spec.strategy = configure_strategy(
+      "mcdm", {{"measure", {{"L", 1}, {"I", 0}, {"O", 0}, {"LI", 1}, {"LO", 1}, {"IO", 0}}}});
   const RunResult mcdm = simulate(spec);
   EXPECT_EQ(mcdm.end, EndReason::Complete);
   EXPECT_EQ(mcdm.trajectory, cf.trajectory);
@@ -481,7 +481,7 @@ TEST(HolzExploration, NewStrategiesCompleteGeneratedMapsAndAreDeterministic) {
     for (const char* map : {"office:w=60,h=40,seed=1", "rooms:w=50,h=40,door=3,seed=5"}) {
       RunSpec spec;
       spec.map = std::make_shared<const WorldMap>(load_map_spec(map));
-      spec.strategy = strategy;
+      spec.strategy = configure_strategy(strategy, nullptr);
       spec.robot.sensor.range_m = 6.0;
       spec.seed = 11;
       const RunResult a = simulate(spec);
@@ -497,7 +497,7 @@ TEST(HolzExploration, NewStrategiesCompleteGeneratedMapsAndAreDeterministic) {
   spec.robot.sensor.range_m = 6.0;
   spec.robot.sensor.fov_deg = 180.0;
   for (const char* strategy : {"gbl", "mcdm"}) {
-    spec.strategy = strategy;
+    spec.strategy = configure_strategy(strategy, nullptr);
     const RunResult r = simulate(spec);
     EXPECT_EQ(r.end, EndReason::Complete) << strategy << " " << r.end_detail;
     EXPECT_DOUBLE_EQ(r.metrics.coverage, 1.0) << strategy;

@@ -203,15 +203,14 @@ TEST(WidestFrontier, EqualGroupsBreakToTheLowestIndex) {
 }
 
 TEST(MeiStrategies, ParamsAreValidated) {
-  EXPECT_DOUBLE_EQ(orientation_params_from_json(nullptr, "p").head_distance_ratio, 0.7);
-  EXPECT_DOUBLE_EQ(orientation_params_from_json({{"head_distance_ratio", 1.0}}, "p").head_distance_ratio,
-                   1.0);
-  EXPECT_THROW((void)orientation_params_from_json({{"head_distance_ratio", 0.0}}, "p"), ConfigError);
-  EXPECT_THROW((void)orientation_params_from_json({{"head_distance_ratio", 1.5}}, "p"), ConfigError);
-  EXPECT_THROW((void)orientation_params_from_json({{"head_distance_ratio", "x"}}, "p"), ConfigError);
-  EXPECT_THROW((void)orientation_params_from_json({{"jump_ratio", 0.5}}, "p"), ConfigError);
-  EXPECT_THROW(widest_frontier_params_from_json({{"w1", 1}}, "p"), ConfigError);
-  EXPECT_NO_THROW(widest_frontier_params_from_json(nlohmann::json::object(), "p"));
+  EXPECT_DOUBLE_EQ(orientation_params().read(nullptr, "p").head_distance_ratio, 0.7);
+  EXPECT_DOUBLE_EQ(orientation_params().read({{"head_distance_ratio", 1.0}}, "p").head_distance_ratio, 1.0);
+  EXPECT_THROW((void)orientation_params().read({{"head_distance_ratio", 0.0}}, "p"), ConfigError);
+  EXPECT_THROW((void)orientation_params().read({{"head_distance_ratio", 1.5}}, "p"), ConfigError);
+  EXPECT_THROW((void)orientation_params().read({{"head_distance_ratio", "x"}}, "p"), ConfigError);
+  EXPECT_THROW((void)orientation_params().read({{"jump_ratio", 0.5}}, "p"), ConfigError);
+  EXPECT_THROW((void)configure_strategy("widest_frontier", {{"w1", 1}}, "p"), ConfigError);
+  EXPECT_NO_THROW((void)configure_strategy("widest_frontier", nlohmann::json::object(), "p"));
   try {
     (void)make_strategy("orientation", {{"head_distance_ratio", 2}}, 1, "strategy");
     FAIL();
@@ -220,8 +219,9 @@ TEST(MeiStrategies, ParamsAreValidated) {
     EXPECT_NE(what.find("strategy/params/head_distance_ratio"), std::string::npos) << what;
     EXPECT_NE(what.find("(0, 1]"), std::string::npos) << what;
   }
-  EXPECT_EQ(resolved_strategy_params("orientation", nullptr), (nlohmann::json{{"head_distance_ratio", 0.7}}));
-  EXPECT_EQ(resolved_strategy_params("widest_frontier", nullptr), nlohmann::json::object());
+  EXPECT_EQ(configure_strategy("orientation", nullptr).params,
+            (nlohmann::json{{"head_distance_ratio", 0.7}}));
+  EXPECT_EQ(configure_strategy("widest_frontier", nullptr).params, nlohmann::json::object());
 }
 
 TEST(MeiStrategies, RegisteredAndCloneable) {

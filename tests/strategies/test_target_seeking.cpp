@@ -293,10 +293,10 @@ std::string error_of(const std::function<void()>& f) {
 }
 
 TEST(TargetSeeking, ParametersAreValidatedWithTheirPath) {
-  const json resolved = resolved_strategy_params("target_seeking", json{{"target", {4, 7}}});
+  const json resolved = configure_strategy("target_seeking", json{{"target", {4, 7}}}).params;
   EXPECT_EQ(resolved,
             (json{{"target", {4, 7}}, {"w1", 1.0}, {"w2", 0.9}, {"w3", 0.4}, {"motion", "shortest_path"}}));
-  EXPECT_EQ(resolved_strategy_params("target_seeking", nullptr),
+  EXPECT_EQ(configure_strategy("target_seeking", nullptr).params,
             (json{{"target", nullptr}, {"w1", 1.0}, {"w2", 0.9}, {"w3", 0.4}, {"motion", "shortest_path"}}));
   const std::string weight = error_of([] {
     (void)make_strategy("target_seeking", json{{"target", {1, 1}}, {"w2", 1.5}}, 1, "s");
@@ -308,7 +308,7 @@ TEST(TargetSeeking, ParametersAreValidatedWithTheirPath) {
   });
   EXPECT_NE(cell.find("s/params/target"), std::string::npos) << cell;
   EXPECT_EQ(
-      resolved_strategy_params("target_seeking", json{{"target", {1, 1}}, {"motion", "gradient"}})["motion"],
+      configure_strategy("target_seeking", json{{"target", {1, 1}}, {"motion", "gradient"}}).params["motion"],
       "gradient");
   const std::string motion = error_of([] {
     (void)make_strategy("target_seeking", json{{"target", {1, 1}}, {"motion", "fly"}}, 1, "s");

@@ -11,6 +11,12 @@
 namespace fsweep {
 namespace {
 
+/// The strategy params of run `index` as the sweep file gives them (null: none given).
+nlohmann::json given_params(const SweepPlan& plan, std::uint64_t index) {
+  const RunCoordinates c = plan.coordinates(index);
+  return plan.strategies()[c.strategy_entry].params_at(c.strategy_combo);
+}
+
 using nlohmann::json;
 
 json minimal() {
@@ -39,9 +45,10 @@ TEST(SweepPlan, MinimalSweepHasOneRunWithDefaults) {
   EXPECT_EQ(plan.output_dir(), "results/t");
   EXPECT_EQ(plan.objective(), "distance_to_final_coverage_m");
   const RunSpec spec = plan.run_spec(0);
-  EXPECT_EQ(spec.strategy, "closest_frontier");
-  EXPECT_TRUE(spec.strategy_params.is_null());
-  EXPECT_EQ(spec.planner, "astar");
+  EXPECT_EQ(spec.strategy.name, "closest_frontier");
+  EXPECT_TRUE(given_params(plan, 0).is_null());
+  EXPECT_EQ(spec.strategy.params, (json{{"distance", "path"}}));  // resolved: the defaults
+  EXPECT_EQ(spec.planner.name, "astar");
   EXPECT_EQ(spec.seed, derive_seed(0, "repetition/0"));
   EXPECT_TRUE(plan.maps()[0].free_space);
   EXPECT_EQ(plan.robots()[0].label, "-");
@@ -70,9 +77,9 @@ TEST(SweepPlan, MixedRadixOrderRepetitionsFastestMapsSlowest) {
   EXPECT_EQ(plan.coordinates(72).strategy_entry, 1U);  // after the 6 energy_aware combinations
   EXPECT_EQ(plan.coordinates(84).map, 1U);             // after 7 strategy configurations
   // Inside an entry the last parameter varies fastest: w4 (0, 1) before w1 (0, 10, 20).
-  EXPECT_EQ(plan.run_spec(12).strategy_params, (json{{"w1", 0}, {"w4", 1}}));
-  EXPECT_EQ(plan.run_spec(24).strategy_params, (json{{"w1", 10}, {"w4", 0}}));
-  EXPECT_TRUE(plan.run_spec(72).strategy_params.is_null());
+  EXPECT_EQ(given_params(plan, 12), (json{{"w1", 0}, {"w4", 1}}));
+  EXPECT_EQ(given_params(plan, 24), (json{{"w1", 10}, {"w4", 0}}));
+  EXPECT_TRUE(given_params(plan, 72).is_null());
   EXPECT_THROW((void)plan.coordinates(plan.run_count()), std::out_of_range);
 }
 
@@ -89,9 +96,11 @@ TEST(SweepPlan, RunSpecOfAnIndexEqualsAHandDecode) {
   EXPECT_EQ(c.repetition, 2);
   const RunSpec spec = plan.run_spec(140);
   EXPECT_EQ(spec.map.get(), plan.maps()[1].map.get());  // shared, not copied
-  EXPECT_EQ(spec.strategy, "energy_aware");
-  EXPECT_EQ(spec.strategy_params, (json{{"w1", 20}, {"w4", 0}}));
-  EXPECT_EQ(spec.planner, "dijkstra");
+  EXPECT_EQ(spec.strategy.name, "energy_aware");
+  EXPECT_EQ(given_params(plan, 140), (json{{"w1", 20}, {"w4", 0}}));
+  EXPECT_EQ(spec.strategy.params["w1"], 20.0);  // resolved: every parameter
+  EXPECT_EQ(spec.strategy.params["w2"], 0.0);
+  EXPECT_EQ(spec.planner.name, "dijkstra");
   EXPECT_EQ(spec.robot.battery_capacity, 100.0);
   EXPECT_EQ(spec.seed, derive_seed(9, "repetition/2"));
 }
@@ -134,10 +143,10 @@ TEST(SweepPlan, ExhaustiveWeightSearchIsCountedAndDecodedLazily) {
   const RunCoordinates last = plan.coordinates(plan.run_count() - 1);
   EXPECT_EQ(last.strategy_combo, weights - 1);
   EXPECT_EQ(last.repetition, 1);
-  EXPECT_EQ(plan.run_spec(plan.run_count() - 1).strategy_params,
+  EXPECT_EQ(given_params(plan, plan.run_count() - 1),
             (json{{"w1", 250}, {"w2", 250}, {"w3", 250}, {"w4", 250}}));
   const std::uint64_t combo = ((1ULL * 251 + 2) * 251 + 3) * 251 + 4;
-  EXPECT_EQ(plan.run_spec(combo * 2 + 1).strategy_params, (json{{"w1", 1}, {"w2", 2}, {"w3", 3}, {"w4", 4}}));
+  EXPECT_EQ(given_params(plan, combo * 2 + 1), (json{{"w1", 1}, {"w2", 2}, {"w3", 3}, {"w4", 4}}));
 }
 
 TEST(SweepPlan, MapSeedsExpandIntoOneMapPerSeed) {

@@ -60,7 +60,7 @@ TEST(SweepValidation, ReportsEveryProblemAtOnceWithPathsAndAllowedValues) {
   EXPECT_EQ(m.rfind("s.json: 5 problems in the sweep:\n", 0), 0U) << m;
   EXPECT_HAS(m, "\ns.json: /colour: unknown key 'colour'; allowed: schema_version, name,");
   EXPECT_HAS(m,
-             "\ns.json: /maps/1/doors: unknown key 'doors' for generator 'rooms'; allowed: w, h, res, seed, "
+             "\ns.json: /maps/1/doors: unknown key 'doors'; allowed: w, h, res, seed, "
              "start, door");
   EXPECT_HAS(m, "\ns.json: /maps/2");
   EXPECT_HAS(m, "/nonexistent/missing.map: cannot open the file");

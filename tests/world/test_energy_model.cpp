@@ -71,7 +71,7 @@ TEST(EnergyModel, JsonPerTurnTakesFourNumbers) {
     (void)energy_model_from_json(nlohmann::json::parse(R"({"per_turn": [0, -1, 0, 0]})"), "/e");
     FAIL();
   } catch (const ConfigError& e) {
-    EXPECT_NE(std::string(e.what()).find("/e/per_turn/1"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("/e/per_turn"), std::string::npos) << e.what();
   }
   EXPECT_THROW((void)energy_model_from_json(nlohmann::json::parse(R"({"per_turn": [0, 0]})"), "/e"),
                ConfigError);

@@ -159,14 +159,17 @@ TEST(MapSpec, UnknownKindsAndExtensionsListTheAllowedOnes) {
 }
 
 TEST(MapSpec, BadValuesAreErrorsNotRounded) {
-  expect_config_error([] { (void)load_map_spec("rooms:w=12.5"); }, {"'w' must be an integer, got 12.5"});
+  expect_config_error([] { (void)load_map_spec("rooms:w=12.5"); },
+                      {"w: value 12.5 not allowed; allowed: an integer in [1, 65536]"});
   expect_config_error([] { (void)load_map_spec("rooms:w"); }, {"option 'w' is not key=value"});
   expect_config_error([] { (void)load_map_spec("rooms:w=40,w=50"); }, {"key 'w' is repeated"});
-  expect_config_error([] { (void)load_map_spec("free:res=-1"); }, {"'res' = -1", "allowed: > 0"});
+  expect_config_error([] { (void)load_map_spec("free:res=-1"); },
+                      {"res: value -1 out of range", "allowed: a number > 0"});
   expect_config_error([] { (void)load_map_spec("free:seed=-3"); }, {"'seed' must be a non-negative integer"});
   expect_config_error([] { (void)load_map_spec("free:border=maybe"); },
                       {"'border' must be true, false, 1 or 0"});
-  expect_config_error([] { (void)load_map_spec("free:start=3"); }, {"'start' must be [a, b] or \"a;b\""});
+  expect_config_error([] { (void)load_map_spec("free:start=3"); },
+                      {"start must be two non-negative integer cell coordinates"});
   expect_config_error([] { (void)load_map_spec("rooms:w=40,h=40,door=30"); },
                       {"map spec 'rooms:w=40,h=40,door=30'", "door = 30 is out of range"});
   expect_config_error([] { (void)load_map_spec(kData + "/hospital_section.png:mpp=0.1,size=40x18"); },
@@ -177,7 +180,7 @@ TEST(MapSpec, BadValuesAreErrorsNotRounded) {
       [] {
         (void)load_map_json({{"generator", "rooms"}, {"w", "big"}}, "/maps/7");
       },
-      {"'w' must be an integer"});
+      {"value \"big\" not allowed; allowed: an integer in [1, 65536]"});
   EXPECT_EQ(e.where(), "/maps/7/w");
 }
 
