@@ -24,6 +24,9 @@ std::string quoted_list(const std::vector<std::string>& names) {
   return out;
 }
 
+/// 2^53: the largest integer magnitude a double holds exactly.
+constexpr double kMaxExactInteger = 9007199254740992.0;
+
 /// Values longer than this are cut in messages (a bad value may be a huge array).
 constexpr std::size_t kMaxValueText = 80;
 
@@ -107,6 +110,8 @@ std::optional<std::string> ParamSpec::check(const nlohmann::json& value) const {
         return "value " + value_text(value) + " out of range; allowed: " + allowed();
       };
       if (!std::isfinite(x)) return out_of_range();
+      // Integers a double (and so every JSON reader) holds exactly; also what a `long` holds.
+      if (type == ParamType::Integer && std::abs(x) > kMaxExactInteger) return out_of_range();
       if (min && (min_open ? !(x > *min) : !(x >= *min))) return out_of_range();
       if (max && (max_open ? !(x < *max) : !(x <= *max))) return out_of_range();
       break;

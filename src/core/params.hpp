@@ -208,10 +208,7 @@ class ParamDecl {
     if constexpr (std::is_same_v<T, int>) {  // what the member can hold, unless range() narrows it
       spec.min = static_cast<double>(std::numeric_limits<int>::min());
       spec.max = static_cast<double>(std::numeric_limits<int>::max());
-    } else if constexpr (std::is_same_v<T, long>) {
-      spec.min = -9007199254740992.0;  // +-2^53: integers a double (and every JSON reader) holds exactly
-      spec.max = 9007199254740992.0;
-    }
+    }  // long: ParamSpec::check() refuses integers beyond +-2^53 for every Integer
     return custom(
         std::move(spec), [member](P& p, const nlohmann::json& v) { p.*member = v.get<T>(); },
         [member](const P& p) { return nlohmann::json(p.*member); });
