@@ -8,6 +8,7 @@
 #include "cli/commands.hpp"
 #include "cli/kv_options.hpp"
 #include "cli/output_dir.hpp"
+#include "core/csv_format.hpp"
 #include "sim/run_table.hpp"
 #include "sim/simulation.hpp"
 #include "sim/trajectory_image.hpp"

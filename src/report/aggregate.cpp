@@ -9,12 +9,13 @@
 #include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
-#include <stdexcept>
 #include <unordered_map>
 #include <utility>
 
 #include "core/config_error.hpp"
+#include "core/csv_format.hpp"
 #include "core/csv_reader.hpp"
+#include "core/statistics.hpp"
 #include "sim/run_result.hpp"
 #include "sim/run_table.hpp"
 
@@ -94,8 +95,6 @@ Stats describe(std::vector<double>& values) {
   return s;
 }
 
-std::string cell(double v) { return std::isnan(v) ? std::string() : format_number(v); }
-
 /// A CSV file written to `<path>.tmp` and renamed into place by close().
 class CsvOut {
  public:
@@ -103,10 +102,7 @@ class CsvOut {
       : path_(std::move(path)), f_(path_ + ".tmp", std::ios::binary | std::ios::trunc) {
     if (!f_) throw ConfigError(path_ + ".tmp", "cannot open for writing");
   }
-  void row(const std::vector<std::string>& fields) {
-    for (std::size_t i = 0; i < fields.size(); ++i) f_ << (i ? "," : "") << csv_field(fields[i]);
-    f_ << '\n';
-  }
+  void row(const std::vector<std::string>& fields) { f_ << csv_record(fields) << '\n'; }
   void close() {
     f_.close();
     if (!f_) throw ConfigError(path_ + ".tmp", "write failed");
@@ -258,7 +254,7 @@ void write_summary(const std::string& path, RunsTable& runs) {
     row.push_back(std::to_string(c.n));
     for (const auto count : c.end_counts) row.push_back(std::to_string(count));
     for (auto& values : c.metrics) {
-      for (const double s : describe(values)) row.push_back(cell(s));
+      for (const double s : describe(values)) row.push_back(number_cell(s));
     }
     out.row(row);
   }
@@ -285,8 +281,8 @@ void write_progress_summary(const std::string& path, const std::string& source,
                                       std::to_string(b.finals.size()) + " runs at " +
                                       format_number(distance_m) + " m)");
       }
-      out.row({std::to_string(id), format_number(distance_m), std::to_string(values.size()), cell(s[0]),
-               cell(s[3]), cell(s[5]), cell(s[7])});
+      out.row({std::to_string(id), format_number(distance_m), std::to_string(values.size()),
+               number_cell(s[0]), number_cell(s[3]), number_cell(s[5]), number_cell(s[7])});
     };
     std::size_t ended = 0;
     double last_bin = -std::numeric_limits<double>::infinity();
@@ -334,8 +330,8 @@ void write_best(const std::string& path, RunsTable& runs, const Objective& objec
   for (std::size_t rank = 0; rank < order.size(); ++rank) {
     const std::size_t id = order[rank];
     const Configuration& c = runs.configs[id];
-    row = {std::to_string(rank + 1), std::to_string(id), std::to_string(c.n),
-           cell(stats[id][5]),       cell(stats[id][3]), cell(stats[id][7])};
+    row = {std::to_string(rank + 1),  std::to_string(id),        std::to_string(c.n),
+           number_cell(stats[id][5]), number_cell(stats[id][3]), number_cell(stats[id][7])};
     row.insert(row.end(), c.values.begin(), c.values.end());
     out.row(row);
   }
@@ -371,17 +367,6 @@ const Objective& choose_objective(const std::string& dir, const std::string& req
 }
 
 }  // namespace
-
-double quantile_sorted(const std::vector<double>& sorted, double q) {
-  if (sorted.empty()) throw std::invalid_argument("quantile_sorted: no values");
-  if (!(q >= 0.0 && q <= 1.0)) throw std::invalid_argument("quantile_sorted: q outside [0, 1]");
-  // Hyndman and Fan (1996) type 7: h = (n - 1) q, interpolate between x[floor h] and x[floor h + 1].
-  const double h = static_cast<double>(sorted.size() - 1) * q;
-  const auto lo = static_cast<std::size_t>(std::floor(h));
-  const double frac = h - static_cast<double>(lo);
-  if (frac == 0.0 || lo + 1 >= sorted.size() || sorted[lo] == sorted[lo + 1]) return sorted[lo];
-  return sorted[lo] + frac * (sorted[lo + 1] - sorted[lo]);
-}
 
 void aggregate(const std::string& dir, const AggregateOptions& options) {
   const Objective& objective = choose_objective(dir, options.objective);

@@ -17,7 +17,7 @@
 ///   (`end.complete`, ... for every EndReason in declaration order, then any reason this build
 ///   does not know, by first appearance), then for every metric column M:
 ///   `M.mean, M.std, M.min, M.q05, M.q25, M.median, M.q75, M.q95, M.max`. Quantiles are
-///   Hyndman-Fan type 7 (linear interpolation between order statistics, as numpy's default);
+///   Hyndman-Fan type 7 (core/statistics.hpp's quantile_sorted, as numpy's default);
 ///   std is the sample standard deviation (n - 1; 0 for n = 1). Empty cells are skipped, so a
 ///   metric's statistics are over its non-empty cells (empty statistics where there are none,
 ///   e.g. competitive_ratio off free space; such columns are empty for a whole configuration
@@ -46,7 +46,6 @@
 ///   distance grids throw ConfigError naming progress.csv.
 
 #include <string>
-#include <vector>
 
 namespace fsweep {
 inline namespace report {
@@ -62,11 +61,6 @@ struct AggregateOptions {
 /// Reads `dir`/runs.csv and `dir`/progress.csv, writes summary.csv, progress_summary.csv and
 /// best.csv. Throws ConfigError naming the file and line on malformed input.
 void aggregate(const std::string& dir, const AggregateOptions& options);
-
-/// Quantile of sorted (ascending) values, Hyndman-Fan type 7: h = (n - 1) q,
-/// x[floor h] + (h - floor h) (x[floor h + 1] - x[floor h]). q in [0, 1] and values not empty,
-/// else std::invalid_argument.
-[[nodiscard]] double quantile_sorted(const std::vector<double>& sorted, double q);
 
 }  // namespace report
 }  // namespace fsweep

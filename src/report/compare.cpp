@@ -8,12 +8,13 @@
 #include <map>
 
 #include "core/config_error.hpp"
+#include "core/csv_format.hpp"
 #include "core/csv_reader.hpp"
+#include "core/statistics.hpp"
 #include "planners/reproducibility.hpp"
 #include "report/aggregate.hpp"
 #include "report/compare_runs.hpp"
 #include "report/compare_speed.hpp"
-#include "sim/run_table.hpp"
 
 namespace fsweep {
 inline namespace report {

@@ -15,7 +15,7 @@
 ///    `planner.<param>` columns): every baseline run (by run_key) must be in NEW with every
 ///    quality cell equal: both cells numbers and the doubles equal (NaN equals NaN), or the
 ///    texts equal. Else the configuration is `changed` (one `run` check per differing cell).
-/// 2. Other configurations: q25, median, q75 (aggregate.hpp's quantile_sorted) of distance_m,
+/// 2. Other configurations: q25, median, q75 (core/statistics.hpp's quantile_sorted) of distance_m,
 ///    energy (lower is better) and coverage (higher is better) over the runs' non-empty cells.
 ///    A quantile is `regressed` when it is worse than the baseline's by more than
 ///    tolerance x max(|baseline|, scale), scale = 1 m, 1 energy unit, 0.01 coverage (so a zero

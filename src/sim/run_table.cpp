@@ -1,10 +1,9 @@
 #include "sim/run_table.hpp"
 
-#include <charconv>
-#include <cmath>
 #include <fstream>
 
 #include "core/config_error.hpp"
+#include "core/csv_format.hpp"
 #include "strategies/registry.hpp"
 
 namespace fsweep {
@@ -32,14 +31,6 @@ std::ofstream open_for_writing(const std::string& path) {
 }
 
 }  // namespace
-
-std::string format_number(double v) {
-  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
-  if (std::isnan(v)) return "nan";
-  char buf[64];
-  const auto res = std::to_chars(buf, buf + sizeof(buf), v);
-  return std::string(buf, res.ptr);
-}
 
 Columns config_columns(const RunSpec& spec) {
   Columns c;
@@ -101,16 +92,6 @@ Columns metric_columns(const RunResult& r) {
       {"target_x", std::to_string(m.target_x)},
       {"target_y", std::to_string(m.target_y)},
   };
-}
-
-std::string csv_field(const std::string& s) {
-  if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
-  std::string out = "\"";
-  for (const char ch : s) {
-    if (ch == '"') out += '"';
-    out += ch;
-  }
-  return out + "\"";
 }
 
 void write_csv(const std::string& path, const std::vector<Columns>& rows) {

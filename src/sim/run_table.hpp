@@ -15,9 +15,6 @@ inline namespace sim {
 
 using Columns = std::vector<std::pair<std::string, std::string>>;
 
-/// Shortest text that reads back to the same double ("inf" for infinity).
-[[nodiscard]] std::string format_number(double v);
-
 /// Configuration columns: map (source, width, height, resolution_m, start), strategy and each
 /// resolved strategy parameter (`strategy.w1`...), planner and its parameters, every robot and
 /// sim parameter (`robot.sensor.range_m`...; `robot.dock` is "x;y", or "start" when it is
@@ -26,9 +23,6 @@ using Columns = std::vector<std::pair<std::string, std::string>>;
 
 /// Metric columns: end_reason, end_detail and every RunMetrics field, in declaration order.
 [[nodiscard]] Columns metric_columns(const RunResult& result);
-
-/// Quotes a CSV field when it holds a comma, quote or newline (RFC 4180).
-[[nodiscard]] std::string csv_field(const std::string& s);
 
 /// Writes a header line and one row per entry (all rows must have the same column names).
 void write_csv(const std::string& path, const std::vector<Columns>& rows);

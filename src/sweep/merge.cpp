@@ -11,9 +11,9 @@
 #include <unordered_map>
 
 #include "core/config_error.hpp"
+#include "core/csv_format.hpp"
 #include "core/csv_reader.hpp"
 #include "report/aggregate.hpp"
-#include "sim/run_table.hpp"
 #include "sweep/csv_journal.hpp"
 #include "sweep/manifest.hpp"
 #include "sweep/sweep_plan.hpp"
@@ -30,15 +30,6 @@ struct Shard {
   std::string dir;
   nlohmann::json manifest;
 };
-
-std::string join_fields(const std::vector<std::string>& fields) {
-  std::string out;
-  for (std::size_t i = 0; i < fields.size(); ++i) {
-    if (i > 0) out += ',';
-    out += csv_field(fields[i]);
-  }
-  return out;
-}
 
 nlohmann::json read_json(const std::string& path) {
   std::ifstream in(path);
@@ -131,7 +122,7 @@ MergeReport merge_shards(const std::string& dir, const std::string& objective) {
   std::map<std::uint64_t, std::string> index_where;
   for (const Shard& s : shards) {
     CsvReader r(s.dir + "/runs.csv");
-    const std::string header = join_fields(r.header());
+    const std::string header = csv_record(r.header());
     if (runs_header.empty()) runs_header = header;
     if (header != runs_header)
       throw ConfigError(r.path(), "runs.csv header differs from " + shards.front().dir + "'s");
@@ -161,7 +152,7 @@ MergeReport merge_shards(const std::string& dir, const std::string& objective) {
       }
       index_where[idx] = r.where();
       key_where[key] = r.where();
-      runs[idx] = join_fields(r.fields());
+      runs[idx] = csv_record(r.fields());
     }
   }
   for (std::uint64_t i = 0; i < report.total; ++i) {
@@ -176,7 +167,7 @@ MergeReport merge_shards(const std::string& dir, const std::string& objective) {
   std::map<std::uint64_t, std::string> progress;
   for (const Shard& s : shards) {
     CsvReader r(s.dir + "/progress.csv");
-    const std::string header = join_fields(r.header());
+    const std::string header = csv_record(r.header());
     if (progress_header.empty()) progress_header = header;
     if (header != progress_header) {
       throw ConfigError(r.path(), "progress.csv header differs from " + shards.front().dir + "'s");
@@ -185,7 +176,7 @@ MergeReport merge_shards(const std::string& dir, const std::string& objective) {
     while (r.next()) {
       const std::uint64_t idx = parse_index(r.fields()[ci], r);
       if (runs.count(idx) == 0) continue;  // no runs.csv row (torn write): dropped, as aggregate does
-      progress[idx] += join_fields(r.fields()) + "\n";
+      progress[idx] += csv_record(r.fields()) + "\n";
     }
   }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/csv_format.hpp"
 #include "sim/competitive.hpp"
 #include "sim/run_table.hpp"
 #include "sim/simulation.hpp"
@@ -14,16 +15,6 @@ inline namespace sweep {
 namespace {
 
 constexpr const char* kProgressHeader = "run_index,run_key,distance_m,explored_area_m2,coverage,energy";
-
-std::string join_record(const std::vector<std::string>& fields) {
-  std::string s;
-  for (std::size_t i = 0; i < fields.size(); ++i) {
-    if (i > 0) s += ',';
-    s += csv_field(fields[i]);
-  }
-  s += '\n';
-  return s;
-}
 
 /// The star-pattern optimum d* (competitive.hpp) for a run, or NaN where it does not apply:
 /// free space, a finite battery, an energy model that charges travel only (no stop or turn
@@ -111,11 +102,7 @@ SweepTable::SweepTable(const SweepPlan& plan) {
   add("competitive_ratio");
 }
 
-std::string SweepTable::header() const {
-  std::string s;
-  for (std::size_t i = 0; i < columns_.size(); ++i) s += (i > 0 ? "," : "") + csv_field(columns_[i]);
-  return s;
-}
+std::string SweepTable::header() const { return csv_record(columns_); }
 
 std::string SweepTable::progress_header() { return kProgressHeader; }
 
@@ -168,7 +155,7 @@ RunRows SweepTable::run(const SweepPlan& plan, std::uint64_t index, const std::s
     out.progress_rows.clear();
     out.failed = true;
   }
-  out.run_row = join_record(fields);
+  out.run_row = csv_record(fields) + '\n';
   return out;
 }
 
