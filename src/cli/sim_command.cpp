@@ -9,7 +9,7 @@
 #include "cli/kv_options.hpp"
 #include "cli/output_dir.hpp"
 #include "core/csv_format.hpp"
-#include "sim/run_table.hpp"
+#include "report/runs_schema.hpp"
 #include "sim/simulation.hpp"
 #include "sim/trajectory_image.hpp"
 #include "world/map_spec.hpp"

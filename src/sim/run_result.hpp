@@ -28,7 +28,7 @@ enum class EndReason {
 
 /// Per-run metrics (DESIGN.md section 6). Areas in m^2, distances in metres, energy in the
 /// energy model's unit. Fields added later are declared last, so that CSV columns (in
-/// declaration order, run_table.hpp) are only ever appended.
+/// declaration order, report/runs_schema.hpp) are only ever appended.
 struct RunMetrics {
   double distance_m = 0.0;
   double energy = 0.0;

@@ -1,7 +1,6 @@
 #include "sweep/merge.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -14,7 +13,9 @@
 #include "core/csv_format.hpp"
 #include "core/csv_reader.hpp"
 #include "report/aggregate.hpp"
+#include "report/runs_schema.hpp"
 #include "sweep/csv_journal.hpp"
+#include "sweep/done_runs.hpp"
 #include "sweep/manifest.hpp"
 #include "sweep/sweep_plan.hpp"
 
@@ -42,12 +43,9 @@ nlohmann::json read_json(const std::string& path) {
 }
 
 std::uint64_t parse_index(const std::string& cell, const CsvReader& r) {
-  std::uint64_t v = 0;
-  const auto [end, ec] = std::from_chars(cell.data(), cell.data() + cell.size(), v);
-  if (ec != std::errc() || end != cell.data() + cell.size() || cell.empty()) {
-    throw ConfigError(r.where(), "run_index '" + cell + "' is not a non-negative integer");
-  }
-  return v;
+  const auto v = parse_run_index(cell);
+  if (!v) throw ConfigError(r.where(), "run_index '" + cell + "' is not a non-negative integer");
+  return *v;
 }
 
 }  // namespace
@@ -126,8 +124,8 @@ MergeReport merge_shards(const std::string& dir, const std::string& objective) {
     if (runs_header.empty()) runs_header = header;
     if (header != runs_header)
       throw ConfigError(r.path(), "runs.csv header differs from " + shards.front().dir + "'s");
-    const std::size_t ci = r.require_column("run_index");
-    const std::size_t ck = r.require_column("run_key");
+    const std::size_t ci = r.require_column(kRunIndexColumn);
+    const std::size_t ck = r.require_column(kRunKeyColumn);
     while (r.next()) {
       ++report.rows;
       const std::uint64_t idx = parse_index(r.fields()[ci], r);
@@ -172,7 +170,7 @@ MergeReport merge_shards(const std::string& dir, const std::string& objective) {
     if (header != progress_header) {
       throw ConfigError(r.path(), "progress.csv header differs from " + shards.front().dir + "'s");
     }
-    const std::size_t ci = r.require_column("run_index");
+    const std::size_t ci = r.require_column(kRunIndexColumn);
     while (r.next()) {
       const std::uint64_t idx = parse_index(r.fields()[ci], r);
       if (runs.count(idx) == 0) continue;  // no runs.csv row (torn write): dropped, as aggregate does

@@ -86,8 +86,8 @@
 #include <utility>
 #include <vector>
 
+#include "report/runs_schema.hpp"
 #include "sim/run_spec.hpp"
-#include "sim/run_table.hpp"
 
 namespace fsweep {
 inline namespace sweep {
@@ -188,7 +188,7 @@ class SweepPlan {
   [[nodiscard]] const nlohmann::json& source() const { return source_; }
   /// Output directory: "output": {"dir": ...} or results/<name>.
   [[nodiscard]] const std::string& output_dir() const { return output_dir_; }
-  /// Ranking objective for best.csv ("distance_to_final_coverage_m", "area_per_metre", "energy").
+  /// Ranking objective for best.csv: a name of runs_schema.hpp's kObjectives (default the first).
   [[nodiscard]] const std::string& objective() const { return objective_; }
   [[nodiscard]] int repetitions() const { return repetitions_; }
   [[nodiscard]] std::uint64_t seed() const { return seed_; }
@@ -226,7 +226,7 @@ class SweepPlan {
   std::string description_;
   nlohmann::json source_;
   std::string output_dir_;
-  std::string objective_ = "distance_to_final_coverage_m";
+  std::string objective_{kObjectives[0].name};
   int repetitions_ = 1;
   std::uint64_t seed_ = 0;
   std::vector<SweepMap> maps_;
