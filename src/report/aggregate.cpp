@@ -145,7 +145,7 @@ RunsTable read_runs(const std::string& path) {
     ++config.end_counts[r_index];
     // 3. Metrics: every non-empty cell must be a number; NaN ("nan") counts as no value.
     for (std::size_t m = 0; m < metric_cols.size(); ++m) {
-      const auto v = metric_value(f[metric_cols[m]], t.metric_names[m], in.where());
+      const auto v = metric_value(f[metric_cols[m]], t.metric_names[m], in);
       if (v && !std::isnan(*v)) config.metrics[m].push_back(*v);
     }
   }

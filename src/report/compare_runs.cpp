@@ -25,7 +25,7 @@ RunsFile read_runs_file(const std::string& path) {
   t.quality_names = header.names_of(header.quality());
   while (in.next()) {
     const auto& f = in.fields();
-    for (const std::size_t m : header.metrics()) (void)metric_value(f[m], t.header[m], in.where());
+    for (const std::size_t m : header.metrics()) (void)metric_value(f[m], t.header[m], in);
     if (!t.row_of_key.try_emplace(f[t.run_key], t.rows.size()).second) {
       throw ConfigError(in.where(), "run_key " + f[t.run_key] + " appears twice");
     }

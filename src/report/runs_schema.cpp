@@ -77,11 +77,10 @@ std::string RunsHeader::config_key(const std::vector<std::string>& fields) const
   return key;
 }
 
-std::optional<double> metric_value(const std::string& text, const std::string& column,
-                                   const std::string& where) {
+std::optional<double> metric_value(const std::string& text, const std::string& column, const CsvReader& in) {
   if (text.empty()) return std::nullopt;
   const auto v = parse_number(text);
-  if (!v) throw ConfigError(where, "column '" + column + "': '" + text + "' is not a number");
+  if (!v) throw ConfigError(in.where(), "column '" + column + "': '" + text + "' is not a number");
   return v;
 }
 

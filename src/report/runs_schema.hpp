@@ -29,6 +29,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/csv_reader.hpp"
 #include "sim/run_result.hpp"
 #include "sim/run_spec.hpp"
 
@@ -136,11 +137,11 @@ class RunsHeader {
   std::vector<std::size_t> quality_;
 };
 
-/// The value of a metric cell: nullopt when empty; NaN for `nan` (no value either). Throws
-/// ConfigError at `where` ("column 'energy': 'x' is not a number") for anything else that is not a
-/// number.
+/// The value of a metric cell of the record `in` just read: nullopt when empty; NaN for `nan`
+/// (no value either). Throws ConfigError at in.where() ("column 'energy': 'x' is not a
+/// number") for anything else that is not a number.
 [[nodiscard]] std::optional<double> metric_value(const std::string& text, const std::string& column,
-                                                 const std::string& where);
+                                                 const CsvReader& in);
 
 // ---- Configuration keys.
 

@@ -1,15 +1,19 @@
 // The runs.csv schema (runs_schema.hpp): column roles, configuration keys, objectives, and
 // the writer's columns read back in the roles the readers give them.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <limits>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "core/config_error.hpp"
+#include "core/csv_reader.hpp"
 #include "report/runs_schema.hpp"
 #include "world/map_spec.hpp"
 
@@ -142,12 +146,22 @@ TEST(RunsSchema, ProgressColumnsAndCells) {
 }
 
 TEST(MetricValue, EmptyIsNoValueNanIsNanAnythingElseMustBeANumber) {
-  EXPECT_FALSE(metric_value("", "energy", "r.csv:3").has_value());
-  EXPECT_TRUE(std::isnan(*metric_value("nan", "energy", "r.csv:3")));
-  EXPECT_EQ(*metric_value("inf", "energy", "r.csv:3"), std::numeric_limits<double>::infinity());
-  EXPECT_EQ(*metric_value("-2.5e3", "energy", "r.csv:3"), -2500.0);
-  EXPECT_EQ(config_error([] { (void)metric_value("12 J", "energy", "r.csv:3"); }),
-            "r.csv:3: column 'energy': '12 J' is not a number");
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("fsweep_runs_schema_metric_" + std::to_string(getpid()) + ".csv");
+  {
+    std::ofstream f(path, std::ios::binary | std::ios::trunc);
+    f << "energy\n1\n2\n";
+  }
+  CsvReader in(path.string());
+  ASSERT_TRUE(in.next());
+  ASSERT_TRUE(in.next());  // the record of line 3
+  EXPECT_FALSE(metric_value("", "energy", in).has_value());
+  EXPECT_TRUE(std::isnan(*metric_value("nan", "energy", in)));
+  EXPECT_EQ(*metric_value("inf", "energy", in), std::numeric_limits<double>::infinity());
+  EXPECT_EQ(*metric_value("-2.5e3", "energy", in), -2500.0);
+  EXPECT_EQ(config_error([&] { (void)metric_value("12 J", "energy", in); }),
+            path.string() + ":3: column 'energy': '12 J' is not a number");
+  std::filesystem::remove(path);
 }
 
 TEST(SuccessfulEnd, CompleteAndTargetReachedOnly) {
