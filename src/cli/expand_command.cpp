@@ -11,7 +11,6 @@
 
 #include "cli/commands.hpp"
 #include "core/config_error.hpp"
-#include "sim/run_table.hpp"
 #include "sweep/sweep_plan.hpp"
 
 namespace fsweep::cli {

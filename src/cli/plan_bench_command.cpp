@@ -16,9 +16,9 @@
 #include "cli/kv_options.hpp"
 #include "cli/output_dir.hpp"
 #include "core/config_error.hpp"
+#include "core/csv_format.hpp"
 #include "evaluation/plan_bench.hpp"
 #include "planners/registry.hpp"
-#include "sim/run_table.hpp"
 #include "world/energy_model.hpp"
 #include "world/known_map.hpp"
 #include "world/map_loaders.hpp"
@@ -46,8 +46,6 @@ std::string fixed(double v, int decimals) {
   std::snprintf(buf.data(), buf.size(), "%.*f", decimals, v);
   return buf.data();
 }
-
-std::string csv_number(double v) { return std::isnan(v) ? std::string() : format_number(v); }
 
 std::ofstream open_out(const std::string& path) {
   std::ofstream f(path, std::ios::binary | std::ios::trunc);
@@ -92,7 +90,7 @@ void write_summary_csv(const std::string& path, const std::vector<std::string>& 
     f << names[i] << ',' << s.queries << ',' << s.solved << ',' << s.timeouts << ','
       << format_number(s.success_rate);
     for (const SampleSummary& x : {s.length_ratio, s.energy, s.turns, s.time_ms}) {
-      for (const double v : {x.mean, x.q05, x.q25, x.median, x.q75, x.q95}) f << ',' << csv_number(v);
+      for (const double v : {x.mean, x.q05, x.q25, x.median, x.q75, x.q95}) f << ',' << number_cell(v);
     }
     f << '\n';
   }

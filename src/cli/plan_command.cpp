@@ -9,9 +9,9 @@
 #include "cli/commands.hpp"
 #include "cli/kv_options.hpp"
 #include "core/config_error.hpp"
+#include "core/csv_format.hpp"
 #include "evaluation/scenario_check.hpp"
 #include "planners/registry.hpp"
-#include "sim/run_table.hpp"
 #include "world/map_loaders.hpp"
 #include "world/map_spec.hpp"
 

@@ -19,9 +19,9 @@
 #include "cli/kv_options.hpp"
 #include "cli/output_dir.hpp"
 #include "core/config_error.hpp"
+#include "core/csv_format.hpp"
 #include "evaluation/plan_compare.hpp"
 #include "planners/registry.hpp"
-#include "sim/run_table.hpp"
 #include "world/energy_model.hpp"
 #include "world/known_map.hpp"
 #include "world/map_spec.hpp"
@@ -62,8 +62,6 @@ std::string fixed(double v, int decimals) {
   std::snprintf(buf.data(), buf.size(), "%.*f", decimals, v);
   return buf.data();
 }
-
-std::string csv_number(double v) { return std::isnan(v) ? std::string() : format_number(v); }
 
 void print_table(const PlanCompareOptions& o, const KnownMap& known, const EnergyModel& energy,
                  const CompareSummary& s, std::size_t n_pairs) {
@@ -156,10 +154,10 @@ void write_summary_csv(const std::string& path, const std::vector<std::string>& 
     f << names[static_cast<std::size_t>(c.baseline)] << ',' << names[static_cast<std::size_t>(c.candidate)]
       << ',' << c.pairs_used;
     for (const SampleSummary& x : {c.energy_saving_pct, c.length_increase_pct}) {
-      for (const double v : {x.mean, x.q05, x.q25, x.median, x.q75, x.q95}) f << ',' << csv_number(v);
+      for (const double v : {x.mean, x.q05, x.q25, x.median, x.q75, x.q95}) f << ',' << number_cell(v);
     }
-    f << ',' << csv_number(c.total_energy_saving_pct) << ',' << csv_number(c.total_length_increase_pct) << ','
-      << format_number(c.share_cheaper) << ',' << format_number(c.share_equal) << ','
+    f << ',' << number_cell(c.total_energy_saving_pct) << ',' << number_cell(c.total_length_increase_pct)
+      << ',' << format_number(c.share_cheaper) << ',' << format_number(c.share_equal) << ','
       << format_number(c.share_dearer);
     for (const int idx : {c.baseline, c.candidate}) {
       const PlannerTotals& t = s.totals[static_cast<std::size_t>(idx)];

@@ -9,6 +9,7 @@
 
 #include "core/config_error.hpp"
 #include "core/random.hpp"
+#include "core/statistics.hpp"
 #include "search/octile_grid.hpp"
 
 namespace fsweep {
@@ -44,13 +45,6 @@ Regions free_regions(const KnownMap& known, bool allow_corner_cutting) {
     r.size.push_back(static_cast<long>(queue.size()));
   }
   return r;
-}
-
-double quantile_type7(const std::vector<double>& sorted, double q) {
-  const double h = static_cast<double>(sorted.size() - 1) * q;
-  const auto lo = static_cast<std::size_t>(std::floor(h));
-  const std::size_t hi = std::min(lo + 1, sorted.size() - 1);
-  return sorted[lo] + (h - static_cast<double>(lo)) * (sorted[hi] - sorted[lo]);
 }
 
 }  // namespace
@@ -140,11 +134,11 @@ SampleSummary summarize_sample(std::vector<double> values) {
   std::sort(values.begin(), values.end());
   const double mean = std::accumulate(values.begin(), values.end(), 0.0) / static_cast<double>(values.size());
   return {mean,
-          quantile_type7(values, 0.05),
-          quantile_type7(values, 0.25),
-          quantile_type7(values, 0.5),
-          quantile_type7(values, 0.75),
-          quantile_type7(values, 0.95)};
+          quantile_sorted(values, 0.05),
+          quantile_sorted(values, 0.25),
+          quantile_sorted(values, 0.5),
+          quantile_sorted(values, 0.75),
+          quantile_sorted(values, 0.95)};
 }
 
 CompareSummary summarize_comparison(const std::vector<std::vector<PairPlan>>& plans) {

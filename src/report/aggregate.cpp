@@ -9,34 +9,23 @@
 #include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
-#include <stdexcept>
 #include <unordered_map>
 #include <utility>
 
 #include "core/config_error.hpp"
+#include "core/csv_format.hpp"
 #include "core/csv_reader.hpp"
+#include "core/statistics.hpp"
+#include "report/runs_schema.hpp"
 #include "sim/run_result.hpp"
-#include "sim/run_table.hpp"
 
 namespace fsweep {
 inline namespace report {
 namespace {
 
-constexpr char kKeySeparator = '\x1f';
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 /// Distances closer than this are the same (the simulator's progress-grid tolerance).
 constexpr double kSameDistanceM = 1e-9;
-
-/// Ranking objectives of best.csv and their direction.
-struct Objective {
-  std::string_view name;
-  bool descending;
-};
-constexpr std::array<Objective, 3> kObjectives{{
-    {"distance_to_final_coverage_m", false},
-    {"area_per_metre", true},
-    {"energy", false},
-}};
 
 /// Statistics of a metric, in summary.csv's column order.
 constexpr std::array<std::string_view, 9> kStatNames{"mean",   "std", "min", "q05", "q25",
@@ -94,8 +83,6 @@ Stats describe(std::vector<double>& values) {
   return s;
 }
 
-std::string cell(double v) { return std::isnan(v) ? std::string() : format_number(v); }
-
 /// A CSV file written to `<path>.tmp` and renamed into place by close().
 class CsvOut {
  public:
@@ -103,10 +90,7 @@ class CsvOut {
       : path_(std::move(path)), f_(path_ + ".tmp", std::ios::binary | std::ios::trunc) {
     if (!f_) throw ConfigError(path_ + ".tmp", "cannot open for writing");
   }
-  void row(const std::vector<std::string>& fields) {
-    for (std::size_t i = 0; i < fields.size(); ++i) f_ << (i ? "," : "") << csv_field(fields[i]);
-    f_ << '\n';
-  }
+  void row(const std::vector<std::string>& fields) { f_ << csv_record(fields) << '\n'; }
   void close() {
     f_.close();
     if (!f_) throw ConfigError(path_ + ".tmp", "write failed");
@@ -122,35 +106,22 @@ RunsTable read_runs(const std::string& path) {
   RunsTable t;
   t.path = path;
   CsvReader in(path);
-  const auto& header = in.header();
-  const std::size_t run_key = in.require_column("run_key");
-  const std::size_t seed = in.require_column("seed");
-  const std::size_t end_reason = in.require_column("end_reason");
-  const int end_detail = in.column("end_detail");
-  const std::size_t first_metric = (end_detail >= 0 ? static_cast<std::size_t>(end_detail) : end_reason) + 1;
-  std::vector<std::size_t> config_cols;
-  for (std::size_t i = 0; i < seed; ++i) {
-    // The map instance (its source and start) is pooled within its map_class.
-    if (header[i] == "run_index" || header[i] == "run_key" || header[i] == "map" ||
-        header[i] == "map.start") {
-      continue;
-    }
-    config_cols.push_back(i);
-    t.config_names.push_back(header[i]);
-  }
-  t.metric_names.assign(header.begin() + static_cast<std::ptrdiff_t>(first_metric), header.end());
+  const RunsHeader header(in.header(), path);
+  const std::size_t run_key = header.run_key();
+  const std::size_t end_reason = header.end_reason();
+  const std::vector<std::size_t>& config_cols = header.config();
+  const std::vector<std::size_t>& metric_cols = header.metrics();
+  t.config_names = header.names_of(config_cols);
+  t.metric_names = header.names_of(metric_cols);
   for (int r = static_cast<int>(EndReason::Complete); r <= static_cast<int>(EndReason::Error); ++r) {
     t.end_reasons.emplace_back(to_string(static_cast<EndReason>(r)));
   }
 
   std::unordered_map<std::string, std::size_t> config_of_key;
-  std::string key;
   while (in.next()) {
     const auto& f = in.fields();
-    // 1. The configuration: every config column's value, joined.
-    key.clear();
-    for (const std::size_t c : config_cols) (key += f[c]) += kKeySeparator;
-    auto [it, added] = config_of_key.try_emplace(key, t.configs.size());
+    // 1. The configuration: its config columns' key (runs_schema.hpp).
+    auto [it, added] = config_of_key.try_emplace(header.config_key(f), t.configs.size());
     if (added) {
       Configuration& c = t.configs.emplace_back();
       for (const std::size_t col : config_cols) c.values.push_back(f[col]);
@@ -173,14 +144,9 @@ RunsTable read_runs(const std::string& path) {
     }
     ++config.end_counts[r_index];
     // 3. Metrics: every non-empty cell must be a number; NaN ("nan") counts as no value.
-    for (std::size_t m = 0; m < t.metric_names.size(); ++m) {
-      const std::string& text = f[first_metric + m];
-      if (text.empty()) continue;
-      const auto v = parse_number(text);
-      if (!v) {
-        throw ConfigError(in.where(), "column '" + t.metric_names[m] + "': '" + text + "' is not a number");
-      }
-      if (!std::isnan(*v)) config.metrics[m].push_back(*v);
+    for (std::size_t m = 0; m < metric_cols.size(); ++m) {
+      const auto v = metric_value(f[metric_cols[m]], t.metric_names[m], in);
+      if (v && !std::isnan(*v)) config.metrics[m].push_back(*v);
     }
   }
   return t;
@@ -199,9 +165,9 @@ void add_run_progress(const std::vector<std::pair<double, double>>& samples, Pro
 std::vector<ProgressBands> read_progress(const std::string& path, const RunsTable& runs) {
   std::vector<ProgressBands> bands(runs.configs.size());
   CsvReader in(path);
-  const std::size_t run_key = in.require_column("run_key");
-  const std::size_t distance = in.require_column("distance_m");
-  const std::size_t area = in.require_column("explored_area_m2");
+  const std::size_t run_key = in.require_column(kRunKeyColumn);
+  const std::size_t distance = in.require_column(kProgressColumns[0]);
+  const std::size_t area = in.require_column(kProgressColumns[1]);
   std::unordered_map<std::string, std::size_t> finished;  // run_key -> line of its first row
   std::string current;
   std::size_t current_line = 0;
@@ -258,7 +224,7 @@ void write_summary(const std::string& path, RunsTable& runs) {
     row.push_back(std::to_string(c.n));
     for (const auto count : c.end_counts) row.push_back(std::to_string(count));
     for (auto& values : c.metrics) {
-      for (const double s : describe(values)) row.push_back(cell(s));
+      for (const double s : describe(values)) row.push_back(number_cell(s));
     }
     out.row(row);
   }
@@ -285,8 +251,8 @@ void write_progress_summary(const std::string& path, const std::string& source,
                                       std::to_string(b.finals.size()) + " runs at " +
                                       format_number(distance_m) + " m)");
       }
-      out.row({std::to_string(id), format_number(distance_m), std::to_string(values.size()), cell(s[0]),
-               cell(s[3]), cell(s[5]), cell(s[7])});
+      out.row({std::to_string(id), format_number(distance_m), std::to_string(values.size()),
+               number_cell(s[0]), number_cell(s[3]), number_cell(s[5]), number_cell(s[7])});
     };
     std::size_t ended = 0;
     double last_bin = -std::numeric_limits<double>::infinity();
@@ -308,9 +274,10 @@ void write_progress_summary(const std::string& path, const std::string& source,
 }
 
 void write_best(const std::string& path, RunsTable& runs, const Objective& objective) {
-  const auto m = std::find(runs.metric_names.begin(), runs.metric_names.end(), objective.name);
+  const auto m = std::find(runs.metric_names.begin(), runs.metric_names.end(), objective.column);
   if (m == runs.metric_names.end()) {
-    throw ConfigError(runs.path + ":1", "no column '" + std::string(objective.name) + "' for the objective");
+    throw ConfigError(runs.path + ":1",
+                      "no column '" + std::string(objective.column) + "' for the objective");
   }
   const auto metric = static_cast<std::size_t>(m - runs.metric_names.begin());
   std::vector<Stats> stats;
@@ -324,7 +291,7 @@ void write_best(const std::string& path, RunsTable& runs, const Objective& objec
     const double x = stats[a][5];
     const double y = stats[b][5];
     if (std::isnan(x) || std::isnan(y)) return !std::isnan(x) && std::isnan(y);
-    return objective.descending ? x > y : x < y;
+    return objective.direction == Direction::Maximize ? x > y : x < y;
   });
   CsvOut out(path);
   const std::string name(objective.name);
@@ -334,8 +301,8 @@ void write_best(const std::string& path, RunsTable& runs, const Objective& objec
   for (std::size_t rank = 0; rank < order.size(); ++rank) {
     const std::size_t id = order[rank];
     const Configuration& c = runs.configs[id];
-    row = {std::to_string(rank + 1), std::to_string(id), std::to_string(c.n),
-           cell(stats[id][5]),       cell(stats[id][3]), cell(stats[id][7])};
+    row = {std::to_string(rank + 1),  std::to_string(id),        std::to_string(c.n),
+           number_cell(stats[id][5]), number_cell(stats[id][3]), number_cell(stats[id][7])};
     row.insert(row.end(), c.values.begin(), c.values.end());
     out.row(row);
   }
@@ -362,26 +329,10 @@ const Objective& choose_objective(const std::string& dir, const std::string& req
     }
   }
   if (name.empty()) return kObjectives[0];
-  std::vector<std::string> allowed;
-  for (const auto& o : kObjectives) {
-    if (o.name == name) return o;
-    allowed.emplace_back(o.name);
-  }
-  throw ConfigError(where, "unknown objective '" + name + "'; allowed: " + join_names(allowed));
+  return require_objective(name, where);
 }
 
 }  // namespace
-
-double quantile_sorted(const std::vector<double>& sorted, double q) {
-  if (sorted.empty()) throw std::invalid_argument("quantile_sorted: no values");
-  if (!(q >= 0.0 && q <= 1.0)) throw std::invalid_argument("quantile_sorted: q outside [0, 1]");
-  // Hyndman and Fan (1996) type 7: h = (n - 1) q, interpolate between x[floor h] and x[floor h + 1].
-  const double h = static_cast<double>(sorted.size() - 1) * q;
-  const auto lo = static_cast<std::size_t>(std::floor(h));
-  const double frac = h - static_cast<double>(lo);
-  if (frac == 0.0 || lo + 1 >= sorted.size() || sorted[lo] == sorted[lo + 1]) return sorted[lo];
-  return sorted[lo] + frac * (sorted[lo + 1] - sorted[lo]);
-}
 
 void aggregate(const std::string& dir, const AggregateOptions& options) {
   const Objective& objective = choose_objective(dir, options.objective);

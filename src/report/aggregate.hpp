@@ -5,19 +5,18 @@
 /// value of every configuration (n values per configuration and metric) and every progress
 /// sample, as exact quantiles need them.
 ///
-/// - Columns of runs.csv: config columns = every column before `seed` except run_index and
-///   run_key; metric columns = every column after `end_detail` (optimal_distance_m and
-///   competitive_ratio included), all numeric (an empty or `nan` cell is skipped, anything else
-///   that is not a number is an error; `inf` is a number).
-/// - summary.csv: one row per configuration (runs with equal config columns; the seed and the
-///   map instance columns `map` and `map.start` are not part of it, so runs on the maps of one
-///   `map_class` — e.g. the seeds of one generated map — are pooled like repetitions), in order of first
-///   appearance in runs.csv, numbered by `config_id` from 0: `config_id`, the config columns, `n` (runs), one
-///   count column per end reason
+/// - Columns of runs.csv: config, instance and metric columns as runs_schema.hpp classifies
+///   them (RunsHeader); metric cells are numbers (an empty or `nan` cell is skipped, anything
+///   else that is not a number is an error; `inf` is a number).
+/// - summary.csv: one row per configuration (runs with equal config columns, runs_schema.hpp's
+///   config key; the instance columns `map`, `map.start` and `seed` are not part of it, so runs
+///   on the maps of one `map_class` — e.g. the seeds of one generated map — are pooled like
+///   repetitions), in order of first appearance in runs.csv, numbered by `config_id` from 0:
+///   `config_id`, the config columns, `n` (runs), one count column per end reason
 ///   (`end.complete`, ... for every EndReason in declaration order, then any reason this build
 ///   does not know, by first appearance), then for every metric column M:
 ///   `M.mean, M.std, M.min, M.q05, M.q25, M.median, M.q75, M.q95, M.max`. Quantiles are
-///   Hyndman-Fan type 7 (linear interpolation between order statistics, as numpy's default);
+///   Hyndman-Fan type 7 (core/statistics.hpp's quantile_sorted, as numpy's default);
 ///   std is the sample standard deviation (n - 1; 0 for n = 1). Empty cells are skipped, so a
 ///   metric's statistics are over its non-empty cells (empty statistics where there are none,
 ///   e.g. competitive_ratio off free space; such columns are empty for a whole configuration
@@ -35,9 +34,9 @@
 ///   progress rows and a runs.csv row (progress rows of runs without one, a torn write, are
 ///   ignored).
 /// - best.csv: `rank` (from 1), `config_id`, `n`, `<objective>.median`, `<objective>.q05`,
-///   `<objective>.q95`, the config columns; configurations ranked by the objective's median
-///   (ascending for distance and energy, descending for area per metre; configurations without
-///   a value last; ties by config_id).
+///   `<objective>.q95`, the config columns; configurations ranked by the median of the
+///   objective's column (runs_schema.hpp's kObjectives: ascending for distance and energy,
+///   descending for area per metre; configurations without a value last; ties by config_id).
 /// - Outputs are written to `<file>.tmp` and renamed, so a reader never sees half a file.
 /// - Errors: a missing file, a row with a different number of fields than the header, an
 ///   unclosed quote, a last line without a newline (torn write), a non-numeric metric, a
@@ -46,27 +45,21 @@
 ///   distance grids throw ConfigError naming progress.csv.
 
 #include <string>
-#include <vector>
 
 namespace fsweep {
 inline namespace report {
 
 struct AggregateOptions {
-  /// Objective for best.csv: "distance_to_final_coverage_m" (default), "area_per_metre",
-  /// "energy". Empty = the manifest's `/sweep/output/objective` (the sweep file's), else its
-  /// `/objective` (the runner's resolved one), else the default. Another name is a ConfigError
-  /// listing these.
+  /// Objective for best.csv, a name of runs_schema.hpp's kObjectives
+  /// ("distance_to_final_coverage_m", the default, "area_per_metre", "energy"). Empty = the
+  /// manifest's `/sweep/output/objective` (the sweep file's), else its `/objective` (the
+  /// runner's resolved one), else the default. Another name is a ConfigError listing these.
   std::string objective;
 };
 
 /// Reads `dir`/runs.csv and `dir`/progress.csv, writes summary.csv, progress_summary.csv and
 /// best.csv. Throws ConfigError naming the file and line on malformed input.
 void aggregate(const std::string& dir, const AggregateOptions& options);
-
-/// Quantile of sorted (ascending) values, Hyndman-Fan type 7: h = (n - 1) q,
-/// x[floor h] + (h - floor h) (x[floor h + 1] - x[floor h]). q in [0, 1] and values not empty,
-/// else std::invalid_argument.
-[[nodiscard]] double quantile_sorted(const std::vector<double>& sorted, double q);
 
 }  // namespace report
 }  // namespace fsweep

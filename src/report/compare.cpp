@@ -8,26 +8,29 @@
 #include <map>
 
 #include "core/config_error.hpp"
+#include "core/csv_format.hpp"
 #include "core/csv_reader.hpp"
+#include "core/statistics.hpp"
 #include "planners/reproducibility.hpp"
 #include "report/aggregate.hpp"
 #include "report/compare_runs.hpp"
 #include "report/compare_speed.hpp"
-#include "sim/run_table.hpp"
+#include "report/runs_schema.hpp"
 
 namespace fsweep {
 inline namespace report {
 namespace {
 
-/// A metric compared by quantiles: name, true if lower is better, the scale under which the
+/// A metric compared by quantiles: name, the way it improves, the scale under which the
 /// tolerance stops being relative (compare.hpp, check 2).
 struct QuantileMetric {
   const char* name;
-  bool lower_is_better;
+  Direction direction;
   double scale;
 };
-constexpr QuantileMetric kQuantileMetrics[] = {
-    {"distance_m", true, 1.0}, {"energy", true, 1.0}, {"coverage", false, 0.01}};
+constexpr QuantileMetric kQuantileMetrics[] = {{"distance_m", Direction::Minimize, 1.0},
+                                               {"energy", Direction::Minimize, 1.0},
+                                               {"coverage", Direction::Maximize, 0.01}};
 constexpr std::pair<const char*, double> kQuantiles[] = {{"q25", 0.25}, {"median", 0.5}, {"q75", 0.75}};
 
 /// "+12.5%" relative to `base`, or "+0.3" when base is 0.
@@ -155,10 +158,9 @@ void compare_quantiles(const Sides& s, const std::vector<std::size_t>& base_rows
     const auto nv = sorted_values(s.cur, cur_rows, m.name);
     if (bv.empty() || nv.empty()) continue;
     // One-sided tests: is NEW worse (larger for lower-is-better metrics), is it better?
-    const double p_worse =
-        m.lower_is_better ? mann_whitney_greater_p(bv, nv) : mann_whitney_greater_p(nv, bv);
-    const double p_better =
-        m.lower_is_better ? mann_whitney_greater_p(nv, bv) : mann_whitney_greater_p(bv, nv);
+    const bool lower_is_better = m.direction == Direction::Minimize;
+    const double p_worse = lower_is_better ? mann_whitney_greater_p(bv, nv) : mann_whitney_greater_p(nv, bv);
+    const double p_better = lower_is_better ? mann_whitney_greater_p(nv, bv) : mann_whitney_greater_p(bv, nv);
     for (const auto& [qname, q] : kQuantiles) {
       CompareCheck k;
       k.kind = "config";
@@ -172,7 +174,7 @@ void compare_quantiles(const Sides& s, const std::vector<std::size_t>& base_rows
       const double band = tol * std::max(std::abs(b), m.scale);
       k.tolerance = band;
       k.p_value = p_worse;
-      const double worse = m.lower_is_better ? n - b : b - n;  // > 0: worse
+      const double worse = lower_is_better ? n - b : b - n;  // > 0: worse
       if (worse > band && p_worse < s.options.significance) {
         k.status = CheckStatus::Regressed;
         k.failure = true;
@@ -208,9 +210,8 @@ void compare_quantiles(const Sides& s, const std::vector<std::size_t>& base_rows
   // The same test on the outcomes: 1 for a successful run, 0 otherwise (NEW worse = smaller).
   const auto outcomes = [&](const RunsFile& t, const std::vector<std::size_t>& rows) {
     std::vector<double> v;
-    const auto col = static_cast<std::size_t>(t.column("end_reason"));
-    for (const std::size_t r : rows)
-      v.push_back(t.rows[r][col] == "complete" || t.rows[r][col] == "target_reached");
+    const auto col = static_cast<std::size_t>(t.column(kEndReasonColumn));
+    for (const std::size_t r : rows) v.push_back(successful_end(t.rows[r][col]) ? 1.0 : 0.0);
     return v;
   };
   k.p_value = mann_whitney_greater_p(outcomes(s.cur, cur_rows), outcomes(s.base, base_rows));
@@ -245,10 +246,11 @@ CompareCheck wall_time_check(const Sides& s, const std::vector<std::size_t>& bas
 /// `planner.<param>` values of a configuration's first row.
 bool reproducible_config(const RunsFile& t, const std::vector<std::size_t>& rows) {
   const auto& f = t.rows[rows.front()];
-  const int planner = t.column("planner");
+  const int planner = t.column(kPlannerColumn);
+  const std::string prefix = std::string(kPlannerColumn) + ".";
   std::map<std::string, std::string> params;
   for (std::size_t i = 0; i < t.header.size(); ++i) {
-    if (t.header[i].starts_with("planner.")) params[t.header[i].substr(8)] = f[i];
+    if (t.header[i].starts_with(prefix)) params[t.header[i].substr(prefix.size())] = f[i];
   }
   return planner >= 0 && planner_reproducible(f[static_cast<std::size_t>(planner)], params);
 }
@@ -375,7 +377,7 @@ CompareReport compare_dirs(const std::string& new_dir, const std::string& baseli
     if (bg.rows.count(k) == 0) keys.push_back(k);
   }
   std::vector<std::vector<std::string>> values;
-  for (const auto& k : keys) values.push_back(split_key(k));
+  for (const auto& k : keys) values.push_back(split_config_key(k));
   const auto positions = label_positions(key_names, values);
   for (const std::size_t p : positions) r.label_columns.push_back(key_names[p]);
   const auto base_boxes = read_boxes(baseline_dir + "/summary.csv", key_names, r.box_metrics);
@@ -389,7 +391,8 @@ CompareReport compare_dirs(const std::string& new_dir, const std::string& baseli
     for (const std::size_t p : positions) c.label.push_back(values[i][p]);
     for (std::size_t j = 0; j < c.label.size(); ++j) {
       const std::string& column = r.label_columns[j];
-      const bool plain = column == "map_class" || column == "strategy_label" || column == "planner";
+      const bool plain =
+          column == kMapClassColumn || column == kStrategyLabelColumn || column == kPlannerColumn;
       c.name += (j ? " | " : "") + (plain ? c.label[j] : column + "=" + c.label[j]);
     }
     const auto b_it = bg.rows.find(keys[i]);

@@ -3,19 +3,19 @@
 /// `fsweep compare NEW_DIR BASELINE_DIR`: does a sweep's output (sweep_runner.hpp layout, plus
 /// optionally Google Benchmark's `bench.json` and `plots/*.png`) regress against a baseline?
 ///
-/// Configurations are those of aggregate.hpp: runs with equal config columns (every column
-/// before `seed` except run_index and run_key; the map instance columns `map` and `map.start`
-/// are pooled). A configuration is matched across the two directories by the values of the
-/// config columns both runs.csv files have (a column only one side has is named in a warning).
-/// Quality columns: end_reason, end_detail and every column after end_detail except the timing
-/// columns (`*_time_s`, which includes wall_time_s), of those both files have.
+/// Configurations are those of aggregate.hpp: runs with equal config columns (runs_schema.hpp;
+/// the instance columns `map`, `map.start` and `seed` are pooled). A configuration is matched
+/// across the two directories by the config key (runs_schema.hpp) over the config columns both
+/// runs.csv files have (a column only one side has is named in a warning). Quality columns:
+/// RunsHeader::quality() (end_reason, end_detail and the metrics except the timing columns
+/// `*_time_s`, which include wall_time_s), of those both files have.
 ///
 /// Checks:
 /// 1. Reproducible configurations (src/planners/reproducibility.hpp, from `planner` and its
 ///    `planner.<param>` columns): every baseline run (by run_key) must be in NEW with every
 ///    quality cell equal: both cells numbers and the doubles equal (NaN equals NaN), or the
 ///    texts equal. Else the configuration is `changed` (one `run` check per differing cell).
-/// 2. Other configurations: q25, median, q75 (aggregate.hpp's quantile_sorted) of distance_m,
+/// 2. Other configurations: q25, median, q75 (core/statistics.hpp's quantile_sorted) of distance_m,
 ///    energy (lower is better) and coverage (higher is better) over the runs' non-empty cells.
 ///    A quantile is `regressed` when it is worse than the baseline's by more than
 ///    tolerance x max(|baseline|, scale), scale = 1 m, 1 energy unit, 0.01 coverage (so a zero

@@ -7,9 +7,9 @@
 #include <system_error>
 
 #include "core/config_error.hpp"
+#include "core/csv_format.hpp"
 #include "core/files.hpp"
 #include "report/compare.hpp"
-#include "sim/run_table.hpp"
 
 namespace fsweep {
 inline namespace report {
@@ -145,8 +145,7 @@ std::string compare_csv(const CompareReport& r) {
                                      optional_number(k.p_value),
                                      to_string(k.status),
                                      k.failure ? "yes" : "no"};
-    for (std::size_t i = 0; i < f.size(); ++i) (out += i ? "," : "") += csv_field(f[i]);
-    out += '\n';
+    (out += csv_record(f)) += '\n';
   }
   return out;
 }

@@ -8,56 +8,30 @@
 
 #include "core/config_error.hpp"
 #include "core/csv_reader.hpp"
+#include "report/runs_schema.hpp"
 
 namespace fsweep {
 inline namespace report {
-namespace {
-
-constexpr char kKeySeparator = '\x1f';
-
-}  // namespace
-
-bool is_timing_column(const std::string& name) { return name.ends_with("_time_s"); }
 
 RunsFile read_runs_file(const std::string& path) {
   if (!std::filesystem::exists(path)) throw ConfigError(path, "missing (not a sweep output directory?)");
   RunsFile t;
   t.path = path;
   CsvReader in(path);
-  t.header = in.header();
-  t.run_key = in.require_column("run_key");
-  const std::size_t seed = in.require_column("seed");
-  const std::size_t end_reason = in.require_column("end_reason");
-  const int end_detail = in.column("end_detail");
-  const std::size_t first_metric = (end_detail >= 0 ? static_cast<std::size_t>(end_detail) : end_reason) + 1;
-  for (std::size_t i = 0; i < seed; ++i) {
-    const std::string& h = t.header[i];
-    if (h != "run_index" && h != "run_key" && h != "map" && h != "map.start") t.config_names.push_back(h);
-  }
-  for (std::size_t i = end_reason; i < t.header.size(); ++i) {
-    if (i > end_reason && i < first_metric && static_cast<int>(i) != end_detail) continue;
-    if (!is_timing_column(t.header[i])) t.quality_names.push_back(t.header[i]);
-  }
+  const RunsHeader header(in.header(), path);
+  t.header = header.names();
+  t.run_key = header.run_key();
+  t.config_names = header.names_of(header.config());
+  t.quality_names = header.names_of(header.quality());
   while (in.next()) {
     const auto& f = in.fields();
-    for (std::size_t i = first_metric; i < f.size(); ++i) {
-      if (!f[i].empty() && !parse_number(f[i])) {
-        throw ConfigError(in.where(), "column '" + t.header[i] + "': '" + f[i] + "' is not a number");
-      }
-    }
+    for (const std::size_t m : header.metrics()) (void)metric_value(f[m], t.header[m], in);
     if (!t.row_of_key.try_emplace(f[t.run_key], t.rows.size()).second) {
       throw ConfigError(in.where(), "run_key " + f[t.run_key] + " appears twice");
     }
     t.rows.push_back(f);
   }
   return t;
-}
-
-std::string config_key(const std::vector<std::string>& fields, const std::vector<int>& columns) {
-  std::string key;
-  for (const int c : columns)
-    (key += c >= 0 ? fields[static_cast<std::size_t>(c)] : std::string()) += kKeySeparator;
-  return key;
 }
 
 Grouping group(const RunsFile& t, const std::vector<int>& columns) {
@@ -120,9 +94,9 @@ double mann_whitney_greater_p(const std::vector<double>& a, const std::vector<do
 }
 
 double success_share(const RunsFile& t, const std::vector<std::size_t>& rows) {
-  const auto c = static_cast<std::size_t>(t.column("end_reason"));
+  const auto c = static_cast<std::size_t>(t.column(kEndReasonColumn));
   std::size_t ok = 0;
-  for (const std::size_t r : rows) ok += t.rows[r][c] == "complete" || t.rows[r][c] == "target_reached";
+  for (const std::size_t r : rows) ok += successful_end(t.rows[r][c]);
   return rows.empty() ? 0.0 : static_cast<double>(ok) / static_cast<double>(rows.size());
 }
 
@@ -163,14 +137,12 @@ std::map<std::string, std::vector<std::optional<BoxStats>>> read_boxes(
 std::vector<std::size_t> label_positions(const std::vector<std::string>& key_names,
                                          const std::vector<std::vector<std::string>>& values) {
   std::vector<std::size_t> out;
-  for (const char* always : {"map_class", "strategy_label", "planner"}) {
+  for (const char* always : {kMapClassColumn, kStrategyLabelColumn, kPlannerColumn}) {
     const auto it = std::find(key_names.begin(), key_names.end(), always);
     if (it != key_names.end()) out.push_back(static_cast<std::size_t>(it - key_names.begin()));
   }
   auto label_of = [&](const std::vector<std::string>& v, const std::vector<std::size_t>& cols) {
-    std::string l;
-    for (const std::size_t c : cols) (l += v[c]) += kKeySeparator;
-    return l;
+    return config_key(v, std::vector<int>(cols.begin(), cols.end()));
   };
   for (std::size_t i = 0; i < key_names.size(); ++i) {
     if (std::find(out.begin(), out.end(), i) != out.end()) continue;
@@ -182,20 +154,6 @@ std::vector<std::size_t> label_positions(const std::vector<std::string>& key_nam
         out.push_back(i);
         break;
       }
-    }
-  }
-  return out;
-}
-
-std::vector<std::string> split_key(const std::string& key) {
-  std::vector<std::string> out;
-  std::string cur;
-  for (const char ch : key) {
-    if (ch == kKeySeparator) {
-      out.push_back(cur);
-      cur.clear();
-    } else {
-      cur += ch;
     }
   }
   return out;

@@ -1,7 +1,7 @@
 #pragma once
 /// @file compare_runs.hpp
-/// The tables `fsweep compare` (compare.hpp) reads: runs.csv grouped into configurations, and
-/// the box statistics of summary.csv.
+/// The tables `fsweep compare` (compare.hpp) reads: runs.csv grouped into configurations
+/// (columns and keys as runs_schema.hpp defines them), and the box statistics of summary.csv.
 
 #include <cstddef>
 #include <map>
@@ -15,16 +15,12 @@
 namespace fsweep {
 inline namespace report {
 
-/// True for the timing columns (`*_time_s`, wall_time_s among them): they measure the machine.
-[[nodiscard]] bool is_timing_column(const std::string& name);
-
 /// One directory's runs.csv, every cell kept as text.
 struct RunsFile {
   std::string path;
   std::vector<std::string> header;
-  std::vector<std::string> config_names;   ///< config columns (aggregate.hpp): before `seed`,
-                                           ///< without run_index, run_key, map, map.start
-  std::vector<std::string> quality_names;  ///< end_reason, end_detail, the non-timing metrics
+  std::vector<std::string> config_names;   ///< RunsHeader::config() names
+  std::vector<std::string> quality_names;  ///< RunsHeader::quality() names
   std::vector<std::vector<std::string>> rows;
   std::unordered_map<std::string, std::size_t> row_of_key;  ///< run_key -> row
   std::size_t run_key = 0;                                  ///< column of run_key
@@ -34,22 +30,15 @@ struct RunsFile {
 };
 
 /// Reads `path`. Throws ConfigError at `<file>` when it is missing, at `<file>:<line>` for
-/// malformed CSV (csv_reader.hpp), a metric cell (after end_detail) that is not a number, or a
+/// malformed CSV (csv_reader.hpp), a metric cell that is not a number (metric_value()), or a
 /// run_key seen twice; a file without run_key, seed or end_reason columns is an error too.
 [[nodiscard]] RunsFile read_runs_file(const std::string& path);
 
-/// Configurations of one side, keyed by config_key() over chosen columns.
+/// Configurations of one side, keyed by runs_schema.hpp's config_key() over chosen columns.
 struct Grouping {
   std::vector<std::string> keys;                         ///< in order of first appearance
   std::map<std::string, std::vector<std::size_t>> rows;  ///< key -> row indices, file order
 };
-
-/// The values of `columns` (-1: an empty value) joined with a separator no CSV text holds
-/// ('\x1f' after each value).
-[[nodiscard]] std::string config_key(const std::vector<std::string>& fields, const std::vector<int>& columns);
-
-/// The values of a config_key(), in order.
-[[nodiscard]] std::vector<std::string> split_key(const std::string& key);
 
 /// Indices in `t` of the columns `names` (-1 where missing).
 [[nodiscard]] std::vector<int> columns_of(const RunsFile& t, const std::vector<std::string>& names);
@@ -69,7 +58,8 @@ struct Grouping {
 /// is tied. Good from about 8 values a side, which is why compare needs min_quantile_runs.
 [[nodiscard]] double mann_whitney_greater_p(const std::vector<double>& a, const std::vector<double>& b);
 
-/// Share in [0, 1] of `rows` whose end_reason is `complete` or `target_reached` (0 for none).
+/// Share in [0, 1] of `rows` whose end_reason is a success (runs_schema.hpp's
+/// successful_end(); 0 for none).
 [[nodiscard]] double success_share(const RunsFile& t, const std::vector<std::size_t>& rows);
 
 /// Two cells are equal: both numbers (parse_number) with equal doubles, NaN equal to NaN, or

@@ -7,7 +7,7 @@
 #include <utility>
 
 #include "core/config_error.hpp"
-#include "sim/run_table.hpp"
+#include "core/csv_format.hpp"
 
 namespace fsweep {
 inline namespace report {

@@ -28,7 +28,7 @@ enum class EndReason {
 
 /// Per-run metrics (docs/architecture.md, "The simulation loop and metrics"). Areas in m^2, distances in
 /// metres, energy in the energy model's unit. Fields added later are declared last, so that CSV columns (in
-/// declaration order, run_table.hpp) are only ever appended.
+/// declaration order, report/runs_schema.hpp) are only ever appended.
 struct RunMetrics {
   double distance_m = 0.0;
   double energy = 0.0;
@@ -82,7 +82,7 @@ struct RunMetrics {
   /// we read it as this ratio.) An unknown observable cell always leaves a frontier cell next
   /// to it, so a `complete` run without dropped goals has completeness exactly 1.
   double completeness = 0.0;
-  /// `rr` heuristic (src/strategies/heuristics.hpp): journeys cut short because the goal stopped
+  /// `rr` heuristic (src/sim/heuristics.hpp): journeys cut short because the goal stopped
   /// being worth reaching, each followed by a new decision. 0 without `rr`.
   int rr_redecisions = 0;
   /// `seg` heuristic: time spent segmenting the known map (src/world/segmentation.hpp), in

@@ -64,7 +64,7 @@ struct Observation {
   BatteryView battery;
   /// Decisions made so far in this run.
   int decision_index = 0;
-  /// Set by the engine when the `seg` heuristic (src/strategies/heuristics.hpp) restricts this
+  /// Set by the engine when the `seg` heuristic (src/sim/heuristics.hpp) restricts this
   /// decision: one flag per cell index of `known`, 1 for the cells of the robot's current map
   /// segment (src/world/segmentation.hpp), 0 elsewhere. `clusters` then holds only the
   /// clusters whose representative lies in that segment; a strategy that reads frontier cells

@@ -1,7 +1,6 @@
 #include "sweep/merge.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -11,10 +10,12 @@
 #include <unordered_map>
 
 #include "core/config_error.hpp"
+#include "core/csv_format.hpp"
 #include "core/csv_reader.hpp"
 #include "report/aggregate.hpp"
-#include "sim/run_table.hpp"
+#include "report/runs_schema.hpp"
 #include "sweep/csv_journal.hpp"
+#include "sweep/done_runs.hpp"
 #include "sweep/manifest.hpp"
 #include "sweep/sweep_plan.hpp"
 
@@ -31,15 +32,6 @@ struct Shard {
   nlohmann::json manifest;
 };
 
-std::string join_fields(const std::vector<std::string>& fields) {
-  std::string out;
-  for (std::size_t i = 0; i < fields.size(); ++i) {
-    if (i > 0) out += ',';
-    out += csv_field(fields[i]);
-  }
-  return out;
-}
-
 nlohmann::json read_json(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw ConfigError(path, "cannot open the shard's manifest");
@@ -51,12 +43,9 @@ nlohmann::json read_json(const std::string& path) {
 }
 
 std::uint64_t parse_index(const std::string& cell, const CsvReader& r) {
-  std::uint64_t v = 0;
-  const auto [end, ec] = std::from_chars(cell.data(), cell.data() + cell.size(), v);
-  if (ec != std::errc() || end != cell.data() + cell.size() || cell.empty()) {
-    throw ConfigError(r.where(), "run_index '" + cell + "' is not a non-negative integer");
-  }
-  return v;
+  const auto v = parse_run_index(cell);
+  if (!v) throw ConfigError(r.where(), "run_index '" + cell + "' is not a non-negative integer");
+  return *v;
 }
 
 }  // namespace
@@ -131,12 +120,12 @@ MergeReport merge_shards(const std::string& dir, const std::string& objective) {
   std::map<std::uint64_t, std::string> index_where;
   for (const Shard& s : shards) {
     CsvReader r(s.dir + "/runs.csv");
-    const std::string header = join_fields(r.header());
+    const std::string header = csv_record(r.header());
     if (runs_header.empty()) runs_header = header;
     if (header != runs_header)
       throw ConfigError(r.path(), "runs.csv header differs from " + shards.front().dir + "'s");
-    const std::size_t ci = r.require_column("run_index");
-    const std::size_t ck = r.require_column("run_key");
+    const std::size_t ci = r.require_column(kRunIndexColumn);
+    const std::size_t ck = r.require_column(kRunKeyColumn);
     while (r.next()) {
       ++report.rows;
       const std::uint64_t idx = parse_index(r.fields()[ci], r);
@@ -161,7 +150,7 @@ MergeReport merge_shards(const std::string& dir, const std::string& objective) {
       }
       index_where[idx] = r.where();
       key_where[key] = r.where();
-      runs[idx] = join_fields(r.fields());
+      runs[idx] = csv_record(r.fields());
     }
   }
   for (std::uint64_t i = 0; i < report.total; ++i) {
@@ -176,16 +165,16 @@ MergeReport merge_shards(const std::string& dir, const std::string& objective) {
   std::map<std::uint64_t, std::string> progress;
   for (const Shard& s : shards) {
     CsvReader r(s.dir + "/progress.csv");
-    const std::string header = join_fields(r.header());
+    const std::string header = csv_record(r.header());
     if (progress_header.empty()) progress_header = header;
     if (header != progress_header) {
       throw ConfigError(r.path(), "progress.csv header differs from " + shards.front().dir + "'s");
     }
-    const std::size_t ci = r.require_column("run_index");
+    const std::size_t ci = r.require_column(kRunIndexColumn);
     while (r.next()) {
       const std::uint64_t idx = parse_index(r.fields()[ci], r);
       if (runs.count(idx) == 0) continue;  // no runs.csv row (torn write): dropped, as aggregate does
-      progress[idx] += join_fields(r.fields()) + "\n";
+      progress[idx] += csv_record(r.fields()) + "\n";
     }
   }
 

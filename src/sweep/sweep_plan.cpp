@@ -31,7 +31,6 @@ using sweep_detail::value_text;
 const std::vector<std::string> kTopLevelKeys = {"schema_version",  "name",        "description", "maps",
                                                 "strategies",      "planners",    "robot",       "sim",
                                                 "progress_step_m", "repetitions", "seed",        "output"};
-const std::vector<std::string> kObjectives = {"distance_to_final_coverage_m", "area_per_metre", "energy"};
 
 bool valid_name(const std::string& name) {
   if (name.empty() || name == "." || name == "..") return false;
@@ -201,10 +200,9 @@ SweepPlan SweepPlan::build(const json& sweep, const std::string& file, std::vect
       }
       if (o.contains("objective")) {
         const json& obj = o["objective"];
-        if (!obj.is_string() ||
-            std::find(kObjectives.begin(), kObjectives.end(), obj.get<std::string>()) == kObjectives.end()) {
+        if (!obj.is_string() || find_objective(obj.get<std::string>()) == nullptr) {
           problems.push_back("/output/objective: value " + value_text(obj) +
-                             " not allowed; allowed: " + join_names(kObjectives));
+                             " not allowed; allowed: " + join_names(objective_names()));
         } else {
           plan.objective_ = obj.get<std::string>();
         }

@@ -74,7 +74,8 @@
 /// repetition r (common random numbers: configurations are compared on the same draws). Map
 /// generator seeds are map parameters, expanded by a map's "seeds".
 /// run_key = FNV-1a 64 of the dump() of {"map": canonical spec, "strategy", "strategy_params":
-/// resolved_strategy_params, "planner", "planner_params" (null when absent or empty), "robot":
+/// recorded_strategy_params (the resolved params, plus "heuristics" when the entry gives them),
+/// "planner", "planner_params" as written (null when absent or empty), "robot":
 /// to_json(RobotParams) with the dock resolved to the map's start, "sim", "seed"}. The map's
 /// canonical spec is its JSON object form (a SPEC string is parsed into the same object as the
 /// equivalent JSON item; integral floats become integers; file paths are lexically normalised),
@@ -87,8 +88,8 @@
 #include <utility>
 #include <vector>
 
+#include "report/runs_schema.hpp"
 #include "sim/run_spec.hpp"
-#include "sim/run_table.hpp"
 
 namespace fsweep {
 inline namespace sweep {
@@ -200,7 +201,7 @@ class SweepPlan {
   [[nodiscard]] const nlohmann::json& source() const { return source_; }
   /// Output directory: "output": {"dir": ...} or results/<name>.
   [[nodiscard]] const std::string& output_dir() const { return output_dir_; }
-  /// Ranking objective for best.csv ("distance_to_final_coverage_m", "area_per_metre", "energy").
+  /// Ranking objective for best.csv: a name of runs_schema.hpp's kObjectives (default the first).
   [[nodiscard]] const std::string& objective() const { return objective_; }
   [[nodiscard]] int repetitions() const { return repetitions_; }
   [[nodiscard]] std::uint64_t seed() const { return seed_; }
@@ -242,7 +243,7 @@ class SweepPlan {
   std::string description_;
   nlohmann::json source_;
   std::string output_dir_;
-  std::string objective_ = "distance_to_final_coverage_m";
+  std::string objective_{kObjectives[0].name};
   int repetitions_ = 1;
   std::uint64_t seed_ = 0;
   std::vector<SweepMap> maps_;

@@ -17,6 +17,7 @@
 
 #include "core/config_error.hpp"
 #include "report/aggregate.hpp"
+#include "report/runs_schema.hpp"
 #include "sweep/csv_journal.hpp"
 #include "sweep/done_runs.hpp"
 #include "sweep/manifest.hpp"
@@ -113,9 +114,11 @@ struct Resumed {
 Resumed repair_outputs(const SweepTable& table, CsvJournal& runs, CsvJournal& progress) {
   Resumed r;
   const std::size_t fields = table.columns().size();
-  const std::size_t key_col = table.column("run_key");
-  const std::size_t index_col = table.column("run_index");
-  const std::size_t end_col = table.column("end_reason");
+  const std::size_t key_col = table.column(kRunKeyColumn);
+  const std::size_t index_col = table.column(kRunIndexColumn);
+  const std::size_t end_col = table.column(kEndReasonColumn);
+  const std::size_t progress_key_col = SweepTable::progress_column(kRunKeyColumn);
+  const std::size_t progress_index_col = SweepTable::progress_column(kRunIndexColumn);
   const std::string error(to_string(EndReason::Error));
   (void)runs.repair([&](const std::vector<std::string>& f) {
     if (f.size() != fields) return false;
@@ -129,8 +132,8 @@ Resumed repair_outputs(const SweepTable& table, CsvJournal& runs, CsvJournal& pr
   r.done.seal();
   (void)progress.repair([&](const std::vector<std::string>& f) {
     if (f.size() != SweepTable::kProgressFields) return false;
-    const auto key = parse_run_key(f[1]);
-    const auto index = parse_run_index(f[0]);
+    const auto key = parse_run_key(f[progress_key_col]);
+    const auto index = parse_run_index(f[progress_index_col]);
     return key && index && r.done.contains(*key, *index);
   });
   return r;

@@ -6,9 +6,9 @@
 /// - `runs.csv`: header `run_index,run_key,map_class,strategy_label,<config columns>,seed,<metric columns>,
 ///   optimal_distance_m,competitive_ratio`; one row per run, in run-index order. `map_class` is
 ///   SweepMap::map_class, `strategy_label` the strategy entry's label followed by "+rr", "+seg"
-///   for each heuristic the run uses (src/strategies/heuristics.hpp; "cf+rr+seg"). Config columns
-///   are the union over the sweep of run_table.hpp's config_columns() (a column a run does not
-///   have is empty; see sweep_table.hpp); metric columns are run_table.hpp's metric_columns().
+///   for each heuristic the run uses (src/sim/heuristics.hpp; "cf+rr+seg"). Config columns
+///   are the union over the sweep of runs_schema.hpp's config_columns() (a column a run does not
+///   have is empty; see sweep_table.hpp); metric columns are runs_schema.hpp's metric_columns().
 ///   The last two columns are empty where no optimum is known: they hold the star-pattern
 ///   optimum d* = pi r^2 / (2 r_s) (competitive.hpp) and distance_m / d* for runs on a `free`
 ///   map with a finite battery, r = battery capacity / energy per metre of straight travel

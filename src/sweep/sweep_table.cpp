@@ -4,26 +4,15 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/csv_format.hpp"
+#include "report/runs_schema.hpp"
 #include "sim/competitive.hpp"
 #include "sim/heuristics.hpp"
-#include "sim/run_table.hpp"
 #include "sim/simulation.hpp"
 
 namespace fsweep {
 inline namespace sweep {
 namespace {
-
-constexpr const char* kProgressHeader = "run_index,run_key,distance_m,explored_area_m2,coverage,energy";
-
-std::string join_record(const std::vector<std::string>& fields) {
-  std::string s;
-  for (std::size_t i = 0; i < fields.size(); ++i) {
-    if (i > 0) s += ',';
-    s += csv_field(fields[i]);
-  }
-  s += '\n';
-  return s;
-}
 
 /// The star-pattern optimum d* (competitive.hpp) for a run, or NaN where it does not apply:
 /// free space, a finite battery, an energy model that charges travel only (no stop or turn
@@ -83,7 +72,7 @@ SweepTable::SweepTable(const SweepPlan& plan) {
         for (std::size_t r = 0; r < axes.at(3).second; ++r) {
           std::size_t cursor = 0;  // insertion point
           for (const auto& [name, value] : config_columns(plan.run_spec(representative_run(plan, e, p, r)))) {
-            if (name == "seed") continue;
+            if (name == kSeedColumn) continue;
             const auto it = std::find(config.begin(), config.end(), name);
             if (it != config.end()) {
               cursor = static_cast<std::size_t>(it - config.begin()) + 1;
@@ -96,38 +85,32 @@ SweepTable::SweepTable(const SweepPlan& plan) {
       }
     }
   }
-  // 2. The whole row.
-  auto add = [this](const std::string& name) {
+  // 2. The whole row (runs_schema.hpp's order).
+  for (const auto& name : sweep_runs_columns(config)) {
     if (position_.emplace(name, columns_.size()).second) columns_.push_back(name);
-  };
-  add("run_index");
-  add("run_key");
-  add("map_class");
-  add("strategy_label");
-  for (const auto& name : config) add(name);
-  add("seed");
-  for (const auto& [name, value] : metric_columns(RunResult{})) add(name);
-  add("optimal_distance_m");
-  add("competitive_ratio");
+  }
 }
 
-std::string SweepTable::header() const {
-  std::string s;
-  for (std::size_t i = 0; i < columns_.size(); ++i) s += (i > 0 ? "," : "") + csv_field(columns_[i]);
-  return s;
-}
+std::string SweepTable::header() const { return csv_record(columns_); }
 
-std::string SweepTable::progress_header() { return kProgressHeader; }
+std::string SweepTable::progress_header() { return csv_record(sweep_progress_columns()); }
 
 std::size_t SweepTable::column(std::string_view name) const { return position_.at(std::string(name)); }
+
+std::size_t SweepTable::progress_column(std::string_view name) {
+  const std::vector<std::string> columns = sweep_progress_columns();
+  const auto it = std::find(columns.begin(), columns.end(), name);
+  if (it == columns.end()) throw std::out_of_range("no progress.csv column '" + std::string(name) + "'");
+  return static_cast<std::size_t>(it - columns.begin());
+}
 
 RunRows SweepTable::run(const SweepPlan& plan, const SweepRun& run) const {
   const std::uint64_t index = run.at.index;
   const std::string& run_key = run.key;
   RunRows out;
   std::vector<std::string> fields(columns_.size());
-  fields[0] = std::to_string(index);
-  fields[1] = run_key;
+  fields[position_.at(kRunIndexColumn)] = std::to_string(index);
+  fields[position_.at(kRunKeyColumn)] = run_key;
   const auto set = [&](const std::string& name, std::string value) {
     const auto it = position_.find(name);
     if (it == position_.end()) {
@@ -140,36 +123,32 @@ RunRows SweepTable::run(const SweepPlan& plan, const SweepRun& run) const {
   try {
     const RunSpec& spec = run.spec;
     const RunCoordinates& at = run.at;
-    set("map_class", plan.maps().at(at.map).map_class);
+    set(kMapClassColumn, plan.maps().at(at.map).map_class);
     // The entry's label, plus "+rr", "+seg" for the heuristics on (src/sim/heuristics.hpp).
     const std::string heuristics = heuristics_text(spec.heuristics.value_or(Heuristics{}));
-    set("strategy_label",
+    set(kStrategyLabelColumn,
         plan.strategies().at(at.strategy_entry).label + (heuristics.empty() ? "" : "+" + heuristics));
     for (auto& [name, value] : config_columns(spec)) set(name, std::move(value));
     const RunResult result = simulate(spec);
     for (auto& [name, value] : metric_columns(result)) set(name, std::move(value));
     const double optimum = optimal_distance_m(plan, index, spec);
     if (!std::isnan(optimum)) {
-      set("optimal_distance_m", format_number(optimum));
-      set("competitive_ratio", format_number(result.metrics.distance_m / optimum));
+      set(kSweepMetricColumns[0], format_number(optimum));
+      set(kSweepMetricColumns[1], format_number(result.metrics.distance_m / optimum));
     }
     out.failed = result.end == EndReason::Error;
-    const std::string prefix = fields[0] + ',' + csv_field(run_key) + ',';
-    for (const ProgressSample& s : result.progress) {
-      out.progress_rows += prefix + format_number(s.distance_m) + ',' + format_number(s.explored_area_m2) +
-                           ',' + format_number(s.coverage) + ',' + format_number(s.energy) + '\n';
-    }
+    const std::string prefix = std::to_string(index) + ',' + csv_field(run_key) + ',';
+    for (const ProgressSample& s : result.progress) out.progress_rows += prefix + progress_cells(s) + '\n';
   } catch (const std::exception& e) {
     // The run failed before producing a result: the metric cells stay empty.
     for (const auto& [name, value] : metric_columns(RunResult{})) fields[position_.at(name)].clear();
-    fields[position_.at("optimal_distance_m")].clear();
-    fields[position_.at("competitive_ratio")].clear();
-    fields[position_.at("end_reason")] = std::string(to_string(EndReason::Error));
-    fields[position_.at("end_detail")] = e.what();
+    for (const char* name : kSweepMetricColumns) fields[position_.at(name)].clear();
+    fields[position_.at(kEndReasonColumn)] = std::string(to_string(EndReason::Error));
+    fields[position_.at(kEndDetailColumn)] = e.what();
     out.progress_rows.clear();
     out.failed = true;
   }
-  out.run_row = join_record(fields);
+  out.run_row = csv_record(fields) + '\n';
   return out;
 }
 

@@ -9,6 +9,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "report/runs_schema.hpp"
 #include "sweep/sweep_plan.hpp"
 
 namespace fsweep {
@@ -24,8 +25,9 @@ struct RunRows {
   bool failed = false;
 };
 
-/// runs.csv columns of one sweep: `run_index, run_key`, the union of config_columns() (seed
-/// last), the metric columns, `optimal_distance_m, competitive_ratio`.
+/// runs.csv columns of one sweep, in runs_schema.hpp's order (sweep_runs_columns()):
+/// `run_index, run_key, map_class, strategy_label`, the union of config_columns() (seed last),
+/// the metric columns, `optimal_distance_m, competitive_ratio`.
 ///
 /// The union is taken over one representative run per (strategy entry, planner, robot variant),
 /// in that order: the config columns depend on those and not on the map, the parameter values or
@@ -43,8 +45,10 @@ class SweepTable {
   [[nodiscard]] std::string header() const;
   /// The progress.csv header line (no newline).
   [[nodiscard]] static std::string progress_header();
-  /// Number of progress.csv fields.
-  static constexpr std::size_t kProgressFields = 6;
+  /// Number of progress.csv fields (sweep_progress_columns()).
+  static constexpr std::size_t kProgressFields = 2 + kProgressColumns.size();
+  /// Position of a progress.csv column; throws std::out_of_range for an unknown name.
+  [[nodiscard]] static std::size_t progress_column(std::string_view name);
   /// Position of a runs.csv column; throws std::out_of_range for an unknown name.
   [[nodiscard]] std::size_t column(std::string_view name) const;
 

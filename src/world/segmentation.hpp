@@ -1,7 +1,7 @@
 #pragma once
 /// @file segmentation.hpp
 /// Room segmentation of the known free space, for the `seg` heuristic (Holz, Basilico, Amigoni
-/// 2010, section IV-D2; src/strategies/heuristics.hpp).
+/// 2010, section IV-D2; src/sim/heuristics.hpp).
 ///
 /// The paper splits the free space at critical points of its Voronoi diagram (Thrun 1998):
 /// points of the medial axis where the clearance (distance to the nearest obstacle) has a

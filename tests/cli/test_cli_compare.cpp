@@ -9,7 +9,7 @@
 #include <string>
 
 #include "cli/fsweep_process.hpp"
-#include "sim/run_table.hpp"
+#include "core/csv_format.hpp"
 #include "sweep/csv_journal.hpp"
 
 namespace {

@@ -52,37 +52,6 @@ std::string config_error(F f) {
   return "";
 }
 
-// Hand computation, type 7: h = 3q for n = 4; q05: h = 0.15 -> 1 + 0.15 * (2 - 1) = 1.15, etc.
-TEST(Quantile, Type7MatchesHandComputation) {
-  const std::vector<double> v{1, 2, 3, 4};
-  EXPECT_NEAR(quantile_sorted(v, 0.05), 1.15, 1e-12);
-  EXPECT_NEAR(quantile_sorted(v, 0.25), 1.75, 1e-12);
-  EXPECT_NEAR(quantile_sorted(v, 0.5), 2.5, 1e-12);
-  EXPECT_NEAR(quantile_sorted(v, 0.75), 3.25, 1e-12);
-  EXPECT_NEAR(quantile_sorted(v, 0.95), 3.85, 1e-12);
-  EXPECT_EQ(quantile_sorted(v, 0.0), 1.0);
-  EXPECT_EQ(quantile_sorted(v, 1.0), 4.0);
-}
-
-TEST(Quantile, SingleValueIsEveryQuantile) {
-  for (const double q : {0.0, 0.05, 0.5, 0.95, 1.0}) EXPECT_EQ(quantile_sorted({7.0}, q), 7.0);
-}
-
-// n = 2: h = q, so the quantile is 1 + 2q.
-TEST(Quantile, TwoValuesInterpolateLinearly) {
-  const std::vector<double> v{1, 3};
-  EXPECT_NEAR(quantile_sorted(v, 0.05), 1.1, 1e-12);
-  EXPECT_NEAR(quantile_sorted(v, 0.25), 1.5, 1e-12);
-  EXPECT_NEAR(quantile_sorted(v, 0.5), 2.0, 1e-12);
-  EXPECT_NEAR(quantile_sorted(v, 0.95), 2.9, 1e-12);
-}
-
-TEST(Quantile, RejectsNoValuesAndQOutsideUnitInterval) {
-  EXPECT_THROW((void)quantile_sorted({}, 0.5), std::invalid_argument);
-  EXPECT_THROW((void)quantile_sorted({1.0}, 1.5), std::invalid_argument);
-  EXPECT_THROW((void)quantile_sorted({1.0}, std::nan("")), std::invalid_argument);
-}
-
 TEST(Summary, GroupsRunsByConfigurationIgnoringSeed) {
   const auto dir = make_sweep_dir("group");
   aggregate(dir.string(), {});

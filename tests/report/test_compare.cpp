@@ -13,11 +13,11 @@
 #include <vector>
 
 #include "core/config_error.hpp"
+#include "core/csv_format.hpp"
 #include "core/csv_reader.hpp"
 #include "planners/reproducibility.hpp"
 #include "report/compare.hpp"
 #include "report/compare_runs.hpp"
-#include "sim/run_table.hpp"
 #include "sweep/sweep_plan.hpp"
 #include "sweep/sweep_runner.hpp"
 #include "sweep/sweep_test_files.hpp"

@@ -1,4 +1,4 @@
-// The `rr` and `seg` heuristics (src/strategies/heuristics.hpp): JSON, registry, sweeps, labels,
+// The `rr` and `seg` heuristics (src/sim/heuristics.hpp): JSON, registry, sweeps, labels,
 // and their effect in the simulation.
 #include <gtest/gtest.h>
 

@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "core/config_error.hpp"
-#include "sim/run_table.hpp"
+#include "core/csv_format.hpp"
 #include "sweep/csv_journal.hpp"
 #include "sweep/sweep_plan.hpp"
 #include "sweep/sweep_runner.hpp"

@@ -1,13 +1,14 @@
-#include "sim/run_table.hpp"
+/// @file run_columns.cpp
+/// The writer side of runs_schema.hpp: a run's configuration and metrics as columns.
 
-#include <charconv>
-#include <cmath>
 #include <fstream>
 
 #include "core/config_error.hpp"
+#include "core/csv_format.hpp"
+#include "report/runs_schema.hpp"
 
 namespace fsweep {
-inline namespace sim {
+inline namespace report {
 namespace {
 
 void flatten(const nlohmann::json& j, const std::string& prefix, Columns& out) {
@@ -32,22 +33,14 @@ std::ofstream open_for_writing(const std::string& path) {
 
 }  // namespace
 
-std::string format_number(double v) {
-  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
-  if (std::isnan(v)) return "nan";
-  char buf[64];
-  const auto res = std::to_chars(buf, buf + sizeof(buf), v);
-  return std::string(buf, res.ptr);
-}
-
 Columns config_columns(const RunSpec& spec) {
   Columns c;
   const WorldMap& m = *spec.map;
-  c.emplace_back("map", m.source);
+  c.emplace_back(kMapColumn, m.source);
   c.emplace_back("map.width", std::to_string(m.width()));
   c.emplace_back("map.height", std::to_string(m.height()));
   c.emplace_back("map.resolution_m", format_number(m.resolution_m));
-  c.emplace_back("map.start", std::to_string(m.start.x) + ";" + std::to_string(m.start.y));
+  c.emplace_back(kMapStartColumn, std::to_string(m.start.x) + ";" + std::to_string(m.start.y));
   c.emplace_back("strategy", spec.strategy.name);
   flatten(recorded_strategy_params(spec), "strategy", c);
   c.emplace_back("planner", spec.planner.name);
@@ -60,15 +53,15 @@ Columns config_columns(const RunSpec& spec) {
                       : std::string("start");
   flatten(robot, "robot", c);
   flatten(nlohmann::json(spec.sim), "sim", c);
-  c.emplace_back("seed", std::to_string(spec.seed));
+  c.emplace_back(kSeedColumn, std::to_string(spec.seed));
   return c;
 }
 
 Columns metric_columns(const RunResult& r) {
   const RunMetrics& m = r.metrics;
   return Columns{
-      {"end_reason", std::string(to_string(r.end))},
-      {"end_detail", r.end_detail},
+      {kEndReasonColumn, std::string(to_string(r.end))},
+      {kEndDetailColumn, r.end_detail},
       {"distance_m", format_number(m.distance_m)},
       {"energy", format_number(m.energy)},
       {"stops", std::to_string(m.stops)},
@@ -102,35 +95,44 @@ Columns metric_columns(const RunResult& r) {
   };
 }
 
-std::string csv_field(const std::string& s) {
-  if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
-  std::string out = "\"";
-  for (const char ch : s) {
-    if (ch == '"') out += '"';
-    out += ch;
-  }
-  return out + "\"";
+std::vector<std::string> sweep_runs_columns(const std::vector<std::string>& config_names) {
+  std::vector<std::string> out{kRunIndexColumn, kRunKeyColumn, kMapClassColumn, kStrategyLabelColumn};
+  out.insert(out.end(), config_names.begin(), config_names.end());
+  out.emplace_back(kSeedColumn);
+  for (auto& [name, value] : metric_columns(RunResult{})) out.push_back(std::move(name));
+  out.insert(out.end(), kSweepMetricColumns.begin(), kSweepMetricColumns.end());
+  return out;
+}
+
+std::vector<std::string> sweep_progress_columns() {
+  std::vector<std::string> out{kRunIndexColumn, kRunKeyColumn};
+  out.insert(out.end(), kProgressColumns.begin(), kProgressColumns.end());
+  return out;
+}
+
+std::string progress_cells(const ProgressSample& s) {
+  return format_number(s.distance_m) + ',' + format_number(s.explored_area_m2) + ',' +
+         format_number(s.coverage) + ',' + format_number(s.energy);
 }
 
 void write_csv(const std::string& path, const std::vector<Columns>& rows) {
   auto f = open_for_writing(path);
   if (rows.empty()) return;
-  for (std::size_t i = 0; i < rows[0].size(); ++i) f << (i ? "," : "") << csv_field(rows[0][i].first);
-  f << '\n';
+  std::vector<std::string> cells;
+  for (const auto& [name, value] : rows[0]) cells.push_back(name);
+  f << csv_record(cells) << '\n';
   for (const auto& row : rows) {
-    for (std::size_t i = 0; i < row.size(); ++i) f << (i ? "," : "") << csv_field(row[i].second);
-    f << '\n';
+    cells.clear();
+    for (const auto& [name, value] : row) cells.push_back(value);
+    f << csv_record(cells) << '\n';
   }
 }
 
 void write_progress_csv(const std::string& path, const RunResult& result) {
   auto f = open_for_writing(path);
-  f << "distance_m,explored_area_m2,coverage,energy\n";
-  for (const auto& s : result.progress) {
-    f << format_number(s.distance_m) << ',' << format_number(s.explored_area_m2) << ','
-      << format_number(s.coverage) << ',' << format_number(s.energy) << '\n';
-  }
+  f << csv_record({kProgressColumns.begin(), kProgressColumns.end()}) << '\n';
+  for (const auto& s : result.progress) f << progress_cells(s) << '\n';
 }
 
-}  // namespace sim
+}  // namespace report
 }  // namespace fsweep

@@ -1,0 +1,67 @@
+// quantile_sorted (Hyndman-Fan type 7) against hand-computed values.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <vector>
+
+#include "core/statistics.hpp"
+
+namespace fsweep {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// Hand computation, type 7: h = 3q for n = 4; q05: h = 0.15 -> 1 + 0.15 * (2 - 1) = 1.15, etc.
+TEST(Quantile, Type7MatchesHandComputation) {
+  const std::vector<double> v{1, 2, 3, 4};
+  EXPECT_NEAR(quantile_sorted(v, 0.05), 1.15, 1e-12);
+  EXPECT_NEAR(quantile_sorted(v, 0.25), 1.75, 1e-12);
+  EXPECT_NEAR(quantile_sorted(v, 0.5), 2.5, 1e-12);
+  EXPECT_NEAR(quantile_sorted(v, 0.75), 3.25, 1e-12);
+  EXPECT_NEAR(quantile_sorted(v, 0.95), 3.85, 1e-12);
+  EXPECT_EQ(quantile_sorted(v, 0.0), 1.0);
+  EXPECT_EQ(quantile_sorted(v, 1.0), 4.0);
+}
+
+TEST(Quantile, SingleValueIsEveryQuantile) {
+  for (const double q : {0.0, 0.05, 0.5, 0.95, 1.0}) EXPECT_EQ(quantile_sorted({7.0}, q), 7.0);
+}
+
+// n = 2: h = q, so the quantile is 1 + 2q.
+TEST(Quantile, TwoValuesInterpolateLinearly) {
+  const std::vector<double> v{1, 3};
+  EXPECT_NEAR(quantile_sorted(v, 0.05), 1.1, 1e-12);
+  EXPECT_NEAR(quantile_sorted(v, 0.25), 1.5, 1e-12);
+  EXPECT_NEAR(quantile_sorted(v, 0.5), 2.0, 1e-12);
+  EXPECT_NEAR(quantile_sorted(v, 0.95), 2.9, 1e-12);
+}
+
+TEST(Quantile, RejectsNoValuesAndQOutsideUnitInterval) {
+  EXPECT_THROW((void)quantile_sorted({}, 0.5), std::invalid_argument);
+  EXPECT_THROW((void)quantile_sorted({1.0}, 1.5), std::invalid_argument);
+  EXPECT_THROW((void)quantile_sorted({1.0}, std::nan("")), std::invalid_argument);
+}
+
+// n = 5, h = 4q: q = 0.1 -> h = 0.4 -> 10 + 0.4 * (20 - 10) = 14; q = 0.3 -> h = 1.2 ->
+// 20 + 0.2 * (40 - 20) = 24; q = 0.9 -> h = 3.6 -> 80 + 0.6 * (160 - 80) = 128.
+TEST(Quantile, Type7InterpolatesBetweenOrderStatistics) {
+  const std::vector<double> v{10, 20, 40, 80, 160};
+  EXPECT_NEAR(quantile_sorted(v, 0.1), 14.0, 1e-12);
+  EXPECT_NEAR(quantile_sorted(v, 0.3), 24.0, 1e-12);
+  EXPECT_EQ(quantile_sorted(v, 0.5), 40.0);  // h = 2: the order statistic itself
+  EXPECT_NEAR(quantile_sorted(v, 0.9), 128.0, 1e-12);
+}
+
+// At an order statistic, or between equal neighbours, the value itself: inf - inf is never formed.
+TEST(Quantile, InfiniteValuesStayInfinite) {
+  EXPECT_EQ(quantile_sorted({1.0, kInf}, 1.0), kInf);
+  EXPECT_EQ(quantile_sorted({1.0, kInf}, 0.5), kInf);
+  EXPECT_EQ(quantile_sorted({kInf, kInf}, 0.5), kInf);
+  EXPECT_EQ(quantile_sorted({-kInf, 1.0}, 0.0), -kInf);
+  EXPECT_EQ(quantile_sorted({-kInf, 1.0, 2.0}, 0.5), 1.0);
+}
+
+}  // namespace
+}  // namespace fsweep
