@@ -18,7 +18,10 @@
 #include <concepts>
 #include <cstdint>
 #include <limits>
+#include <span>
 #include <vector>
+
+#include "search/stop_condition.hpp"
 
 namespace fsweep {
 inline namespace search {
@@ -57,8 +60,17 @@ concept SearchEnvironment = requires(E& env, const E& cenv, int s, double g, Suc
 struct SearchLimits {
   /// States whose cost g would exceed this are never opened (same unit as the costs).
   double g_limit = std::numeric_limits<double>::infinity();
-  /// Stop after settling this many states (< 0: no limit); SearchOutcome::limit_hit says so.
-  long max_expansions = -1;
+  /// Checked before each visit (StopCondition::should_stop with the expansions so far): a run
+  /// settles at most its expansion budget of states and ends soon after its time limit;
+  /// SearchOutcome::stopped says so.
+  StopCondition stop;
+};
+
+/// A start of a run: a state and its initial cost (0 for a single start; a multi-source or
+/// incremental search starts states at their known costs).
+struct SearchSeed {
+  int state = -1;
+  double g = 0.0;
 };
 
 /// Result of one run. Costs, parents and settled flags stay readable in the BestFirstSearch
@@ -68,8 +80,8 @@ struct SearchOutcome {
   int goal = -1;
   /// States settled (visit() returned Expand or Goal).
   long expansions = 0;
-  /// True when the run ended on SearchLimits::max_expansions.
-  bool limit_hit = false;
+  /// True when SearchLimits::stop ended the run with states left to visit.
+  bool stopped = false;
 };
 
 /// Reusable best-first search storage with a generic run().
@@ -81,10 +93,18 @@ struct SearchOutcome {
 /// Duplicate heap entries replace decrease-key; stale ones are skipped when popped.
 class BestFirstSearch {
  public:
-  /// Runs from `start` (which must be a valid state id) until visit() returns Goal or Stop,
-  /// the open list empties, or a limit is hit.
+  /// Runs from `start` until visit() returns Goal or Stop, the open list empties, or a limit
+  /// is hit. A `start` outside [0, state_count()) gives an empty run.
   template <SearchEnvironment Env>
-  SearchOutcome run(Env& env, int start, const SearchLimits& limits = {});
+  SearchOutcome run(Env& env, int start, const SearchLimits& limits = {}) {
+    const SearchSeed seed{start, 0.0};
+    return run(env, std::span<const SearchSeed>(&seed, 1), limits);
+  }
+  /// Runs from every seed at once (each opened with its cost g; seeds outside the state range are
+  /// ignored, a state seeded twice keeps its cheaper cost and the first seed on a tie). Settled
+  /// seeds have parent -1.
+  template <SearchEnvironment Env>
+  SearchOutcome run(Env& env, std::span<const SearchSeed> seeds, const SearchLimits& limits = {});
 
   /// Cost of the best path found to `state` in the last run (+infinity if never reached).
   [[nodiscard]] double g(int state) const {
@@ -153,15 +173,19 @@ class BestFirstSearch {
 };
 
 template <SearchEnvironment Env>
-SearchOutcome BestFirstSearch::run(Env& env, int start, const SearchLimits& limits) {
+SearchOutcome BestFirstSearch::run(Env& env, std::span<const SearchSeed> seeds, const SearchLimits& limits) {
   SearchOutcome outcome;
   begin_run(static_cast<int>(env.state_count()));
-  if (!in_range(start)) return outcome;
-
-  g_[idx(start)] = 0.0;
-  parent_[idx(start)] = -1;
-  seen_[idx(start)] = generation_;
-  heap_.push_back({static_cast<double>(env.heuristic(start)), 0.0, start});
+  for (const SearchSeed& seed : seeds) {
+    if (!in_range(seed.state)) continue;
+    const auto s = idx(seed.state);
+    if (seen_[s] == generation_ && g_[s] <= seed.g) continue;
+    g_[s] = seed.g;
+    parent_[s] = -1;
+    seen_[s] = generation_;
+    heap_.push_back({seed.g + static_cast<double>(env.heuristic(seed.state)), seed.g, seed.state});
+    std::push_heap(heap_.begin(), heap_.end(), Later{});
+  }
 
   while (!heap_.empty()) {
     // 1. Take the best entry; skip it if stale (state settled or a cheaper entry exists).
@@ -171,7 +195,13 @@ SearchOutcome BestFirstSearch::run(Env& env, int start, const SearchLimits& limi
     const auto s = idx(top.state);
     if (closed_[s] == generation_ || top.g > g_[s]) continue;
 
-    // 2. Let the environment decide: expand, goal, or stop before settling.
+    // 2. The stop condition: budget spent or time up ends the run before the next visit.
+    if (limits.stop.should_stop(outcome.expansions)) {
+      outcome.stopped = true;
+      break;
+    }
+
+    // 3. Let the environment decide: expand, goal, or stop before settling.
     const Visit visit = env.visit(top.state, top.g);
     if (visit == Visit::Stop) break;
     closed_[s] = generation_;
@@ -180,12 +210,8 @@ SearchOutcome BestFirstSearch::run(Env& env, int start, const SearchLimits& limi
       outcome.goal = top.state;
       break;
     }
-    if (limits.max_expansions >= 0 && outcome.expansions >= limits.max_expansions) {
-      outcome.limit_hit = true;
-      break;
-    }
 
-    // 3. Relax the successors.
+    // 4. Relax the successors.
     env.for_each_successor(top.state, [&](int next, double cost) {
       const auto n = idx(next);
       if (closed_[n] == generation_) return;
