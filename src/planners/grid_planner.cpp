@@ -1,11 +1,10 @@
 #include "planners/grid_planner.hpp"
 
-#include <chrono>
 #include <nlohmann/json.hpp>
 
 #include "core/config_error.hpp"
+#include "planners/budget_params.hpp"
 #include "search/octile_grid.hpp"
-#include "world/motion.hpp"
 
 namespace fsweep {
 inline namespace planners {
@@ -45,38 +44,41 @@ class GridEnvironment {
 }  // namespace
 
 GridPlannerParams GridPlannerParams::from_json(const nlohmann::json& j, const std::string& where) {
-  if (j.is_null()) return {};
-  require_known_keys(j, {}, where);
-  return {};
+  GridPlannerParams p;
+  if (j.is_null()) return p;
+  require_known_keys(j, {kTimeLimitKey, kMaxExpansionsKey}, where);
+  const SearchBudget budget = budget_from_json(j, where);
+  p.time_limit_s = budget.time_limit_s;
+  p.max_expansions = budget.max_expansions;
+  return p;
+}
+
+std::vector<std::string> GridPlannerParams::validate() const {
+  return budget_violations(time_limit_s, max_expansions);
 }
 
 std::string GridPlanner::name() const { return kind_ == GridSearchKind::AStar ? "astar" : "dijkstra"; }
 
 std::unique_ptr<Planner> GridPlanner::clone() const { return std::make_unique<GridPlanner>(kind_, params_); }
 
-PlanResult GridPlanner::plan(const KnownMap& known, const PlanRequest& request) {
-  const auto started = std::chrono::steady_clock::now();
-  PlanResult result;
-
-  // 1. Endpoints must be known free (outside the grid counts as occupied).
-  result.status = check_endpoints(known, request);
-  if (result.status == PlanStatus::Success) {
-    // 2. Search; start == goal settles the start as the goal (a one-cell path).
-    GridEnvironment env(known, request.goal, kind_ == GridSearchKind::AStar, request.allow_corner_cutting);
-    const SearchOutcome outcome = search_.run(env, known.index(request.start));
-    result.expansions = outcome.expansions;
-    if (outcome.goal < 0) {
-      result.status = PlanStatus::NoPath;
-    } else {
-      // 3. Cells along the parents, then the shared motion accounting.
-      const std::vector<int> states = search_.path_to(outcome.goal);
-      std::vector<Cell> path;
-      path.reserve(states.size());
-      for (const int s : states) path.push_back(known.cell(s));
-      set_path(result, std::move(path), request, known.resolution_m());
-    }
+SearchResult GridPlanner::search(const KnownMap& known, const PlanRequest& request,
+                                 const StopCondition& stop) {
+  // 1. Search; start == goal settles the start as the goal (a one-cell path).
+  GridEnvironment env(known, request.goal, kind_ == GridSearchKind::AStar, request.allow_corner_cutting);
+  SearchLimits limits;
+  limits.stop = stop;
+  const SearchOutcome outcome = search_.run(env, known.index(request.start), limits);
+  SearchResult result;
+  result.expansions = outcome.expansions;
+  if (outcome.goal < 0) {
+    result.status = outcome.stopped ? PlanStatus::Timeout : PlanStatus::NoPath;
+    return result;
   }
-  result.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  // 2. Cells along the parents.
+  result.status = PlanStatus::Success;
+  const std::vector<int> states = search_.path_to(outcome.goal);
+  result.path.reserve(states.size());
+  for (const int s : states) result.path.push_back(known.cell(s));
   return result;
 }
 

@@ -1,14 +1,10 @@
 #include "planners/lattice_planner.hpp"
 
-#include <cassert>
-#include <chrono>
-#include <cmath>
 #include <nlohmann/json.hpp>
-#include <stdexcept>
 
 #include "core/config_error.hpp"
+#include "planners/budget_params.hpp"
 #include "planners/heading_lattice.hpp"
-#include "world/motion.hpp"
 
 namespace fsweep {
 inline namespace planners {
@@ -42,9 +38,17 @@ class OctileLatticePolicy {
 }  // namespace
 
 LatticePlannerParams LatticePlannerParams::from_json(const nlohmann::json& j, const std::string& where) {
-  if (j.is_null()) return {};
-  require_known_keys(j, {}, where);
-  return {};
+  LatticePlannerParams p;
+  if (j.is_null()) return p;
+  require_known_keys(j, {kTimeLimitKey, kMaxExpansionsKey}, where);
+  const SearchBudget budget = budget_from_json(j, where);
+  p.time_limit_s = budget.time_limit_s;
+  p.max_expansions = budget.max_expansions;
+  return p;
+}
+
+std::vector<std::string> LatticePlannerParams::validate() const {
+  return budget_violations(time_limit_s, max_expansions);
 }
 
 std::string LatticePlanner::name() const {
@@ -55,37 +59,27 @@ std::unique_ptr<Planner> LatticePlanner::clone() const {
   return std::make_unique<LatticePlanner>(kind_, params_);
 }
 
-PlanResult LatticePlanner::plan(const KnownMap& known, const PlanRequest& request) {
-  const auto started = std::chrono::steady_clock::now();
-  if (request.start_heading < 0 || request.start_heading >= kHeadings) {
-    throw std::invalid_argument("LatticePlanner: start_heading " + std::to_string(request.start_heading) +
-                                " is not in 0..7");
+SearchResult LatticePlanner::search(const KnownMap& known, const PlanRequest& request,
+                                    const StopCondition& stop) {
+  // 1. Search from (start, start heading); start == goal settles the start as the goal.
+  const OctileLatticePolicy policy(known, request, kind_ == LatticeSearchKind::AStar);
+  HeadingLattice env(known, request, policy);
+  SearchLimits limits;
+  limits.stop = stop;
+  const int start_state = known.index(request.start) * kHeadings + request.start_heading;
+  const SearchOutcome outcome = search_.run(env, start_state, limits);
+  SearchResult result;
+  result.expansions = outcome.expansions;
+  if (outcome.goal < 0) {
+    result.status = outcome.stopped ? PlanStatus::Timeout : PlanStatus::NoPath;
+    return result;
   }
-  PlanResult result;
-
-  // 1. Endpoints must be known free (outside the grid counts as occupied).
-  result.status = check_endpoints(known, request);
-  if (result.status == PlanStatus::Success) {
-    // 2. Search from (start, start heading); start == goal settles the start as the goal.
-    const OctileLatticePolicy policy(known, request, kind_ == LatticeSearchKind::AStar);
-    HeadingLattice env(known, request, policy);
-    const int start_state = known.index(request.start) * kHeadings + request.start_heading;
-    const SearchOutcome outcome = search_.run(env, start_state);
-    result.expansions = outcome.expansions;
-    if (outcome.goal < 0) {
-      result.status = PlanStatus::NoPath;
-    } else {
-      // 3. Cells of the states along the parents, then the shared motion accounting (its
-      //    energy equals the search cost: same per-step rule, no final stop).
-      const std::vector<int> states = search_.path_to(outcome.goal);
-      std::vector<Cell> path;
-      path.reserve(states.size());
-      for (const int s : states) path.push_back(known.cell(s / kHeadings));
-      set_path(result, std::move(path), request, known.resolution_m());
-      assert(std::abs(result.energy - search_.g(outcome.goal)) <= 1e-9 * (1.0 + result.energy));
-    }
-  }
-  result.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  // 2. Cells of the states along the parents (Planner::plan() measures them by the same
+  //    per-step rule as the search cost, no final stop).
+  result.status = PlanStatus::Success;
+  const std::vector<int> states = search_.path_to(outcome.goal);
+  result.path.reserve(states.size());
+  for (const int s : states) result.path.push_back(known.cell(s / kHeadings));
   return result;
 }
 

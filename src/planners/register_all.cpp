@@ -1,7 +1,7 @@
 #include "planners/register_all.hpp"
 
-#include <array>
 #include <nlohmann/json.hpp>
+#include <vector>
 
 #include "planners/grid_planner.hpp"
 #include "planners/lattice_planner.hpp"
@@ -22,11 +22,6 @@ std::unique_ptr<Planner> make_lattice_planner(const nlohmann::json& params, cons
   return std::make_unique<LatticePlanner>(Kind, LatticePlannerParams::from_json(params, where));
 }
 
-template <OmplPlannerKind Kind>
-std::unique_ptr<Planner> make_ompl_planner(const nlohmann::json& params, const std::string& where) {
-  return std::make_unique<OmplPlanner>(Kind, OmplPlannerParams::from_json(Kind, params, where));
-}
-
 std::unique_ptr<Planner> make_shortest_fewest_turns(const nlohmann::json& params, const std::string& where) {
   return std::make_unique<ShortestFewestTurnsPlanner>(ShortestFewestTurnsParams::from_json(params, where));
 }
@@ -34,22 +29,24 @@ std::unique_ptr<Planner> make_shortest_fewest_turns(const nlohmann::json& params
 }  // namespace
 
 std::span<const PlannerEntry> planner_table() {
-  // Add new planners here (one line each); the registry, the CLI and the conformance tests
-  // pick them up from this table.
-  static constexpr std::array kTable{
-      PlannerEntry{"astar", &make_grid_planner<GridSearchKind::AStar>},
-      PlannerEntry{"dijkstra", &make_grid_planner<GridSearchKind::Dijkstra>},
-      PlannerEntry{"lattice", &make_lattice_planner<LatticeSearchKind::Dijkstra>},
-      PlannerEntry{"lattice_astar", &make_lattice_planner<LatticeSearchKind::AStar>},
-      PlannerEntry{"shortest_fewest_turns", &make_shortest_fewest_turns},
-      PlannerEntry{"ompl:RRTConnect", &make_ompl_planner<OmplPlannerKind::RRTConnect>},
-      PlannerEntry{"ompl:RRTstar", &make_ompl_planner<OmplPlannerKind::RRTstar>},
-      PlannerEntry{"ompl:InformedRRTstar", &make_ompl_planner<OmplPlannerKind::InformedRRTstar>},
-      PlannerEntry{"ompl:BITstar", &make_ompl_planner<OmplPlannerKind::BITstar>},
-      PlannerEntry{"ompl:PRMstar", &make_ompl_planner<OmplPlannerKind::PRMstar>},
-      PlannerEntry{"ompl:LazyPRMstar", &make_ompl_planner<OmplPlannerKind::LazyPRMstar>},
-      PlannerEntry{"ompl:KPIECE1", &make_ompl_planner<OmplPlannerKind::KPIECE1>},
-  };
+  // Add new planners here (one line each; OMPL planners in ompl_planner.cpp's list); the
+  // registry, the CLI and the conformance tests pick them up from this table.
+  static const std::vector<PlannerEntry> kTable = [] {
+    std::vector<PlannerEntry> table{
+        {"astar", GridPlanner::kCapabilities, &make_grid_planner<GridSearchKind::AStar>},
+        {"dijkstra", GridPlanner::kCapabilities, &make_grid_planner<GridSearchKind::Dijkstra>},
+        {"lattice", LatticePlanner::kCapabilities, &make_lattice_planner<LatticeSearchKind::Dijkstra>},
+        {"lattice_astar", LatticePlanner::kCapabilities, &make_lattice_planner<LatticeSearchKind::AStar>},
+        {"shortest_fewest_turns", ShortestFewestTurnsPlanner::kCapabilities, &make_shortest_fewest_turns},
+    };
+    for (const OmplPlannerKind& kind : ompl_planner_kinds()) {
+      table.push_back(
+          {kind.name, kind.capabilities, [&kind](const nlohmann::json& params, const std::string& where) {
+             return std::make_unique<OmplPlanner>(kind, OmplPlannerParams::from_json(kind, params, where));
+           }});
+    }
+    return table;
+  }();
   return kTable;
 }
 

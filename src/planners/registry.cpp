@@ -24,5 +24,12 @@ std::vector<std::string> planner_names() {
   return names;
 }
 
+std::optional<PlannerCapabilities> planner_capabilities(std::string_view name) {
+  for (const PlannerEntry& entry : planner_table()) {
+    if (entry.name == name) return entry.capabilities;
+  }
+  return std::nullopt;
+}
+
 }  // namespace planners
 }  // namespace fsweep

@@ -1,5 +1,9 @@
 #include <gtest/gtest.h>
 
+#include <limits>
+#include <nlohmann/json.hpp>
+
+#include "core/config_error.hpp"
 #include "planner_test_utils.hpp"
 #include "planners/grid_planner.hpp"
 
@@ -172,6 +176,79 @@ TEST(GridPlanner, DijkstraAndAStarAgreeOnRandomMaps) {
   }
   EXPECT_GT(successes, 50);
   EXPECT_LT(astar_expansions, dijkstra_expansions);
+}
+
+TEST_P(GridPlannerBoth, ExpansionBudgetIsExact) {
+  // A corridor query that settles `needed` cells: a budget one short times out having settled
+  // exactly the budget; a budget of exactly `needed` finds the same path as no budget.
+  const auto m = known_from_ascii({"S.........", "########.#", "G........."});
+  const PlanRequest req = request_for(m.start, m.goal);
+  GridPlanner unbounded(GetParam());
+  const PlanResult full = unbounded.plan(m.known, req);
+  ASSERT_EQ(full.status, PlanStatus::Success);
+  const long needed = full.expansions;
+  ASSERT_GT(needed, 10);
+
+  GridPlannerParams short_one;
+  short_one.max_expansions = needed - 1;
+  GridPlanner tight(GetParam(), short_one);
+  const PlanResult r = tight.plan(m.known, req);
+  EXPECT_EQ(r.status, PlanStatus::Timeout);
+  EXPECT_EQ(r.expansions, needed - 1);
+  EXPECT_TRUE(r.path.empty());
+  EXPECT_EQ(r.length_m, 0.0);
+
+  GridPlannerParams exact;
+  exact.max_expansions = needed;
+  GridPlanner enough(GetParam(), exact);
+  const PlanResult e = enough.plan(m.known, req);
+  EXPECT_EQ(e.status, PlanStatus::Success);
+  EXPECT_EQ(e.path, full.path);
+  EXPECT_EQ(e.expansions, needed);
+}
+
+TEST_P(GridPlannerBoth, TinyTimeLimitTimesOut) {
+  // An open 100x100 map corner to corner settles far more than StopCondition::kClockInterval
+  // cells, so the clock is read during the search, and 1 ns has passed by the first read.
+  const KnownMap open = testing::random_known_map(100, 100, 0.0, 1);
+  const PlanRequest req = request_for(Cell{0, 0}, Cell{99, 99});
+  GridPlannerParams tiny;
+  tiny.time_limit_s = 1e-9;
+  GridPlanner planner(GetParam(), tiny);
+  const PlanResult r = planner.plan(open, req);
+  EXPECT_EQ(r.status, PlanStatus::Timeout);
+  EXPECT_TRUE(r.path.empty());
+  EXPECT_LT(r.expansions, StopCondition::kClockInterval + 1);
+  // A generous limit changes nothing.
+  GridPlannerParams generous;
+  generous.time_limit_s = 60.0;
+  const PlanResult g = GridPlanner(GetParam(), generous).plan(open, req);
+  const PlanResult u = GridPlanner(GetParam()).plan(open, req);
+  EXPECT_EQ(g.status, PlanStatus::Success);
+  EXPECT_EQ(g.path, u.path);
+  EXPECT_EQ(g.expansions, u.expansions);
+}
+
+TEST(GridPlanner, BudgetParams) {
+  const GridPlannerParams none = GridPlannerParams::from_json(nlohmann::json::object(), "p");
+  EXPECT_EQ(none.time_limit_s, std::numeric_limits<double>::infinity());
+  EXPECT_EQ(none.max_expansions, 0);
+  const GridPlannerParams both =
+      GridPlannerParams::from_json(nlohmann::json{{"time_limit_s", 0.25}, {"max_expansions", 1000}}, "p");
+  EXPECT_EQ(both.time_limit_s, 0.25);
+  EXPECT_EQ(both.max_expansions, 1000);
+  EXPECT_TRUE(both.validate().empty());
+  EXPECT_EQ(GridPlannerParams::from_json(nlohmann::json{{"time_limit_s", 2}}, "p").time_limit_s, 2.0);
+  for (const nlohmann::json& bad :
+       {nlohmann::json{{"time_limit_s", 0}}, nlohmann::json{{"time_limit_s", -1.0}},
+        nlohmann::json{{"time_limit_s", "1"}}, nlohmann::json{{"max_expansions", -1}},
+        nlohmann::json{{"max_expansions", 1.5}}, nlohmann::json{{"tie_break", 1}}}) {
+    EXPECT_THROW((void)GridPlannerParams::from_json(bad, "p"), ConfigError) << bad.dump();
+  }
+  GridPlannerParams invalid;
+  invalid.time_limit_s = 0.0;
+  invalid.max_expansions = -2;
+  EXPECT_EQ(invalid.validate().size(), 2U);
 }
 
 TEST(GridPlanner, NamesAndClone) {
