@@ -27,6 +27,7 @@ class FieldEnvironment {
         remaining_targets_(all_targets) {}
 
   [[nodiscard]] int state_count() const { return known_.size(); }
+  static constexpr bool kZeroHeuristic = true;
   [[nodiscard]] static double heuristic(int /*state*/) { return 0.0; }
 
   /// Settles states in cost order; once the first target is settled at d*, keeps settling
