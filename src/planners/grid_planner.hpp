@@ -4,6 +4,7 @@
 /// costs (docs/architecture.md, "Plugins and their parameters"). Moves follow src/search/octile_grid.hpp (no
 /// corner cutting unless PlanRequest::allow_corner_cutting), so lengths match MovingAI's optimal lengths.
 
+#include <limits>
 #include <memory>
 #include <nlohmann/json_fwd.hpp>
 #include <string>
@@ -23,28 +24,39 @@ enum class GridSearchKind {
   AStar,
 };
 
-/// Parameters of the grid planners. There are none yet: `{}` (or null) is the only valid
-/// input and any key is a ConfigError. Tie-breaking is fixed, not a parameter: see
-/// BestFirstSearch (smaller f, then larger g, then smaller cell index).
-struct GridPlannerParams {};
+/// Parameters of the grid planners: only the query budget (declare_budget() in budget_params.hpp); any other
+/// key is a ConfigError. Tie-breaking is fixed, not a parameter: see BestFirstSearch (smaller f, then larger
+/// g, then smaller cell index).
+struct GridPlannerParams {
+  /// Wall time of one query's search (seconds, > 0); +infinity (the default, JSON null): none.
+  double time_limit_s = std::numeric_limits<double>::infinity();
+  /// Cells one query may settle (>= 0); 0 (the default): none.
+  long max_expansions = 0;
+};
 
 /// Optimal grid planner. Keeps its search arrays between queries (not thread-safe).
 ///
-/// Statuses: StartInvalid if the start is outside the grid or not known free; otherwise
-/// GoalInvalid likewise for the goal; NoPath if the goal is not reachable through known-free
-/// cells; Success otherwise (start == goal gives the one-cell path). Timeout never happens.
-/// On Success, length, energy, stops and turns come from measure_path() (motion.hpp) from
-/// PlanRequest::start_heading under PlanRequest::energy; `expansions` counts settled cells.
+/// Statuses (besides Planner::plan()'s endpoint checks): NoPath if the goal is not reachable
+/// through known-free cells; Timeout if the time limit or the expansion budget ends the search
+/// first (with `max_expansions` = n, a query that settles its goal as the n-th cell succeeds);
+/// Success otherwise (start == goal gives the one-cell path). `expansions` counts settled cells.
 class GridPlanner final : public Planner {
  public:
-  explicit GridPlanner(GridSearchKind kind, GridPlannerParams params = {}) : kind_(kind), params_(params) {}
+  /// Deterministic and length-optimal (fixed tie-breaking, an admissible heuristic).
+  static constexpr PlannerCapabilities kCapabilities{Determinism::Always, true, false};
+
+  explicit GridPlanner(GridSearchKind kind, GridPlannerParams params = {})
+      : Planner(SearchBudget{params.time_limit_s, params.max_expansions}), kind_(kind), params_(params) {}
 
   [[nodiscard]] std::string name() const override;
-  [[nodiscard]] PlanResult plan(const KnownMap& known, const PlanRequest& request) override;
   [[nodiscard]] std::unique_ptr<Planner> clone() const override;
 
   [[nodiscard]] GridSearchKind kind() const { return kind_; }
   [[nodiscard]] const GridPlannerParams& params() const { return params_; }
+
+ protected:
+  [[nodiscard]] SearchResult search(const KnownMap& known, const PlanRequest& request,
+                                    const StopCondition& stop) override;
 
  private:
   GridSearchKind kind_;

@@ -6,7 +6,8 @@
 /// lattice_planner.hpp; what differs between the planners is a small policy object:
 /// - `policy.heuristic(cell)`: a consistent lower bound on the energy from `cell` to the goal;
 /// - `policy.allows(from_cell, to_cell, step_cells)`: whether the lattice may use that step
-///   (the octile move rule has already been checked).
+///   (the octile move rule has already been checked);
+/// - optionally `Policy::kZeroHeuristic` (true when the heuristic is 0 everywhere).
 
 #include <array>
 #include <concepts>
@@ -49,6 +50,8 @@ class HeadingLattice {
     travel_[1] = request.energy.travel(kSqrt2, resolution_m);
   }
 
+  /// A policy with a zero heuristic may declare `kZeroHeuristic` (see grid_search.hpp).
+  static constexpr bool kZeroHeuristic = ZeroHeuristicEnvironment<Policy>;
   [[nodiscard]] int state_count() const { return known_.size() * kLatticeHeadings; }
   [[nodiscard]] double heuristic(int state) const { return policy_.heuristic(state / kLatticeHeadings); }
   Visit visit(int state, double /*g*/) const {

@@ -19,6 +19,7 @@
 /// This is Mei's graph with the turn charged on the edge that leaves in the new heading rather
 /// than the edge that arrives; the path costs are the same.
 
+#include <limits>
 #include <memory>
 #include <nlohmann/json_fwd.hpp>
 #include <string>
@@ -39,32 +40,41 @@ enum class LatticeSearchKind {
   AStar,
 };
 
-/// Parameters of the lattice planners. There are none: `{}` (or null) is the only valid input
-/// and any key is a ConfigError. The energy model is not a parameter: it is the request's.
-struct LatticePlannerParams {};
+/// Parameters of the lattice planners: only the query budget (declare_budget() in budget_params.hpp); any
+/// other key is a ConfigError. The energy model is not a parameter: it is the request's.
+struct LatticePlannerParams {
+  /// Wall time of one query's search (seconds, > 0); +infinity (the default, JSON null): none.
+  double time_limit_s = std::numeric_limits<double>::infinity();
+  /// (cell, heading) states one query may settle (>= 0); 0 (the default): none.
+  long max_expansions = 0;
+};
 
 /// Minimum-energy planner on the heading lattice. Keeps its search arrays (8 states per cell)
 /// between queries (not thread-safe).
 ///
-/// Statuses: StartInvalid if the start is outside the grid or not known free; otherwise
-/// GoalInvalid likewise for the goal; NoPath if the goal is not reachable through known-free
-/// cells; Success otherwise (start == goal gives the one-cell path at energy 0). Timeout never
-/// happens. Throws std::invalid_argument if PlanRequest::start_heading is not in 0..7.
-/// On Success, length, energy, stops and turns come from measure_path() (motion.hpp), like every
-/// planner's; the energy equals the search cost. `expansions` counts settled (cell, heading)
-/// states. Ties between equal-energy paths break as in BestFirstSearch (smaller f, larger g,
-/// smaller state id).
+/// Statuses (besides Planner::plan()'s endpoint and heading checks): NoPath if the goal is not
+/// reachable through known-free cells; Timeout if the time limit or the expansion budget ends the
+/// search first; Success otherwise (start == goal gives the one-cell path at energy 0).
+/// The energy Planner::plan() measures equals the search cost. `expansions` counts settled
+/// (cell, heading) states. Ties between equal-energy paths break as in BestFirstSearch (smaller
+/// f, larger g, smaller state id).
 class LatticePlanner final : public Planner {
  public:
+  /// Deterministic (fixed tie-breaking); energy-optimal, which is not length-optimal.
+  static constexpr PlannerCapabilities kCapabilities{Determinism::Always, false, false};
+
   explicit LatticePlanner(LatticeSearchKind kind, LatticePlannerParams params = {})
-      : kind_(kind), params_(params) {}
+      : Planner(SearchBudget{params.time_limit_s, params.max_expansions}), kind_(kind), params_(params) {}
 
   [[nodiscard]] std::string name() const override;
-  [[nodiscard]] PlanResult plan(const KnownMap& known, const PlanRequest& request) override;
   [[nodiscard]] std::unique_ptr<Planner> clone() const override;
 
   [[nodiscard]] LatticeSearchKind kind() const { return kind_; }
   [[nodiscard]] const LatticePlannerParams& params() const { return params_; }
+
+ protected:
+  [[nodiscard]] SearchResult search(const KnownMap& known, const PlanRequest& request,
+                                    const StopCondition& stop) override;
 
  private:
   LatticeSearchKind kind_;

@@ -19,8 +19,8 @@
 #include <ompl/util/RandomNumbers.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
-#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <mutex>
@@ -67,34 +67,29 @@ class OmplSession {
   std::lock_guard<std::mutex> lock_;
 };
 
-ob::PlannerPtr make_ompl_planner(OmplPlannerKind kind, const ob::SpaceInformationPtr& si) {
-  switch (kind) {
-    case OmplPlannerKind::RRTConnect:
-      return std::make_shared<og::RRTConnect>(si);
-    case OmplPlannerKind::RRTstar:
-      return std::make_shared<og::RRTstar>(si);
-    case OmplPlannerKind::InformedRRTstar:
-      return std::make_shared<og::InformedRRTstar>(si);
-    case OmplPlannerKind::BITstar:
-      return std::make_shared<og::BITstar>(si);
-    case OmplPlannerKind::PRMstar:
-      return std::make_shared<og::PRMstar>(si);
-    case OmplPlannerKind::LazyPRMstar:
-      return std::make_shared<og::LazyPRMstar>(si);
-    case OmplPlannerKind::KPIECE1:
-      return std::make_shared<og::KPIECE1>(si);
-  }
-  throw std::logic_error("make_ompl_planner: unknown kind");
+/// The OMPL planner factory of a table row.
+template <typename OmplPlannerClass>
+ob::PlannerPtr make_planner_of(const ob::SpaceInformationPtr& si) {
+  return std::make_shared<OmplPlannerClass>(si);
 }
 
-/// OMPL parameter names of `kind` (caller holds an OmplSession).
-std::vector<std::string> ompl_param_names_locked(OmplPlannerKind kind) {
-  const KnownMap probe_map(1, 1, 1.0);
-  const ob::SpaceInformationPtr si = make_grid_space_information(probe_map, false);
-  std::vector<std::string> names;
-  make_ompl_planner(kind, si)->params().getParamNames(names);
-  return names;
-}
+/// Capabilities of the single-threaded OMPL planners that stop at their first path (RRTConnect,
+/// KPIECE1) and of the anytime ones (asymptotically optimal, not optimal in finite time); PRMstar
+/// checks for a solution in a second thread, so it is never deterministic.
+constexpr PlannerCapabilities kFirstPath{Determinism::WithMaxIterations, false, false};
+constexpr PlannerCapabilities kAnytime{Determinism::WithMaxIterations, false, true};
+constexpr PlannerCapabilities kAnytimeThreaded{Determinism::Never, false, true};
+
+/// THE list of OMPL planners (add one here, one line; registry order).
+constexpr std::array kOmplPlanners{
+    OmplPlannerKind{"ompl:RRTConnect", kFirstPath, &make_planner_of<og::RRTConnect>},
+    OmplPlannerKind{"ompl:RRTstar", kAnytime, &make_planner_of<og::RRTstar>},
+    OmplPlannerKind{"ompl:InformedRRTstar", kAnytime, &make_planner_of<og::InformedRRTstar>},
+    OmplPlannerKind{"ompl:BITstar", kAnytime, &make_planner_of<og::BITstar>},
+    OmplPlannerKind{"ompl:PRMstar", kAnytimeThreaded, &make_planner_of<og::PRMstar>},
+    OmplPlannerKind{"ompl:LazyPRMstar", kAnytime, &make_planner_of<og::LazyPRMstar>},
+    OmplPlannerKind{"ompl:KPIECE1", kFirstPath, &make_planner_of<og::KPIECE1>},
+};
 
 /// The string OMPL's ParamSet gets for a JSON value.
 std::string ompl_value_string(const nlohmann::json& value, const std::string& where) {
@@ -113,8 +108,8 @@ struct OmplOutcome {
   long checks = 0;
 };
 
-OmplOutcome solve_with_ompl(OmplPlannerKind kind, const OmplPlannerParams& params, const KnownMap& known,
-                            const PlanRequest& request) {
+OmplOutcome solve_with_ompl(const OmplPlannerKind& kind, const OmplPlannerParams& params,
+                            const KnownMap& known, const PlanRequest& request, const StopCondition& stop) {
   const OmplSession session(request.seed);
   // 1. Problem: centres of the start and goal cells, shortest path length.
   const ob::SpaceInformationPtr si = make_grid_space_information(known, request.allow_corner_cutting);
@@ -131,23 +126,20 @@ OmplOutcome solve_with_ompl(OmplPlannerKind kind, const OmplPlannerParams& param
   pdef->setOptimizationObjective(std::make_shared<ob::PathLengthOptimizationObjective>(si));
 
   // 2. Planner with its OMPL parameters (validated by ompl_planner_params()).
-  const ob::PlannerPtr planner = make_ompl_planner(kind, si);
+  const ob::PlannerPtr planner = kind.make(si);
   if (!planner->params().setParams(params.ompl)) {
     throw std::logic_error("OmplPlanner: OMPL rejected parameters that ompl_planner_params() accepted");
   }
   planner->setProblemDefinition(pdef);
   planner->setup();
 
-  // 3. Budget: time, and optionally the number of termination checks.
-  ob::PlannerTerminationCondition ptc = ob::timedPlannerTerminationCondition(params.time_limit_s);
+  // 3. Budget: the stop condition with its clock restarted now (the time limit is solve time,
+  //    not the wait for the lock nor the set-up), the expansion budget counting termination checks.
+  const StopCondition solve_stop = stop.restarted(StopCondition::Clock::now());
   std::atomic<long> checks{0};
-  if (params.max_iterations > 0) {
-    const long max_iterations = params.max_iterations;
-    ptc = ob::plannerOrTerminationCondition(ptc, ob::PlannerTerminationCondition([&checks, max_iterations] {
-                                              return checks.fetch_add(1, std::memory_order_relaxed) >=
-                                                     max_iterations;
-                                            }));
-  }
+  const ob::PlannerTerminationCondition ptc([&solve_stop, &checks] {
+    return solve_stop.time_up() || solve_stop.budget_spent(checks.fetch_add(1, std::memory_order_relaxed));
+  });
   const ob::PlannerStatus solved = planner->solve(ptc);
 
   OmplOutcome outcome;
@@ -176,40 +168,16 @@ OmplOutcome solve_with_ompl(OmplPlannerKind kind, const OmplPlannerParams& param
 
 }  // namespace
 
-std::string_view ompl_planner_name(OmplPlannerKind kind) {
-  switch (kind) {
-    case OmplPlannerKind::RRTConnect:
-      return "ompl:RRTConnect";
-    case OmplPlannerKind::RRTstar:
-      return "ompl:RRTstar";
-    case OmplPlannerKind::InformedRRTstar:
-      return "ompl:InformedRRTstar";
-    case OmplPlannerKind::BITstar:
-      return "ompl:BITstar";
-    case OmplPlannerKind::PRMstar:
-      return "ompl:PRMstar";
-    case OmplPlannerKind::LazyPRMstar:
-      return "ompl:LazyPRMstar";
-    case OmplPlannerKind::KPIECE1:
-      return "ompl:KPIECE1";
+std::span<const OmplPlannerKind> ompl_planner_kinds() { return kOmplPlanners; }
+
+const OmplPlannerKind& ompl_planner_kind(std::string_view name) {
+  for (const OmplPlannerKind& kind : kOmplPlanners) {
+    if (kind.name == name) return kind;
   }
-  return "ompl:unknown";
+  throw std::invalid_argument("no OMPL planner is registered as '" + std::string(name) + "'");
 }
 
-bool ompl_planner_single_threaded(OmplPlannerKind kind) { return kind != OmplPlannerKind::PRMstar; }
-
-std::vector<std::string> ompl_planner_param_names(OmplPlannerKind kind) {
-  std::vector<std::string> names;
-  {
-    const OmplSession session(0);
-    names = ompl_param_names_locked(kind);
-  }
-  for (const std::string_view key : {kTimeLimitKey, kMaxIterationsKey, kSimplifyKey}) names.emplace_back(key);
-  std::sort(names.begin(), names.end());
-  return names;
-}
-
-ParamDecl<OmplPlannerParams> ompl_planner_params(OmplPlannerKind kind) {
+ParamDecl<OmplPlannerParams> ompl_planner_params(const OmplPlannerKind& kind) {
   using P = OmplPlannerParams;
   ParamDecl<P> d;
   d.number(std::string(kTimeLimitKey), &P::time_limit_s,
@@ -227,10 +195,10 @@ ParamDecl<OmplPlannerParams> ompl_planner_params(OmplPlannerKind kind) {
   const OmplSession session(0);
   const KnownMap probe_map(1, 1, 1.0);
   const ob::SpaceInformationPtr si = make_grid_space_information(probe_map, false);
-  const ob::PlannerPtr probe = make_ompl_planner(kind, si);
+  const ob::PlannerPtr probe = kind.make(si);
   std::map<std::string, std::string> defaults;
   probe->params().getParams(defaults);
-  const std::string planner = std::string(ompl_planner_name(kind)).substr(5);
+  const std::string planner = std::string(kind.name).substr(5);
   for (const auto& [name, value] : defaults) {
     ParamSpec spec;
     spec.name = name;
@@ -239,7 +207,7 @@ ParamDecl<OmplPlannerParams> ompl_planner_params(OmplPlannerKind kind) {
     const std::string range = probe->params()[name].getRangeSuggestion();
     spec.allowed_text = "a value OMPL accepts (string, number or boolean)" +
                         (range.empty() ? "" : "; OMPL suggests " + range);
-    spec.custom_check = [kind, name = name](const nlohmann::json& v) -> std::vector<std::string> {
+    spec.custom_check = [make = kind.make, name = name](const nlohmann::json& v) -> std::vector<std::string> {
       std::string text;
       try {
         text = ompl_value_string(v, name);
@@ -248,7 +216,7 @@ ParamDecl<OmplPlannerParams> ompl_planner_params(OmplPlannerKind kind) {
       }
       const OmplSession check_session(0);
       const KnownMap map(1, 1, 1.0);
-      const ob::PlannerPtr p = make_ompl_planner(kind, make_grid_space_information(map, false));
+      const ob::PlannerPtr p = make(make_grid_space_information(map, false));
       try {
         if (p->params().setParam(name, text)) return {};
       } catch (const std::exception& e) {
@@ -267,30 +235,28 @@ ParamDecl<OmplPlannerParams> ompl_planner_params(OmplPlannerKind kind) {
   return d;
 }
 
-PlanResult OmplPlanner::plan(const KnownMap& known, const PlanRequest& request) {
-  const auto started = std::chrono::steady_clock::now();
-  PlanResult result;
-  // 1. Endpoints must be known free; start == goal needs no planner.
-  result.status = check_endpoints(known, request);
-  if (result.status == PlanStatus::Success && request.start == request.goal) {
-    set_path(result, {request.start}, request, known.resolution_m());
-  } else if (result.status == PlanStatus::Success) {
-    // 2. OMPL, then the cell chain of its polyline.
-    const OmplOutcome outcome = solve_with_ompl(kind_, params_, known, request);
-    result.expansions = outcome.checks;
-    result.status = outcome.status;
-    if (outcome.status == PlanStatus::Success) {
-      std::vector<Cell> chain = polyline_cell_chain(known, outcome.points, request.allow_corner_cutting);
-      // 3. The chain must be a valid plan by construction; anything else is a bug here.
-      bool valid = !chain.empty() && chain.front() == request.start && chain.back() == request.goal;
-      for (std::size_t i = 1; valid && i < chain.size(); ++i) {
-        valid = octile_step_allowed(known, chain[i - 1], chain[i], request.allow_corner_cutting);
-      }
-      if (!valid) throw std::logic_error(name() + ": OMPL solution does not map to a valid cell chain");
-      set_path(result, std::move(chain), request, known.resolution_m());
-    }
+SearchResult OmplPlanner::search(const KnownMap& known, const PlanRequest& request,
+                                 const StopCondition& stop) {
+  SearchResult result;
+  // 1. start == goal needs no planner.
+  if (request.start == request.goal) {
+    result.status = PlanStatus::Success;
+    result.path = {request.start};
+    return result;
   }
-  result.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  // 2. OMPL, then the cell chain of its polyline.
+  const OmplOutcome outcome = solve_with_ompl(kind_, params_, known, request, stop);
+  result.expansions = outcome.checks;
+  result.status = outcome.status;
+  if (outcome.status != PlanStatus::Success) return result;
+  result.path = polyline_cell_chain(known, outcome.points, request.allow_corner_cutting);
+  // 3. The chain must be a valid plan by construction; anything else is a bug here.
+  bool valid =
+      !result.path.empty() && result.path.front() == request.start && result.path.back() == request.goal;
+  for (std::size_t i = 1; valid && i < result.path.size(); ++i) {
+    valid = octile_step_allowed(known, result.path[i - 1], result.path[i], request.allow_corner_cutting);
+  }
+  if (!valid) throw std::logic_error(name() + ": OMPL solution does not map to a valid cell chain");
   return result;
 }
 

@@ -25,6 +25,7 @@
 #include <map>
 #include <memory>
 #include <nlohmann/json_fwd.hpp>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -32,18 +33,31 @@
 #include "core/params.hpp"
 #include "planners/planner.hpp"
 
+namespace ompl::base {
+class Planner;
+class SpaceInformation;
+}  // namespace ompl::base
+
 namespace fsweep {
 inline namespace planners {
 
-/// The OMPL geometric planners on offer (registry names `ompl:<OMPL class name>`).
-enum class OmplPlannerKind { RRTConnect, RRTstar, InformedRRTstar, BITstar, PRMstar, LazyPRMstar, KPIECE1 };
+/// One OMPL geometric planner on offer. ompl_planner_kinds() is the one list of them: the
+/// registry, the reproducibility rule and the tests read it.
+struct OmplPlannerKind {
+  /// Registry name, `ompl:` + the OMPL class name, e.g. "ompl:RRTConnect".
+  std::string_view name;
+  /// Declared capabilities: none is optimal in finite time; single-threaded ones are
+  /// deterministic with `max_iterations` (see the file comment), PRMstar never.
+  PlannerCapabilities capabilities;
+  /// Makes the OMPL planner over `si`.
+  std::shared_ptr<ompl::base::Planner> (*make)(const std::shared_ptr<ompl::base::SpaceInformation>& si);
+};
 
-/// Registry name of `kind`, e.g. "ompl:RRTConnect".
-[[nodiscard]] std::string_view ompl_planner_name(OmplPlannerKind kind);
+/// Every OMPL planner on offer, in registry order.
+[[nodiscard]] std::span<const OmplPlannerKind> ompl_planner_kinds();
 
-/// True if queries of `kind` are reproducible from PlanRequest::seed when they end by a
-/// solution or by `max_iterations` (see the file comment); false for PRMstar.
-[[nodiscard]] bool ompl_planner_single_threaded(OmplPlannerKind kind);
+/// The kind registered as `name` (e.g. "ompl:RRTstar"); throws std::invalid_argument if none is.
+[[nodiscard]] const OmplPlannerKind& ompl_planner_kind(std::string_view name);
 
 /// Parameters of an OMPL planner: ours, plus the planner's own OMPL parameters by their OMPL
 /// names (ParamSet, e.g. `range`, `goal_bias`, `rewire_factor`) in the same JSON object.
@@ -63,36 +77,40 @@ struct OmplPlannerParams {
 /// The declared parameters (core/params.hpp) of planner `kind`: ours (time_limit_s,
 /// max_iterations, simplify) and every OMPL parameter its ParamSet declares, with OMPL's
 /// default value and range suggestion; a value is checked by setting it on a probe planner.
-[[nodiscard]] ParamDecl<OmplPlannerParams> ompl_planner_params(OmplPlannerKind kind);
-
-/// Sorted names of our own keys and of every OMPL parameter `kind` declares.
-[[nodiscard]] std::vector<std::string> ompl_planner_param_names(OmplPlannerKind kind);
+[[nodiscard]] ParamDecl<OmplPlannerParams> ompl_planner_params(const OmplPlannerKind& kind);
 
 /// An OMPL planner (see the file comment). Builds the OMPL objects per query; the instance
 /// holds only its parameters.
 ///
-/// Statuses: StartInvalid / GoalInvalid by check_endpoints(); start == goal gives the one-cell
-/// path without calling OMPL; Timeout if OMPL has no exact solution when the time or
-/// iteration budget ends (a sampling planner cannot prove that no path exists, so NoPath is
-/// only returned if OMPL gives up before the budget). On Success the OMPL path (simplified if
-/// `simplify`) is turned into the cell chain of polyline_cell_chain(), every move of which is
-/// allowed by octile_step_allowed(); length, energy, stops and turns come from set_path().
-/// `expansions` is the number of state and motion validity checks OMPL made while solving
-/// (its sampling effort; simplification not included).
+/// Statuses (besides Planner::plan()'s endpoint checks): start == goal gives the one-cell path
+/// without calling OMPL; Timeout if OMPL has no exact solution when the time or iteration budget
+/// ends (a sampling planner cannot prove that no path exists, so NoPath is only returned if
+/// OMPL gives up before the budget). The budget is Planner::budget(): `time_limit_s` counted
+/// from the start of OMPL's solve (after the process-wide lock and the set-up), and
+/// `max_iterations` as the expansion budget over OMPL's termination checks. On Success the
+/// OMPL path (simplified if `simplify`) is turned into the cell chain of polyline_cell_chain(),
+/// every move of which is allowed by octile_step_allowed(). `expansions` is the number of state
+/// and motion validity checks OMPL made while solving (its sampling effort; simplification not
+/// included).
 class OmplPlanner final : public Planner {
  public:
   /// `params` must come from ompl_planner_params(kind) (or be defaults).
-  explicit OmplPlanner(OmplPlannerKind kind, OmplPlannerParams params = {})
-      : kind_(kind), params_(std::move(params)) {}
+  explicit OmplPlanner(const OmplPlannerKind& kind, OmplPlannerParams params = {})
+      : Planner(SearchBudget{params.time_limit_s, params.max_iterations}),
+        kind_(kind),
+        params_(std::move(params)) {}
 
-  [[nodiscard]] std::string name() const override { return std::string(ompl_planner_name(kind_)); }
-  [[nodiscard]] PlanResult plan(const KnownMap& known, const PlanRequest& request) override;
+  [[nodiscard]] std::string name() const override { return std::string(kind_.name); }
   [[nodiscard]] std::unique_ptr<Planner> clone() const override {
     return std::make_unique<OmplPlanner>(kind_, params_);
   }
 
-  [[nodiscard]] OmplPlannerKind kind() const { return kind_; }
+  [[nodiscard]] const OmplPlannerKind& kind() const { return kind_; }
   [[nodiscard]] const OmplPlannerParams& params() const { return params_; }
+
+ protected:
+  [[nodiscard]] SearchResult search(const KnownMap& known, const PlanRequest& request,
+                                    const StopCondition& stop) override;
 
  private:
   OmplPlannerKind kind_;

@@ -1,12 +1,16 @@
 #pragma once
 /// @file planner.hpp
-/// The planner plugin edge: one small virtual interface, failures as status values.
+/// The planner plugin edge (OMPL's shape): a non-virtual plan() does what every planner shares
+/// and calls the plugin's search() with a stop condition; failures are status values;
+/// capabilities are declared data.
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "search/stop_condition.hpp"
 #include "world/energy_model.hpp"
 #include "world/grid.hpp"
 #include "world/known_map.hpp"
@@ -48,24 +52,75 @@ struct PlanResult {
 };
 
 /// StartInvalid or GoalInvalid when that endpoint is not a known-free cell (outside the grid
-/// counts as occupied; the start is checked first), else Success. Every planner starts so.
+/// counts as occupied; the start is checked first), else Success. Planner::plan() starts so.
 [[nodiscard]] PlanStatus check_endpoints(const KnownMap& known, const PlanRequest& request);
 
-/// Marks `result` successful with `path` and fills length, energy, stops and turns by the one
-/// accounting rule shared by all planners (measure_path in src/world/motion.hpp).
-void set_path(PlanResult& result, std::vector<Cell> path, const PlanRequest& request, double resolution_m);
+/// When a planner's results repeat exactly for the same request and seed, whatever the timing.
+/// Every answer assumes no query ends by its wall-time limit (`time_limit_s`): one that does
+/// depends on the machine whatever the planner.
+enum class Determinism {
+  /// Always: fixed tie-breaking, and every query ends by itself (a path, or proof there is none).
+  Always,
+  /// Only with `max_iterations` > 0: otherwise some queries run until the time limit (an
+  /// anytime planner every query, the others the queries they cannot solve).
+  WithMaxIterations,
+  /// Never: the result depends on thread timing.
+  Never,
+};
 
-/// A path planner. Instances keep preallocated search arrays between queries, so they are not
-/// thread-safe: use one per simulation.
+/// What a planner promises, declared as data with it (the planner tables of register_all.cpp and
+/// ompl_planner.cpp) and exposed per name by the registry.
+struct PlannerCapabilities {
+  Determinism determinism = Determinism::Never;
+  /// Every Success is a shortest path (octile length under the move rule of octile_grid.hpp).
+  bool optimal = false;
+  /// Keeps improving a found path until its budget ends (instead of returning the first).
+  bool anytime = false;
+};
+
+/// What a planner's search gives back to Planner::plan(), which measures the path.
+struct SearchResult {
+  /// Success, NoPath or Timeout.
+  PlanStatus status = PlanStatus::NoPath;
+  /// On Success the 8-connected cell chain from start to goal, both included; else empty.
+  std::vector<Cell> path;
+  /// Nodes expanded (grid and lattice planners) or validity checks made (sampling planners).
+  long expansions = 0;
+};
+
+/// A path planner: the plugin edge. plan() is the one entry point and does what every planner
+/// shares; a plugin implements search(). Instances keep preallocated search arrays between
+/// queries, so they are not thread-safe: use one per simulation.
 class Planner {
  public:
   virtual ~Planner() = default;
   /// Registry name, e.g. "astar".
   [[nodiscard]] virtual std::string name() const = 0;
-  /// Plans one query on `known`.
-  [[nodiscard]] virtual PlanResult plan(const KnownMap& known, const PlanRequest& request) = 0;
   /// A fresh planner with the same parameters.
   [[nodiscard]] virtual std::unique_ptr<Planner> clone() const = 0;
+
+  /// Plans one query on `known`: checks the endpoints (check_endpoints()), runs search() under
+  /// a StopCondition of budget() started now, and measures a found path by the one accounting
+  /// rule of every planner (measure_path() in src/world/motion.hpp, from
+  /// PlanRequest::start_heading under PlanRequest::energy). Timeout when the budget ended the
+  /// search. `time_s` is the wall time of the whole call. Throws std::invalid_argument if
+  /// PlanRequest::start_heading is not in 0..7.
+  [[nodiscard]] PlanResult plan(const KnownMap& known, const PlanRequest& request);
+  /// The time limit and expansion budget of one query, from the planner's parameters.
+  [[nodiscard]] const SearchBudget& budget() const { return budget_; }
+
+ protected:
+  explicit Planner(const SearchBudget& budget) : budget_(budget) {}
+  Planner(const Planner&) = default;
+  Planner& operator=(const Planner&) = default;
+
+  /// Searches a query whose endpoints are known free, honouring `stop` (Timeout once it says
+  /// so). On Success the path starts at PlanRequest::start and ends at PlanRequest::goal.
+  [[nodiscard]] virtual SearchResult search(const KnownMap& known, const PlanRequest& request,
+                                            const StopCondition& stop) = 0;
+
+ private:
+  SearchBudget budget_;
 };
 
 }  // namespace planners

@@ -1,8 +1,11 @@
 /// @file register_all.cpp
-/// The one place where planners are registered.
+/// The one place where planners are registered, each with its declared capabilities (the OMPL
+/// planners come from their own one list, ompl_planner_kinds()).
 
+#include <map>
 #include <nlohmann/json.hpp>
 
+#include "planners/budget_params.hpp"
 #include "planners/grid_planner.hpp"
 #include "planners/lattice_planner.hpp"
 #include "planners/ompl_planner.hpp"
@@ -15,50 +18,90 @@ namespace {
 
 using Made = std::unique_ptr<Planner>;
 
-PlannerRegistry make_registry() {
-  PlannerRegistry r("planner");
-  r.add<GridPlannerParams>("astar",
+/// The registry and, by the same names, the capabilities.
+struct PlannerCatalog {
+  PlannerRegistry registry{"planner"};
+  std::map<std::string, PlannerCapabilities, std::less<>> capabilities;
+
+  template <class P, class Declare, class Make>
+  void add(const std::string& name, const PlannerCapabilities& caps, std::string doc, Declare declare,
+           Make make) {
+    registry.add<P>(name, std::move(doc), std::function<ParamDecl<P>()>(std::move(declare)),
+                    std::function<Made(const P&)>(std::move(make)));
+    capabilities.emplace(name, caps);
+  }
+};
+
+ParamDecl<GridPlannerParams> grid_params() {
+  ParamDecl<GridPlannerParams> d;
+  declare_budget(d, "cells one query may settle");
+  return d;
+}
+
+ParamDecl<LatticePlannerParams> lattice_params() {
+  ParamDecl<LatticePlannerParams> d;
+  declare_budget(d, "(cell, heading) states one query may settle");
+  return d;
+}
+
+ParamDecl<ShortestFewestTurnsParams> shortest_fewest_turns_params() {
+  ParamDecl<ShortestFewestTurnsParams> d;
+  declare_budget(d, "cells plus (cell, heading) states one query may settle in its two searches together");
+  return d;
+}
+
+PlannerCatalog make_catalog() {
+  PlannerCatalog c;
+  c.add<GridPlannerParams>("astar", GridPlanner::kCapabilities,
                            "optimal 8-connected grid A*, octile heuristic (lengths match MovingAI's)",
-                           ParamDecl<GridPlannerParams>{}, [](const GridPlannerParams& p) -> Made {
+                           grid_params, [](const GridPlannerParams& p) -> Made {
                              return std::make_unique<GridPlanner>(GridSearchKind::AStar, p);
                            });
-  r.add<GridPlannerParams>("dijkstra", "optimal 8-connected grid Dijkstra", ParamDecl<GridPlannerParams>{},
-                           [](const GridPlannerParams& p) -> Made {
+  c.add<GridPlannerParams>("dijkstra", GridPlanner::kCapabilities, "optimal 8-connected grid Dijkstra",
+                           grid_params, [](const GridPlannerParams& p) -> Made {
                              return std::make_unique<GridPlanner>(GridSearchKind::Dijkstra, p);
                            });
-  r.add<LatticePlannerParams>("lattice",
+  c.add<LatticePlannerParams>("lattice", LatticePlanner::kCapabilities,
                               "Mei 2006 minimum-energy planner on the (cell, heading) lattice, Dijkstra",
-                              ParamDecl<LatticePlannerParams>{}, [](const LatticePlannerParams& p) -> Made {
+                              lattice_params, [](const LatticePlannerParams& p) -> Made {
                                 return std::make_unique<LatticePlanner>(LatticeSearchKind::Dijkstra, p);
                               });
-  r.add<LatticePlannerParams>("lattice_astar",
+  c.add<LatticePlannerParams>("lattice_astar", LatticePlanner::kCapabilities,
                               "the lattice planner with A* (admissible octile x cheapest travel energy)",
-                              ParamDecl<LatticePlannerParams>{}, [](const LatticePlannerParams& p) -> Made {
+                              lattice_params, [](const LatticePlannerParams& p) -> Made {
                                 return std::make_unique<LatticePlanner>(LatticeSearchKind::AStar, p);
                               });
-  r.add<ShortestFewestTurnsParams>(
-      "shortest_fewest_turns", "the least-energy path among all shortest paths (Mei 2006's honest baseline)",
-      ParamDecl<ShortestFewestTurnsParams>{}, [](const ShortestFewestTurnsParams& p) -> Made {
+  c.add<ShortestFewestTurnsParams>(
+      "shortest_fewest_turns", ShortestFewestTurnsPlanner::kCapabilities,
+      "the least-energy path among all shortest paths (Mei 2006's honest baseline)",
+      shortest_fewest_turns_params, [](const ShortestFewestTurnsParams& p) -> Made {
         return std::make_unique<ShortestFewestTurnsPlanner>(p);
       });
-  for (const OmplPlannerKind kind :
-       {OmplPlannerKind::RRTConnect, OmplPlannerKind::RRTstar, OmplPlannerKind::InformedRRTstar,
-        OmplPlannerKind::BITstar, OmplPlannerKind::PRMstar, OmplPlannerKind::LazyPRMstar,
-        OmplPlannerKind::KPIECE1}) {
-    const std::string name(ompl_planner_name(kind));
-    r.add<OmplPlannerParams>(
-        name, "OMPL's " + name.substr(5) + " geometric planner over the known map (R2, exact motion checks)",
-        std::function<ParamDecl<OmplPlannerParams>()>([kind] { return ompl_planner_params(kind); }),
-        [kind](const OmplPlannerParams& p) -> Made { return std::make_unique<OmplPlanner>(kind, p); });
+  for (const OmplPlannerKind& kind : ompl_planner_kinds()) {
+    const std::string name(kind.name);
+    c.add<OmplPlannerParams>(
+        name, kind.capabilities,
+        "OMPL's " + name.substr(5) + " geometric planner over the known map (R2, exact motion checks)",
+        [&kind] { return ompl_planner_params(kind); },
+        [&kind](const OmplPlannerParams& p) -> Made { return std::make_unique<OmplPlanner>(kind, p); });
   }
-  return r;
+  return c;
+}
+
+const PlannerCatalog& catalog() {
+  static const PlannerCatalog c = make_catalog();
+  return c;
 }
 
 }  // namespace
 
-const PlannerRegistry& planner_registry() {
-  static const PlannerRegistry registry = make_registry();
-  return registry;
+const PlannerRegistry& planner_registry() { return catalog().registry; }
+
+std::optional<PlannerCapabilities> planner_capabilities(std::string_view name) {
+  const auto& caps = catalog().capabilities;
+  const auto it = caps.find(name);
+  if (it == caps.end()) return std::nullopt;
+  return it->second;
 }
 
 }  // namespace planners

@@ -5,7 +5,9 @@
 
 #include <memory>
 #include <nlohmann/json_fwd.hpp>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/registry.hpp"
@@ -34,6 +36,14 @@ using PlannerConfig = PlannerRegistry::Configured;
 
 /// Every registered planner name, sorted.
 [[nodiscard]] std::vector<std::string> planner_names();
+
+/// The declared capabilities of planner `name` (registered beside it in register_all.cpp), or
+/// nullopt if no planner of that name is registered.
+[[nodiscard]] std::optional<PlannerCapabilities> planner_capabilities(std::string_view name);
+
+/// The declared capabilities of planner `name`, or nullopt if no planner of that name is
+/// registered.
+[[nodiscard]] std::optional<PlannerCapabilities> planner_capabilities(std::string_view name);
 
 }  // namespace planners
 }  // namespace fsweep

@@ -1,27 +1,12 @@
 #include "planners/reproducibility.hpp"
 
-#include <array>
 #include <charconv>
-#include <optional>
 
-#include "planners/ompl_planner.hpp"
 #include "planners/registry.hpp"
 
 namespace fsweep {
 inline namespace planners {
 namespace {
-
-constexpr std::array kOmplKinds{OmplPlannerKind::RRTConnect,      OmplPlannerKind::RRTstar,
-                                OmplPlannerKind::InformedRRTstar, OmplPlannerKind::BITstar,
-                                OmplPlannerKind::PRMstar,         OmplPlannerKind::LazyPRMstar,
-                                OmplPlannerKind::KPIECE1};
-
-std::optional<OmplPlannerKind> ompl_kind_of(std::string_view name) {
-  for (const OmplPlannerKind kind : kOmplKinds) {
-    if (ompl_planner_name(kind) == name) return kind;
-  }
-  return std::nullopt;
-}
 
 /// max_iterations of `params` (0 when missing, empty or not an integer).
 long max_iterations(const std::map<std::string, std::string>& params) {
@@ -37,15 +22,17 @@ long max_iterations(const std::map<std::string, std::string>& params) {
 }  // namespace
 
 bool planner_reproducible(std::string_view planner, const std::map<std::string, std::string>& params) {
-  if (const auto kind = ompl_kind_of(planner)) {
-    // Even RRTConnect and KPIECE1, which stop at their first path, search until the time
-    // limit on a query they cannot solve (the nightly suite saw KPIECE1's expansions differ).
-    if (!ompl_planner_single_threaded(*kind)) return false;
-    return max_iterations(params) > 0;
-  }
-  if (planner.starts_with("ompl:")) return false;
-  for (const std::string& name : planner_names()) {
-    if (name == planner) return true;
+  const std::optional<PlannerCapabilities> capabilities = planner_capabilities(planner);
+  if (!capabilities) return false;
+  switch (capabilities->determinism) {
+    case Determinism::Always:
+      return true;
+    case Determinism::WithMaxIterations:
+      // Even RRTConnect and KPIECE1, which stop at their first path, search until the time
+      // limit on a query they cannot solve (the nightly suite saw KPIECE1's expansions differ).
+      return max_iterations(params) > 0;
+    case Determinism::Never:
+      return false;
   }
   return false;
 }

@@ -13,15 +13,13 @@ namespace fsweep {
 inline namespace planners {
 
 /// True if runs with planner `planner` and parameters `params` give the same quality
-/// metrics for the same run seed on the same build (README, planner table, "determinism"):
-/// - every registered planner outside OMPL (the grid planners `astar`, `dijkstra`, `lattice`,
-///   `lattice_astar`, `shortest_fewest_turns`): deterministic, fixed tie-breaking;
-/// - the single-threaded OMPL planners (`ompl:RRTConnect`, `ompl:KPIECE1`, `ompl:RRTstar`,
-///   `ompl:InformedRRTstar`, `ompl:BITstar`, `ompl:LazyPRMstar`): only with `max_iterations`
-///   > 0 (and a time limit it reaches first), else they stop at the time limit: the anytime
-///   planners on every query, RRTConnect and KPIECE1 on queries they cannot solve
-///   (src/planners/ompl_planner.hpp, Reproducibility);
-/// - `ompl:PRMstar` (ompl_planner_single_threaded() false): never.
+/// metrics for the same run seed on the same build (README, planner table, "determinism"),
+/// by the planner's declared Determinism (planner_capabilities() in registry.hpp):
+/// - Always (the grid and lattice planners, `shortest_fewest_turns`): true;
+/// - WithMaxIterations (the single-threaded OMPL planners): only with `max_iterations` > 0 (and
+///   a time limit it reaches first), else they stop at the time limit: the anytime planners on
+///   every query, RRTConnect and KPIECE1 on queries they cannot solve;
+/// - Never (`ompl:PRMstar`): false.
 /// `params` maps a parameter name without the `planner.` prefix (e.g. "max_iterations") to
 /// its CSV text; a missing or empty entry is the planner's default (max_iterations 0 = none),
 /// a text that is not an integer counts as unset. A name this build does not register gives

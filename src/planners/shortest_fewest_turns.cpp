@@ -1,8 +1,6 @@
 #include "planners/shortest_fewest_turns.hpp"
 
 #include <array>
-#include <cassert>
-#include <chrono>
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
@@ -56,51 +54,49 @@ std::unique_ptr<Planner> ShortestFewestTurnsPlanner::clone() const {
   return std::make_unique<ShortestFewestTurnsPlanner>(params_);
 }
 
-PlanResult ShortestFewestTurnsPlanner::plan(const KnownMap& known, const PlanRequest& request) {
-  const auto started = std::chrono::steady_clock::now();
-  if (request.start_heading < 0 || request.start_heading >= kLatticeHeadings) {
-    throw std::invalid_argument("ShortestFewestTurnsPlanner: start_heading " +
-                                std::to_string(request.start_heading) + " is not in 0..7");
+SearchResult ShortestFewestTurnsPlanner::search(const KnownMap& known, const PlanRequest& request,
+                                                const StopCondition& stop) {
+  SearchResult result;
+  // 1. d(c): shortest lengths to the goal, from one Dijkstra at the goal that stops once the
+  //    start is settled (every cell closer to the goal than the start is then exact; cells
+  //    farther lie on no shortest path from the start and read as infinite).
+  const std::array<int, 1> start_cell{known.index(request.start)};
+  DistanceQuery query;
+  query.allow_corner_cutting = request.allow_corner_cutting;
+  query.stop_when_all_settled = start_cell;
+  query.stop = stop;
+  to_goal_.compute(known, request.goal, query);
+  result.expansions = to_goal_.expansions();
+  if (!to_goal_.reached(start_cell[0])) {
+    result.status = to_goal_.stopped() ? PlanStatus::Timeout : PlanStatus::NoPath;
+    return result;
   }
-  PlanResult result;
 
-  // 1. Endpoints must be known free (outside the grid counts as occupied).
-  result.status = check_endpoints(known, request);
-  if (result.status == PlanStatus::Success) {
-    // 2. d(c): shortest lengths to the goal, from one Dijkstra at the goal that stops once the
-    //    start is settled (every cell closer to the goal than the start is then exact; cells
-    //    farther lie on no shortest path from the start and read as infinite).
-    const std::array<int, 1> start_cell{known.index(request.start)};
-    DistanceQuery query;
-    query.allow_corner_cutting = request.allow_corner_cutting;
-    query.stop_when_all_settled = start_cell;
-    to_goal_.compute(known, request.goal, query);
-    result.expansions = to_goal_.expansions();
-    if (!to_goal_.reached(start_cell[0])) {
-      result.status = PlanStatus::NoPath;
-    } else {
-      // 3. Least-energy path on the heading lattice restricted to shortest-path steps, from
-      //    (start, start heading); start == goal settles the start as the goal.
-      const double resolution_m = known.resolution_m();
-      const ShortestPathPolicy policy(to_goal_, resolution_m, request.energy.travel_per_cell(resolution_m));
-      HeadingLattice env(known, request, policy);
-      const int start_state = start_cell[0] * kLatticeHeadings + request.start_heading;
-      const SearchOutcome outcome = search_.run(env, start_state);
-      result.expansions += outcome.expansions;
-      // Every restricted path ends at the goal (d drops by >= 1 per step), so the goal is found.
-      if (outcome.goal < 0)
-        throw std::logic_error("ShortestFewestTurnsPlanner: restricted lattice missed the goal");
-
-      // 4. Cells of the states along the parents, then the shared motion accounting.
-      const std::vector<int> states = search_.path_to(outcome.goal);
-      std::vector<Cell> path;
-      path.reserve(states.size());
-      for (const int s : states) path.push_back(known.cell(s / kLatticeHeadings));
-      set_path(result, std::move(path), request, resolution_m);
-      assert(std::abs(result.length_m / resolution_m - policy.d_cells(start_cell[0])) <= 1e-6);
-    }
+  // 2. Least-energy path on the heading lattice restricted to shortest-path steps, from
+  //    (start, start heading), with what is left of the budget; start == goal settles the start
+  //    as the goal.
+  const double resolution_m = known.resolution_m();
+  const ShortestPathPolicy policy(to_goal_, resolution_m, request.energy.travel_per_cell(resolution_m));
+  HeadingLattice env(known, request, policy);
+  SearchLimits limits;
+  limits.stop = stop.after_expansions(result.expansions);
+  const int start_state = start_cell[0] * kLatticeHeadings + request.start_heading;
+  const SearchOutcome outcome = search_.run(env, start_state, limits);
+  result.expansions += outcome.expansions;
+  if (outcome.stopped) {
+    result.status = PlanStatus::Timeout;
+    return result;
   }
-  result.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  // Every restricted path ends at the goal (d drops by >= 1 per step), so the goal is found.
+  if (outcome.goal < 0)
+    throw std::logic_error("ShortestFewestTurnsPlanner: restricted lattice missed the goal");
+
+  // 3. Cells of the states along the parents; their length is d(start) (checked by the tests
+  //    against `dijkstra`).
+  result.status = PlanStatus::Success;
+  const std::vector<int> states = search_.path_to(outcome.goal);
+  result.path.reserve(states.size());
+  for (const int s : states) result.path.push_back(known.cell(s / kLatticeHeadings));
   return result;
 }
 

@@ -17,6 +17,7 @@
 ///    cell, the exact remaining travel energy (consistent, since every restricted step lowers d
 ///    by its own length), so the open list is ordered by the stop and turn energy so far.
 
+#include <limits>
 #include <memory>
 #include <nlohmann/json_fwd.hpp>
 #include <string>
@@ -29,31 +30,43 @@
 namespace fsweep {
 inline namespace planners {
 
-/// Parameters of `shortest_fewest_turns`. There are none: `{}` (or null) is the only valid input
-/// and any key is a ConfigError. The energy model is the request's.
-struct ShortestFewestTurnsParams {};
+/// Parameters of `shortest_fewest_turns`: only the query budget (declare_budget() in budget_params.hpp); any
+/// other key is a ConfigError. The energy model is the request's.
+struct ShortestFewestTurnsParams {
+  /// Wall time of one query's two searches (seconds, > 0); +infinity (the default, JSON null): none.
+  double time_limit_s = std::numeric_limits<double>::infinity();
+  /// Cells plus (cell, heading) states one query may settle in its two searches together (>= 0);
+  /// 0 (the default): none.
+  long max_expansions = 0;
+};
 
 /// Cheapest-energy shortest-path planner (see the file comment). Keeps its distance field and
 /// lattice search arrays between queries (not thread-safe).
 ///
-/// Statuses: StartInvalid if the start is outside the grid or not known free; otherwise
-/// GoalInvalid likewise for the goal; NoPath if the goal is not reachable through known-free
-/// cells; Success otherwise (start == goal gives the one-cell path at energy 0). Timeout never
-/// happens. Throws std::invalid_argument if PlanRequest::start_heading is not in 0..7.
+/// Statuses (besides Planner::plan()'s endpoint and heading checks): NoPath if the goal is not
+/// reachable through known-free cells; Timeout if the time limit or the expansion budget ends
+/// either search first; Success otherwise (start == goal gives the one-cell path at energy 0).
 /// On Success the length equals the shortest length (as `dijkstra`'s, exactly in cells up to
-/// rounding), the energy is the least over all shortest paths, and length, energy, stops and
-/// turns come from measure_path() like every planner's. `expansions` counts the cells settled by
-/// the distance field plus the (cell, heading) states settled by the lattice search. Ties between
-/// equal-energy shortest paths break as in BestFirstSearch (smaller f, larger g, smaller state id).
+/// rounding) and the energy is the least over all shortest paths. `expansions` counts the cells
+/// settled by the distance field plus the (cell, heading) states settled by the lattice search.
+/// Ties between equal-energy shortest paths break as in BestFirstSearch (smaller f, larger g,
+/// smaller state id).
 class ShortestFewestTurnsPlanner final : public Planner {
  public:
-  explicit ShortestFewestTurnsPlanner(ShortestFewestTurnsParams params = {}) : params_(params) {}
+  /// Deterministic (fixed tie-breaking) and length-optimal.
+  static constexpr PlannerCapabilities kCapabilities{Determinism::Always, true, false};
+
+  explicit ShortestFewestTurnsPlanner(ShortestFewestTurnsParams params = {})
+      : Planner(SearchBudget{params.time_limit_s, params.max_expansions}), params_(params) {}
 
   [[nodiscard]] std::string name() const override { return "shortest_fewest_turns"; }
-  [[nodiscard]] PlanResult plan(const KnownMap& known, const PlanRequest& request) override;
   [[nodiscard]] std::unique_ptr<Planner> clone() const override;
 
   [[nodiscard]] const ShortestFewestTurnsParams& params() const { return params_; }
+
+ protected:
+  [[nodiscard]] SearchResult search(const KnownMap& known, const PlanRequest& request,
+                                    const StopCondition& stop) override;
 
  private:
   ShortestFewestTurnsParams params_;

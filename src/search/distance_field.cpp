@@ -27,6 +27,7 @@ class FieldEnvironment {
         remaining_targets_(all_targets) {}
 
   [[nodiscard]] int state_count() const { return known_.size(); }
+  static constexpr bool kZeroHeuristic = true;
   [[nodiscard]] static double heuristic(int /*state*/) { return 0.0; }
 
   /// Settles states in cost order; once the first target is settled at d*, keeps settling
@@ -92,13 +93,16 @@ void DistanceField::compute(const KnownMap& known, Cell source, const DistanceQu
   // 2. Bound in cells, inclusive up to rounding: a cell exactly at max_distance_m is reached.
   SearchLimits limits;
   limits.g_limit = query.max_distance_m / resolution_m_ * (1.0 + 1e-12) + kSlackCells;
+  limits.stop = query.stop;
 
   // 3. Dijkstra from the source; a non-free source runs from no state, leaving the field empty.
   if (targets == nullptr) distinct_targets = 0;
   FieldEnvironment env(known, query.allow_corner_cutting, targets, target_generation_,
                        settle_all ? std::max(distinct_targets, 1) : 0);
   const int start = known.is_free(source) ? known.index(source) : -1;
-  expansions_ = search_.run(env, start, limits).expansions;
+  const SearchOutcome outcome = search_.run(env, start, limits);
+  expansions_ = outcome.expansions;
+  stopped_ = outcome.stopped;
 }
 
 double DistanceField::distance_m(int index) const {

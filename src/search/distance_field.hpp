@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "search/grid_search.hpp"
+#include "search/stop_condition.hpp"
 #include "world/grid.hpp"
 #include "world/known_map.hpp"
 
@@ -31,6 +32,9 @@ struct DistanceQuery {
   /// reachable within the bound is settled. Listed cells read exactly; other cells read as
   /// infinite unless settled. Indices outside the grid are ignored.
   std::span<const int> stop_when_all_settled{};
+  /// Time limit and expansion budget (default: none); DistanceField::stopped() tells whether it
+  /// ended the search (cells not settled by then read as infinite).
+  StopCondition stop{};
 };
 
 class DistanceField {
@@ -49,6 +53,8 @@ class DistanceField {
   [[nodiscard]] std::vector<Cell> path_to(int index) const;
   /// Cells settled by the last compute().
   [[nodiscard]] long expansions() const { return expansions_; }
+  /// True if DistanceQuery::stop ended the last compute() early.
+  [[nodiscard]] bool stopped() const { return stopped_; }
   [[nodiscard]] Cell source() const { return source_; }
 
  private:
@@ -58,6 +64,7 @@ class DistanceField {
   int width_ = 0;
   double resolution_m_ = 1.0;
   long expansions_ = 0;
+  bool stopped_ = false;
   Cell source_{};
 };
 

@@ -25,8 +25,8 @@ inline namespace strategies {
 
 /// Geodesic distances (metres) from the nearest of `sources` (cell indices of `inside`) to
 /// every cell, through the cells flagged non-zero in `inside`; +infinity for cells not flagged
-/// or not connected. Sources outside the grid or not flagged are ignored. Dijkstra, O(n log n)
-/// in the flagged cells.
+/// or not connected. Sources outside the grid or not flagged are ignored. Dijkstra (the generic
+/// search of src/search/grid_search.hpp), O(n log n) in the flagged cells.
 [[nodiscard]] std::vector<double> geodesic_distances(const Grid<std::uint8_t>& inside,
                                                      std::span<const int> sources, double resolution_m);
 
@@ -35,7 +35,8 @@ struct GeodesicField {
   /// Metres; +infinity where not connected (as geodesic_distances()).
   std::vector<double> distance_m;
   /// The cell index of the nearest source; -1 where not connected. Ties between sources go to
-  /// the one whose path settles first in the search (pops by distance, then cell index).
+  /// the one whose path reaches the cell first in the search (BestFirstSearch settles by
+  /// distance, then cell index; a cell keeps the first parent that reached it at its final cost).
   std::vector<int> nearest_source;
 };
 

@@ -1,7 +1,12 @@
 #include <gtest/gtest.h>
 
+#include <limits>
+#include <nlohmann/json.hpp>
+
+#include "core/config_error.hpp"
 #include "planner_test_utils.hpp"
 #include "planners/grid_planner.hpp"
+#include "planners/registry.hpp"
 
 namespace fsweep {
 namespace {
@@ -172,6 +177,87 @@ TEST(GridPlanner, DijkstraAndAStarAgreeOnRandomMaps) {
   }
   EXPECT_GT(successes, 50);
   EXPECT_LT(astar_expansions, dijkstra_expansions);
+}
+
+TEST_P(GridPlannerBoth, ExpansionBudgetIsExact) {
+  // A corridor query that settles `needed` cells: a budget one short times out having settled
+  // exactly the budget; a budget of exactly `needed` finds the same path as no budget.
+  const auto m = known_from_ascii({"S.........", "########.#", "G........."});
+  const PlanRequest req = request_for(m.start, m.goal);
+  GridPlanner unbounded(GetParam());
+  const PlanResult full = unbounded.plan(m.known, req);
+  ASSERT_EQ(full.status, PlanStatus::Success);
+  const long needed = full.expansions;
+  ASSERT_GT(needed, 10);
+
+  GridPlannerParams short_one;
+  short_one.max_expansions = needed - 1;
+  GridPlanner tight(GetParam(), short_one);
+  const PlanResult r = tight.plan(m.known, req);
+  EXPECT_EQ(r.status, PlanStatus::Timeout);
+  EXPECT_EQ(r.expansions, needed - 1);
+  EXPECT_TRUE(r.path.empty());
+  EXPECT_EQ(r.length_m, 0.0);
+
+  GridPlannerParams exact;
+  exact.max_expansions = needed;
+  GridPlanner enough(GetParam(), exact);
+  const PlanResult e = enough.plan(m.known, req);
+  EXPECT_EQ(e.status, PlanStatus::Success);
+  EXPECT_EQ(e.path, full.path);
+  EXPECT_EQ(e.expansions, needed);
+}
+
+TEST_P(GridPlannerBoth, TinyTimeLimitTimesOut) {
+  // An open 100x100 map corner to corner settles far more than StopCondition::kClockInterval
+  // cells, so the clock is read during the search, and 1 ns has passed by the first read.
+  const KnownMap open = testing::random_known_map(100, 100, 0.0, 1);
+  const PlanRequest req = request_for(Cell{0, 0}, Cell{99, 99});
+  GridPlannerParams tiny;
+  tiny.time_limit_s = 1e-9;
+  GridPlanner planner(GetParam(), tiny);
+  const PlanResult r = planner.plan(open, req);
+  EXPECT_EQ(r.status, PlanStatus::Timeout);
+  EXPECT_TRUE(r.path.empty());
+  EXPECT_LT(r.expansions, StopCondition::kClockInterval + 1);
+  // A generous limit changes nothing.
+  GridPlannerParams generous;
+  generous.time_limit_s = 60.0;
+  const PlanResult g = GridPlanner(GetParam(), generous).plan(open, req);
+  const PlanResult u = GridPlanner(GetParam()).plan(open, req);
+  EXPECT_EQ(g.status, PlanStatus::Success);
+  EXPECT_EQ(g.path, u.path);
+  EXPECT_EQ(g.expansions, u.expansions);
+}
+
+TEST(GridPlanner, BudgetParams) {
+  const PlannerConfig none = configure_planner("astar", nlohmann::json::object(), "p");
+  EXPECT_EQ(none.params, nlohmann::json({{"time_limit_s", nullptr}, {"max_expansions", 0}}));
+  EXPECT_EQ(none.make()->budget().time_limit_s, std::numeric_limits<double>::infinity());
+  EXPECT_EQ(none.make()->budget().max_expansions, 0);
+  const PlannerConfig both =
+      configure_planner("dijkstra", nlohmann::json{{"time_limit_s", 0.25}, {"max_expansions", 1000}}, "p");
+  EXPECT_EQ(both.params, nlohmann::json({{"time_limit_s", 0.25}, {"max_expansions", 1000}}));
+  EXPECT_EQ(both.make()->budget().time_limit_s, 0.25);
+  EXPECT_EQ(both.make()->budget().max_expansions, 1000);
+  EXPECT_EQ(make_planner("astar", nlohmann::json{{"time_limit_s", 2}})->budget().time_limit_s, 2.0);
+  EXPECT_EQ(make_planner("astar", nlohmann::json{{"time_limit_s", nullptr}})->budget().time_limit_s,
+            std::numeric_limits<double>::infinity());
+  for (const nlohmann::json& bad :
+       {nlohmann::json{{"time_limit_s", 0}}, nlohmann::json{{"time_limit_s", -1.0}},
+        nlohmann::json{{"time_limit_s", "1"}}, nlohmann::json{{"max_expansions", -1}},
+        nlohmann::json{{"max_expansions", 1.5}}, nlohmann::json{{"tie_break", 1}}}) {
+    EXPECT_THROW((void)configure_planner("astar", bad, "p"), ConfigError) << bad.dump();
+  }
+  try {  // every problem at once, each at its own path
+    (void)configure_planner("astar", nlohmann::json{{"time_limit_s", 0}, {"max_expansions", -2}},
+                            "/planners/0");
+    FAIL() << "no ConfigError";
+  } catch (const ConfigError& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("/planners/0/params/time_limit_s"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("/planners/0/params/max_expansions"), std::string::npos) << msg;
+  }
 }
 
 TEST(GridPlanner, NamesAndClone) {

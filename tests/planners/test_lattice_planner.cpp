@@ -171,6 +171,53 @@ TEST_P(LatticePlannerBoth, RejectsStartHeadingOutOfRange) {
   EXPECT_THROW((void)planner.plan(m.known, mei_request(m.start, m.goal, -1)), std::invalid_argument);
 }
 
+TEST_P(LatticePlannerBoth, ExpansionBudgetIsExact) {
+  // A corridor query that settles `needed` (cell, heading) states: a budget one short times out
+  // having settled exactly the budget; a budget of exactly `needed` finds the same path.
+  const auto m = known_from_ascii({"S.........", "########.#", "G........."});
+  const PlanRequest req = mei_request(m.start, m.goal);
+  LatticePlanner unbounded(GetParam());
+  const PlanResult full = unbounded.plan(m.known, req);
+  ASSERT_EQ(full.status, PlanStatus::Success);
+  const long needed = full.expansions;
+  ASSERT_GT(needed, 10);
+
+  LatticePlannerParams short_one;
+  short_one.max_expansions = needed - 1;
+  const PlanResult r = LatticePlanner(GetParam(), short_one).plan(m.known, req);
+  EXPECT_EQ(r.status, PlanStatus::Timeout);
+  EXPECT_EQ(r.expansions, needed - 1);
+  EXPECT_TRUE(r.path.empty());
+  EXPECT_EQ(r.energy, 0.0);
+
+  LatticePlannerParams exact;
+  exact.max_expansions = needed;
+  const PlanResult e = LatticePlanner(GetParam(), exact).plan(m.known, req);
+  EXPECT_EQ(e.status, PlanStatus::Success);
+  EXPECT_EQ(e.path, full.path);
+  EXPECT_EQ(e.energy, full.energy);
+}
+
+TEST_P(LatticePlannerBoth, TinyTimeLimitTimesOut) {
+  // Corner to corner on an open 60x60 map settles far more than StopCondition::kClockInterval
+  // states, so the clock is read during the search, and 1 ns has passed by the first read.
+  const KnownMap open = testing::random_known_map(60, 60, 0.0, 1);
+  const PlanRequest req = mei_request(Cell{0, 0}, Cell{59, 59});
+  LatticePlannerParams tiny;
+  tiny.time_limit_s = 1e-9;
+  const PlanResult r = LatticePlanner(GetParam(), tiny).plan(open, req);
+  EXPECT_EQ(r.status, PlanStatus::Timeout);
+  EXPECT_TRUE(r.path.empty());
+  EXPECT_LT(r.expansions, StopCondition::kClockInterval + 1);
+  LatticePlannerParams generous;
+  generous.time_limit_s = 60.0;
+  const PlanResult g = LatticePlanner(GetParam(), generous).plan(open, req);
+  const PlanResult u = LatticePlanner(GetParam()).plan(open, req);
+  EXPECT_EQ(g.status, PlanStatus::Success);
+  EXPECT_EQ(g.path, u.path);
+  EXPECT_EQ(g.expansions, u.expansions);
+}
+
 INSTANTIATE_TEST_SUITE_P(Kinds, LatticePlannerBoth,
                          ::testing::Values(LatticeSearchKind::Dijkstra, LatticeSearchKind::AStar),
                          [](const ::testing::TestParamInfo<LatticeSearchKind>& info) {
@@ -224,6 +271,22 @@ TEST(LatticePlanner, ParamsRejectUnknownKeys) {
   EXPECT_NO_THROW((void)configure_planner("lattice", nlohmann::json::object(), "/planners/0"));
   EXPECT_THROW((void)configure_planner("lattice", nlohmann::json{{"heuristic", 1}}, "/planners/0"),
                ConfigError);
+}
+
+TEST(LatticePlanner, BudgetParams) {
+  const PlannerConfig c =
+      configure_planner("lattice_astar", nlohmann::json{{"time_limit_s", 0.5}, {"max_expansions", 64}}, "p");
+  EXPECT_EQ(c.params, nlohmann::json({{"time_limit_s", 0.5}, {"max_expansions", 64}}));
+  EXPECT_EQ(c.make()->budget().time_limit_s, 0.5);
+  EXPECT_EQ(c.make()->budget().max_expansions, 64);
+  try {
+    (void)configure_planner("lattice", nlohmann::json{{"max_expansions", -3}}, "/planners/0");
+    FAIL() << "no ConfigError";
+  } catch (const ConfigError& e) {
+    EXPECT_EQ(e.where(), "/planners/0/params/max_expansions");
+    EXPECT_NE(std::string(e.what()).find(">= 0"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW((void)configure_planner("lattice", nlohmann::json{{"time_limit_s", 0.0}}, "p"), ConfigError);
 }
 
 TEST(LatticePlanner, NamesAndClone) {

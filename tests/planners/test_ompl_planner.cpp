@@ -23,10 +23,10 @@ namespace {
 using testing::expect_valid_path;
 using testing::known_from_ascii;
 
-constexpr OmplPlannerKind kAllKinds[] = {OmplPlannerKind::RRTConnect,      OmplPlannerKind::RRTstar,
-                                         OmplPlannerKind::InformedRRTstar, OmplPlannerKind::BITstar,
-                                         OmplPlannerKind::PRMstar,         OmplPlannerKind::LazyPRMstar,
-                                         OmplPlannerKind::KPIECE1};
+/// The kind registered as "ompl:<name>".
+const OmplPlannerKind& kind_of(std::string_view name) {
+  return ompl_planner_kind("ompl:" + std::string(name));
+}
 
 struct WalkStep {
   Cell from;
@@ -52,7 +52,7 @@ PlanRequest request_for(Cell start, Cell goal, std::uint64_t seed = 7, bool cut 
   return r;
 }
 
-OmplPlanner make_ompl(OmplPlannerKind kind, const nlohmann::json& params) {
+OmplPlanner make_ompl(const OmplPlannerKind& kind, const nlohmann::json& params) {
   return OmplPlanner(kind, ompl_planner_params(kind).read(params, "planner/params"));
 }
 
@@ -193,9 +193,9 @@ TEST_P(OmplPlannerKinds, InvalidEndpointsAreStatuses) {
   EXPECT_EQ(planner.plan(m.known, request_for(m.start, Cell{5, 5})).status, PlanStatus::GoalInvalid);
 }
 
-INSTANTIATE_TEST_SUITE_P(All, OmplPlannerKinds, ::testing::ValuesIn(kAllKinds),
+INSTANTIATE_TEST_SUITE_P(All, OmplPlannerKinds, ::testing::ValuesIn(ompl_planner_kinds()),
                          [](const ::testing::TestParamInfo<OmplPlannerKind>& info) {
-                           return std::string(ompl_planner_name(info.param).substr(5));
+                           return std::string(info.param.name.substr(5));
                          });
 
 TEST(OmplPlanner, RandomMapsWithUnknownCellsGiveValidPaths) {
@@ -209,9 +209,8 @@ TEST(OmplPlanner, RandomMapsWithUnknownCellsGiveValidPaths) {
       if (uniform01(cells) >= 0.1) known.reveal(i, uniform01(cells) < 0.25);
     }
     Rng rng = make_rng(map_seed, "ompl_test_queries");
-    for (const OmplPlannerKind kind :
-         {OmplPlannerKind::RRTConnect, OmplPlannerKind::KPIECE1, OmplPlannerKind::BITstar}) {
-      OmplPlanner planner = make_ompl(kind, {{"time_limit_s", 0.05}});
+    for (const char* kind : {"RRTConnect", "KPIECE1", "BITstar"}) {
+      OmplPlanner planner = make_ompl(kind_of(kind), {{"time_limit_s", 0.05}});
       int solved = 0;
       for (int q = 0; q < 6; ++q) {
         PlanRequest req;
@@ -231,7 +230,7 @@ TEST(OmplPlanner, RandomMapsWithUnknownCellsGiveValidPaths) {
 
 TEST(OmplPlanner, IterationBudgetEndsTheQuery) {
   const auto m = known_from_ascii({"S..#...", "...#...", "...#..G"});
-  OmplPlanner planner = make_ompl(OmplPlannerKind::RRTstar, {{"time_limit_s", 10.0}, {"max_iterations", 50}});
+  OmplPlanner planner = make_ompl(kind_of("RRTstar"), {{"time_limit_s", 10.0}, {"max_iterations", 50}});
   const PlanResult r = planner.plan(m.known, request_for(m.start, m.goal));
   EXPECT_EQ(r.status, PlanStatus::Timeout);
   EXPECT_LT(r.time_s, 1.0);  // far below the 10 s time limit
@@ -250,32 +249,29 @@ TEST(OmplPlannerParams, UnknownKeyListsKnownOnes) {
       EXPECT_NE(msg.find(known), std::string::npos) << known << " missing from: " << msg;
     }
   }
-  const std::vector<std::string> names = ompl_planner_param_names(OmplPlannerKind::RRTstar);
+  const ParamDecl<OmplPlannerParams> decl = ompl_planner_params(kind_of("RRTstar"));
+  std::vector<std::string> names;
+  for (const ParamSpec& spec : decl.specs()) names.push_back(spec.name);
   for (const char* known : {"goal_bias", "range", "rewire_factor", "time_limit_s"}) {
     EXPECT_NE(std::find(names.begin(), names.end(), known), names.end()) << known;
   }
 }
 
 TEST(OmplPlannerParams, ValuesAreCheckedByOmplAndByUs) {
-  const OmplPlannerParams p = ompl_planner_params(OmplPlannerKind::RRTstar)
+  const OmplPlannerParams p = ompl_planner_params(kind_of("RRTstar"))
                                   .read({{"range", 2.5}, {"goal_bias", "0.1"}, {"simplify", false}}, "p");
   EXPECT_EQ(p.ompl.at("range"), "2.5");
   EXPECT_EQ(p.ompl.at("goal_bias"), "0.1");
   EXPECT_FALSE(p.simplify);
-  EXPECT_THROW((void)ompl_planner_params(OmplPlannerKind::RRTstar).read({{"range", "far"}}, "p"),
+  EXPECT_THROW((void)ompl_planner_params(kind_of("RRTstar")).read({{"range", "far"}}, "p"), ConfigError);
+  EXPECT_THROW((void)ompl_planner_params(kind_of("RRTstar")).read({{"range", {1, 2}}}, "p"), ConfigError);
+  EXPECT_THROW((void)ompl_planner_params(kind_of("RRTstar")).read({{"time_limit_s", 0}}, "p"), ConfigError);
+  EXPECT_THROW((void)ompl_planner_params(kind_of("RRTstar")).read({{"time_limit_s", "1"}}, "p"), ConfigError);
+  EXPECT_THROW((void)ompl_planner_params(kind_of("RRTstar")).read({{"max_iterations", -1}}, "p"),
                ConfigError);
-  EXPECT_THROW((void)ompl_planner_params(OmplPlannerKind::RRTstar).read({{"range", {1, 2}}}, "p"),
+  EXPECT_THROW((void)ompl_planner_params(kind_of("RRTstar")).read({{"max_iterations", 1.5}}, "p"),
                ConfigError);
-  EXPECT_THROW((void)ompl_planner_params(OmplPlannerKind::RRTstar).read({{"time_limit_s", 0}}, "p"),
-               ConfigError);
-  EXPECT_THROW((void)ompl_planner_params(OmplPlannerKind::RRTstar).read({{"time_limit_s", "1"}}, "p"),
-               ConfigError);
-  EXPECT_THROW((void)ompl_planner_params(OmplPlannerKind::RRTstar).read({{"max_iterations", -1}}, "p"),
-               ConfigError);
-  EXPECT_THROW((void)ompl_planner_params(OmplPlannerKind::RRTstar).read({{"max_iterations", 1.5}}, "p"),
-               ConfigError);
-  EXPECT_THROW((void)ompl_planner_params(OmplPlannerKind::RRTstar).read(nlohmann::json::array(), "p"),
-               ConfigError);
+  EXPECT_THROW((void)ompl_planner_params(kind_of("RRTstar")).read(nlohmann::json::array(), "p"), ConfigError);
 }
 
 TEST(OmplPlannerParams, OmplParameterChangesThePlanner) {
@@ -283,8 +279,8 @@ TEST(OmplPlannerParams, OmplParameterChangesThePlanner) {
   // than with the default range (a fraction of the map extent) on the same open map and seed.
   const KnownMap open = testing::random_known_map(30, 30, 0.0, 1);
   const PlanRequest req = request_for(Cell{0, 0}, Cell{29, 29});
-  OmplPlanner coarse = make_ompl(OmplPlannerKind::RRTConnect, {{"time_limit_s", 1.0}});
-  OmplPlanner fine = make_ompl(OmplPlannerKind::RRTConnect, {{"time_limit_s", 1.0}, {"range", 0.5}});
+  OmplPlanner coarse = make_ompl(kind_of("RRTConnect"), {{"time_limit_s", 1.0}});
+  OmplPlanner fine = make_ompl(kind_of("RRTConnect"), {{"time_limit_s", 1.0}, {"range", 0.5}});
   const PlanResult rc = coarse.plan(open, req);
   const PlanResult rf = fine.plan(open, req);
   ASSERT_EQ(rc.status, PlanStatus::Success);
@@ -309,18 +305,19 @@ TEST(OmplPlannerSeeds, SameSeedSamePathAlsoInParallel) {
   const auto anytime = [](int iterations) {
     return nlohmann::json{{"time_limit_s", 5.0}, {"max_iterations", iterations}};
   };
-  const std::vector<std::pair<OmplPlannerKind, nlohmann::json>> setups{
-      {OmplPlannerKind::RRTConnect, {{"time_limit_s", 5.0}, {"simplify", false}}},
-      {OmplPlannerKind::KPIECE1, {{"time_limit_s", 5.0}}},
-      {OmplPlannerKind::RRTstar, anytime(3000)},
-      {OmplPlannerKind::InformedRRTstar, anytime(3000)},
-      {OmplPlannerKind::BITstar, anytime(1000)},
-      {OmplPlannerKind::LazyPRMstar, anytime(300)},
+  const std::vector<std::pair<const char*, nlohmann::json>> setups{
+      {"RRTConnect", {{"time_limit_s", 5.0}, {"simplify", false}}},
+      {"KPIECE1", {{"time_limit_s", 5.0}}},
+      {"RRTstar", anytime(3000)},
+      {"InformedRRTstar", anytime(3000)},
+      {"BITstar", anytime(1000)},
+      {"LazyPRMstar", anytime(300)},
   };
-  EXPECT_FALSE(ompl_planner_single_threaded(OmplPlannerKind::PRMstar));  // why it is not here
-  for (const auto& [kind, params] : setups) {
-    ASSERT_TRUE(ompl_planner_single_threaded(kind)) << ompl_planner_name(kind);
-    const auto run_all = [&, kind = kind, params = params]() {
+  EXPECT_EQ(kind_of("PRMstar").capabilities.determinism, Determinism::Never);  // why it is not here
+  for (const auto& [kind_name, params] : setups) {
+    const OmplPlannerKind& kind = kind_of(kind_name);
+    ASSERT_EQ(kind.capabilities.determinism, Determinism::WithMaxIterations) << kind.name;
+    const auto run_all = [&, params = params]() {
       OmplPlanner planner = make_ompl(kind, params);
       std::vector<PlanResult> results;
       for (const PlanRequest& q : queries) results.push_back(planner.plan(known, q));
@@ -337,21 +334,21 @@ TEST(OmplPlannerSeeds, SameSeedSamePathAlsoInParallel) {
     int successes = 0;
     for (std::size_t q = 0; q < queries.size(); ++q) {
       EXPECT_EQ(first[q].status, a[q].status);
-      EXPECT_EQ(first[q].path, a[q].path) << ompl_planner_name(kind) << " query " << q;
-      EXPECT_EQ(first[q].path, b[q].path) << ompl_planner_name(kind) << " query " << q;
+      EXPECT_EQ(first[q].path, a[q].path) << kind.name << " query " << q;
+      EXPECT_EQ(first[q].path, b[q].path) << kind.name << " query " << q;
       EXPECT_EQ(first[q].expansions, b[q].expansions);
       if (q > 0 && first[q].path != first[q - 1].path) ++distinct_paths;
       if (first[q].status == PlanStatus::Success) ++successes;
     }
-    EXPECT_GT(distinct_paths, 0) << ompl_planner_name(kind);
-    EXPECT_GE(successes, 2) << ompl_planner_name(kind);  // not vacuous: half the queries solved
+    EXPECT_GT(distinct_paths, 0) << kind.name;
+    EXPECT_GE(successes, 2) << kind.name;  // not vacuous: half the queries solved
   }
 }
 
 TEST(OmplPlannerSeeds, OtherSeedOtherTree) {
   // Same query, different seeds: the sampled trees differ (vertex counts or paths).
   const KnownMap open = testing::random_known_map(30, 30, 0.1, 2);
-  OmplPlanner planner = make_ompl(OmplPlannerKind::RRTConnect, {{"time_limit_s", 2.0}, {"simplify", false}});
+  OmplPlanner planner = make_ompl(kind_of("RRTConnect"), {{"time_limit_s", 2.0}, {"simplify", false}});
   const Cell s = open.is_free(Cell{0, 0}) ? Cell{0, 0} : Cell{1, 1};
   const Cell g = open.is_free(Cell{29, 29}) ? Cell{29, 29} : Cell{28, 28};
   ASSERT_EQ(make_planner("astar", nullptr)->plan(open, request_for(s, g)).status, PlanStatus::Success);

@@ -1,7 +1,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <iterator>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 
 #include "core/config_error.hpp"
@@ -38,6 +40,40 @@ TEST(PlannerRegistry, UnknownParamIsAConfigError) {
     EXPECT_NE(e.where().find("/planners/0/params"), std::string::npos) << e.where();
   }
   EXPECT_THROW((void)make_planner("dijkstra", nlohmann::json::array()), ConfigError);
+}
+
+TEST(PlannerRegistry, CapabilitiesPerPlanner) {
+  // The declared capabilities (README planner table): determinism, length-optimal, anytime.
+  struct Expected {
+    const char* name;
+    Determinism determinism;
+    bool optimal;
+    bool anytime;
+  };
+  const Expected table[] = {
+      {"astar", Determinism::Always, true, false},
+      {"dijkstra", Determinism::Always, true, false},
+      {"lattice", Determinism::Always, false, false},  // energy-optimal, not length-optimal
+      {"lattice_astar", Determinism::Always, false, false},
+      {"shortest_fewest_turns", Determinism::Always, true, false},
+      {"ompl:RRTConnect", Determinism::WithMaxIterations, false, false},
+      {"ompl:KPIECE1", Determinism::WithMaxIterations, false, false},
+      {"ompl:RRTstar", Determinism::WithMaxIterations, false, true},
+      {"ompl:InformedRRTstar", Determinism::WithMaxIterations, false, true},
+      {"ompl:BITstar", Determinism::WithMaxIterations, false, true},
+      {"ompl:LazyPRMstar", Determinism::WithMaxIterations, false, true},
+      {"ompl:PRMstar", Determinism::Never, false, true},
+  };
+  EXPECT_EQ(std::size(table), planner_names().size()) << "a planner is missing from this table";
+  for (const Expected& e : table) {
+    const std::optional<PlannerCapabilities> c = planner_capabilities(e.name);
+    ASSERT_TRUE(c.has_value()) << e.name;
+    EXPECT_EQ(c->determinism, e.determinism) << e.name;
+    EXPECT_EQ(c->optimal, e.optimal) << e.name;
+    EXPECT_EQ(c->anytime, e.anytime) << e.name;
+  }
+  EXPECT_FALSE(planner_capabilities("ompl:FMT").has_value());
+  EXPECT_FALSE(planner_capabilities("a-star").has_value());
 }
 
 TEST(PlannerRegistry, MakesNamedPlanners) {

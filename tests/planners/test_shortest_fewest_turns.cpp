@@ -214,6 +214,31 @@ TEST(ShortestFewestTurns, StatusesAndStartEqualsGoal) {
   EXPECT_THROW((void)sft.plan(m.known, mei_request(m.start, m.goal, 8)), std::invalid_argument);
 }
 
+TEST(ShortestFewestTurns, BothSearchesShareOneExpansionBudget) {
+  // The distance field settles d cells, the lattice search l states: a budget of d + l - 1
+  // times out in the lattice search, d - 1 in the distance field, d + l succeeds.
+  const auto m = known_from_ascii({"S.........", "########.#", "G........."});
+  const PlanRequest req = mei_request(m.start, m.goal);
+  const PlanResult full = ShortestFewestTurnsPlanner().plan(m.known, req);
+  ASSERT_EQ(full.status, PlanStatus::Success);
+  for (const long budget : {full.expansions - 1, 5L}) {
+    ShortestFewestTurnsParams p;
+    p.max_expansions = budget;
+    const PlanResult r = ShortestFewestTurnsPlanner(p).plan(m.known, req);
+    EXPECT_EQ(r.status, PlanStatus::Timeout) << budget;
+    EXPECT_EQ(r.expansions, budget);
+    EXPECT_TRUE(r.path.empty());
+  }
+  ShortestFewestTurnsParams exact;
+  exact.max_expansions = full.expansions;
+  const PlanResult e = ShortestFewestTurnsPlanner(exact).plan(m.known, req);
+  EXPECT_EQ(e.status, PlanStatus::Success);
+  EXPECT_EQ(e.path, full.path);
+  ShortestFewestTurnsParams tiny_time;
+  tiny_time.time_limit_s = 1e-9;
+  EXPECT_EQ(ShortestFewestTurnsPlanner(tiny_time).plan(m.known, req).status, PlanStatus::Timeout);
+}
+
 TEST(ShortestFewestTurns, ParamsRejectUnknownKeys) {
   EXPECT_NO_THROW((void)configure_planner("shortest_fewest_turns", nlohmann::json(), "p"));
   EXPECT_NO_THROW((void)configure_planner("shortest_fewest_turns", nlohmann::json::object(), "p"));

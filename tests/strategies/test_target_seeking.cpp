@@ -69,6 +69,23 @@ TEST(Geodesic, SealedDiagonalDisconnects) {
   for (const double v : geodesic_distances(g, outside, 1.0)) EXPECT_EQ(v, kInf);
 }
 
+TEST(Geodesic, NearestSourceTiesGoToTheSmallerCellIndexPath) {
+  // Sources 0 and 4 of a corridor, both 2 cells from cell 2: the search settles cell 1 before
+  // cell 3 (equal distance, smaller index), and cell 2 keeps the first path that reached it.
+  const Grid<std::uint8_t> g = flags({".....", "##.##", "##.##", "#####", "...##"});
+  const std::vector<int> sources{4, 0, 4, -1, 99, g.index(Cell{0, 3})};  // a repeat, 3 ignored
+  const GeodesicField f = geodesic_field(g, sources, 0.5);
+  const std::vector<int> nearest_row0(f.nearest_source.begin(), f.nearest_source.begin() + 5);
+  EXPECT_EQ(nearest_row0, (std::vector<int>{0, 0, 0, 4, 4}));
+  EXPECT_DOUBLE_EQ(f.distance_m[2], 1.0);
+  // (2,1) is 1 + sqrt2 from both sources (diagonals past cell 2): the path from cell 1 came first.
+  EXPECT_EQ(f.nearest_source[static_cast<std::size_t>(g.index(Cell{2, 2}))], 0);
+  EXPECT_DOUBLE_EQ(f.distance_m[static_cast<std::size_t>(g.index(Cell{2, 2}))], 0.5 * (2.0 + kSqrt2));
+  // Cut off from every source: infinite and -1.
+  EXPECT_EQ(f.nearest_source[static_cast<std::size_t>(g.index(Cell{1, 4}))], -1);
+  EXPECT_EQ(f.distance_m[static_cast<std::size_t>(g.index(Cell{1, 4}))], kInf);
+}
+
 TEST(Geodesic, HausdorffIsTheMinimumOverTheSet) {
   const std::vector<double> field{0.0, 4.0, 2.5, kInf};
   const std::vector<int> set{1, 2, 3};
