@@ -5,10 +5,10 @@
 /// (office:w=400,h=400,seed=1; sensor range 10 m at 1 m per cell, clusters split at the sensor
 /// range as the simulation does). The map is explored once by closest_frontier until half of
 /// its free cells are known; each benchmark then times decide() on that frozen state with its
-/// own strategy instance and a distance oracle reset before every decision (its searches are
-/// part of the decision, as in a run). One decision is made untimed first, so allocations of
-/// the oracle and the strategy happen outside the timed loop. Strategies with random parts
-/// (gbl, random_frontier) draw a new sample each decision from their seeded stream, so the
+/// own strategy instance and a new distance oracle for every decision over the same search
+/// arrays (its searches are part of the decision, as in a run). One decision is made untimed
+/// first, so allocations of the search arrays and the strategy happen outside the timed loop. Strategies with
+/// random parts (gbl, random_frontier) draw a new sample each decision from their seeded stream, so the
 /// sequence of timed decisions is the same in every run.
 ///
 /// Forking a run (copying a Simulation, as a search over weight vectors does at every
@@ -118,10 +118,10 @@ void decision(benchmark::State& state, const HalfExplored& h, const std::string&
   SensorParams sensor;
   sensor.range_m = kRangeM;
   const std::unique_ptr<Strategy> strategy = make_strategy(name, nullptr, 1);
-  GridDistanceOracle oracle;
   const Cell dock = h.map->start;
+  DistanceScratch scratch;
   const auto decide_once = [&] {
-    oracle.reset(h.known, h.robot, dock, false, nullptr, nullptr);
+    GridDistanceOracle oracle(h.known, h.robot, dock, false, nullptr, scratch);
     const Observation obs{h.known, h.frontiers, h.clusters,   oracle, sensor, h.robot,
                           0,       h.robot,     std::nullopt, dock,   {},     1};
     return strategy->decide(obs);
