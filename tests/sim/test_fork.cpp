@@ -8,6 +8,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -109,6 +110,24 @@ TEST(Fork, AdvancingAForkLeavesTheOriginalAsItWas) {
     expect_same_result(reference, sim.run(), std::string(name) + ", the original run after the fork");
     expect_same_result(reference, fork.run(), std::string(name) + ", the fork run after the original");
   }
+}
+
+TEST(Fork, ForksRunOnSeveralThreadsAtOnceGiveTheOriginalsResult) {
+  // The forks share the run's immutable setup and, until they update it, the dock's distance
+  // field (copy-on-write): each must still finish as the original does.
+  const RunSpec spec = fork_spec("energy_aware", json::array());
+  const RunResult reference = simulate(spec);
+  Simulation sim(spec);
+  for (int i = 0; i < 4; ++i) ASSERT_TRUE(sim.step());
+  std::vector<Simulation> forks(4, sim);
+  std::vector<RunResult> results(forks.size());
+  std::vector<std::thread> threads;
+  for (std::size_t i = 0; i < forks.size(); ++i) {
+    threads.emplace_back([&, i] { results[i] = forks[i].run(); });
+  }
+  for (auto& t : threads) t.join();
+  for (const RunResult& r : results) expect_same_result(reference, r, "a fork on its own thread");
+  expect_same_result(reference, sim.run(), "the original after its forks");
 }
 
 TEST(Fork, CopyAssignmentAndMoveCarryTheWholeRun) {
