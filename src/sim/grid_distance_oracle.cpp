@@ -6,21 +6,21 @@
 namespace fsweep {
 inline namespace sim {
 
-void GridDistanceOracle::reset(const KnownMap& known, Cell robot, Cell dock, bool allow_corner_cutting,
-                               IncrementalDistanceField* dock_field, std::vector<int>* pending) {
-  known_ = &known;
-  dock_field_ = dock_field;
-  pending_ = pending;
-  robot_ = robot;
-  dock_ = dock;
-  corner_cutting_ = allow_corner_cutting;
-  robot_field_.bound_m = -1.0;
-  dock_search_.bound_m = -1.0;
-  expansions_ = 0;
+GridDistanceOracle::GridDistanceOracle(const KnownMap& known, Cell robot, Cell dock,
+                                       bool allow_corner_cutting, DockField* dock_field,
+                                       DistanceScratch& scratch)
+    : known_(known),
+      robot_(robot),
+      dock_(dock),
+      corner_cutting_(allow_corner_cutting),
+      dock_field_(dock_field),
+      scratch_(scratch) {
+  scratch_.robot_field_.bound_m = -1.0;
+  scratch_.dock_search_.bound_m = -1.0;
 }
 
-std::vector<double> GridDistanceOracle::lookup(Cached& c, Cell source, std::span<const int> cells,
-                                               double bound_m) {
+std::vector<double> GridDistanceOracle::lookup(DistanceScratch::Cached& c, Cell source,
+                                               std::span<const int> cells, double bound_m) {
   // The search stops once every asked cell is settled, so a cached field answers only the
   // same cells with a bound at least as large.
   if (c.bound_m < bound_m || !std::equal(cells.begin(), cells.end(), c.cells.begin(), c.cells.end())) {
@@ -28,7 +28,7 @@ std::vector<double> GridDistanceOracle::lookup(Cached& c, Cell source, std::span
     q.max_distance_m = bound_m;
     q.allow_corner_cutting = corner_cutting_;
     q.stop_when_all_settled = cells;
-    c.field.compute(*known_, source, q);
+    c.field.compute(known_, source, q);
     c.bound_m = bound_m;
     c.cells.assign(cells.begin(), cells.end());
     expansions_ += c.field.expansions();
@@ -43,16 +43,13 @@ std::vector<double> GridDistanceOracle::lookup(Cached& c, Cell source, std::span
 }
 
 std::vector<double> GridDistanceOracle::from_robot(std::span<const int> cells, double bound_m) {
-  return lookup(robot_field_, robot_, cells, bound_m);
+  return lookup(scratch_.robot_field_, robot_, cells, bound_m);
 }
 
 std::vector<double> GridDistanceOracle::from_dock(std::span<const int> cells, double bound_m) {
-  if (dock_field_ == nullptr) return lookup(dock_search_, dock_, cells, bound_m);
-  if (pending_ != nullptr && !pending_->empty()) {
-    dock_field_->update(*known_, *pending_);
-    expansions_ += dock_field_->expansions();
-    pending_->clear();
-  }
+  if (dock_field_ == nullptr || !dock_field_->ready())
+    return lookup(scratch_.dock_search_, dock_, cells, bound_m);
+  expansions_ += dock_field_->bring_up_to_date(known_);
   std::vector<double> out;
   out.reserve(cells.size());
   for (const int i : cells) {
@@ -64,17 +61,17 @@ std::vector<double> GridDistanceOracle::from_dock(std::span<const int> cells, do
 
 int GridDistanceOracle::nearest_from_robot(std::span<const int> cells) {
   if (cells.empty()) return -1;
-  const DistanceField* field = &robot_field_.field;
-  const bool cached =
-      robot_field_.bound_m == std::numeric_limits<double>::infinity() &&
-      std::equal(cells.begin(), cells.end(), robot_field_.cells.begin(), robot_field_.cells.end());
+  const DistanceField* field = &scratch_.robot_field_.field;
+  const bool cached = scratch_.robot_field_.bound_m == std::numeric_limits<double>::infinity() &&
+                      std::equal(cells.begin(), cells.end(), scratch_.robot_field_.cells.begin(),
+                                 scratch_.robot_field_.cells.end());
   if (!cached) {
     DistanceQuery q;
     q.allow_corner_cutting = corner_cutting_;
     q.stop_at_first_of = cells;
-    scratch_.compute(*known_, robot_, q);
-    expansions_ += scratch_.expansions();
-    field = &scratch_;
+    scratch_.nearest_.compute(known_, robot_, q);
+    expansions_ += scratch_.nearest_.expansions();
+    field = &scratch_.nearest_;
   }
   int best = -1;
   double best_d = std::numeric_limits<double>::infinity();

@@ -3,50 +3,78 @@
 /// The engine's answer to strategies' distance queries: bounded one-to-many Dijkstra over
 /// known free space from the robot and from the dock, cached for one decision.
 
+#include <vector>
+
 #include "search/distance_field.hpp"
-#include "search/incremental_distance_field.hpp"
+#include "sim/dock_field.hpp"
 #include "strategies/strategy.hpp"
 
 namespace fsweep {
 inline namespace sim {
 
-class GridDistanceOracle final : public DistanceOracle {
+/// The search arrays of GridDistanceOracle, kept from one decision to the next: allocating them
+/// for every decision (a map-sized array per field) costs more than most decisions. Scratch,
+/// not state: nothing in it outlives a decision but the allocation, so a copy starts empty (a
+/// fork allocates its own arrays on its first decision instead of copying these) and
+/// assignment keeps the target's arrays.
+class DistanceScratch {
  public:
-  GridDistanceOracle() = default;
-
-  /// Starts a new decision: the map, the robot and the dock may have changed. `dock_field`
-  /// (may be null) is the simulation's up-to-date field from the dock; without it, dock
-  /// distances are searched like robot distances.
-  /// `pending` (with dock_field) are the cells revealed since the field was last brought up to
-  /// date: they are applied on the first dock query, so runs whose strategy never asks for
-  /// dock distances never pay for the field.
-  void reset(const KnownMap& known, Cell robot, Cell dock, bool allow_corner_cutting,
-             IncrementalDistanceField* dock_field, std::vector<int>* pending);
-
-  [[nodiscard]] std::vector<double> from_robot(std::span<const int> cells, double bound_m) override;
-  [[nodiscard]] std::vector<double> from_dock(std::span<const int> cells, double bound_m) override;
-  [[nodiscard]] int nearest_from_robot(std::span<const int> cells) override;
-
-  /// Expansions of all searches since the last reset().
-  [[nodiscard]] long expansions() const { return expansions_; }
+  DistanceScratch() = default;
+  DistanceScratch(const DistanceScratch& /*other*/) {}
+  DistanceScratch& operator=(const DistanceScratch& /*other*/) { return *this; }
+  DistanceScratch(DistanceScratch&&) noexcept = default;
+  DistanceScratch& operator=(DistanceScratch&&) noexcept = default;
+  ~DistanceScratch() = default;
 
  private:
+  friend class GridDistanceOracle;
+  /// A field from the robot (or the dock) and what it was computed for.
   struct Cached {
     DistanceField field;
     double bound_m = -1.0;   // < 0: not computed for this decision
     std::vector<int> cells;  // the cells the field is exact for
   };
-  std::vector<double> lookup(Cached& c, Cell source, std::span<const int> cells, double bound_m);
-
-  const KnownMap* known_ = nullptr;
-  Cell robot_{};
-  Cell dock_{};
-  bool corner_cutting_ = false;
-  IncrementalDistanceField* dock_field_ = nullptr;
-  std::vector<int>* pending_ = nullptr;
   Cached robot_field_;
   Cached dock_search_;
-  DistanceField scratch_;
+  DistanceField nearest_;
+};
+
+/// One decision's oracle. It refers to the simulation's belief (Belief::distance_oracle()) and
+/// to search arrays, and lives for that decision only: nothing keeps it (or a pointer into a
+/// belief) between decisions, so copying a Simulation never has to fix up references. Not
+/// copyable.
+class GridDistanceOracle final : public DistanceOracle {
+ public:
+  /// An oracle over `known` from `robot` and `dock`, searching in `scratch` (whose cached
+  /// fields it invalidates). `dock_field` (may be null or not ready()) is the simulation's
+  /// field from the dock, brought up to date on the first dock query, so runs whose strategy
+  /// never asks for dock distances never pay for it; without it, dock distances are searched
+  /// like robot distances. All must outlive the oracle.
+  GridDistanceOracle(const KnownMap& known, Cell robot, Cell dock, bool allow_corner_cutting,
+                     DockField* dock_field, DistanceScratch& scratch);
+  GridDistanceOracle(const GridDistanceOracle&) = delete;
+  GridDistanceOracle& operator=(const GridDistanceOracle&) = delete;
+  GridDistanceOracle(GridDistanceOracle&&) = delete;
+  GridDistanceOracle& operator=(GridDistanceOracle&&) = delete;
+  ~GridDistanceOracle() override = default;
+
+  [[nodiscard]] std::vector<double> from_robot(std::span<const int> cells, double bound_m) override;
+  [[nodiscard]] std::vector<double> from_dock(std::span<const int> cells, double bound_m) override;
+  [[nodiscard]] int nearest_from_robot(std::span<const int> cells) override;
+
+  /// Expansions of all searches of this oracle (the dock field's updates included).
+  [[nodiscard]] long expansions() const { return expansions_; }
+
+ private:
+  std::vector<double> lookup(DistanceScratch::Cached& c, Cell source, std::span<const int> cells,
+                             double bound_m);
+
+  const KnownMap& known_;
+  Cell robot_;
+  Cell dock_;
+  bool corner_cutting_;
+  DockField* dock_field_;
+  DistanceScratch& scratch_;
   long expansions_ = 0;
 };
 

@@ -67,7 +67,7 @@ struct RunMetrics {
   /// those a scan from some reachable free cell could see, with the run's sensor and any
   /// heading. Under the sensor's ray rules (sensor.hpp) and a range of at least one diagonal
   /// cell (checked by the Simulation), O is exactly R plus the 4-neighbours of R, R = the free
-  /// cells reachable from the start (observable_cells() in simulation.hpp, checked against the
+  /// cells reachable from the start (observable_cells() in run_setup.hpp, checked against the
   /// rays in tests/sim/test_completeness.cpp): every cell a clear ray reaches is entered from
   /// a free cell beside it that is 4-connected to the robot, and a 4-neighbour is always in
   /// view. The robot only stands on cells of R, so K is inside O and completeness is
@@ -101,6 +101,9 @@ struct RunMetrics {
   /// -1 and -1 without a target.
   int target_x = -1;
   int target_y = -1;
+
+  /// Every field equal (doubles exactly; the timing fields too).
+  friend bool operator==(const RunMetrics&, const RunMetrics&) = default;
 };
 
 /// One point of the progress curve.
@@ -109,6 +112,7 @@ struct ProgressSample {
   double explored_area_m2 = 0.0;
   double coverage = 0.0;
   double energy = 0.0;
+  friend bool operator==(const ProgressSample&, const ProgressSample&) = default;
 };
 
 struct RunResult {
@@ -124,6 +128,7 @@ struct RunResult {
   KnownMap final_known;
   std::vector<int> final_frontiers;
   Cell dock;
+  friend bool operator==(const RunResult&, const RunResult&) = default;
 };
 
 }  // namespace sim

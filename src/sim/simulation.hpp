@@ -3,39 +3,35 @@
 /// The exploration loop (docs/architecture.md, "The simulation loop and metrics"): sense, update frontiers,
 /// ask the strategy, plan, move cell by cell sensing after every step, repeat until an end reason applies.
 
-#include <cstdint>
 #include <memory>
-#include <vector>
+#include <optional>
 
-#include "core/random.hpp"
 #include "planners/planner.hpp"
-#include "sim/battery.hpp"
-#include "sim/grid_distance_oracle.hpp"
-#include "sim/heuristics.hpp"
+#include "sim/belief.hpp"
+#include "sim/clone_ptr.hpp"
+#include "sim/heuristics_policy.hpp"
+#include "sim/metrics_recorder.hpp"
+#include "sim/robot_state.hpp"
 #include "sim/run_result.hpp"
+#include "sim/run_setup.hpp"
 #include "sim/run_spec.hpp"
 #include "strategies/strategy.hpp"
-#include "world/frontiers.hpp"
 #include "world/known_map.hpp"
-#include "world/segmentation.hpp"
 #include "world/sensor.hpp"
 
 namespace fsweep {
 inline namespace sim {
 
-/// Resolves `"target": "random"` in strategy params (any strategy with a "target" key, e.g.
-/// target_seeking): returns a copy with "target" set to [x, y], a cell drawn uniformly among the
-/// nonzero cells of `reachable` (free cells reachable from the start on the true map) other
-/// than `start`, in row-major order, with the stream "target" of `seed` (src/core/random.hpp).
-/// Params without that value are returned unchanged. Throws ConfigError
-/// ("strategy/params/target") when no candidate cell exists.
-[[nodiscard]] nlohmann::json resolve_random_target(const nlohmann::json& strategy_params,
-                                                   const Grid<std::uint8_t>& reachable, Cell start,
-                                                   std::uint64_t seed);
-
-/// The state of one run, as a copyable value: copying a Simulation clones its strategy and
-/// planner, so a run can be forked at a decision (docs/architecture.md, "Sweeps, keys, shards and the weight
-/// search", weight search). No globals; every random stream comes from the run seed.
+/// The state of one run, as a copyable value, so a run can be forked at a decision
+/// (docs/architecture.md, "Sweeps, keys, shards and the weight search"). It is made of value parts that refer
+/// to nothing outside themselves between calls: RobotState, Belief, MetricsRecorder, HeuristicsPolicy, the
+/// sensor (whose ray tables are shared), the strategy and the planner (copied by clone()), and the distance
+/// oracle's search arrays (scratch: a copy starts empty, as a cloned planner's). What never changes during a
+/// run (the spec, the true map, the reachable and observable cells: RunSetup) is shared between a run and its
+/// forks, and so is the dock's distance field until one of them updates it (DockField, copy-on-write). Copies
+/// are therefore `= default` and independent of each other; a fork copies about 3 bytes per map cell (the
+/// known map, the frontier flags, the dropped goals) plus the trajectory and the progress curve. No globals;
+/// every random stream comes from the run seed.
 ///
 /// Rules of the loop:
 /// - The robot senses at the start and after every cell step.
@@ -69,8 +65,10 @@ class Simulation {
  public:
   /// Builds the run; throws ConfigError for a bad spec (unknown plugin, dock in an obstacle).
   explicit Simulation(const RunSpec& spec);
-  Simulation(const Simulation& other);
-  Simulation& operator=(const Simulation& other);
+  /// A fork: an independent copy of the run's state (strategy and planner cloned, RunSetup
+  /// shared). Stepping one never changes the other.
+  Simulation(const Simulation&) = default;
+  Simulation& operator=(const Simulation&) = default;
   Simulation(Simulation&&) noexcept = default;
   Simulation& operator=(Simulation&&) noexcept = default;
   ~Simulation() = default;
@@ -80,84 +78,42 @@ class Simulation {
   /// Steps until the end and returns the result.
   [[nodiscard]] RunResult run();
 
-  [[nodiscard]] bool ended() const { return ended_; }
+  [[nodiscard]] bool ended() const { return recorder_.ended(); }
   /// The result so far (final once ended()).
   [[nodiscard]] RunResult result() const;
 
-  [[nodiscard]] const KnownMap& known() const { return known_; }
-  [[nodiscard]] Cell robot() const { return robot_; }
+  [[nodiscard]] const KnownMap& known() const { return belief_.known(); }
+  [[nodiscard]] Cell robot() const { return robot_.position; }
 
  private:
+  /// One decision's journey toward its goal (step()).
+  struct Journey;
+
+  /// Decides (step 1 of step()); empty when the run ended instead (the stop cell reached).
+  std::optional<Decision> decide();
+  /// Plans and travels toward `journey.goal` (step 2 of step()); false when the run ended.
+  bool travel(const Decision& decision, const Journey& journey);
+  /// After a journey (step 3 of step()): recharge, drop an unobservable goal, the stuck rule.
+  void arrive(const Decision& decision, const Journey& journey);
+  /// Ends the run on a Finish decision (or a ReturnToDock at the dock).
+  void finish();
   void sense();
   bool move_to(Cell next);
   void sample_progress();
-  void end(EndReason reason, std::string detail = {});
-  void finish();
-  /// Ends the run TargetReached with `detail` and sets target_path_m and target_path_ratio.
-  void reach_target(const std::string& detail);
   /// True when sim.stop_at_cell is set and that cell is known free.
   [[nodiscard]] bool stop_cell_known_free() const;
-  [[nodiscard]] double coverage() const;
-  [[nodiscard]] double completeness() const;
-  /// `seg`: restricts `clusters` to the robot's segment; returns the mask for the Observation
-  /// (null when nothing is restricted).
-  const std::vector<std::uint8_t>* segment_candidates(std::vector<FrontierCluster>& clusters);
-  /// `rr`: whether the journey to `goal` should go on (see the class comment).
-  [[nodiscard]] bool goal_still_open(Cell goal, bool goal_was_frontier) const;
 
-  RunSpec spec_;
-  std::unique_ptr<Strategy> strategy_;
-  std::unique_ptr<Planner> planner_;
+  std::shared_ptr<const RunSetup> setup_;
+  ClonePtr<Strategy> strategy_;
+  ClonePtr<Planner> planner_;
   Sensor sensor_;
-  KnownMap known_;
-  FrontierMap frontiers_;
-  Rng sensor_rng_;
-  GridDistanceOracle oracle_;
-  IncrementalDistanceField dock_field_;
-  bool dock_field_ready_ = false;
-  std::vector<int> dock_field_pending_;  // revealed since dock_field_ was last updated
-  Grid<std::uint8_t> reachable_;
-  int reachable_count_ = 0;
-  int known_reachable_ = 0;
-  std::vector<std::uint8_t> dropped_;
-  Grid<std::uint8_t> observable_;
-  int observable_count_ = 0;
-  int known_observable_ = 0;
-  Heuristics heuristics_;
-  Segmentation segmentation_;
-  int segmented_known_count_ = -1;  // known_.known_count() when segmentation_ was computed
-  std::vector<std::uint8_t> segment_mask_;
-
-  Cell robot_{};
-  int heading_ = 0;
-  Cell dock_{};
-  Cell previous_position_{};
-  std::optional<Cell> previous_goal_;
-  /// SimParams::stop_at_cell, resolved ("random" drawn); empty without one.
-  std::optional<Cell> stop_cell_;
-  Battery battery_{0.0, 1.0};
-
-  double resolution_m_ = 1.0;
-  double cluster_max_length_m_ = 0.0;
-  double progress_step_m_ = 1.0;
-  long max_steps_ = 0;
-  double next_progress_m_ = 0.0;
-  int quiet_decisions_ = 0;
-
-  RunMetrics metrics_;
-  std::vector<ProgressSample> progress_;
-  std::vector<Cell> trajectory_;
-  std::vector<int> recharge_steps_;
-  bool ended_ = false;
-  EndReason end_ = EndReason::Error;
-  std::string end_detail_;
+  RobotState robot_;
+  Belief belief_;
+  MetricsRecorder recorder_;
+  HeuristicsPolicy heuristics_;
+  /// The distance oracle's search arrays (scratch: a fork starts with empty ones).
+  DistanceScratch scratch_;
 };
-
-/// The observable cells of `map` for a robot whose reachable free cells are `reachable`
-/// (reachable_free()): those cells plus their 4-neighbours in the grid, flagged 1. Equals the
-/// cells that a scan (sensor.hpp, range >= one diagonal cell, any heading) from some cell of
-/// `reachable` can see; see RunMetrics::completeness. O(cells).
-[[nodiscard]] Grid<std::uint8_t> observable_cells(const WorldMap& map, const Grid<std::uint8_t>& reachable);
 
 /// Runs `spec` to the end: a pure function of the spec (and its seed).
 [[nodiscard]] RunResult simulate(const RunSpec& spec);

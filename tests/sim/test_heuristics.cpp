@@ -81,7 +81,8 @@ TEST(Heuristics, RestrictToSegmentKeepsTheSegmentsCellsWhenItHasAny) {
   KnownMap known(6, 1, 1.0);
   FrontierMap frontiers(known);
   const std::vector<FrontierCluster> clusters;
-  GridDistanceOracle oracle;
+  DistanceScratch scratch;
+  GridDistanceOracle oracle(known, Cell{0, 0}, Cell{0, 0}, false, nullptr, scratch);
   const SensorParams sensor;
   Observation obs{known, frontiers,  clusters,     oracle,     sensor,        Cell{0, 0},
                   0,     Cell{0, 0}, std::nullopt, Cell{0, 0}, BatteryView{}, 0};
@@ -117,9 +118,9 @@ TEST(Heuristics, CellReadingStrategiesKeepToTheSegmentMask) {
   });
   FrontierMap frontiers(known);
   const auto clusters = frontiers.clusters(known, 0.0, false);
-  GridDistanceOracle oracle;
   const Cell robot{5, 4};
-  oracle.reset(known, robot, robot, false, nullptr, nullptr);
+  DistanceScratch scratch;
+  GridDistanceOracle oracle(known, robot, robot, false, nullptr, scratch);
   SensorParams sensor;
   sensor.range_m = 20.0;
   // Two masks, the left three columns and the right three.

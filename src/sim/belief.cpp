@@ -1,0 +1,59 @@
+#include "sim/belief.hpp"
+
+#include "search/distance_field.hpp"
+
+namespace fsweep {
+inline namespace sim {
+
+Belief::Belief(const RunSetup& setup)
+    : known_(setup.map().width(), setup.map().height(), setup.resolution_m),
+      frontiers_(known_),
+      sensor_rng_(make_rng(setup.spec.seed, "sensor")),
+      dropped_(static_cast<std::size_t>(known_.size()), 0) {}
+
+int Belief::sense(Sensor& sensor, const RunSetup& setup, Cell at, int heading, Cell dock) {
+  const auto revealed = sensor.scan(setup.map(), known_, at, heading_angle(heading), sensor_rng_);
+  frontiers_.update(known_, revealed);
+  dock_field_.take_in(known_, revealed, dock, setup.allow_corner_cutting());
+  for (const int i : revealed) {
+    if (known_.is_free(i) && setup.reachable[i] != 0) ++known_reachable_;
+    if (setup.observable[i] != 0) ++known_observable_;
+  }
+  return static_cast<int>(revealed.size());
+}
+
+std::vector<FrontierCluster> Belief::clusters(const RunSetup& setup) const {
+  return frontiers_.clusters(known_, setup.cluster_max_length_m, setup.allow_corner_cutting(), dropped_);
+}
+
+GridDistanceOracle Belief::distance_oracle(const RunSetup& setup, Cell robot, Cell dock,
+                                           DistanceScratch& scratch) {
+  return GridDistanceOracle(known_, robot, dock, setup.allow_corner_cutting(), &dock_field_, scratch);
+}
+
+bool Belief::frontier_reachable_from(Cell from, const RunSetup& setup) const {
+  std::vector<int> open;
+  for (const int i : frontiers_.cells()) {
+    if (dropped_[static_cast<std::size_t>(i)] == 0) open.push_back(i);
+  }
+  if (open.empty()) return false;
+  DistanceField field;
+  DistanceQuery q;
+  q.allow_corner_cutting = setup.allow_corner_cutting();
+  q.stop_at_first_of = open;
+  field.compute(known_, from, q);
+  bool reachable = false;
+  for (const int i : open) reachable = reachable || field.reached(i);
+  return reachable;
+}
+
+double Belief::coverage(const RunSetup& setup) const {
+  return setup.reachable_count > 0 ? static_cast<double>(known_reachable_) / setup.reachable_count : 1.0;
+}
+
+double Belief::completeness(const RunSetup& setup) const {
+  return setup.observable_count > 0 ? static_cast<double>(known_observable_) / setup.observable_count : 1.0;
+}
+
+}  // namespace sim
+}  // namespace fsweep

@@ -1,0 +1,75 @@
+#pragma once
+/// @file belief.hpp
+/// The belief part of a Simulation: what the robot knows of the world and what it derived from
+/// it (frontiers, distances from the dock, dropped goals, how much of the ground truth it has
+/// seen). A value: copying it forks what the robot knows.
+
+#include <cstdint>
+#include <vector>
+
+#include "core/random.hpp"
+#include "sim/dock_field.hpp"
+#include "sim/grid_distance_oracle.hpp"
+#include "sim/run_setup.hpp"
+#include "world/frontiers.hpp"
+#include "world/known_map.hpp"
+#include "world/sensor.hpp"
+
+namespace fsweep {
+inline namespace sim {
+
+class Belief {
+ public:
+  Belief() = default;
+  /// Nothing known yet on the map of `setup`; the sensor's noise comes from the stream "sensor"
+  /// of the run seed.
+  explicit Belief(const RunSetup& setup);
+
+  /// Scans with `sensor` from `at` facing `heading` (0..7) on the true map and takes in what it
+  /// reveals: the known map, the frontiers, the dock field (started once `dock` is known free,
+  /// then brought up to date on the first dock query of a decision), the ground-truth counts.
+  /// Returns the number of cells revealed.
+  int sense(Sensor& sensor, const RunSetup& setup, Cell at, int heading, Cell dock);
+
+  [[nodiscard]] const KnownMap& known() const { return known_; }
+  [[nodiscard]] const FrontierMap& frontiers() const { return frontiers_; }
+
+  /// Frontier clusters of the goals not dropped (FrontierMap::clusters, split at
+  /// `setup.cluster_max_length_m`).
+  [[nodiscard]] std::vector<FrontierCluster> clusters(const RunSetup& setup) const;
+
+  /// The distance oracle of one decision, from `robot` and `dock`, searching in `scratch`. It
+  /// refers to this belief (the known map and the dock field): use it for that decision only,
+  /// and do not sense while it lives.
+  [[nodiscard]] GridDistanceOracle distance_oracle(const RunSetup& setup, Cell robot, Cell dock,
+                                                   DistanceScratch& scratch);
+
+  /// Never offer `goal` to a strategy again (unobservable, or no path found).
+  void drop(Cell goal) { dropped_[static_cast<std::size_t>(known_.index(goal))] = 1; }
+
+  /// True when some frontier cell not dropped is reachable from `from` over known free cells.
+  [[nodiscard]] bool frontier_reachable_from(Cell from, const RunSetup& setup) const;
+
+  /// Known reachable free cells / reachable free cells of `setup` (1 when there are none).
+  [[nodiscard]] double coverage(const RunSetup& setup) const;
+  /// Known observable cells / observable cells of `setup` (1 when there are none).
+  [[nodiscard]] double completeness(const RunSetup& setup) const;
+  /// Reachable free cells still unknown.
+  [[nodiscard]] int unknown_reachable(const RunSetup& setup) const {
+    return setup.reachable_count - known_reachable_;
+  }
+
+ private:
+  KnownMap known_;
+  FrontierMap frontiers_;
+  /// The sensor's noise stream (used only when SensorParams::miss_probability > 0).
+  Rng sensor_rng_;
+  DockField dock_field_;
+  /// One flag per cell: a goal dropped for good.
+  std::vector<std::uint8_t> dropped_;
+  int known_reachable_ = 0;
+  int known_observable_ = 0;
+};
+
+}  // namespace sim
+}  // namespace fsweep
