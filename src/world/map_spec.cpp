@@ -195,7 +195,7 @@ WorldMap generate(const json& j, const Where& where) {
     if (key == "generator" || key == "w" || key == "h" || key == "seed") continue;
     std::string text = value.is_string() ? value.get<std::string>() : value.dump();
     if (key == "start") text = std::to_string(p.start_x) + ";" + std::to_string(p.start_y);
-    map.source += "," + key + "=" + text;
+    map.source.append(",").append(key).append("=").append(text);
   }
   return map;
 }
