@@ -8,7 +8,9 @@
 #include "cli/commands.hpp"
 #include "core/config_error.hpp"
 
-int main(int argc, char** argv) {
+// A function-try-block: whatever escapes the setup or a command ends in the message and exit code
+// 2 too, not in std::terminate.
+int main(int argc, char** argv) try {
   CLI::App app{"frontier-sweep: experiments on 2D frontier exploration strategies and planners"};
   app.require_subcommand(1);
   std::map<std::string, fsweep::cli::Command> commands;
@@ -41,5 +43,8 @@ int main(int argc, char** argv) {
     std::cerr << "fsweep: error: " << e.what() << '\n';
     return 2;
   }
+  return 2;
+} catch (const std::exception& e) {
+  std::cerr << "fsweep: error: " << e.what() << '\n';
   return 2;
 }

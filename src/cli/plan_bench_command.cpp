@@ -143,6 +143,7 @@ int run_plan_bench_command(const PlanBenchOptions& o) {
   settings.seed = o.seed;
   const auto plans = run_plan_bench(known, queries, planners, settings);
   std::vector<BenchSummary> summaries;
+  summaries.reserve(plans.size());
   for (const auto& row : plans) summaries.push_back(summarize_plan_bench(row));
 
   // 3. Table and files.

@@ -23,6 +23,7 @@ void require_known_keys(const nlohmann::json& object, std::initializer_list<std:
   for (const auto& [key, value] : object.items()) {
     if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
       std::vector<std::string> names(allowed.begin(), allowed.end());
+      // NOLINTNEXTLINE(performance-inefficient-string-concatenation): runs once, then throws
       throw ConfigError(where + "/" + key, "unknown key '" + key + "'; allowed: " + join_names(names));
     }
   }

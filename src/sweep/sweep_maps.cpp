@@ -94,7 +94,7 @@ std::string spec_text(const json& obj) {
     } else {
       text = v.dump();
     }
-    options += (options.empty() ? "" : ",") + k + "=" + text;
+    options.append(options.empty() ? "" : ",").append(k).append("=").append(text);
   }
   return options.empty() ? head : head + ":" + options;
 }
@@ -194,6 +194,7 @@ std::vector<SweepMap> parse_maps(const json& maps, std::vector<std::string>& pro
       } catch (const ConfigError& e) {
         const std::string what = e.what();
         const std::string seed_note = has_seeds ? " (seed " + std::to_string(seeds[k]) + ")" : "";
+        // NOLINTNEXTLINE(performance-inefficient-string-concatenation): once per failing map, then break
         problems.push_back(what.rfind(where, 0) == 0 ? what + seed_note : where + ": " + what + seed_note);
         break;
       }

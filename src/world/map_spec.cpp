@@ -156,7 +156,7 @@ WorldMap generate(const json& j, const Where& where) {
       if (!start) continue;  // null: the default start
       text = std::to_string(start->x) + ";" + std::to_string(start->y);
     }
-    map.source += "," + key + "=" + text;
+    map.source.append(",").append(key).append("=").append(text);
   }
   return map;
 }
