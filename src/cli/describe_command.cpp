@@ -81,6 +81,7 @@ int describe(const DescribeOptions& o) {
       return 0;
     }
     std::vector<std::vector<std::string>> rows;
+    rows.reserve(all.size());
     for (const Kind& k : all) rows.push_back({k.name, k.what});
     print_table(rows);
     std::cout
@@ -90,6 +91,7 @@ int describe(const DescribeOptions& o) {
   const auto kind = std::find_if(all.begin(), all.end(), [&](const Kind& k) { return o.kind == k.name; });
   if (kind == all.end()) {
     std::vector<std::string> names;
+    names.reserve(all.size());
     for (const Kind& k : all) names.emplace_back(k.name);
     throw ConfigError("describe", "unknown kind '" + o.kind + "'; known: " + join_names(names));
   }

@@ -33,6 +33,7 @@ enum class ParamType {
 [[nodiscard]] std::string_view to_string(ParamType type);
 
 /// One declared parameter.
+// NOLINTNEXTLINE(bugprone-exception-escape): false positive inside nlohmann::json's noexcept move
 struct ParamSpec {
   std::string name;
   ParamType type = ParamType::Number;

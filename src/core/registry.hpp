@@ -46,6 +46,7 @@ class Registry final : public RegistryView {
   /// A plugin resolved once from its JSON: its name, its resolved parameters (every declared
   /// parameter, defaults filled in: what run keys and output columns record) and a maker
   /// bound to the typed params.
+  // NOLINTNEXTLINE(bugprone-exception-escape): false positive inside nlohmann::json's noexcept move
   struct Configured {
     std::string name;
     nlohmann::json params;
@@ -58,12 +59,12 @@ class Registry final : public RegistryView {
   /// first use: declarations may be costly to build, e.g. OMPL's are read from OMPL) and
   /// `make`, which builds the product from the typed params. A repeated name is a logic error.
   template <class P>
-  void add(std::string name, std::string doc, std::function<ParamDecl<P>()> declare,
+  void add(std::string name, const std::string& doc, std::function<ParamDecl<P>()> declare,
            std::function<Product(const P&, Args...)> make) {
     auto lazy = std::make_shared<Lazy<P>>();
     lazy->declare = std::move(declare);
     Entry entry;
-    entry.doc = std::move(doc);
+    entry.doc = doc;
     entry.specs = [lazy]() -> const ParamSpecs& { return lazy->get().specs(); };
     entry.configure = [lazy, make = std::move(make), name](const nlohmann::json& given,
                                                            const std::string& where) {
@@ -82,10 +83,9 @@ class Registry final : public RegistryView {
 
   /// The same with a declaration that is cheap to build.
   template <class P>
-  void add(std::string name, std::string doc, ParamDecl<P> decl,
+  void add(std::string name, const std::string& doc, ParamDecl<P> decl,
            std::function<Product(const P&, Args...)> make) {
-    add<P>(std::move(name), std::move(doc), std::function<ParamDecl<P>()>([decl] { return decl; }),
-           std::move(make));
+    add<P>(std::move(name), doc, std::function<ParamDecl<P>()>([decl] { return decl; }), std::move(make));
   }
 
   /// Resolves plugin `name` with the JSON params `given` (an object, or null for defaults).

@@ -222,6 +222,7 @@ ParamDecl<OmplPlannerParams> ompl_planner_params(const OmplPlannerKind& kind) {
       } catch (const std::exception& e) {
         return {"OMPL rejects '" + text + "': " + e.what()};
       }
+      // NOLINTNEXTLINE(performance-inefficient-string-concatenation): once, for a refused value
       return {"OMPL rejects '" + text + "' for parameter '" + name + "'"};
     };
     d.custom(

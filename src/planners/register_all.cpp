@@ -89,8 +89,8 @@ PlannerCatalog make_catalog() {
 }
 
 const PlannerCatalog& catalog() {
-  static const PlannerCatalog c = make_catalog();
-  return c;
+  static const PlannerCatalog kCatalog = make_catalog();
+  return kCatalog;
 }
 
 }  // namespace

@@ -111,6 +111,7 @@ void compare_exactly(const Sides& s, const std::vector<std::size_t>& base_rows, 
         }
       } else if (worst_rel < 0.0) {
         worst_rel = 0.0;
+        // NOLINTNEXTLINE(performance-inefficient-string-concatenation): at most once per configuration
         c.worst = m + " '" + bv + "' -> '" + nv + "' (run " + b[s.base.run_key] + ")";
       }
       if (c.changed_runs < s.options.listed_runs_per_config) checks.push_back(k);
@@ -210,6 +211,7 @@ void compare_quantiles(const Sides& s, const std::vector<std::size_t>& base_rows
   // The same test on the outcomes: 1 for a successful run, 0 otherwise (NEW worse = smaller).
   const auto outcomes = [&](const RunsFile& t, const std::vector<std::size_t>& rows) {
     std::vector<double> v;
+    v.reserve(rows.size());
     const auto col = static_cast<std::size_t>(t.column(kEndReasonColumn));
     for (const std::size_t r : rows) v.push_back(successful_end(t.rows[r][col]) ? 1.0 : 0.0);
     return v;
@@ -258,7 +260,8 @@ bool reproducible_config(const RunsFile& t, const std::vector<std::size_t>& rows
 void warn_one_sided(CompareReport& r, const std::vector<std::string>& a, const std::vector<std::string>& b,
                     const std::string& what) {
   for (const auto& n : a) {
-    if (std::find(b.begin(), b.end(), n) == b.end()) r.warnings.push_back(what + " '" + n + "'");
+    if (std::find(b.begin(), b.end(), n) == b.end())
+      r.warnings.push_back(std::string(what).append(" '").append(n) + "'");
   }
 }
 
@@ -377,6 +380,7 @@ CompareReport compare_dirs(const std::string& new_dir, const std::string& baseli
     if (bg.rows.count(k) == 0) keys.push_back(k);
   }
   std::vector<std::vector<std::string>> values;
+  values.reserve(keys.size());
   for (const auto& k : keys) values.push_back(split_config_key(k));
   const auto positions = label_positions(key_names, values);
   for (const std::size_t p : positions) r.label_columns.push_back(key_names[p]);

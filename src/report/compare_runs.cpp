@@ -47,6 +47,7 @@ Grouping group(const RunsFile& t, const std::vector<int>& columns) {
 
 std::vector<int> columns_of(const RunsFile& t, const std::vector<std::string>& names) {
   std::vector<int> out;
+  out.reserve(names.size());
   for (const auto& n : names) out.push_back(t.column(n));
   return out;
 }
@@ -114,6 +115,7 @@ std::map<std::string, std::vector<std::optional<BoxStats>>> read_boxes(
   if (!std::filesystem::exists(path)) return out;
   CsvReader in(path);
   std::vector<int> key_cols;
+  key_cols.reserve(key_names.size());
   for (const auto& n : key_names) key_cols.push_back(in.column(n));
   while (in.next()) {
     const auto& f = in.fields();

@@ -13,7 +13,7 @@ namespace {
 
 void flatten(const nlohmann::json& j, const std::string& prefix, Columns& out) {
   if (j.is_object()) {
-    for (const auto& [k, v] : j.items()) flatten(v, prefix + "." + k, out);
+    for (const auto& [k, v] : j.items()) flatten(v, std::string(prefix).append(".").append(k), out);
   } else if (j.is_number()) {
     out.emplace_back(prefix, format_number(j.get<double>()));
   } else if (j.is_string()) {

@@ -47,7 +47,8 @@ class Canvas {
  private:
   void put(int x, int y, Rgb rgb) {
     if (x < 0 || y < 0 || x >= w_ || y >= h_) return;
-    auto* p = &px_[static_cast<std::size_t>((y * w_ + x) * 3)];
+    auto* p =
+        &px_[(static_cast<std::size_t>(y) * static_cast<std::size_t>(w_) + static_cast<std::size_t>(x)) * 3];
     p[0] = rgb[0];
     p[1] = rgb[1];
     p[2] = rgb[2];

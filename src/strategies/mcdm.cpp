@@ -67,10 +67,12 @@ std::vector<std::string> measure_problems(const nlohmann::json& m, std::array<do
     // Names the user's value that is part of the pair (the larger set unless it is the fixed
     // full set).
     const std::string key = v.superset == 7U ? a : b;
+    // NOLINTBEGIN(performance-inefficient-string-concatenation): one message per refused value
     problems.push_back(key + ": mu(" + a + ") = " + nlohmann::json(measure[v.subset]).dump() + " > mu(" + b +
                        ") = " + nlohmann::json(measure[v.superset]).dump() +
                        "; a fuzzy measure must not decrease when a criterion is added (" + a +
                        " is a subset of " + b + ")");
+    // NOLINTEND(performance-inefficient-string-concatenation)
   }
   if (problems.empty() && out != nullptr) *out = measure;
   return problems;

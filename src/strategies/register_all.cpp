@@ -68,8 +68,8 @@ StrategyRegistry make_registry() {
 }  // namespace
 
 const StrategyRegistry& strategy_registry() {
-  static const StrategyRegistry registry = make_registry();
-  return registry;
+  static const StrategyRegistry kRegistry = make_registry();
+  return kRegistry;
 }
 
 StrategyConfig configure_strategy(const std::string& name, const nlohmann::json& params,

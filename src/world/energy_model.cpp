@@ -145,8 +145,8 @@ EnergyRegistry make_registry() {
 }  // namespace
 
 const EnergyRegistry& energy_registry() {
-  static const EnergyRegistry registry = make_registry();
-  return registry;
+  static const EnergyRegistry kRegistry = make_registry();
+  return kRegistry;
 }
 
 EnergyModel energy_preset(const std::string& name) {

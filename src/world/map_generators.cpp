@@ -157,7 +157,7 @@ struct KindEntry {
 };
 
 const std::vector<KindEntry>& kind_table() {
-  static const std::vector<KindEntry> kinds{
+  static const std::vector<KindEntry> kKinds{
       {"free", "no obstacles, an optional occupied frame", {"border", "wall"}, &make_free},
       {"random",
        "every cell occupied with probability p (no connectivity guarantee)",
@@ -180,7 +180,7 @@ const std::vector<KindEntry>& kind_table() {
        {"squares", "lane"},
        &generator_detail::make_oldtown},
   };
-  return kinds;
+  return kKinds;
 }
 
 const KindEntry& kind_entry(const std::string& kind, const std::string& where) {
@@ -307,8 +307,8 @@ std::optional<Cell> parse_cell_pair(const nlohmann::json& v) {
 }
 
 const GeneratorRegistry& generator_registry() {
-  static const GeneratorRegistry registry = make_registry();
-  return registry;
+  static const GeneratorRegistry kRegistry = make_registry();
+  return kRegistry;
 }
 
 std::vector<std::string> generator_kinds() {
