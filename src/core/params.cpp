@@ -41,7 +41,10 @@ std::string value_text(const nlohmann::json& v) {
 std::string param_path(const std::string& where, const std::string& key) {
   if (where.empty()) return key;
   const bool named = where.rfind("--", 0) == 0 || where.find_first_of(" '") != std::string::npos;
-  return named ? where + ": " + key : where + "/" + key;
+  if (!named) return where + "/" + key;
+  // A key inside a named parameter ("--robot: sensor") joins it with a dot, as the option spells it.
+  return where.rfind("--", 0) == 0 && where.find(": ") != std::string::npos ? where + "." + key
+                                                                            : where + ": " + key;
 }
 
 std::string_view to_string(ParamType type) {
@@ -58,6 +61,8 @@ std::string_view to_string(ParamType type) {
       return "choice";
     case ParamType::Custom:
       return "custom";
+    case ParamType::Object:
+      return "object";
   }
   return "unknown";
 }
@@ -90,6 +95,15 @@ std::string ParamSpec::allowed() const {
     case ParamType::Custom:
       text = allowed_text;
       break;
+    case ParamType::Object: {
+      std::vector<std::string> keys;
+      if (fields) {
+        keys.reserve(fields->size());
+        for (const auto& f : *fields) keys.push_back(f.name);
+      }
+      text = "an object with keys " + join_names(keys);
+      break;
+    }
   }
   if (nullable) text += ", or null";
   return text;
@@ -135,6 +149,9 @@ std::optional<std::string> ParamSpec::check(const nlohmann::json& value) const {
       }
       break;
     }
+    case ParamType::Object:
+      if (!value.is_object()) return bad();
+      break;
   }
   return std::nullopt;
 }
@@ -158,7 +175,11 @@ std::vector<std::string> param_problems(const ParamSpecs& specs, const nlohmann:
                          "'; allowed: " + (known.empty() ? std::string("none") : join_names(known)));
       continue;
     }
-    if (const auto problem = spec->check(value)) problems.push_back(param_path(where, key) + ": " + *problem);
+    if (const auto problem = spec->check(value)) {
+      problems.push_back(param_path(where, key) + ": " + *problem);
+    } else if (spec->nested_problems && !value.is_null()) {
+      for (auto& p : spec->nested_problems(value, param_path(where, key))) problems.push_back(std::move(p));
+    }
   }
   return problems;
 }

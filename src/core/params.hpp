@@ -9,6 +9,7 @@
 
 #include <functional>
 #include <limits>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -28,9 +29,14 @@ enum class ParamType {
   Text,     ///< a string
   Choice,   ///< one of ParamSpec::choices (strings)
   Custom,   ///< checked by ParamSpec::custom_check; ParamSpec::allowed_text says what is allowed
+  Object,   ///< an object of parameters with their own declarations (ParamSpec::fields)
 };
 
 [[nodiscard]] std::string_view to_string(ParamType type);
+
+struct ParamSpec;
+/// The declared parameters of one plugin, in declaration order.
+using ParamSpecs = std::vector<ParamSpec>;
 
 /// One declared parameter.
 // NOLINTNEXTLINE(bugprone-exception-escape): false positive inside nlohmann::json's noexcept move
@@ -56,6 +62,12 @@ struct ParamSpec {
   std::string allowed_text;
   /// Custom: the problems of a value (messages without the path); empty when it is allowed.
   std::function<std::vector<std::string>(const nlohmann::json&)> custom_check;
+  /// Object: the declarations of its keys.
+  std::shared_ptr<const ParamSpecs> fields;
+  /// Problems inside a value check() allowed (an object's keys, a nested plugin's params),
+  /// each "<path>: <message>" with its full path; `path` is this parameter's own.
+  std::function<std::vector<std::string>(const nlohmann::json& value, const std::string& path)>
+      nested_problems;
 
   /// What is allowed, in words: "a number in [0, 250]", "one of \"path\", \"octile\"", ...
   [[nodiscard]] std::string allowed() const;
@@ -63,11 +75,9 @@ struct ParamSpec {
   [[nodiscard]] std::optional<std::string> check(const nlohmann::json& value) const;
 };
 
-/// The declared parameters of one plugin, in declaration order.
-using ParamSpecs = std::vector<ParamSpec>;
-
 /// Where a parameter's problem is reported: "`where`: `key`" when `where` names a command-line
-/// option ("--param") or a map spec string (holds a space or quote), else the path `where`/`key`.
+/// option ("--param") or a map spec string (holds a space or quote), "`where`.`key`" inside a
+/// named option's parameter ("--robot: sensor.range_m"), else the path `where`/`key`.
 [[nodiscard]] std::string param_path(const std::string& where, const std::string& key);
 
 /// The problems of a params object against `specs`, each "<param_path>: <message>" (unknown
@@ -108,6 +118,12 @@ class ParamDecl {
       spec_.max = hi;
       return *this;
     }
+    /// Exclusive upper bound: values < hi.
+    Builder& below(double hi) {
+      spec_.max = hi;
+      spec_.max_open = true;
+      return *this;
+    }
     Builder& unit(std::string u) {
       spec_.unit = std::move(u);
       return *this;
@@ -133,6 +149,40 @@ class ParamDecl {
     return add(ParamType::Text, std::move(name), std::move(doc), member);
   }
   /// A string member restricted to `choices`.
+  /// A number where JSON null (and +infinity in P) means "none": a limit that may be absent.
+  Builder number_or_none(std::string name, double P::*member, std::string doc) {
+    ParamSpec spec;
+    spec.name = std::move(name);
+    spec.type = ParamType::Number;
+    spec.nullable = true;
+    spec.doc = std::move(doc);
+    return custom(
+        std::move(spec),
+        [member](P& p, const nlohmann::json& v) {
+          p.*member = v.is_null() ? std::numeric_limits<double>::infinity() : v.get<double>();
+        },
+        [member](const P& p) {
+          const double x = p.*member;
+          return x == std::numeric_limits<double>::infinity() ? nlohmann::json() : nlohmann::json(x);
+        });
+  }
+  /// A member that is itself a params struct Q, read by `decl`; problems inside it are
+  /// reported at their own paths (`where`/name/key).
+  template <class Q>
+  Builder object(std::string name, Q P::*member, ParamDecl<Q> decl, std::string doc) {
+    auto shared = std::make_shared<const ParamDecl<Q>>(std::move(decl));
+    ParamSpec spec;
+    spec.name = std::move(name);
+    spec.type = ParamType::Object;
+    spec.doc = std::move(doc);
+    spec.fields = std::shared_ptr<const ParamSpecs>(shared, &shared->specs());
+    spec.nested_problems = [shared](const nlohmann::json& v, const std::string& path) {
+      return param_problems(shared->specs(), v, path);
+    };
+    return custom(
+        std::move(spec), [member, shared](P& p, const nlohmann::json& v) { p.*member = shared->read(v, {}); },
+        [member, shared](const P& p) { return shared->write(p.*member); });
+  }
   Builder choice(std::string name, std::string P::*member, std::vector<std::string> choices,
                  std::string doc) {
     Builder b = add(ParamType::Choice, std::move(name), std::move(doc), member);

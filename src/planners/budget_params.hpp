@@ -5,9 +5,6 @@
 /// may settle, an integer >= 0; 0, the default: none). The OMPL planners have their own
 /// `time_limit_s` and `max_iterations` (ompl_planner.hpp).
 
-#include <cmath>
-#include <limits>
-#include <nlohmann/json.hpp>
 #include <string>
 
 #include "core/params.hpp"
@@ -20,22 +17,10 @@ inline namespace planners {
 /// `expansions_doc` (e.g. "cells one query may settle").
 template <class P>
 void declare_budget(ParamDecl<P>& d, const std::string& expansions_doc) {
-  ParamSpec time_limit;
-  time_limit.name = "time_limit_s";
-  time_limit.type = ParamType::Number;
-  time_limit.min = 0.0;
-  time_limit.min_open = true;
-  time_limit.nullable = true;
-  time_limit.unit = "s";
-  time_limit.doc = "wall time of one query's search; null: none (a query that runs out ends as Timeout)";
-  d.custom(
-      std::move(time_limit),
-      [](P& p, const nlohmann::json& v) {
-        p.time_limit_s = v.is_null() ? std::numeric_limits<double>::infinity() : v.get<double>();
-      },
-      [](const P& p) {
-        return std::isinf(p.time_limit_s) ? nlohmann::json() : nlohmann::json(p.time_limit_s);
-      });
+  d.number_or_none("time_limit_s", &P::time_limit_s,
+                   "wall time of one query's search; null: none (a query that runs out ends as Timeout)")
+      .above(0)
+      .unit("s");
   d.integer("max_expansions", &P::max_expansions,
             expansions_doc + "; 0: none (a query that runs out ends as Timeout)")
       .at_least(0);

@@ -9,116 +9,135 @@ namespace fsweep {
 inline namespace sim {
 namespace {
 
-double number_at(const nlohmann::json& j, const char* key, const std::string& where) {
-  const auto& v = j.at(key);
-  if (!v.is_number()) throw ConfigError(where + "/" + key, "expected a number, got " + v.dump());
-  return v.get<double>();
+/// [x, y] with two integers in [lo, INT_MAX], or nothing.
+std::optional<Cell> cell_of(const nlohmann::json& v, long long lo) {
+  const auto coordinate = [lo](const nlohmann::json& c) {
+    return c.is_number_integer() && c.get<long long>() >= lo &&
+           c.get<long long>() <= std::numeric_limits<int>::max();
+  };
+  if (!v.is_array() || v.size() != 2 || !coordinate(v[0]) || !coordinate(v[1])) return std::nullopt;
+  return Cell{v[0].get<int>(), v[1].get<int>()};
+}
+
+nlohmann::json cell_json(const std::optional<Cell>& c) {
+  return c ? nlohmann::json{c->x, c->y} : nlohmann::json();
+}
+
+ParamDecl<RobotParams> make_robot_params() {
+  using P = RobotParams;
+  ParamDecl<P> d;
+  d.object("sensor", &P::sensor, sensor_params(), "the range sensor");
+  ParamSpec energy;
+  energy.name = "energy";
+  energy.type = ParamType::Custom;
+  energy.doc = "the energy model: a preset (fsweep describe energy) with optional overrides";
+  energy.allowed_text = "a preset name (" + join_names(energy_registry().names()) +
+                        ") or an object {\"preset\": name, overrides...}";
+  energy.nested_problems = [](const nlohmann::json& v, const std::string& path) -> std::vector<std::string> {
+    try {
+      (void)energy_model_from_json(v, path);
+    } catch (const ConfigError& e) {
+      return {e.what()};
+    }
+    return {};
+  };
+  d.custom(
+      std::move(energy),
+      [](P& p, const nlohmann::json& v) { p.energy = energy_model_from_json(v, "robot/energy"); },
+      [](const P& p) { return nlohmann::json(p.energy); });
+  d.number_or_none("battery", &P::battery_capacity,
+                   "battery capacity in the energy model's unit (with `distance`: metres per charge); null: "
+                   "unlimited, never recharges")
+      .above(0);
+  ParamSpec dock;
+  dock.name = "dock";
+  dock.type = ParamType::Custom;
+  dock.nullable = true;
+  dock.unit = "cells";
+  dock.doc = "the dock cell, where the battery is recharged; null: the map's start cell";
+  dock.allowed_text = "[x, y], two integers";
+  dock.custom_check = [](const nlohmann::json& v) -> std::vector<std::string> {
+    if (cell_of(v, std::numeric_limits<int>::min())) return {};
+    return {"value " + v.dump() + " not allowed; allowed: [x, y], two integers"};
+  };
+  d.custom(
+      std::move(dock),
+      [](P& p, const nlohmann::json& v) {
+        p.dock = v.is_null() ? std::nullopt : cell_of(v, std::numeric_limits<int>::min());
+      },
+      [](const P& p) { return cell_json(p.dock); });
+  d.integer("start_heading", &P::start_heading,
+            "heading at the start: 0 east, then clockwise on screen in 45 degree steps")
+      .range(0, 7);
+  d.boolean("allow_corner_cutting", &P::allow_corner_cutting,
+            "diagonal moves past an occupied orthogonal neighbour (off: the MovingAI rule)");
+  return d;
+}
+
+ParamDecl<SimParams> make_sim_params() {
+  using P = SimParams;
+  ParamDecl<P> d;
+  d.number("cluster_max_length_m", &P::cluster_max_length_m,
+           "frontier clusters are split into pieces of at most this length; <= 0: the sensor range "
+           "(Rappaport 2016 section 3.3)")
+      .unit("m");
+  d.integer("max_steps", &P::max_steps, "cap on cell steps; 0: 100 x the reachable free cells + 1000")
+      .at_least(0);
+  d.integer("stuck_decisions", &P::stuck_decisions,
+            "end as `stuck` after this many consecutive decisions that revealed no cell")
+      .at_least(1);
+  d.number("progress_step_m", &P::progress_step_m,
+           "progress curve sampling interval in metres of travel; <= 0: 10 x the resolution")
+      .unit("m");
+  ParamSpec stop;
+  stop.name = "stop_at_cell";
+  stop.type = ParamType::Custom;
+  stop.nullable = true;
+  stop.unit = "cells";
+  stop.doc =
+      "a cell that ends the run `target_reached` once reached (any strategy becomes a navigation baseline); "
+      "\"random\": drawn from the run seed as target_seeking's \"target\": \"random\"; null: none";
+  stop.allowed_text = "[x, y], two integers >= 0, or \"random\"";
+  stop.custom_check = [](const nlohmann::json& v) -> std::vector<std::string> {
+    if (v == nlohmann::json("random") || cell_of(v, 0)) return {};
+    return {"value " + v.dump() + " is not a cell; allowed: [x, y], two integers >= 0, or \"random\""};
+  };
+  d.custom(
+      std::move(stop),
+      [](P& p, const nlohmann::json& v) {
+        p.stop_at_random = v == nlohmann::json("random");
+        p.stop_at_cell = p.stop_at_random || v.is_null() ? std::nullopt : cell_of(v, 0);
+      },
+      [](const P& p) { return p.stop_at_random ? nlohmann::json("random") : cell_json(p.stop_at_cell); });
+  return d;
 }
 
 }  // namespace
 
-RobotParams robot_params_from_json(const nlohmann::json& j, const std::string& where) {
-  RobotParams r;
-  if (j.is_null()) return r;
-  require_known_keys(j, {"sensor", "energy", "battery", "dock", "start_heading", "allow_corner_cutting"},
-                     where);
-  if (j.contains("sensor")) r.sensor = sensor_params_from_json(j.at("sensor"), where + "/sensor");
-  if (j.contains("energy")) r.energy = energy_model_from_json(j.at("energy"), where + "/energy");
-  if (j.contains("battery") && !j.at("battery").is_null()) {
-    const double b = number_at(j, "battery", where);
-    if (!(b > 0.0)) {
-      throw ConfigError(where + "/battery",
-                        "value " + j.at("battery").dump() +
-                            " out of range; allowed: > 0 (energy units), or null for unlimited");
-    }
-    r.battery_capacity = b;
-  }
-  if (j.contains("dock")) {
-    const auto& d = j.at("dock");
-    if (!d.is_array() || d.size() != 2 || !d[0].is_number_integer() || !d[1].is_number_integer()) {
-      throw ConfigError(where + "/dock", "expected [x, y] in cells, got " + d.dump());
-    }
-    r.dock = Cell{d[0].get<int>(), d[1].get<int>()};
-  }
-  if (j.contains("start_heading")) {
-    const auto& h = j.at("start_heading");
-    if (!h.is_number_integer() || h.get<int>() < 0 || h.get<int>() > 7) {
-      throw ConfigError(where + "/start_heading",
-                        "value " + h.dump() + " out of range; allowed: an integer 0..7");
-    }
-    r.start_heading = h.get<int>();
-  }
-  if (j.contains("allow_corner_cutting")) {
-    const auto& c = j.at("allow_corner_cutting");
-    if (!c.is_boolean())
-      throw ConfigError(where + "/allow_corner_cutting", "expected true or false, got " + c.dump());
-    r.allow_corner_cutting = c.get<bool>();
-  }
-  return r;
+const ParamDecl<RobotParams>& robot_params() {
+  static const ParamDecl<RobotParams> kDecl = make_robot_params();
+  return kDecl;
 }
 
-void to_json(nlohmann::json& j, const RobotParams& r) {
-  j = nlohmann::json{{"sensor", r.sensor},
-                     {"energy", r.energy},
-                     {"battery", std::isinf(r.battery_capacity) ? nlohmann::json(nullptr)
-                                                                : nlohmann::json(r.battery_capacity)},
-                     {"dock", r.dock ? nlohmann::json{r.dock->x, r.dock->y} : nlohmann::json(nullptr)},
-                     {"start_heading", r.start_heading},
-                     {"allow_corner_cutting", r.allow_corner_cutting}};
+RobotParams robot_params_from_json(const nlohmann::json& j, const std::string& where) {
+  return robot_params().read(j, where);
+}
+
+void to_json(nlohmann::json& j, const RobotParams& r) { j = robot_params().write(r); }
+
+const ParamDecl<SimParams>& sim_params() {
+  static const ParamDecl<SimParams> kDecl = make_sim_params();
+  return kDecl;
 }
 
 SimParams sim_params_from_json(const nlohmann::json& j, const std::string& where) {
-  SimParams s;
-  if (j.is_null()) return s;
-  require_known_keys(
-      j, {"cluster_max_length_m", "max_steps", "stuck_decisions", "progress_step_m", "stop_at_cell"}, where);
-  if (j.contains("stop_at_cell")) {
-    const auto& v = j.at("stop_at_cell");
-    if (v.is_string() && v.get<std::string>() == "random") {
-      s.stop_at_random = true;
-    } else if (v.is_array() && v.size() == 2 && v[0].is_number_integer() && v[1].is_number_integer() &&
-               v[0].get<long long>() >= 0 && v[1].get<long long>() >= 0 &&
-               v[0].get<long long>() <= std::numeric_limits<int>::max() &&
-               v[1].get<long long>() <= std::numeric_limits<int>::max()) {
-      s.stop_at_cell = Cell{v[0].get<int>(), v[1].get<int>()};
-    } else {
-      throw ConfigError(
-          where + "/stop_at_cell",
-          "value " + v.dump() + " is not a cell; allowed: [x, y], two integers >= 0, or \"random\"");
-    }
-  }
-  if (j.contains("cluster_max_length_m"))
-    s.cluster_max_length_m = number_at(j, "cluster_max_length_m", where);
-  if (j.contains("progress_step_m")) s.progress_step_m = number_at(j, "progress_step_m", where);
-  if (j.contains("max_steps")) {
-    const auto& v = j.at("max_steps");
-    if (!v.is_number_integer() || v.get<long>() < 0) {
-      throw ConfigError(where + "/max_steps",
-                        "value " + v.dump() + " out of range; allowed: an integer >= 0 (0 = auto)");
-    }
-    s.max_steps = v.get<long>();
-  }
-  if (j.contains("stuck_decisions")) {
-    const auto& v = j.at("stuck_decisions");
-    if (!v.is_number_integer() || v.get<int>() < 1) {
-      throw ConfigError(where + "/stuck_decisions",
-                        "value " + v.dump() + " out of range; allowed: an integer >= 1");
-    }
-    s.stuck_decisions = v.get<int>();
-  }
-  return s;
+  return sim_params().read(j, where);
 }
 
 void to_json(nlohmann::json& j, const SimParams& s) {
-  j = nlohmann::json{{"cluster_max_length_m", s.cluster_max_length_m},
-                     {"max_steps", s.max_steps},
-                     {"stuck_decisions", s.stuck_decisions},
-                     {"progress_step_m", s.progress_step_m}};
-  if (s.stop_at_random) {
-    j["stop_at_cell"] = "random";
-  } else if (s.stop_at_cell) {
-    j["stop_at_cell"] = nlohmann::json{s.stop_at_cell->x, s.stop_at_cell->y};
-  }
+  j = sim_params().write(s);
+  // Absent unless given, so that run keys of configurations without a stop cell stay as they were.
+  if (j["stop_at_cell"].is_null()) j.erase("stop_at_cell");
 }
 
 nlohmann::json recorded_strategy_params(const RunSpec& spec) {

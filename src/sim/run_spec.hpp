@@ -34,8 +34,11 @@ struct RobotParams {
   bool allow_corner_cutting = false;
 };
 
-/// Reads {"sensor": {...}, "energy": "mei2006" | {...}, "battery": number | null,
-/// "dock": [x, y], "start_heading": 0..7, "allow_corner_cutting": bool}.
+/// The declared parameters (core/params.hpp) of {"sensor": {...}, "energy": "mei2006" | {...},
+/// "battery": number | null, "dock": [x, y] | null, "start_heading": 0..7,
+/// "allow_corner_cutting": bool}; `fsweep describe robot` prints them.
+[[nodiscard]] const ParamDecl<RobotParams>& robot_params();
+/// robot_params().read(j, where): every problem at its JSON path, as one ConfigError.
 [[nodiscard]] RobotParams robot_params_from_json(const nlohmann::json& j, const std::string& where);
 void to_json(nlohmann::json& j, const RobotParams& r);
 
@@ -64,6 +67,9 @@ struct SimParams {
   bool stop_at_random = false;
 };
 
+/// The declared parameters of the sweep's "sim" object; `fsweep describe sim` prints them.
+[[nodiscard]] const ParamDecl<SimParams>& sim_params();
+/// sim_params().read(j, where): every problem at its JSON path, as one ConfigError.
 [[nodiscard]] SimParams sim_params_from_json(const nlohmann::json& j, const std::string& where);
 void to_json(nlohmann::json& j, const SimParams& s);
 

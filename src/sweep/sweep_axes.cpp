@@ -318,7 +318,7 @@ std::vector<SweepPlanner> parse_planners(const json& planners, std::vector<std::
       problems.push_back(name_path + ": unknown planner '" + p.name + "'; known: " + join_names(known));
       continue;
     }
-    if (const auto e = failure([&] { (void)make_planner(p.name, p.params, where); })) {
+    if (const auto e = failure([&] { (void)configure_planner(p.name, p.params, where); })) {
       problems.push_back(*e);
       continue;
     }

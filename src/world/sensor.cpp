@@ -222,45 +222,31 @@ double angle_distance(double a, double b) {
   return d > M_PI ? 2.0 * M_PI - d : d;
 }
 
-/// Reads an optional number at `j[key]` into `out`; ConfigError naming the path otherwise.
-void read_number(const nlohmann::json& j, const char* key, const std::string& where, double& out) {
-  const auto it = j.find(key);
-  if (it == j.end()) return;
-  if (!it->is_number()) {
-    throw ConfigError(where + "/" + key, "expected a number, got " + it->dump());
-  }
-  out = it->get<double>();
-}
-
-std::string number_text(double v) { return nlohmann::json(v).dump(); }
-
 }  // namespace
 
-SensorParams sensor_params_from_json(const nlohmann::json& j, const std::string& where) {
-  require_known_keys(j, {"range_m", "fov_deg", "miss_probability"}, where);
-  SensorParams p;
-  read_number(j, "range_m", where, p.range_m);
-  read_number(j, "fov_deg", where, p.fov_deg);
-  read_number(j, "miss_probability", where, p.miss_probability);
-  if (!(std::isfinite(p.range_m) && p.range_m > 0.0)) {
-    throw ConfigError(where + "/range_m",
-                      "range_m = " + number_text(p.range_m) + " is not allowed; must be > 0 (metres)");
-  }
-  if (!(p.fov_deg > 0.0 && p.fov_deg <= 360.0)) {
-    throw ConfigError(where + "/fov_deg", "fov_deg = " + number_text(p.fov_deg) +
-                                              " is not allowed; must be in (0, 360] (degrees)");
-  }
-  if (!(p.miss_probability >= 0.0 && p.miss_probability < 1.0)) {
-    throw ConfigError(where + "/miss_probability", "miss_probability = " + number_text(p.miss_probability) +
-                                                       " is not allowed; must be in [0, 1)");
-  }
-  return p;
+const ParamDecl<SensorParams>& sensor_params() {
+  using P = SensorParams;
+  static const ParamDecl<P> kDecl = [] {
+    ParamDecl<P> d;
+    d.number("range_m", &P::range_m, "sensing radius").above(0).unit("m");
+    d.number("fov_deg", &P::fov_deg, "field of view, centred on the heading; 360: omnidirectional")
+        .above(0)
+        .at_most(360)
+        .unit("deg");
+    d.number("miss_probability", &P::miss_probability,
+             "probability that a visible unknown cell is missed on one scan (the run's \"sensor\" stream)")
+        .at_least(0)
+        .below(1);
+    return d;
+  }();
+  return kDecl;
 }
 
-void to_json(nlohmann::json& j, const SensorParams& p) {
-  j = nlohmann::json{
-      {"range_m", p.range_m}, {"fov_deg", p.fov_deg}, {"miss_probability", p.miss_probability}};
+SensorParams sensor_params_from_json(const nlohmann::json& j, const std::string& where) {
+  return sensor_params().read(j, where);
 }
+
+void to_json(nlohmann::json& j, const SensorParams& p) { j = sensor_params().write(p); }
 
 struct Sensor::Tables {
   /// In offset-table order.

@@ -36,6 +36,7 @@
 #include <span>
 #include <vector>
 
+#include "core/params.hpp"
 #include "core/random.hpp"
 #include "world/grid.hpp"
 #include "world/known_map.hpp"
@@ -53,7 +54,9 @@ struct SensorParams {
   double miss_probability = 0.0;
 };
 
-/// Reads {"range_m", "fov_deg", "miss_probability"}; throws ConfigError at `where`.
+/// The declared parameters (core/params.hpp): range_m, fov_deg, miss_probability.
+[[nodiscard]] const ParamDecl<SensorParams>& sensor_params();
+/// sensor_params().read(j, where): every problem at its JSON path, as one ConfigError.
 [[nodiscard]] SensorParams sensor_params_from_json(const nlohmann::json& j, const std::string& where);
 void to_json(nlohmann::json& j, const SensorParams& p);
 

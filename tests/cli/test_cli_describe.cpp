@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "cli/fsweep_process.hpp"
 
@@ -50,12 +51,36 @@ TEST(CliDescribe, OmplPlannerListsItsOmplParameters) {
 TEST(CliDescribe, UnknownKindOrNameIsExitTwoListingTheKnown) {
   const auto kind = run_fsweep("describe planers");
   EXPECT_EQ(kind.code, 2);
-  EXPECT_NE(kind.output.find("unknown kind 'planers'; known: planner, strategy, generator, energy"),
-            std::string::npos)
+  EXPECT_NE(
+      kind.output.find("unknown kind 'planers'; known: planner, strategy, generator, energy, robot, sim"),
+      std::string::npos)
       << kind.output;
   const auto name = run_fsweep("describe generator roms");
   EXPECT_EQ(name.code, 2);
   EXPECT_NE(name.output.find("unknown generator 'roms'; known:"), std::string::npos) << name.output;
+}
+
+TEST(CliDescribe, RobotAndSimSettingsListTheirParametersWithNestedSensorFlattened) {
+  const auto robot = run_fsweep("describe robot --format json");
+  ASSERT_EQ(robot.code, 0) << robot.output;
+  const auto j = nlohmann::json::parse(robot.output);
+  std::vector<std::string> names;
+  for (const auto& p : j["params"]) names.push_back(p["name"].get<std::string>());
+  EXPECT_EQ(names,
+            (std::vector<std::string>{"sensor.range_m", "sensor.fov_deg", "sensor.miss_probability", "energy",
+                                      "battery", "dock", "start_heading", "allow_corner_cutting"}));
+  EXPECT_EQ(j["params"][0]["allowed"], "a number > 0");
+  EXPECT_EQ(j["params"][0]["unit"], "m");
+  EXPECT_EQ(j["params"][6]["allowed"], "an integer in [0, 7]");
+  const auto sim = run_fsweep("describe sim");
+  ASSERT_EQ(sim.code, 0) << sim.output;
+  for (const char* p :
+       {"cluster_max_length_m", "max_steps", "stuck_decisions", "progress_step_m", "stop_at_cell"}) {
+    EXPECT_NE(sim.output.find(p), std::string::npos) << p;
+  }
+  const auto named = run_fsweep("describe robot sensor");
+  EXPECT_EQ(named.code, 2);
+  EXPECT_NE(named.output.find("robot has no names"), std::string::npos) << named.output;
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
@@ -114,6 +115,63 @@ TEST(ParamSpec, AllowedTextNamesOpenAndClosedBounds) {
   EXPECT_TRUE(d.specs()[0].check(json(0.0)).has_value());
   EXPECT_FALSE(d.specs()[0].check(json(1.0)).has_value());
   EXPECT_TRUE(d.specs()[0].check(json(std::nan(""))).has_value());
+}
+
+struct Outer {
+  Toy inner;
+  double limit = std::numeric_limits<double>::infinity();
+};
+
+ParamDecl<Outer> outer_params() {
+  ParamDecl<Outer> d;
+  d.object("inner", &Outer::inner, toy_params(), "a nested params object");
+  d.number_or_none("limit", &Outer::limit, "a limit; null: none").above(0).unit("s");
+  return d;
+}
+
+TEST(ParamDecl, NestedObjectsAreReadByTheirOwnDeclarationWithFullPaths) {
+  const ParamDecl<Outer> d = outer_params();
+  EXPECT_EQ(d.specs()[0].type, ParamType::Object);
+  ASSERT_TRUE(d.specs()[0].fields);
+  EXPECT_EQ(d.specs()[0].fields->size(), 6U);
+  EXPECT_EQ(d.specs()[0].allowed(), "an object with keys weight, count, budget, flag, kind, mode");
+  const Outer o = d.read(json{{"inner", {{"count", 2}, {"kind", "b"}}}}, "/robot");
+  EXPECT_EQ(o.inner.count, 2);
+  EXPECT_EQ(o.inner.kind, "b");
+  EXPECT_EQ(o.inner.weight, 2.5);  // the inner defaults
+  EXPECT_EQ(d.write(o)["inner"]["count"], 2);
+  EXPECT_EQ(d.write(o)["inner"]["weight"], 2.5);
+  try {
+    (void)d.read(json{{"inner", {{"count", 9}, {"color", 1}}}, {"limit", 0}}, "/robot");
+    FAIL() << "no ConfigError";
+  } catch (const ConfigError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("/robot/inner/count: value 9 out of range; allowed: an integer in [1, 5]"),
+              std::string::npos)
+        << m;
+    EXPECT_NE(m.find("/robot/inner/color: unknown key 'color'"), std::string::npos) << m;
+    EXPECT_NE(m.find("/robot/limit: value 0 out of range; allowed: a number > 0, or null"), std::string::npos)
+        << m;
+  }
+  EXPECT_NE(std::string([&] {
+              try {
+                (void)d.read(json{{"inner", 3}}, "/robot");
+              } catch (const ConfigError& e) {
+                return std::string(e.what());
+              }
+              return std::string();
+            }())
+                .find("/robot/inner: value 3 not allowed; allowed: an object with keys"),
+            std::string::npos);
+}
+
+TEST(ParamDecl, NumberOrNoneMapsNullToInfinityBothWays) {
+  const ParamDecl<Outer> d = outer_params();
+  EXPECT_EQ(d.specs()[1].default_value, json());
+  EXPECT_EQ(d.read(json{{"limit", nullptr}}, "/p").limit, std::numeric_limits<double>::infinity());
+  EXPECT_EQ(d.read(json{{"limit", 0.25}}, "/p").limit, 0.25);
+  EXPECT_EQ(d.write(d.read(json{{"limit", 0.25}}, "/p"))["limit"], 0.25);
+  EXPECT_TRUE(d.write(Outer{})["limit"].is_null());
 }
 
 TEST(Registry, ConfiguresOnceAndListsNamesAndDeclarations) {

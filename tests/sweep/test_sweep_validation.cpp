@@ -156,12 +156,12 @@ TEST(SweepValidation, RobotProblemsAtTheirPaths) {
   json s = minimal();
   s["robot"] = json::parse(R"({"sensor": {"range_m": [5, -1]}, "battery": [400, 0]})");
   const std::string m = problems_of(s);
-  EXPECT_HAS(m, "/robot/sensor/range_m/1: ");
-  EXPECT_HAS(m, "/robot/battery/1: value 0 out of range; allowed: > 0");
+  EXPECT_HAS(m, "/robot/sensor/range_m/1: value -1 out of range; allowed: a number > 0");
+  EXPECT_HAS(m, "/robot/battery/1: value 0 out of range; allowed: a number > 0, or null");
   s["robot"] = json::parse(R"({"sensor": {"range_m": [5, -1]}, "battery": [0, 400]})");  // a bad first value
   const std::string m1 = problems_of(s);
   EXPECT_HAS(m1, "/robot/sensor/range_m/1: ");
-  EXPECT_HAS(m1, "/robot/battery/0: value 0 out of range; allowed: > 0");
+  EXPECT_HAS(m1, "/robot/battery/0: value 0 out of range; allowed: a number > 0, or null");
   s["robot"] = json::parse(R"({"dock": [0, 0], "sensor": {"range_m": 1}, "wheels": 3})");
   const std::string m2 = problems_of(s);
   EXPECT_HAS(m2, "/robot/wheels: unknown key 'wheels'");
