@@ -114,7 +114,7 @@ EnergyModel with_overrides(EnergyModel m, const Overrides& o) {
   return m;
 }
 
-EnergyRegistry make_registry() {
+EnergyRegistry make_energy_registry() {
   EnergyRegistry r("energy preset");
   ParamDecl<Overrides> distance;
   declare_overrides(distance, EnergyModel{});
@@ -145,7 +145,7 @@ EnergyRegistry make_registry() {
 }  // namespace
 
 const EnergyRegistry& energy_registry() {
-  static const EnergyRegistry kRegistry = make_registry();
+  static const EnergyRegistry kRegistry = make_energy_registry();
   return kRegistry;
 }
 

@@ -12,6 +12,7 @@
 #include "core/config_error.hpp"
 #include "core/random.hpp"
 #include "world/generator_canvas.hpp"
+#include "world/loader_support.hpp"
 
 namespace fsweep {
 inline namespace world {
@@ -21,13 +22,7 @@ using generator_detail::frame;
 using generator_detail::kFree;
 using generator_detail::kWall;
 using generator_detail::Occupancy;
-
-/// A number for messages: shortest form with up to 10 significant digits (0.05, not 0.050000).
-std::string number_text(double v) {
-  std::ostringstream out;
-  out << std::setprecision(10) << v;
-  return out.str();
-}
+using loader_detail::number_text;
 
 /// Throws unless lo <= value <= hi; `key` is the map-spec key of the parameter.
 void require_range(const std::string& where, const char* key, long long value, long long lo, long long hi,
@@ -266,7 +261,7 @@ void declare_key(ParamDecl<GeneratorParams>& d, const std::string& key) {
   }
 }
 
-GeneratorRegistry make_registry() {
+GeneratorRegistry make_generator_registry() {
   GeneratorRegistry r("generator");
   for (const KindEntry& k : kind_table()) {
     ParamDecl<GeneratorParams> d;
@@ -307,7 +302,7 @@ std::optional<Cell> parse_cell_pair(const nlohmann::json& v) {
 }
 
 const GeneratorRegistry& generator_registry() {
-  static const GeneratorRegistry kRegistry = make_registry();
+  static const GeneratorRegistry kRegistry = make_generator_registry();
   return kRegistry;
 }
 
