@@ -15,8 +15,10 @@
 #include "cli/commands.hpp"
 #include "cli/kv_options.hpp"
 #include "cli/output_dir.hpp"
+#include "cli/text_table.hpp"
 #include "core/config_error.hpp"
 #include "core/csv_format.hpp"
+#include "core/files.hpp"
 #include "evaluation/plan_bench.hpp"
 #include "planners/registry.hpp"
 #include "world/energy_model.hpp"
@@ -40,23 +42,10 @@ struct PlanBenchOptions {
 };
 
 /// A number for the table: fixed decimals, "-" for NaN.
-std::string fixed(double v, int decimals) {
-  if (std::isnan(v)) return "-";
-  std::array<char, 64> buf{};
-  std::snprintf(buf.data(), buf.size(), "%.*f", decimals, v);
-  return buf.data();
-}
-
-std::ofstream open_out(const std::string& path) {
-  std::ofstream f(path, std::ios::binary | std::ios::trunc);
-  if (!f) throw ConfigError(path, "cannot open for writing");
-  return f;
-}
-
 void write_queries_csv(const std::string& path, const std::vector<std::string>& names,
                        const std::vector<BenchQuery>& queries,
                        const std::vector<std::vector<BenchPlan>>& plans) {
-  std::ofstream f = open_out(path);
+  std::ofstream f = open_for_writing(path);
   f << "query,start_x,start_y,goal_x,goal_y,optimal_cells";
   for (const std::string& n : names) {
     for (const char* col : {"status", "length_ratio", "energy", "turns", "time_s"})
@@ -77,9 +66,9 @@ void write_queries_csv(const std::string& path, const std::vector<std::string>& 
   if (!f) throw ConfigError(path, "write failed");
 }
 
-void write_summary_csv(const std::string& path, const std::vector<std::string>& names,
-                       const std::vector<BenchSummary>& summaries) {
-  std::ofstream f = open_out(path);
+void write_bench_summary_csv(const std::string& path, const std::vector<std::string>& names,
+                             const std::vector<BenchSummary>& summaries) {
+  std::ofstream f = open_for_writing(path);
   f << "planner,queries,solved,timeouts,success_rate";
   for (const char* metric : {"length_ratio", "energy", "turns", "time_ms"}) {
     for (const char* stat : {"mean", "q05", "q25", "median", "q75", "q95"}) f << ',' << metric << '_' << stat;
@@ -157,10 +146,12 @@ int run_plan_bench_command(const PlanBenchOptions& o) {
   for (std::size_t i = 0; i < names.size(); ++i) {
     const BenchSummary& s = summaries[i];
     std::printf("%-24s %8s %8d %8s %8s %8s %8s %8s %10s %10s\n", names[i].c_str(),
-                fixed(100.0 * s.success_rate, 1).c_str(), s.timeouts, fixed(s.length_ratio.mean, 4).c_str(),
-                fixed(s.length_ratio.median, 4).c_str(), fixed(s.length_ratio.q95, 4).c_str(),
-                fixed(s.energy.mean, 2).c_str(), fixed(s.turns.mean, 2).c_str(),
-                fixed(s.time_ms.median, 3).c_str(), fixed(s.time_ms.q95, 3).c_str());
+                fixed_decimals(100.0 * s.success_rate, 1).c_str(), s.timeouts,
+                fixed_decimals(s.length_ratio.mean, 4).c_str(),
+                fixed_decimals(s.length_ratio.median, 4).c_str(),
+                fixed_decimals(s.length_ratio.q95, 4).c_str(), fixed_decimals(s.energy.mean, 2).c_str(),
+                fixed_decimals(s.turns.mean, 2).c_str(), fixed_decimals(s.time_ms.median, 3).c_str(),
+                fixed_decimals(s.time_ms.q95, 3).c_str());
   }
   std::printf(
       "(success in %%; len/opt = path length / optimal octile length, mean and quantiles over solved "
@@ -168,7 +159,7 @@ int run_plan_bench_command(const PlanBenchOptions& o) {
   if (!o.out.empty()) {
     create_output_dir(o.out);
     write_queries_csv(o.out + "/queries.csv", names, queries, plans);
-    write_summary_csv(o.out + "/summary.csv", names, summaries);
+    write_bench_summary_csv(o.out + "/summary.csv", names, summaries);
     std::printf("wrote %s/{queries.csv,summary.csv}\n", o.out.c_str());
   }
   return 0;

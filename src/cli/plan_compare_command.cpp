@@ -18,8 +18,10 @@
 #include "cli/commands.hpp"
 #include "cli/kv_options.hpp"
 #include "cli/output_dir.hpp"
+#include "cli/text_table.hpp"
 #include "core/config_error.hpp"
 #include "core/csv_format.hpp"
+#include "core/files.hpp"
 #include "evaluation/plan_compare.hpp"
 #include "planners/registry.hpp"
 #include "world/energy_model.hpp"
@@ -56,15 +58,8 @@ std::optional<int> parse_start_heading(const std::string& text) {
 }
 
 /// A number for the table: fixed decimals, "-" for NaN.
-std::string fixed(double v, int decimals) {
-  if (std::isnan(v)) return "-";
-  std::array<char, 64> buf{};
-  std::snprintf(buf.data(), buf.size(), "%.*f", decimals, v);
-  return buf.data();
-}
-
-void print_table(const PlanCompareOptions& o, const KnownMap& known, const EnergyModel& energy,
-                 const CompareSummary& s, std::size_t n_pairs) {
+void print_compare_table(const PlanCompareOptions& o, const KnownMap& known, const EnergyModel& energy,
+                         const CompareSummary& s, std::size_t n_pairs) {
   int free_cells = 0;
   for (int i = 0; i < known.size(); ++i) free_cells += known.is_free(i) ? 1 : 0;
   std::printf(
@@ -79,9 +74,9 @@ void print_table(const PlanCompareOptions& o, const KnownMap& known, const Energ
   for (std::size_t p = 0; p < o.planners.size(); ++p) {
     const PlannerTotals& t = s.totals[p];
     std::printf("%-24s %7d %10s %10s %8s %8s %11s %10s\n", o.planners[p].c_str(), t.solved,
-                fixed(t.mean_length_m, 3).c_str(), fixed(t.mean_energy, 3).c_str(),
-                fixed(t.mean_stops, 2).c_str(), fixed(t.mean_turns, 2).c_str(),
-                fixed(t.mean_expansions, 0).c_str(), fixed(t.mean_time_s * 1e3, 4).c_str());
+                fixed_decimals(t.mean_length_m, 3).c_str(), fixed_decimals(t.mean_energy, 3).c_str(),
+                fixed_decimals(t.mean_stops, 2).c_str(), fixed_decimals(t.mean_turns, 2).c_str(),
+                fixed_decimals(t.mean_expansions, 0).c_str(), fixed_decimals(t.mean_time_s * 1e3, 4).c_str());
   }
   std::printf("(means per query over solved pairs)\n\n");
 
@@ -91,9 +86,11 @@ void print_table(const PlanCompareOptions& o, const KnownMap& known, const Energ
     const std::string label = o.planners[static_cast<std::size_t>(c.baseline)] + " -> " +
                               o.planners[static_cast<std::size_t>(c.candidate)];
     const auto row = [&](const char* name, const SampleSummary& x, double total, const std::string& first) {
-      std::printf("%-44s %-18s %7s %7s %7s %7s %7s %7s %8s\n", first.c_str(), name, fixed(x.mean, 2).c_str(),
-                  fixed(x.q05, 2).c_str(), fixed(x.q25, 2).c_str(), fixed(x.median, 2).c_str(),
-                  fixed(x.q75, 2).c_str(), fixed(x.q95, 2).c_str(), fixed(total, 2).c_str());
+      std::printf("%-44s %-18s %7s %7s %7s %7s %7s %7s %8s\n", first.c_str(), name,
+                  fixed_decimals(x.mean, 2).c_str(), fixed_decimals(x.q05, 2).c_str(),
+                  fixed_decimals(x.q25, 2).c_str(), fixed_decimals(x.median, 2).c_str(),
+                  fixed_decimals(x.q75, 2).c_str(), fixed_decimals(x.q95, 2).c_str(),
+                  fixed_decimals(total, 2).c_str());
     };
     row("energy saving", c.energy_saving_pct, c.total_energy_saving_pct, label);
     row("length increase", c.length_increase_pct, c.total_length_increase_pct, "");
@@ -105,15 +102,9 @@ void print_table(const PlanCompareOptions& o, const KnownMap& known, const Energ
       "totals = the same on sums over the pairs)\n");
 }
 
-std::ofstream open_out(const std::string& path) {
-  std::ofstream f(path, std::ios::binary | std::ios::trunc);
-  if (!f) throw ConfigError(path, "cannot open for writing");
-  return f;
-}
-
 void write_pairs_csv(const std::string& path, const std::vector<std::string>& names,
                      const std::vector<ComparePair>& pairs, const std::vector<std::vector<PairPlan>>& plans) {
-  std::ofstream f = open_out(path);
+  std::ofstream f = open_for_writing(path);
   f << "pair,source_x,source_y,target_x,target_y,start_heading";
   for (const std::string& n : names) {
     for (const char* col : {"status", "length_m", "energy", "stops", "turns", "expansions", "time_s"}) {
@@ -135,9 +126,9 @@ void write_pairs_csv(const std::string& path, const std::vector<std::string>& na
   if (!f) throw ConfigError(path, "write failed");
 }
 
-void write_summary_csv(const std::string& path, const std::vector<std::string>& names,
-                       const CompareSummary& s) {
-  std::ofstream f = open_out(path);
+void write_compare_summary_csv(const std::string& path, const std::vector<std::string>& names,
+                               const CompareSummary& s) {
+  std::ofstream f = open_for_writing(path);
   f << "baseline,candidate,pairs_used";
   for (const char* metric : {"energy_saving_pct", "length_increase_pct"}) {
     for (const char* stat : {"mean", "q05", "q25", "median", "q75", "q95"}) f << ',' << metric << '_' << stat;
@@ -191,7 +182,7 @@ void write_manifest(const std::string& path, const PlanCompareOptions& o, const 
   j["pair_rule"] =
       "distinct unordered {source, target} of distinct known-free cells reachable from each other, "
       "source and target uniform over free cells (rejection sampling)";
-  std::ofstream f = open_out(path);
+  std::ofstream f = open_for_writing(path);
   f << j.dump(2) << '\n';
   if (!f) throw ConfigError(path, "write failed");
 }
@@ -233,11 +224,11 @@ int run_plan_compare(const PlanCompareOptions& o) {
   const CompareSummary summary = summarize_comparison(plans);
 
   // 3. Outputs.
-  print_table(o, known, energy, summary, pairs.size());
+  print_compare_table(o, known, energy, summary, pairs.size());
   if (!o.out.empty()) {
     create_output_dir(o.out);
     write_pairs_csv(o.out + "/pairs.csv", o.planners, pairs, plans);
-    write_summary_csv(o.out + "/summary.csv", o.planners, summary);
+    write_compare_summary_csv(o.out + "/summary.csv", o.planners, summary);
     write_manifest(o.out + "/manifest.json", o, known, energy, pairs.size());
     std::printf("wrote %s/{pairs.csv,summary.csv,manifest.json}\n", o.out.c_str());
   }

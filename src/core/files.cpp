@@ -34,5 +34,11 @@ std::string read_first_line(const std::string& path) {
   return line;
 }
 
+std::ofstream open_for_writing(const std::string& path) {
+  std::ofstream f(path, std::ios::binary | std::ios::trunc);
+  if (!f) throw ConfigError(path, "cannot open for writing");
+  return f;
+}
+
 }  // namespace core
 }  // namespace fsweep

@@ -2,6 +2,7 @@
 /// @file files.hpp
 /// Whole-file helpers shared by every layer that writes results.
 
+#include <fstream>
 #include <string>
 #include <string_view>
 
@@ -10,6 +11,9 @@ inline namespace core {
 
 /// A temp file name beside `path`, unique to this process: `path` + ".tmp." + pid.
 [[nodiscard]] std::string temp_path(const std::string& path);
+
+/// `path` opened for binary writing, truncated; throws ConfigError at `path` when it cannot be.
+[[nodiscard]] std::ofstream open_for_writing(const std::string& path);
 
 /// Writes `contents` to `path` atomically: a temp file in the same directory, then rename.
 /// Throws ConfigError naming the file on an error.

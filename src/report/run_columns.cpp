@@ -5,6 +5,7 @@
 
 #include "core/config_error.hpp"
 #include "core/csv_format.hpp"
+#include "core/files.hpp"
 #include "report/runs_schema.hpp"
 
 namespace fsweep {
@@ -23,12 +24,6 @@ void flatten(const nlohmann::json& j, const std::string& prefix, Columns& out) {
   } else {
     out.emplace_back(prefix, j.dump());
   }
-}
-
-std::ofstream open_for_writing(const std::string& path) {
-  std::ofstream f(path, std::ios::binary | std::ios::trunc);
-  if (!f) throw ConfigError(path, "cannot open for writing");
-  return f;
 }
 
 }  // namespace

@@ -135,6 +135,10 @@ std::size_t data_rows(const std::string& path) { return records(read_file(path))
 pid_t spawn_child(const std::string& sweep_file, const std::string& out) {
   ::setenv(kChildSweepEnv, sweep_file.c_str(), 1);
   ::setenv(kChildOutEnv, out.c_str(), 1);
+  // This process may be one shard of its executable (the sanitizer build's ctest): the child
+  // runs its one test whatever shard that test falls in (gtest read these at start-up already).
+  ::unsetenv("GTEST_TOTAL_SHARDS");
+  ::unsetenv("GTEST_SHARD_INDEX");
   std::string self = fs::read_symlink("/proc/self/exe").string();
   std::string filter = "--gtest_filter=SweepRunnerChild.RunsTheSweepNamedInTheEnvironment";
   char* argv[] = {self.data(), filter.data(), nullptr};
