@@ -12,7 +12,7 @@
 
 #include "cli/fsweep_process.hpp"
 
-namespace {
+namespace test_cli_expand {  // not anonymous: unity builds put it beside other test files' helpers
 
 using Outcome = fsweep::testing::CliOutcome;
 Outcome fsweep(const std::string& args) { return fsweep::testing::run_fsweep(args); }
@@ -44,4 +44,4 @@ TEST(CliExpand, BadSweepExits2ListingEveryProblem) {
   std::filesystem::remove(path);
 }
 
-}  // namespace
+}  // namespace test_cli_expand

@@ -9,7 +9,7 @@
 
 #include "cli/fsweep_process.hpp"
 
-namespace {
+namespace test_cli_plan_bench {  // not anonymous: unity builds put it beside other test files' helpers
 
 using Outcome = fsweep::testing::CliOutcome;
 Outcome fsweep(const std::string& args) { return fsweep::testing::run_fsweep(args); }
@@ -59,4 +59,4 @@ TEST(CliPlanBench, BadParametersAreOneMessage) {
   EXPECT_NE(other.output.find("not a benchmarked planner"), std::string::npos) << other.output;
 }
 
-}  // namespace
+}  // namespace test_cli_plan_bench

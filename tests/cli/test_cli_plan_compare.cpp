@@ -10,7 +10,7 @@
 
 #include "cli/fsweep_process.hpp"
 
-namespace {
+namespace test_cli_plan_compare {  // not anonymous: unity builds put it beside other test files' helpers
 
 using Outcome = fsweep::testing::CliOutcome;
 Outcome fsweep(const std::string& args) { return fsweep::testing::run_fsweep(args); }
@@ -113,4 +113,4 @@ TEST(CliPlanCompare, BadInputIsExit2WithAClearMessage) {
   EXPECT_NE(r.output.find("mei2007"), std::string::npos) << r.output;
 }
 
-}  // namespace
+}  // namespace test_cli_plan_compare

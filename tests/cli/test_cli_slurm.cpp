@@ -11,7 +11,7 @@
 
 #include "cli/fsweep_process.hpp"
 
-namespace {
+namespace test_cli_slurm {  // not anonymous: unity builds put it beside other test files' helpers
 
 namespace fs = std::filesystem;
 using fsweep::testing::run_fsweep;
@@ -97,4 +97,4 @@ TEST(CliSlurm, BadInputIsExit2AndWritesNothing) {
   fs::remove_all(dir);
 }
 
-}  // namespace
+}  // namespace test_cli_slurm

@@ -18,7 +18,7 @@
 #include "planners/registry.hpp"
 
 namespace fsweep {
-namespace {
+namespace test_ompl_planner {  // not anonymous: unity builds put it beside other test files' helpers
 
 using testing::expect_valid_path;
 using testing::known_from_ascii;
@@ -361,5 +361,5 @@ TEST(OmplPlannerSeeds, OtherSeedOtherTree) {
   EXPECT_GT(differing, 0);
 }
 
-}  // namespace
+}  // namespace test_ompl_planner
 }  // namespace fsweep

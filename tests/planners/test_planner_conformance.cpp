@@ -23,7 +23,7 @@
 #include "world/world_map.hpp"
 
 namespace fsweep {
-namespace {
+namespace test_planner_conformance {  // not anonymous: unity builds put it beside other test files' helpers
 
 using testing::expect_valid_path;
 using testing::known_from_ascii;
@@ -295,5 +295,5 @@ INSTANTIATE_TEST_SUITE_P(
     Registered, OptimalPlanner,
     ::testing::ValuesIn(names_where([](const PlannerCapabilities& c) { return c.optimal; })), test_name);
 
-}  // namespace
+}  // namespace test_planner_conformance
 }  // namespace fsweep

@@ -18,7 +18,7 @@
 #include "world/map_spec.hpp"
 
 namespace fsweep {
-namespace {
+namespace test_runs_schema {  // not anonymous: unity builds put it beside other test files' helpers
 
 /// The message of the ConfigError that `f` throws (empty if none).
 template <typename F>
@@ -228,5 +228,5 @@ TEST(Objectives, UnknownNameListsTheKnownOnes) {
             "energy");
 }
 
-}  // namespace
+}  // namespace test_runs_schema
 }  // namespace fsweep

@@ -25,7 +25,7 @@
 #include "world/map_spec.hpp"
 
 namespace fsweep {
-namespace {
+namespace test_holz_strategies {  // not anonymous: unity builds put it beside other test files' helpers
 
 // A corridor (row 2) between walls, open at both ends. R = (6, 2).
 //   left end:  (1,2) free, (0,1) (0,2) (0,3) unknown        -> frontier cell (1,2)
@@ -504,5 +504,5 @@ TEST(HolzExploration, NewStrategiesCompleteGeneratedMapsAndAreDeterministic) {
   }
 }
 
-}  // namespace
+}  // namespace test_holz_strategies
 }  // namespace fsweep

@@ -16,7 +16,7 @@
 #include "strategies/widest_frontier.hpp"
 
 namespace fsweep {
-namespace {
+namespace test_mei_strategies {  // not anonymous: unity builds put it beside other test files' helpers
 
 /// An ASCII situation (testing::AsciiSituation) with Mei's sensor range d_s and a heading.
 struct Situation : testing::AsciiSituation {
@@ -235,5 +235,5 @@ TEST(MeiStrategies, RegisteredAndCloneable) {
   }
 }
 
-}  // namespace
+}  // namespace test_mei_strategies
 }  // namespace fsweep

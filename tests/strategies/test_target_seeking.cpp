@@ -18,7 +18,7 @@
 #include "world/ascii_world.hpp"
 
 namespace fsweep {
-namespace {
+namespace test_target_seeking {  // not anonymous: unity builds put it beside other test files' helpers
 
 using nlohmann::json;
 
@@ -337,5 +337,5 @@ TEST(TargetSeeking, ParametersAreValidatedWithTheirPath) {
   EXPECT_NE(key.find("w4"), std::string::npos) << key;
 }
 
-}  // namespace
+}  // namespace test_target_seeking
 }  // namespace fsweep

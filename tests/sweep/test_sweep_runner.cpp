@@ -27,7 +27,7 @@
 extern char** environ;  // NOLINT(readability-redundant-declaration): for posix_spawn
 
 namespace fsweep {
-namespace {
+namespace test_sweep_runner {  // not anonymous: unity builds put it beside other test files' helpers
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -478,5 +478,5 @@ TEST(SweepRunner, BadOptionsAreConfigErrors) {
   fs::remove_all(o.out_dir);
 }
 
-}  // namespace
+}  // namespace test_sweep_runner
 }  // namespace fsweep

@@ -11,7 +11,7 @@
 #include "sweep/sweep_plan.hpp"
 
 namespace fsweep {
-namespace {
+namespace test_sweep_validation {  // not anonymous: unity builds put it beside other test files' helpers
 
 using nlohmann::json;
 
@@ -222,5 +222,5 @@ TEST(SweepValidation, ShippedExamplesAreValid) {
   EXPECT_GE(n, 2);
 }
 
-}  // namespace
+}  // namespace test_sweep_validation
 }  // namespace fsweep

@@ -12,7 +12,7 @@
 #include "world/map_loaders.hpp"
 
 namespace fsweep {
-namespace {
+namespace test_map_loaders {  // not anonymous: unity builds put it beside other test files' helpers
 
 const std::string kData = FSWEEP_TEST_DATA;
 
@@ -345,5 +345,5 @@ TEST(Scenario, BadRowsNameTheFileAndLine) {
   expect_config_error([&] { (void)load_scenario(outside); }, {outside + ":2", "outside the 4x4 map"});
 }
 
-}  // namespace
+}  // namespace test_map_loaders
 }  // namespace fsweep

@@ -12,7 +12,7 @@
 #include "world/map_spec.hpp"
 
 namespace fsweep {
-namespace {
+namespace test_map_spec {  // not anonymous: unity builds put it beside other test files' helpers
 
 using nlohmann::json;
 const std::string kData = FSWEEP_TEST_DATA;
@@ -188,5 +188,5 @@ TEST(MapSpec, LoaderErrorsKeepTheFileAndLine) {
   expect_config_error([] { (void)load_map_spec(kData + "/missing.map"); }, {"missing.map", "cannot open"});
 }
 
-}  // namespace
+}  // namespace test_map_spec
 }  // namespace fsweep

@@ -12,7 +12,7 @@
 #include "world/sensor.hpp"
 
 namespace fsweep {
-namespace {
+namespace test_sensor {  // not anonymous: unity builds put it beside other test files' helpers
 
 using test::ascii_world;
 
@@ -688,5 +688,5 @@ TEST(SensorGain, OffTheMapOrDefaultSensorCountsNothing) {
   EXPECT_EQ(Sensor(range(1.0), 1.0).gain(KnownMap(4, 4, 1.0), Cell{0, 0}, 0.0), (ScanCounts{3, 0}));
 }
 
-}  // namespace
+}  // namespace test_sensor
 }  // namespace fsweep
