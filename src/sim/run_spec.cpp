@@ -4,12 +4,14 @@
 #include <limits>
 
 #include "core/config_error.hpp"
+#include "world/cell_param.hpp"
 
 namespace fsweep {
 inline namespace sim {
 namespace {
 
-/// [x, y] with two integers in [lo, INT_MAX], or nothing.
+/// [x, y] with two integers in [lo, INT_MAX], or nothing (a dock may lie outside the map's
+/// first quadrant in JSON: the simulation says it is outside the map).
 std::optional<Cell> cell_of(const nlohmann::json& v, long long lo) {
   const auto coordinate = [lo](const nlohmann::json& c) {
     return c.is_number_integer() && c.get<long long>() >= lo &&
@@ -89,26 +91,11 @@ ParamDecl<SimParams> make_sim_params() {
   d.number("progress_step_m", &P::progress_step_m,
            "progress curve sampling interval in metres of travel; <= 0: 10 x the resolution")
       .unit("m");
-  ParamSpec stop;
-  stop.name = "stop_at_cell";
-  stop.type = ParamType::Custom;
-  stop.nullable = true;
-  stop.unit = "cells";
-  stop.doc =
-      "a cell that ends the run `target_reached` once reached (any strategy becomes a navigation baseline); "
-      "\"random\": drawn from the run seed as target_seeking's \"target\": \"random\"; null: none";
-  stop.allowed_text = "[x, y], two integers >= 0, or \"random\"";
-  stop.custom_check = [](const nlohmann::json& v) -> std::vector<std::string> {
-    if (v == nlohmann::json("random") || cell_of(v, 0)) return {};
-    return {"value " + v.dump() + " is not a cell; allowed: [x, y], two integers >= 0, or \"random\""};
-  };
-  d.custom(
-      std::move(stop),
-      [](P& p, const nlohmann::json& v) {
-        p.stop_at_random = v == nlohmann::json("random");
-        p.stop_at_cell = p.stop_at_random || v.is_null() ? std::nullopt : cell_of(v, 0);
-      },
-      [](const P& p) { return p.stop_at_random ? nlohmann::json("random") : cell_json(p.stop_at_cell); });
+  declare_cell_or_random(
+      d, "stop_at_cell", &P::stop_at_cell, &P::stop_at_random,
+      "a cell that ends the run `target_reached` once reached (any strategy becomes a navigation "
+      "baseline); \"random\": drawn from the run seed as target_seeking's \"target\": "
+      "\"random\"; null: none");
   return d;
 }
 

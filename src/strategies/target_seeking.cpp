@@ -8,6 +8,7 @@
 #include "core/config_error.hpp"
 #include "strategies/geodesic.hpp"
 #include "strategies/widest_frontier.hpp"
+#include "world/cell_param.hpp"
 
 namespace fsweep {
 inline namespace strategies {
@@ -21,33 +22,9 @@ std::string cell_text(Cell c) { return "(" + std::to_string(c.x) + ", " + std::t
 
 ParamDecl<TargetSeekingParams> target_seeking_params() {
   ParamDecl<TargetSeekingParams> d;
-  ParamSpec target;
-  target.name = "target";
-  target.type = ParamType::Custom;
-  target.nullable = true;
-  target.doc = "the cell to reach; null: pure exploration (phi = 1, section II-B); \"random\": drawn per run";
-  target.allowed_text = "[x, y], two integers >= 0 (cells), or \"random\"";
-  target.custom_check = [](const nlohmann::json& t) -> std::vector<std::string> {
-    if (t.is_string() && t.get<std::string>() == "random") return {};
-    const auto cell_coordinate = [](const nlohmann::json& v) {
-      return v.is_number_integer() && v.get<long long>() >= 0 &&
-             v.get<long long>() <= std::numeric_limits<int>::max();
-    };
-    if (t.is_array() && t.size() == 2 && cell_coordinate(t[0]) && cell_coordinate(t[1])) return {};
-    return {"value " + t.dump() + " is not a cell; allowed: [x, y], two integers >= 0, \"random\", or null"};
-  };
-  d.custom(
-      std::move(target),
-      [](TargetSeekingParams& p, const nlohmann::json& t) {
-        p.target.reset();
-        p.random_target = t.is_string();
-        if (t.is_array()) p.target = Cell{t[0].get<int>(), t[1].get<int>()};
-      },
-      [](const TargetSeekingParams& p) {
-        return p.random_target ? nlohmann::json("random")
-               : p.target      ? nlohmann::json{p.target->x, p.target->y}
-                               : nlohmann::json();
-      });
+  declare_cell_or_random(
+      d, "target", &TargetSeekingParams::target, &TargetSeekingParams::random_target,
+      "the cell to reach; null: pure exploration (phi = 1, section II-B); \"random\": drawn per run");
   d.number("w1", &TargetSeekingParams::w1, "weight of 1/L, L the frontier's length (Arvanitakis eq. 12)")
       .range(0, 1);
   d.number("w2", &TargetSeekingParams::w2,

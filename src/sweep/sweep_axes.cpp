@@ -12,6 +12,7 @@
 #include "core/config_error.hpp"
 #include "planners/registry.hpp"
 #include "sim/heuristics.hpp"
+#include "sim/run_spec.hpp"
 #include "strategies/registry.hpp"
 
 namespace fsweep {
@@ -57,6 +58,31 @@ void report_axis(const Axis& axis, const std::vector<std::pair<std::size_t, std:
     if (bad.size() > 1) text += " (and " + std::to_string(bad.size() - 1) + " more values of this axis)";
     problems.push_back(value_path(axis.written, axis.where, k) + ": " + text);
   }
+}
+
+/// The declaration (sim/run_spec.hpp, robot_params()) of the robot parameter at the JSON
+/// pointer `pointer` ("/sensor/range_m"), when it alone decides whether a value is allowed:
+/// nothing for an energy model's keys (which depend on its preset) or an undeclared key.
+const ParamSpec* robot_leaf_spec(const std::string& pointer) {
+  const ParamSpecs* specs = &robot_params().specs();
+  const ParamSpec* spec = nullptr;
+  for (std::size_t at = 1; at <= pointer.size();) {
+    const std::size_t end = std::min(pointer.find('/', at), pointer.size());
+    std::string key;
+    for (std::size_t i = at; i < end; ++i) {  // RFC 6901: "~1" is '/', "~0" is '~'
+      const bool escaped = pointer[i] == '~' && i + 1 < end;
+      key += escaped ? (pointer[i + 1] == '1' ? '/' : '~') : pointer[i];
+      i += escaped ? 1 : 0;
+    }
+    if (specs == nullptr) return nullptr;
+    const auto it =
+        std::find_if(specs->begin(), specs->end(), [&](const ParamSpec& s) { return s.name == key; });
+    if (it == specs->end()) return nullptr;
+    spec = &*it;
+    specs = spec->fields.get();
+    at = end + 1;
+  }
+  return spec != nullptr && !spec->nested_problems ? spec : nullptr;
 }
 
 /// Escapes a key for a JSON pointer (RFC 6901).
@@ -355,8 +381,9 @@ std::vector<RobotVariant> parse_robots(const json& robot_in, std::vector<std::st
       return {};
     }
   }
-  // 2. Each axis value alone (no other swept leaf) and with the first value of the others; a
-  //    value is bad when both fail. Then the first variant itself (values may interact).
+  // 2. Each axis value: by the declaration of its parameter, or (an energy model's keys) by the
+  //    reader, alone (no other swept leaf) and with the first value of the others, bad when both
+  //    fail. Then the first variant itself (values may interact).
   json bare = robot;
   json base = robot;
   for (const auto& a : axes) {
@@ -367,6 +394,13 @@ std::vector<RobotVariant> parse_robots(const json& robot_in, std::vector<std::st
   auto check = [](const json& j) { return failure([&] { (void)robot_params_from_json(j, "/robot"); }); };
   for (const auto& a : axes) {
     std::vector<std::pair<std::size_t, std::string>> bad;
+    if (const ParamSpec* spec = robot_leaf_spec(a.name)) {  // its declaration decides
+      for (std::size_t k = 0; k < a.values.size(); ++k) {
+        if (auto problem = spec->check(a.values[k])) bad.emplace_back(k, std::move(*problem));
+      }
+      report_axis(a, bad, problems);
+      continue;
+    }
     for (std::size_t k = 0; k < a.values.size(); ++k) {
       json alone = bare;
       alone[json::json_pointer(a.name)] = a.values[k];
