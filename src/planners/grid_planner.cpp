@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/config_error.hpp"
+#include "planners/search_result.hpp"
 #include "search/octile_grid.hpp"
 
 namespace fsweep {
@@ -48,17 +49,7 @@ SearchResult search_grid(BestFirstSearch& search, const Env& env, const KnownMap
   SearchLimits limits;
   limits.stop = stop;
   const SearchOutcome outcome = search.run(env, known.index(start), limits);
-  SearchResult result;
-  result.expansions = outcome.expansions;
-  if (outcome.goal < 0) {
-    result.status = outcome.stopped ? PlanStatus::Timeout : PlanStatus::NoPath;
-    return result;
-  }
-  result.status = PlanStatus::Success;
-  const std::vector<int> states = search.path_to(outcome.goal);
-  result.path.reserve(states.size());
-  for (const int s : states) result.path.push_back(known.cell(s));
-  return result;
+  return search_result(search, outcome, [&known](int s) { return known.cell(s); });
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include "core/config_error.hpp"
 #include "planners/heading_lattice.hpp"
+#include "planners/search_result.hpp"
 
 namespace fsweep {
 inline namespace planners {
@@ -46,19 +47,9 @@ SearchResult search_lattice(BestFirstSearch& search, const Policy& policy, const
   limits.stop = stop;
   const int start_state = known.index(request.start) * kHeadings + request.start_heading;
   const SearchOutcome outcome = search.run(env, start_state, limits);
-  SearchResult result;
-  result.expansions = outcome.expansions;
-  if (outcome.goal < 0) {
-    result.status = outcome.stopped ? PlanStatus::Timeout : PlanStatus::NoPath;
-    return result;
-  }
   // 2. Cells of the states along the parents (Planner::plan() measures them by the same
   //    per-step rule as the search cost, no final stop).
-  result.status = PlanStatus::Success;
-  const std::vector<int> states = search.path_to(outcome.goal);
-  result.path.reserve(states.size());
-  for (const int s : states) result.path.push_back(known.cell(s / kHeadings));
-  return result;
+  return search_result(search, outcome, [&known](int s) { return known.cell(s / kHeadings); });
 }
 
 }  // namespace
