@@ -16,7 +16,9 @@ void append_key_value(std::string& key, std::string_view value) { (key += value)
 
 }  // namespace
 
-bool is_timing_column(std::string_view name) { return name.ends_with("_time_s"); }
+bool is_effort_column(std::string_view name) {
+  return name.ends_with("_time_s") || name.ends_with("_expansions");
+}
 
 bool successful_end(std::string_view end_reason) {
   return end_reason == to_string(EndReason::Complete) || end_reason == to_string(EndReason::TargetReached);
@@ -54,7 +56,7 @@ RunsHeader::RunsHeader(std::vector<std::string> names, const std::string& path)
     } else if (i >= first_metric) {
       role = ColumnRole::Metric;
       metrics_.push_back(i);
-      if (!is_timing_column(name)) quality_.push_back(i);
+      if (!is_effort_column(name)) quality_.push_back(i);
     }
   }
 }

@@ -17,8 +17,9 @@
 /// - config: every other column before seed;
 /// - outcome: end_reason and end_detail (text);
 /// - metric: every column after end_detail (after end_reason without it), numbers; an empty or
-///   `nan` cell has no value. Timing metrics (`*_time_s`, wall_time_s among them) measure the
-///   machine and are left out of exact comparisons;
+///   `nan` cell has no value. Effort metrics are left out of exact comparisons: timings
+///   (`*_time_s`, wall_time_s among them) measure the machine, search counters (`*_expansions`)
+///   the engine's algorithms (a faster search settles fewer cells for the same run);
 /// - other: a column between seed and end_reason (none today), not read.
 
 #include <array>
@@ -96,8 +97,9 @@ enum class ColumnRole {
   Other,     ///< between seed and end_reason: not read
 };
 
-/// True for the timing columns (`*_time_s`, wall_time_s among them): they measure the machine.
-[[nodiscard]] bool is_timing_column(std::string_view name);
+/// True for the effort columns: timings (`*_time_s`, wall_time_s among them), which measure the
+/// machine, and search counters (`*_expansions`), which measure the engine's algorithms.
+[[nodiscard]] bool is_effort_column(std::string_view name);
 
 /// True for the end reasons that count as a success: `complete` and `target_reached`.
 [[nodiscard]] bool successful_end(std::string_view end_reason);
@@ -120,7 +122,7 @@ class RunsHeader {
   /// Metric columns, in file order.
   [[nodiscard]] const std::vector<std::size_t>& metrics() const { return metrics_; }
   /// Columns two sweeps must agree on exactly: the outcome columns and the metrics that are
-  /// not timing columns, in file order.
+  /// not effort columns, in file order.
   [[nodiscard]] const std::vector<std::size_t>& quality() const { return quality_; }
   /// The names of `columns`.
   [[nodiscard]] std::vector<std::string> names_of(const std::vector<std::size_t>& columns) const;

@@ -1,6 +1,7 @@
 #include "search/distance_field.hpp"
 
 #include <algorithm>
+#include <limits>
 
 #include "search/octile_grid.hpp"
 
@@ -26,6 +27,16 @@ class FieldEnvironment {
         target_generation_(target_generation),
         remaining_targets_(all_targets) {}
 
+  /// Settle-all mode only: reports settled targets to `watcher` and lets it stop the search.
+  /// `first_position` / `next_position`: the targets' positions (DistanceField's members).
+  void watch(SettleWatcher* watcher, const int* first_position, const int* next_position,
+             double resolution_m) {
+    watcher_ = watcher;
+    first_position_ = first_position;
+    next_position_ = next_position;
+    resolution_m_ = resolution_m;
+  }
+
   [[nodiscard]] int state_count() const { return known_.size(); }
   static constexpr bool kZeroHeuristic = true;
   [[nodiscard]] static double heuristic(int /*state*/) { return 0.0; }
@@ -35,6 +46,7 @@ class FieldEnvironment {
   Visit visit(int state, double g) {
     if (remaining_targets_ > 0) {
       const bool target = target_stamp_[static_cast<std::size_t>(state)] == target_generation_;
+      if (watcher_ != nullptr && !watched(state, g, target)) return Visit::Stop;
       return target && --remaining_targets_ == 0 ? Visit::Goal : Visit::Expand;
     }
     if (nearest_target_g_ >= 0.0 && g > nearest_target_g_ + kSlackCells) return Visit::Stop;
@@ -51,12 +63,34 @@ class FieldEnvironment {
   }
 
  private:
+  /// The watcher's part of visit(): false to stop before settling `state` at `g` (cells).
+  bool watched(int state, double g, bool target) {
+    // Metres as DistanceField::distance_m reads them, so the radius bounds every later reading.
+    const double radius_m = g * resolution_m_;
+    if (radius_m > go_on_until_m_) {
+      go_on_until_m_ = watcher_->go_on_until(radius_m);
+      if (go_on_until_m_ < radius_m) return false;
+    }
+    if (target) {
+      for (int p = first_position_[state]; p >= 0; p = next_position_[p])
+        watcher_->settled(static_cast<std::size_t>(p), radius_m);
+      go_on_until_m_ = -std::numeric_limits<double>::infinity();  // ask again before the next cell
+    }
+    return true;
+  }
+
   const KnownMap& known_;
   bool allow_corner_cutting_;
   const std::uint32_t* target_stamp_;  // null: no early stop
   std::uint32_t target_generation_;
   double nearest_target_g_ = -1.0;  // cells; < 0 until the first target is settled
   int remaining_targets_ = 0;       // settle-all mode: distinct targets not yet settled
+  SettleWatcher* watcher_ = nullptr;
+  const int* first_position_ = nullptr;
+  const int* next_position_ = nullptr;
+  double resolution_m_ = 1.0;
+  /// The watcher is asked before settling a cell farther than this (metres).
+  double go_on_until_m_ = -std::numeric_limits<double>::infinity();
 };
 
 }  // namespace
@@ -81,11 +115,25 @@ void DistanceField::compute(const KnownMap& known, Cell source, const DistanceQu
       std::fill(target_stamp_.begin(), target_stamp_.end(), 0U);
       target_generation_ = 1;
     }
-    for (const int t : target_list) {
+    const bool watched = settle_all && query.watcher != nullptr;
+    if (watched) {
+      first_position_.resize(n);
+      next_position_.assign(target_list.size(), -1);
+    }
+    // Backwards, so that each cell's position chain runs in increasing order.
+    for (std::size_t p = target_list.size(); p-- > 0;) {
+      const int t = target_list[p];
       if (t < 0 || t >= known.size()) continue;
       auto& stamp = target_stamp_[static_cast<std::size_t>(t)];
-      if (stamp != target_generation_) ++distinct_targets;
+      if (stamp != target_generation_) {
+        ++distinct_targets;
+        if (watched) first_position_[static_cast<std::size_t>(t)] = -1;
+      }
       stamp = target_generation_;
+      if (watched) {
+        next_position_[p] = first_position_[static_cast<std::size_t>(t)];
+        first_position_[static_cast<std::size_t>(t)] = static_cast<int>(p);
+      }
     }
     targets = target_stamp_.data();
   }
@@ -99,6 +147,8 @@ void DistanceField::compute(const KnownMap& known, Cell source, const DistanceQu
   if (targets == nullptr) distinct_targets = 0;
   FieldEnvironment env(known, query.allow_corner_cutting, targets, target_generation_,
                        settle_all ? std::max(distinct_targets, 1) : 0);
+  if (settle_all && targets != nullptr && query.watcher != nullptr)
+    env.watch(query.watcher, first_position_.data(), next_position_.data(), resolution_m_);
   const int start = known.is_free(source) ? known.index(source) : -1;
   const SearchOutcome outcome = search_.run(env, start, limits);
   expansions_ = outcome.expansions;

@@ -6,6 +6,7 @@
 /// src/search/octile_grid.hpp; the search is the generic core of src/search/grid_search.hpp with a
 /// zero heuristic.
 
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <span>
@@ -18,6 +19,23 @@
 
 namespace fsweep {
 inline namespace search {
+
+/// A caller's stop rule for a search that settles cells in order of path length (see
+/// DistanceQuery::watcher): the search reports each target as it is settled and, before it
+/// settles a cell beyond the radius the watcher last named, asks whether to go on. A caller that
+/// chooses among the targets by a score that grows with the distance can so stop as soon as no
+/// target not yet settled can win (the energy-aware choice, strategies/energy_aware.cpp).
+class SettleWatcher {
+ public:
+  virtual ~SettleWatcher() = default;
+  /// The target at `position` of the query's target list is settled at `distance_m`. Targets are
+  /// reported in order of distance; a cell listed twice is reported once per position.
+  virtual void settled(std::size_t position, double distance_m) = 0;
+  /// Every cell not yet settled is at least `radius_m` away (an exact bound: the search settles in
+  /// order of its double costs). Returns how far the search may go on before it asks again; a
+  /// value below `radius_m` stops the search now. Asked again after every settled target.
+  virtual double go_on_until(double radius_m) = 0;
+};
 
 struct DistanceQuery {
   /// Stop expanding beyond this path length (metres); cells farther away read as infinite.
@@ -32,6 +50,9 @@ struct DistanceQuery {
   /// reachable within the bound is settled. Listed cells read exactly; other cells read as
   /// infinite unless settled. Indices outside the grid are ignored.
   std::span<const int> stop_when_all_settled{};
+  /// With stop_when_all_settled: told about every listed cell as it is settled, and may stop the
+  /// search earlier (SettleWatcher). Null: none. Must outlive compute() only.
+  SettleWatcher* watcher = nullptr;
   /// Time limit and expansion budget (default: none); DistanceField::stopped() tells whether it
   /// ended the search (cells not settled by then read as infinite).
   StopCondition stop{};
@@ -60,6 +81,10 @@ class DistanceField {
  private:
   BestFirstSearch search_;                   // costs in cells; scaled to metres on read
   std::vector<std::uint32_t> target_stamp_;  // == target_generation_: cell is a stop target
+  /// With a watcher, per target cell its first position in the target list, and per position
+  /// the next position of the same cell (-1: none).
+  std::vector<int> first_position_;
+  std::vector<int> next_position_;
   std::uint32_t target_generation_ = 0;
   int width_ = 0;
   double resolution_m_ = 1.0;

@@ -28,6 +28,8 @@ class DockField {
 
   /// True once the field is started (the dock is known free).
   [[nodiscard]] bool ready() const { return field_ != nullptr; }
+  /// True when ready() and no revealed cell waits for the next update.
+  [[nodiscard]] bool current() const { return field_ != nullptr && pending_.empty(); }
 
   /// Applies the cells revealed since the last update (ready() only; copying the field first
   /// when a copy of this DockField shares it). Returns the cells settled by that update (0 when

@@ -1,6 +1,7 @@
 #include "sim/grid_distance_oracle.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace fsweep {
@@ -83,6 +84,34 @@ int GridDistanceOracle::nearest_from_robot(std::span<const int> cells) {
     }
   }
   return best;
+}
+
+void GridDistanceOracle::watch_from_robot(std::span<const int> cells, double bound_m,
+                                          SettleWatcher& watcher) {
+  // Its own field: a watched search may end early, so it must not pass for the cached one.
+  DistanceQuery q;
+  q.max_distance_m = bound_m;
+  q.allow_corner_cutting = corner_cutting_;
+  q.stop_when_all_settled = cells;
+  q.watcher = &watcher;
+  scratch_.watched_.compute(known_, robot_, q);
+  expansions_ += scratch_.watched_.expansions();
+}
+
+double GridDistanceOracle::lower_bound_from_robot(int cell) const {
+  // Relative rounding allowed between a path length and its closed form or another path's sum.
+  constexpr double kSlack = 1e-9;
+  const double res = known_.resolution_m();
+  double bound = octile_distance(robot_, known_.cell(cell)) * res * (1.0 - kSlack);
+  if (dock_field_ != nullptr && dock_field_->current()) {
+    const double to_robot = dock_field_->distance_m(known_.index(robot_));
+    const double to_cell = dock_field_->distance_m(cell);
+    if (std::isfinite(to_robot)) {
+      if (!std::isfinite(to_cell)) return std::numeric_limits<double>::infinity();
+      bound = std::max(bound, to_cell - to_robot - kSlack * (to_cell + to_robot));
+    }
+  }
+  return bound;
 }
 
 }  // namespace sim

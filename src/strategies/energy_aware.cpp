@@ -1,7 +1,12 @@
 #include "strategies/energy_aware.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <nlohmann/json.hpp>
+#include <vector>
 
 #include "core/config_error.hpp"
 
@@ -52,70 +57,180 @@ ParamDecl<ClosestFrontierParams> closest_frontier_params() {
 EnergyAware::EnergyAware(std::string name, const EnergyAwareParams& params)
     : name_(std::move(name)), params_(params), weights_{params.w1, params.w2, params.w3, params.w4} {}
 
+/// What one decision knows besides d_g: per cluster representative its dock distance d_gb
+/// and its turn theta_rel, and the battery's reach d_l (eq. 5) and state (eq. 9).
+struct EnergyAware::Terms {
+  std::vector<int> reps;
+  std::vector<double> d_gb;
+  std::vector<double> theta;
+  double d_l = 0.0;
+  bool above_half = true;
+
+  /// Eq. 7 (strict) on finite lengths: can the robot reach representative i at d_g and still
+  /// get back to the dock?
+  [[nodiscard]] bool feasible(std::size_t i, double d_g) const {
+    return std::isfinite(d_g) && std::isfinite(d_gb[i]) && d_l > d_g + d_gb[i];
+  }
+  /// The feature row of representative i at robot distance d_g (kFeatures order).
+  [[nodiscard]] std::array<double, kFeatures> features(std::size_t i, double d_g) const {
+    return {d_g, d_gb[i], above_half ? -d_gb[i] : d_gb[i], theta[i]};
+  }
+};
+
+EnergyAware::Terms EnergyAware::terms(const Observation& obs) const {
+  Terms t;
+  t.reps.reserve(obs.clusters.size());
+  for (const auto& c : obs.clusters) t.reps.push_back(c.representative);
+  t.d_l = obs.battery.remaining_range_m;
+  // Eq. 9: the sign of d_gbe flips at half charge. An unlimited battery is always "full".
+  t.above_half = obs.battery.unlimited() || obs.battery.level > 0.5 * obs.battery.capacity;
+  const double res = obs.known.resolution_m();
+  if (params_.distance == "path") {
+    // The leg to the dock must be shorter than d_l, so d_l bounds its search (docs/architecture.md,
+    // "Plugins and their parameters"). With an unlimited battery d_gb matters only through its
+    // weights: skip that search if both are zero (the features then read 0, which those weights
+    // ignore).
+    const bool need_dock = !obs.battery.unlimited() || weights_[1] != 0.0 || weights_[2] != 0.0;
+    t.d_gb = need_dock ? obs.distances.from_dock(t.reps, t.d_l) : std::vector<double>(t.reps.size(), 0.0);
+  } else {
+    const auto metric = params_.distance == "euclidean" ? &euclidean_distance : &octile_distance;
+    for (const int r : t.reps) t.d_gb.push_back(metric(obs.known.cell(r), obs.dock) * res);
+  }
+  const double theta_r = direction(obs.previous_position, obs.robot);
+  for (const int r : t.reps) t.theta.push_back(theta_rel(theta_r, direction(obs.robot, obs.known.cell(r))));
+  return t;
+}
+
 Candidates EnergyAware::candidates(const Observation& obs) {
   Candidates out;
   out.feature_count = kFeatures;
-  const auto& clusters = obs.clusters;
-  if (clusters.empty()) return out;
-
-  std::vector<int> reps;
-  reps.reserve(clusters.size());
-  for (const auto& c : clusters) reps.push_back(c.representative);
-
-  const double d_l = obs.battery.remaining_range_m;
-  const double res = obs.known.resolution_m();
+  if (obs.clusters.empty()) return out;
+  const Terms t = terms(obs);
   std::vector<double> d_g;
-  std::vector<double> d_gb;
-  if (params_.distance == "euclidean" || params_.distance == "octile") {
-    const auto metric = params_.distance == "euclidean" ? &euclidean_distance : &octile_distance;
-    d_g.reserve(reps.size());
-    d_gb.reserve(reps.size());
-    for (const int r : reps) {
-      d_g.push_back(metric(obs.robot, obs.known.cell(r)) * res);
-      d_gb.push_back(metric(obs.known.cell(r), obs.dock) * res);
-    }
+  if (params_.distance == "path") {
+    // The leg to the frontier must be shorter than d_l too.
+    d_g = obs.distances.from_robot(t.reps, t.d_l);
   } else {
-    // Both legs must be shorter than d_l, so d_l bounds both searches (docs/architecture.md, "Plugins and
-    // their parameters").
-    d_g = obs.distances.from_robot(reps, d_l);
-    // With an unlimited battery d_gb matters only through its weights: skip that search if
-    // both are zero (the features then read 0, which those weights ignore).
-    const bool need_dock = !obs.battery.unlimited() || weights_[1] != 0.0 || weights_[2] != 0.0;
-    d_gb = need_dock ? obs.distances.from_dock(reps, d_l) : std::vector<double>(reps.size(), 0.0);
+    const auto metric = params_.distance == "euclidean" ? &euclidean_distance : &octile_distance;
+    for (const int r : t.reps) d_g.push_back(metric(obs.robot, obs.known.cell(r)) * obs.known.resolution_m());
   }
-
-  // Eq. 9: the sign of d_gbe flips at half charge. An unlimited battery is always "full".
-  const bool above_half = obs.battery.unlimited() || obs.battery.level > 0.5 * obs.battery.capacity;
-  const double theta_r = direction(obs.previous_position, obs.robot);
-  out.cells.reserve(reps.size());
-  out.features.reserve(reps.size() * kFeatures);
-  for (std::size_t i = 0; i < reps.size(); ++i) {
-    if (!std::isfinite(d_g[i]) || !std::isfinite(d_gb[i])) continue;
-    if (!(d_l > d_g[i] + d_gb[i])) continue;  // eq. 7, strict
-    const Cell f = obs.known.cell(reps[i]);
-    out.cells.push_back(f);
-    out.features.push_back(d_g[i]);
-    out.features.push_back(d_gb[i]);
-    out.features.push_back(above_half ? -d_gb[i] : d_gb[i]);
-    out.features.push_back(theta_rel(theta_r, direction(obs.robot, f)));
+  out.cells.reserve(t.reps.size());
+  out.features.reserve(t.reps.size() * kFeatures);
+  for (std::size_t i = 0; i < t.reps.size(); ++i) {
+    if (!t.feasible(i, d_g[i])) continue;
+    out.cells.push_back(obs.known.cell(t.reps[i]));
+    const auto row = t.features(i, d_g[i]);
+    out.features.insert(out.features.end(), row.begin(), row.end());
   }
   return out;
 }
 
+namespace {
+
+/// The energy-aware choice made while the search from the robot grows (SettleWatcher): the
+/// same argmin as argmin_linear over candidates() (ties to the lowest representative), with the
+/// search stopped as soon as no representative not yet reached can beat or tie the best one.
+/// A representative not yet reached is at least max(radius, its static lower bound) away, and
+/// its cost at that distance (linear_cost, which never decreases as d_g grows) bounds its real
+/// cost; eq. 7 rejects by the same bound. Only exact lengths make a representative the best.
+class WatchedChoice final : public SettleWatcher {
+ public:
+  WatchedChoice(const EnergyAware::Terms& terms, std::span<const double> weights,
+                std::vector<double> lower_bound_m)
+      : terms_(terms),
+        weights_(weights),
+        lower_bound_m_(std::move(lower_bound_m)),
+        open_(terms.reps.size(), 1) {
+    for (std::size_t i = 0; i < open_.size(); ++i) {
+      if (!terms_.feasible(i, lower_bound_m_[i])) open_[i] = 0;
+    }
+  }
+
+  void settled(std::size_t i, double d_g) override {
+    if (open_[i] == 0) return;
+    open_[i] = 0;
+    // from_robot() reads a length beyond its bound d_l as unreachable.
+    if (!(d_g <= terms_.d_l) || !terms_.feasible(i, d_g)) return;
+    const double cost = cost_at(i, d_g);
+    if (best_ < 0 || cost < best_cost_ || (cost == best_cost_ && i < static_cast<std::size_t>(best_))) {
+      best_ = static_cast<int>(i);
+      best_cost_ = cost;
+    }
+  }
+
+  double go_on_until(double radius_m) override {
+    // Close every representative that can no longer win, and find the smallest radius at which
+    // another one might close: the search asks again only there.
+    double next = std::numeric_limits<double>::infinity();
+    bool any_open = false;
+    for (std::size_t i = 0; i < open_.size(); ++i) {
+      if (open_[i] == 0) continue;
+      const double d_g = std::max(radius_m, lower_bound_m_[i]);
+      if (!terms_.feasible(i, d_g) || loses(i, cost_at(i, d_g))) {
+        open_[i] = 0;
+        continue;
+      }
+      any_open = true;
+      next = std::min(next, closing_radius(i));
+    }
+    if (!any_open) return -std::numeric_limits<double>::infinity();
+    return std::max(next, radius_m);
+  }
+
+  /// The chosen representative (index into terms.reps), or -1.
+  [[nodiscard]] int best() const { return best_; }
+
+ private:
+  [[nodiscard]] double cost_at(std::size_t i, double d_g) const {
+    const auto row = terms_.features(i, d_g);
+    return linear_cost(weights_, row);
+  }
+  /// True when cost `bound` of representative i cannot beat or tie the best so far to win.
+  [[nodiscard]] bool loses(std::size_t i, double bound) const {
+    return best_ >= 0 && (bound > best_cost_ || (bound == best_cost_ && i > static_cast<std::size_t>(best_)));
+  }
+  /// About where representative i closes (eq. 7, or its cost passing the best): where to ask
+  /// again. An estimate; go_on_until() decides on the exact bounds.
+  [[nodiscard]] double closing_radius(std::size_t i) const {
+    double r = terms_.d_l - terms_.d_gb[i];
+    if (best_ >= 0 && weights_[0] > 0.0) r = std::min(r, (best_cost_ - cost_at(i, 0.0)) / weights_[0]);
+    return r;
+  }
+
+  const EnergyAware::Terms& terms_;
+  std::span<const double> weights_;
+  std::vector<double> lower_bound_m_;
+  std::vector<std::uint8_t> open_;  // 1: not yet reached, and might still win
+  int best_ = -1;
+  double best_cost_ = 0.0;
+};
+
+}  // namespace
+
 Decision EnergyAware::decide(const Observation& obs) {
+  if (params_.distance != "path") return LinearScoredStrategy::decide(obs);
+  std::vector<int> reps;
+  reps.reserve(obs.clusters.size());
+  for (const auto& c : obs.clusters) reps.push_back(c.representative);
   // Fast path for pure closest-frontier with no battery limit: the same argmin (nearest by
   // path, ties to the lowest cluster index) found by one early-stopping search.
   const bool pure_distance =
       weights_[1] == 0.0 && weights_[2] == 0.0 && weights_[3] == 0.0 && weights_[0] > 0.0;
-  if (pure_distance && obs.battery.unlimited() && params_.distance == "path") {
-    std::vector<int> reps;
-    reps.reserve(obs.clusters.size());
-    for (const auto& c : obs.clusters) reps.push_back(c.representative);
+  if (pure_distance && obs.battery.unlimited()) {
     const int best = obs.distances.nearest_from_robot(reps);
     if (best < 0) return on_no_candidate(obs);
     return Decision::go_to(obs.known.cell(reps[static_cast<std::size_t>(best)]));
   }
-  return LinearScoredStrategy::decide(obs);
+  // Otherwise the argmin of candidates(), computing d_g only as far as it can matter.
+  if (reps.empty()) return on_no_candidate(obs);
+  const Terms t = terms(obs);
+  std::vector<double> lower_bound;
+  lower_bound.reserve(reps.size());
+  for (const int r : reps) lower_bound.push_back(obs.distances.lower_bound_from_robot(r));
+  WatchedChoice choice(t, weights_, std::move(lower_bound));
+  obs.distances.watch_from_robot(reps, t.d_l, choice);
+  if (choice.best() < 0) return on_no_candidate(obs);
+  return Decision::go_to(obs.known.cell(reps[static_cast<std::size_t>(choice.best())]));
 }
 
 Decision EnergyAware::on_no_candidate(const Observation& obs) {

@@ -50,6 +50,10 @@ struct ClosestFrontierParams {
 /// 4. choose argmin w1 d_g + w2 d_gb + w3 d_gbe + w4 theta_rel (ties: lowest cluster index).
 /// With no candidate: at the dock, finish; elsewhere return to the dock (Algorithm 1). With an
 /// unlimited battery there is nothing to return for, so it finishes directly.
+/// decide() makes exactly candidates()' choice but, with path distances, stops the search from
+/// the robot as soon as no representative it has not reached can win: d_g is at least the
+/// search radius and the oracle's lower bound (octile length, triangle through the dock), which
+/// bound its cost and eq. 7 (issue 14; the weight search reads candidates() in full).
 class EnergyAware final : public LinearScoredStrategy {
  public:
   /// `name` is the registry name ("energy_aware" or "closest_frontier").
@@ -68,7 +72,13 @@ class EnergyAware final : public LinearScoredStrategy {
   /// Feature order of candidates(): d_g (m), d_gb (m), d_gbe (m), theta_rel (1).
   static constexpr int kFeatures = 4;
 
+  /// One decision's terms other than d_g (energy_aware.cpp).
+  struct Terms;
+
  private:
+  /// The terms of the decision `obs` (dock distances searched as the distance mode says).
+  [[nodiscard]] Terms terms(const Observation& obs) const;
+
   std::string name_;
   EnergyAwareParams params_;
   std::array<double, 4> weights_{};

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/random.hpp"
+#include "search/distance_field.hpp"
 #include "world/frontiers.hpp"
 #include "world/grid.hpp"
 #include "world/known_map.hpp"
@@ -32,6 +33,14 @@ class DistanceOracle {
   /// Index into `cells` of the nearest cell by path length from the robot (ties: lowest
   /// position in `cells`), or -1 when none is reachable. Stops the search early.
   [[nodiscard]] virtual int nearest_from_robot(std::span<const int> cells) = 0;
+  /// Reports `cells` to `watcher` in order of path length from the robot, each with the
+  /// distance from_robot(cells, bound_m) would give (cells beyond the bound or unreachable are
+  /// not reported), and lets the watcher stop the search once it has what it needs
+  /// (search/distance_field.hpp). The default answers from from_robot() and never stops early.
+  virtual void watch_from_robot(std::span<const int> cells, double bound_m, SettleWatcher& watcher);
+  /// A lower bound (metres) of the path length from the robot to `cell` (+infinity: `cell` is
+  /// unreachable), known without a search from the robot. The default knows nothing: 0.
+  [[nodiscard]] virtual double lower_bound_from_robot(int /*cell*/) const { return 0.0; }
 };
 
 /// Battery as the strategy sees it.
@@ -126,6 +135,11 @@ struct Candidates {
   std::vector<double> features;
   int feature_count = 0;
 };
+
+/// weights . features, summed in feature order from 0.0: the cost argmin_linear compares. It
+/// never decreases when a feature with a non-negative weight grows, so a lower bound of a
+/// feature gives a lower bound of the cost (the energy-aware choice bounds d_g so).
+[[nodiscard]] double linear_cost(std::span<const double> weights, std::span<const double> features);
 
 /// Index of argmin_i weights . features_i; ties break to the lowest i. -1 when empty.
 [[nodiscard]] int argmin_linear(const Candidates& c, std::span<const double> weights);

@@ -75,11 +75,13 @@ TEST(RunsHeader, QualityColumnsAreOutcomesAndNonTimingMetrics) {
   EXPECT_EQ(h.names_of(h.quality()),
             (std::vector<std::string>{"end_reason", "end_detail", "distance_m", "coverage", "stops", "time_s",
                                       "optimal_distance_m"}));
-  EXPECT_TRUE(is_timing_column("wall_time_s"));
-  EXPECT_TRUE(is_timing_column("segmentation_time_s"));
-  EXPECT_FALSE(is_timing_column("time_s"));
-  EXPECT_FALSE(is_timing_column("wall_time_s.median"));
-  EXPECT_FALSE(is_timing_column("distance_m"));
+  EXPECT_TRUE(is_effort_column("wall_time_s"));
+  EXPECT_TRUE(is_effort_column("segmentation_time_s"));
+  EXPECT_FALSE(is_effort_column("time_s"));
+  EXPECT_FALSE(is_effort_column("wall_time_s.median"));
+  EXPECT_FALSE(is_effort_column("distance_m"));
+  EXPECT_TRUE(is_effort_column("planner_expansions"));
+  EXPECT_FALSE(is_effort_column("planner_expansions.median"));
 }
 
 // Without end_detail the metrics start right after end_reason; a column between seed and
@@ -134,7 +136,7 @@ TEST(RunsHeader, WriterColumnsReadBackInTheirRoles) {
   EXPECT_EQ(header[0], kRunIndexColumn);
   EXPECT_EQ(header[1], kRunKeyColumn);
   EXPECT_EQ(header[4 + config_names.size()], kSeedColumn);
-  for (const std::string& q : h.names_of(h.quality())) EXPECT_FALSE(is_timing_column(q)) << q;
+  for (const std::string& q : h.names_of(h.quality())) EXPECT_FALSE(is_effort_column(q)) << q;
   EXPECT_NE(h.column("wall_time_s"), -1);
 }
 

@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include "planners/grid_planner.hpp"
@@ -176,6 +178,77 @@ TEST(DistanceField, CornerCuttingFlagHonoured) {
   EXPECT_FALSE(field.reached(3));
   field.compute(m.known, m.start, corner_cutting(true));
   EXPECT_DOUBLE_EQ(field.distance_m(3), kSqrt2);
+}
+
+/// Records what a watched search reports and stops it at a given radius.
+struct RecordingWatcher final : SettleWatcher {
+  double stop_beyond_m = kInf;
+  std::vector<std::pair<std::size_t, double>> reported;
+  std::vector<double> asked;
+  void settled(std::size_t position, double distance_m) override {
+    reported.emplace_back(position, distance_m);
+  }
+  double go_on_until(double radius_m) override {
+    asked.push_back(radius_m);
+    return radius_m > stop_beyond_m ? -kInf : stop_beyond_m;
+  }
+};
+
+TEST(DistanceField, WatcherSeesEveryTargetInOrderWithTheFieldsDistances) {
+  DistanceField full;
+  DistanceField watched;
+  for (std::uint64_t seed = 1; seed <= 8; ++seed) {
+    const KnownMap known = testing::random_known_map(40, 30, 0.25, seed, 0.5);
+    Rng rng = make_rng(seed, "watched");
+    const Cell source = testing::random_free_cell(known, rng);
+    std::vector<int> targets;
+    for (int t = 0; t < 12; ++t) targets.push_back(known.index(testing::random_free_cell(known, rng)));
+    targets.push_back(targets.front());  // a cell listed twice is reported at both positions
+    targets.push_back(-5);               // off the grid: ignored
+    const double bound = seed % 2 == 0 ? 9.0 : kInf;
+    full.compute(known, source, bounded_query(bound));
+    RecordingWatcher w;
+    DistanceQuery q = bounded_query(bound);
+    q.stop_when_all_settled = targets;
+    q.watcher = &w;
+    watched.compute(known, source, q);
+    std::vector<std::size_t> expected;
+    for (std::size_t p = 0; p + 1 < targets.size(); ++p) {
+      if (full.reached(targets[p])) expected.push_back(p);
+    }
+    ASSERT_EQ(w.reported.size(), expected.size()) << "seed " << seed;
+    double last = 0.0;
+    for (const auto& [p, d] : w.reported) {
+      EXPECT_EQ(d, full.distance_m(targets[p])) << "seed " << seed << " position " << p;  // bit for bit
+      EXPECT_GE(d, last);
+      last = d;
+    }
+    // The watcher is asked before the first cell and again after every settled target, each
+    // time with a radius no target reported later undercuts.
+    ASSERT_FALSE(w.asked.empty());
+    EXPECT_EQ(w.asked.front(), 0.0);
+    EXPECT_TRUE(std::is_sorted(w.asked.begin(), w.asked.end()));
+  }
+}
+
+TEST(DistanceField, WatcherStopsTheSearch) {
+  const KnownMap known = testing::random_known_map(60, 60, 0.0, 3, 1.0);
+  const std::vector<int> targets{known.index(Cell{2, 0}), known.index(Cell{30, 0}),
+                                 known.index(Cell{59, 59})};
+  DistanceField field;
+  RecordingWatcher w;
+  w.stop_beyond_m = 10.0;
+  DistanceQuery q;
+  q.stop_when_all_settled = targets;
+  q.watcher = &w;
+  field.compute(known, Cell{0, 0}, q);
+  ASSERT_EQ(w.reported.size(), 1U);
+  EXPECT_EQ(w.reported[0].first, 0U);
+  EXPECT_DOUBLE_EQ(w.reported[0].second, 2.0);
+  EXPECT_GT(w.asked.back(), 10.0);  // asked once beyond its radius, and stopped there
+  EXPECT_TRUE(field.reached(known.index(Cell{10, 0})));
+  EXPECT_FALSE(field.reached(known.index(Cell{11, 0})));
+  EXPECT_LT(field.expansions(), 200);
 }
 
 }  // namespace

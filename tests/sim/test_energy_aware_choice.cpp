@@ -1,0 +1,158 @@
+// The energy-aware choice with a bounded search from the robot (EnergyAware::decide) against the
+// full computation (candidates() and argmin_linear), on the engine's own distance oracle.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "core/random.hpp"
+#include "sim/dock_field.hpp"
+#include "sim/grid_distance_oracle.hpp"
+#include "strategies/energy_aware.hpp"
+#include "world/frontiers.hpp"
+#include "world/known_map.hpp"
+
+namespace fsweep {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+/// A random decision: a map partly known (blobs of known cells, some occupied), its frontier
+/// clusters, robot, dock, where the robot came from, a battery and a dock field brought up to
+/// date in two stages (as in a run).
+struct RandomDecision {
+  KnownMap known;
+  FrontierMap frontiers;
+  std::vector<FrontierCluster> clusters;
+  DockField dock_field;
+  Cell robot{};
+  Cell dock{};
+  Cell previous{};
+  BatteryView battery;
+  bool corner_cutting = false;
+  SensorParams sensor;
+
+  RandomDecision(std::uint64_t seed, double resolution_m) : known(48, 36, resolution_m) {
+    Rng rng = make_rng(seed, "energy_aware_choice");
+    corner_cutting = uniform_below(rng, 4) == 0;
+    // Known blobs: discs around random centres; 15% of their cells occupied.
+    std::vector<int> first;
+    std::vector<int> second;
+    for (int blob = 0; blob < 7; ++blob) {
+      const int cx = static_cast<int>(uniform_below(rng, 48));
+      const int cy = static_cast<int>(uniform_below(rng, 36));
+      const int r = 4 + static_cast<int>(uniform_below(rng, 9));
+      for (int y = cy - r; y <= cy + r; ++y) {
+        for (int x = cx - r; x <= cx + r; ++x) {
+          const Cell c{x, y};
+          if (!known.in_bounds(c) || (x - cx) * (x - cx) + (y - cy) * (y - cy) > r * r) continue;
+          if (known.reveal(known.index(c), uniform01(rng) < 0.15))
+            (blob < 4 ? first : second).push_back(known.index(c));
+        }
+      }
+    }
+    frontiers = FrontierMap(known);
+    clusters = frontiers.clusters(known, 6.0 * resolution_m, corner_cutting);
+    robot = free_cell(rng);
+    dock = uniform_below(rng, 5) == 0 ? robot : free_cell(rng);
+    previous = uniform_below(rng, 4) == 0 ? robot : free_cell(rng);
+    dock_field.take_in(known, first, dock, corner_cutting);
+    dock_field.take_in(known, second, dock, corner_cutting);
+    // Battery: unlimited, or a reach between a quarter and twice the map's diagonal, above or
+    // below half charge.
+    if (uniform_below(rng, 3) != 0) {
+      battery.capacity = 100.0;
+      battery.level = 20.0 + 70.0 * uniform01(rng);
+      battery.remaining_range_m = (15.0 + 105.0 * uniform01(rng)) * resolution_m;
+    }
+  }
+
+  Cell free_cell(Rng& rng) const {
+    for (;;) {
+      const int i = static_cast<int>(uniform_below(rng, static_cast<std::uint64_t>(known.size())));
+      if (known.is_free(i)) return known.cell(i);
+    }
+  }
+};
+
+/// Integer weights in [0, 30] (ties happen often), some of them zero, and the special vectors.
+std::array<double, 4> random_weights(Rng& rng, int round) {
+  if (round == 0) return {1, 0, 0, 0};
+  if (round == 1) return {0, 1, 0, 0};
+  if (round == 2) return {10, 0, 9, 20};
+  std::array<double, 4> w{};
+  for (double& x : w) x = uniform_below(rng, 3) == 0 ? 0.0 : static_cast<double>(uniform_below(rng, 31));
+  return w;
+}
+
+TEST(EnergyAwareChoice, BoundedSearchChoosesExactlyTheFullArgmin) {
+  int decisions = 0;
+  int goto_decisions = 0;
+  for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+    RandomDecision d(seed, seed % 3 == 0 ? 0.05 : 1.0);
+    Rng rng = make_rng(seed, "weights");
+    for (int round = 0; round < 8; ++round) {
+      const std::array<double, 4> w = random_weights(rng, round);
+      EnergyAwareParams p;
+      p.w1 = w[0];
+      p.w2 = w[1];
+      p.w3 = w[2];
+      p.w4 = w[3];
+      EnergyAware ea("energy_aware", p);
+      DistanceScratch scratch;
+      const auto observe = [&](DistanceOracle& oracle) {
+        return Observation{d.known, d.frontiers, d.clusters,   oracle, d.sensor,  d.robot,
+                           0,       d.previous,  std::nullopt, d.dock, d.battery, 1};
+      };
+      // The full computation, on its own dock field copy (a DockField is a value).
+      DockField full_dock = d.dock_field;
+      GridDistanceOracle full_oracle(d.known, d.robot, d.dock, d.corner_cutting, &full_dock, scratch);
+      const Candidates c = ea.candidates(observe(full_oracle));
+      const int best = argmin_linear(c, ea.weights());
+      DockField dock = d.dock_field;
+      GridDistanceOracle oracle(d.known, d.robot, d.dock, d.corner_cutting, &dock, scratch);
+      const Decision decision = ea.decide(observe(oracle));
+      ++decisions;
+      if (best < 0) {
+        EXPECT_NE(decision.kind, Decision::Kind::GoTo) << "seed " << seed << " round " << round;
+        continue;
+      }
+      ++goto_decisions;
+      ASSERT_EQ(decision.kind, Decision::Kind::GoTo) << "seed " << seed << " round " << round;
+      EXPECT_EQ(decision.goal, c.cells[static_cast<std::size_t>(best)])
+          << "seed " << seed << " round " << round;
+      // The bounded search does no more work than the full one.
+      EXPECT_LE(oracle.expansions(), full_oracle.expansions()) << "seed " << seed << " round " << round;
+    }
+  }
+  EXPECT_EQ(decisions, 320);
+  EXPECT_GT(goto_decisions, 200);  // most situations have a candidate: the test compares choices
+}
+
+TEST(EnergyAwareChoice, LowerBoundsNeverExceedTheSearchedDistances) {
+  int infinite_bounds = 0;
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    RandomDecision d(seed, seed % 2 == 0 ? 0.05 : 1.0);
+    DistanceScratch scratch;
+    GridDistanceOracle oracle(d.known, d.robot, d.dock, d.corner_cutting, &d.dock_field, scratch);
+    std::vector<int> cells;
+    for (int i = 0; i < d.known.size(); ++i) {
+      if (d.known.is_free(i)) cells.push_back(i);
+    }
+    (void)oracle.from_dock(cells, kInf);  // brings the dock field up to date: the triangle bound applies
+    const std::vector<double> exact = oracle.from_robot(cells, kInf);
+    int finite_bounds = 0;
+    for (std::size_t k = 0; k < cells.size(); ++k) {
+      const double bound = oracle.lower_bound_from_robot(cells[k]);
+      EXPECT_LE(bound, exact[k]) << "seed " << seed << " cell " << cells[k];
+      ++(bound == kInf ? infinite_bounds : finite_bounds);
+    }
+    EXPECT_GT(finite_bounds, 0);
+  }
+  EXPECT_GT(infinite_bounds, 0);  // blobs the dock cannot reach, though the robot's blob can
+}
+
+}  // namespace
+}  // namespace fsweep
