@@ -14,10 +14,18 @@
 ///   map (rooms:w=200,h=200,door=3,seed=1, sensor range 10 cells, perfect sensor, run seed 0);
 ///   closest_frontier, energy_aware (10,0,9,20) with unlimited battery and with a 1200 m
 ///   battery.
+/// - `BM_ExploreRooms800/<strategy>`: the same on rooms:w=800,h=800 (seed 1, door 1 as the
+///   generator's default), closest_frontier and energy_aware (10,0,9,20), unlimited battery:
+///   the size at which energy-aware decisions used to cost 95x closest frontier's (issue 14).
+/// - `BM_RappaportFree/r:<m>/<strategy>`: Rappaport 2016's free space (10 m cells, sensor 30 m,
+///   `distance` energy, battery range r, dock at the centre) on an unclipped square, half-width
+///   r/2 + r_s + 1 cell, as sweeps/paper/ sizes it; closest_frontier and energy_aware
+///   (10,0,9,20).
 
 #include <benchmark/benchmark.h>
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -191,6 +199,57 @@ void BM_ExploreRooms200_EnergyAwareBattery(benchmark::State& state) {
 BENCHMARK(BM_ExploreRooms200_ClosestFrontier)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ExploreRooms200_EnergyAware)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ExploreRooms200_EnergyAwareBattery)->Unit(benchmark::kMillisecond);
+
+/// The strategies of the large-map runs: closest frontier and the paper's free-space weights.
+std::array<Item, 2> large_run_strategies() {
+  return {Item{"closest_frontier", nullptr},
+          Item{"energy_aware", {{"w1", 10}, {"w2", 0}, {"w3", 9}, {"w4", 20}}}};
+}
+
+/// Rappaport 2016's free space for battery range `range_m` (metres): 10 m cells, sensor 30 m,
+/// travel-only energy, on the smallest odd square whose half-width is range_m / 2 + 30 m + one
+/// cell, so that the border never cuts the reachable disc or its sensor band.
+RunSpec rappaport_free_spec(const Item& strategy, double range_m) {
+  constexpr double kCellM = 10.0;
+  constexpr double kSensorM = 30.0;
+  const int half = static_cast<int>(std::ceil((range_m / 2.0 + kSensorM) / kCellM)) + 1;
+  const std::string side = std::to_string(2 * half + 1);
+  RunSpec s;
+  s.map = std::make_shared<const WorldMap>(load_map_spec("free:w=" + side + ",h=" + side + ",res=10"));
+  s.strategy = configure_strategy(strategy.label, strategy.json);
+  s.robot.sensor.range_m = kSensorM;
+  s.robot.battery_capacity = range_m;
+  return s;
+}
+
+const bool kLargeRunsRegistered = [] {
+  for (const Item& strategy : large_run_strategies()) {
+    const std::string rooms = std::string("BM_ExploreRooms800/") + strategy.label;
+    benchmark::RegisterBenchmark(rooms.c_str(),
+                                 [strategy](benchmark::State& state) {
+                                   static const auto kMap = std::make_shared<const WorldMap>(
+                                       load_map_spec("rooms:w=800,h=800,seed=1"));
+                                   RunSpec spec;
+                                   spec.map = kMap;
+                                   spec.strategy = configure_strategy(strategy.label, strategy.json);
+                                   spec.robot.sensor.range_m = 10.0;
+                                   run(state, spec);
+                                 })
+        ->Unit(benchmark::kMillisecond)
+        ->Iterations(1);
+    for (const double range_m : {1800.0, 3600.0}) {
+      const std::string name =
+          "BM_RappaportFree/r:" + std::to_string(static_cast<int>(range_m)) + "/" + strategy.label;
+      benchmark::RegisterBenchmark(name.c_str(),
+                                   [strategy, range_m](benchmark::State& state) {
+                                     run(state, rappaport_free_spec(strategy, range_m));
+                                   })
+          ->Unit(benchmark::kMillisecond)
+          ->Iterations(1);
+    }
+  }
+  return true;
+}();
 
 }  // namespace
 }  // namespace fsweep
