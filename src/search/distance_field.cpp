@@ -37,9 +37,10 @@ class FieldEnvironment {
     resolution_m_ = resolution_m;
   }
 
+  using Cost = OctileCost;
   [[nodiscard]] int state_count() const { return known_.size(); }
   static constexpr bool kZeroHeuristic = true;
-  [[nodiscard]] static double heuristic(int /*state*/) { return 0.0; }
+  [[nodiscard]] static Cost heuristic(int /*state*/) { return {}; }
 
   /// Settles states in cost order; once the first target is settled at d*, keeps settling
   /// states up to d* (ties, so every target at d* is exact) and stops at the first beyond.
@@ -59,7 +60,7 @@ class FieldEnvironment {
 
   template <typename Sink>
   void for_each_successor(int state, Sink&& sink) const {
-    for_each_octile_neighbour(known_, state, allow_corner_cutting_, sink);
+    for_each_octile_neighbour<Cost>(known_, state, allow_corner_cutting_, sink);
   }
 
  private:

@@ -79,7 +79,7 @@ class DistanceField {
   [[nodiscard]] Cell source() const { return source_; }
 
  private:
-  BestFirstSearch search_;                   // costs in cells; scaled to metres on read
+  OctileSearch search_;                      // exact costs in cells; scaled to metres on read
   std::vector<std::uint32_t> target_stamp_;  // == target_generation_: cell is a stop target
   /// With a watcher, per target cell its first position in the target list, and per position
   /// the next position of the same cell (-1: none).

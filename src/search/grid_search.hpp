@@ -6,8 +6,11 @@
 /// sees integer state ids only; the environment owns geometry and costs).
 ///
 /// States are ints in [0, state_count()). A grid environment uses the cell index; a state
-/// lattice uses `cell_index * 8 + heading`. Costs and the heuristic are doubles in whatever
-/// unit the environment chooses (the grid planners use cells).
+/// lattice uses `cell_index * 8 + heading`. Costs and the heuristic are of the environment's
+/// cost type (`Env::Cost`, double when not declared) in whatever unit it chooses (the grid
+/// searches use cells): double sums round, so two paths of equal length can differ in the last
+/// bits; OctileCost counts straight and diagonal steps, so a path's cost is exact and equal
+/// lengths are equal costs, whichever path and whichever order the search sums them in.
 ///
 /// It is also the one Dijkstra of the code base: the distance fields (distance_field.hpp,
 /// incremental_distance_field.hpp, the latter by continuing a run after costs dropped) and the
@@ -26,9 +29,41 @@
 #include <vector>
 
 #include "search/stop_condition.hpp"
+#include "world/grid.hpp"
 
 namespace fsweep {
 inline namespace search {
+
+/// An exact 8-connected path cost: `straight` steps of 1 and `diagonal` steps of sqrt(2) cells.
+/// value() = straight + diagonal * sqrt(2), one rounding from the counts: equal counts give the
+/// same double, and distinct counts (below 2^20 steps each) give doubles in the order of their
+/// real values (two such lengths differ by more than 1e-7, their roundings by less than 1e-9),
+/// so comparing values compares lengths exactly. The value of an empty-grid path is
+/// octile_distance() bit for bit.
+struct OctileCost {
+  std::int32_t straight = 0;
+  std::int32_t diagonal = 0;
+  [[nodiscard]] constexpr double value() const { return straight + diagonal * kSqrt2; }
+  friend constexpr OctileCost operator+(OctileCost a, OctileCost b) {
+    return {a.straight + b.straight, a.diagonal + b.diagonal};
+  }
+  friend constexpr bool operator==(OctileCost, OctileCost) = default;
+};
+
+/// The double a cost compares by (see OctileCost).
+[[nodiscard]] constexpr double cost_value(double c) { return c; }
+[[nodiscard]] constexpr double cost_value(OctileCost c) { return c.value(); }
+
+/// The cost type of environment E: E::Cost when declared, else double.
+template <typename E>
+struct EnvironmentCost {
+  using type = double;
+};
+template <typename E>
+  requires requires { typename E::Cost; }
+struct EnvironmentCost<E> {
+  using type = typename E::Cost;
+};
 
 /// What the search does with a state taken from the open list (see SearchEnvironment::visit).
 enum class Visit : std::uint8_t {
@@ -41,24 +76,29 @@ enum class Visit : std::uint8_t {
 };
 
 /// Receives one successor: its state id and the edge cost (> 0 or >= 0, never negative).
+template <typename Cost>
 struct SuccessorSink {
-  void operator()(int /*state*/, double /*cost*/) const {}
+  void operator()(int /*state*/, Cost /*cost*/) const {}
 };
 
-/// The environment contract of BestFirstSearch.
+/// The environment contract of BestFirstSearchT<Cost>.
+/// - `Cost` (optional, default double): the cost type, as the search's.
 /// - `state_count()`: number of state ids; ids are 0..state_count()-1.
 /// - `heuristic(s)`: a consistent lower bound on the cost from s to the goal (0 = Dijkstra).
 ///   Settled states are never reopened, so an inconsistent heuristic loses optimality.
-/// - `visit(s, g)`: called once when s is taken from the open list with its final cost g,
-///   before it is settled; returns Expand, Goal or Stop. May update the environment.
+/// - `visit(s, g)`: called once when s is taken from the open list with its final cost g
+///   (cost_value()), before it is settled; returns Expand, Goal or Stop. May update the
+///   environment.
 /// - `for_each_successor(s, sink)`: calls `sink(next_state, edge_cost)` for each successor.
-template <typename E>
-concept SearchEnvironment = requires(E& env, const E& cenv, int s, double g, SuccessorSink sink) {
-  { cenv.state_count() } -> std::convertible_to<int>;
-  { cenv.heuristic(s) } -> std::convertible_to<double>;
-  { env.visit(s, g) } -> std::same_as<Visit>;
-  cenv.for_each_successor(s, sink);
-};
+template <typename E, typename Cost>
+concept SearchEnvironment =
+    std::same_as<typename EnvironmentCost<E>::type, Cost> &&
+    requires(E& env, const E& cenv, int s, double g, SuccessorSink<Cost> sink) {
+      { cenv.state_count() } -> std::convertible_to<int>;
+      { cenv.heuristic(s) } -> std::convertible_to<Cost>;
+      { env.visit(s, g) } -> std::same_as<Visit>;
+      cenv.for_each_successor(s, sink);
+    };
 
 /// An environment whose heuristic is 0 everywhere (a Dijkstra search) may say so with
 /// `static constexpr bool kZeroHeuristic = true;`: its open list then holds (g, state) entries of
@@ -80,10 +120,12 @@ struct SearchLimits {
 
 /// A start of a run: a state and its initial cost (0 for a single start; a multi-source or
 /// incremental search starts states at their known costs).
-struct SearchSeed {
+template <typename Cost = double>
+struct SearchSeedT {
   int state = -1;
-  double g = 0.0;
+  Cost g{};
 };
+using SearchSeed = SearchSeedT<double>;
 
 /// Result of one run. Costs, parents and settled flags stay readable in the BestFirstSearch
 /// until the next run() or reopen().
@@ -96,30 +138,32 @@ struct SearchOutcome {
   bool stopped = false;
 };
 
-/// Reusable best-first search storage with a generic run().
+/// Reusable best-first search storage with a generic run(), over costs of type `Cost` (double
+/// or OctileCost; the environments' cost type).
 ///
 /// Open-list order (deterministic tie-breaking): smaller f = g + h first; on equal f the
 /// larger g first (the deeper state, which on grids with a consistent heuristic reaches the
 /// goal with fewer expansions); on equal f and g the smaller state id first. The key is a
 /// total order on heap entries, so a run is fully determined by the environment.
 /// Duplicate heap entries replace decrease-key; stale ones are skipped when popped.
-class BestFirstSearch {
+template <typename Cost>
+class BestFirstSearchT {
  public:
   /// Runs from `start` until visit() returns Goal or Stop, the open list empties, or a limit
   /// is hit. A `start` outside [0, state_count()) gives an empty run.
-  template <SearchEnvironment Env>
+  template <SearchEnvironment<Cost> Env>
   SearchOutcome run(Env& env, int start, const SearchLimits& limits = {}) {
     begin_run(static_cast<int>(env.state_count()));
-    (void)lower_cost(env, start, 0.0, -1);
+    (void)lower_cost(env, start, Cost{}, -1);
     return expand(env, limits);
   }
   /// Runs from every seed at once (each opened with its cost g; seeds outside the state range are
   /// ignored, a state seeded twice keeps its cheaper cost and the first seed on a tie). Settled
   /// seeds have parent -1.
-  template <SearchEnvironment Env>
-  SearchOutcome run(Env& env, std::span<const SearchSeed> seeds, const SearchLimits& limits = {}) {
+  template <SearchEnvironment<Cost> Env>
+  SearchOutcome run(Env& env, std::span<const SearchSeedT<Cost>> seeds, const SearchLimits& limits = {}) {
     begin_run(static_cast<int>(env.state_count()));
-    for (const SearchSeed& seed : seeds) (void)lower_cost(env, seed.state, seed.g, -1);
+    for (const SearchSeedT<Cost>& seed : seeds) (void)lower_cost(env, seed.state, seed.g, -1);
     return resume(env, limits);
   }
 
@@ -140,27 +184,32 @@ class BestFirstSearch {
   /// Opens `state` at cost `g`, reached from `parent` (-1: none), if that is below its cost so
   /// far (between reopen() and resume()). Returns whether it did; a state outside the state
   /// range is ignored.
-  template <SearchEnvironment Env>
-  bool lower_cost(const Env& env, int state, double g, int parent) {
+  template <SearchEnvironment<Cost> Env>
+  bool lower_cost(const Env& env, int state, Cost g, int parent) {
     if (!in_range(state)) return false;
     Node& node = nodes_[idx(state)];
-    if (node.run == run_ && node.g <= g) return false;
+    if (node.run == run_ && cost_value(node.g) <= cost_value(g)) return false;
     node = Node{g, parent, run_, 0};
     push_open(env, state, g);
     return true;
   }
   /// Searches from the states opened by lower_cost() since reopen() (or from run()'s seeds).
-  template <SearchEnvironment Env>
+  template <SearchEnvironment<Cost> Env>
   SearchOutcome resume(Env& env, const SearchLimits& limits = {}) {
     auto& heap = open_list<Env>();
     std::make_heap(heap.begin(), heap.end(), Later{});
     return expand(env, limits);
   }
 
-  /// Cost of the best path found to `state` in the last run (+infinity if never reached).
+  /// Cost of the best path found to `state` in the last run, as cost_value() (+infinity if
+  /// never reached).
   [[nodiscard]] double g(int state) const {
-    return reached(state) ? nodes_[idx(state)].g : std::numeric_limits<double>::infinity();
+    return reached(state) ? cost_value(nodes_[idx(state)].g) : std::numeric_limits<double>::infinity();
   }
+  /// The same as a Cost; reached states only.
+  [[nodiscard]] Cost cost(int state) const { return nodes_[idx(state)].g; }
+  /// True if `state` was reached (opened or settled) in the last run.
+  [[nodiscard]] bool reached(int state) const { return in_range(state) && nodes_[idx(state)].run == run_; }
   /// True if `state` was settled (its g is final) in the last run.
   [[nodiscard]] bool settled(int state) const { return in_range(state) && nodes_[idx(state)].pass == pass_; }
   /// Predecessor of a reached state on its best path (-1 for the start or unreached states).
@@ -209,16 +258,16 @@ class BestFirstSearch {
   }
   /// Pushes `state` at cost `g` onto `Env`'s open list (without restoring the heap order).
   template <typename Env>
-  void push_open(const Env& env, int state, double g) {
+  void push_open(const Env& env, int state, Cost g) {
     if constexpr (ZeroHeuristicEnvironment<Env>) {
-      dijkstra_heap_.push_back({g, state});
+      dijkstra_heap_.push_back({cost_value(g), state});
     } else {
-      heap_.push_back({g + static_cast<double>(env.heuristic(state)), g, state});
+      heap_.push_back({cost_value(g + static_cast<Cost>(env.heuristic(state))), cost_value(g), state});
     }
   }
   /// Per-state search data, together so that a relaxation touches one cache line (16 bytes).
   struct Node {
-    double g;
+    Cost g;
     int parent;
     /// == run_: reached in this run (g and parent are valid); else stale.
     std::uint16_t run;
@@ -228,11 +277,9 @@ class BestFirstSearch {
   };
   static std::size_t idx(int state) { return static_cast<std::size_t>(state); }
   [[nodiscard]] bool in_range(int state) const { return state >= 0 && idx(state) < nodes_.size(); }
-  /// Reached (open or settled) in the last run.
-  [[nodiscard]] bool reached(int state) const { return in_range(state) && nodes_[idx(state)].run == run_; }
 
   /// The search loop of run() from the opened seeds.
-  template <SearchEnvironment Env>
+  template <SearchEnvironment<Cost> Env>
   SearchOutcome expand(Env& env, const SearchLimits& limits);
 
   /// Sizes the arrays for `count` states and starts a new run with fresh run and pass stamps, so
@@ -240,7 +287,7 @@ class BestFirstSearch {
   void begin_run(int count) {
     const auto n = static_cast<std::size_t>(count);
     if (nodes_.size() != n || run_ == kLastStamp || pass_ == kLastStamp) {
-      nodes_.assign(n, Node{0.0, -1, 0, 0});
+      nodes_.assign(n, Node{Cost{}, -1, 0, 0});
       run_ = 0;
       pass_ = 0;
     }
@@ -258,8 +305,14 @@ class BestFirstSearch {
   std::vector<DijkstraItem> dijkstra_heap_;
 };
 
-template <SearchEnvironment Env>
-SearchOutcome BestFirstSearch::expand(Env& env, const SearchLimits& limits) {
+/// The search over double costs (planners, geodesic regions).
+using BestFirstSearch = BestFirstSearchT<double>;
+/// The search over exact octile costs (distance fields).
+using OctileSearch = BestFirstSearchT<OctileCost>;
+
+template <typename Cost>
+template <SearchEnvironment<Cost> Env>
+SearchOutcome BestFirstSearchT<Cost>::expand(Env& env, const SearchLimits& limits) {
   SearchOutcome outcome;
   // Locals, not reads through `limits`, in the hot loop.
   const StopCondition stop = limits.stop;
@@ -276,7 +329,7 @@ SearchOutcome BestFirstSearch::expand(Env& env, const SearchLimits& limits) {
     const auto top = heap.back();
     heap.pop_back();
     Node& node = nodes_[idx(top.state)];
-    if (top.g > node.g) continue;
+    if (top.g > cost_value(node.g)) continue;
     if constexpr (!kDijkstra) {
       if (node.pass == pass) continue;
     }
@@ -298,14 +351,16 @@ SearchOutcome BestFirstSearch::expand(Env& env, const SearchLimits& limits) {
     }
 
     // 4. Relax the successors.
-    env.for_each_successor(top.state, [&](int next, double cost) {
+    const Cost g_top = node.g;
+    env.for_each_successor(top.state, [&](int next, Cost cost) {
       Node& n = nodes_[idx(next)];
       if constexpr (!kDijkstra) {
         if (n.pass == pass) return;
       }
-      const double g_next = top.g + cost;
-      if (g_next > g_limit) return;
-      if (n.run == run && n.g <= g_next) return;
+      const Cost g_next = g_top + cost;
+      const double g_next_value = cost_value(g_next);
+      if (g_next_value > g_limit) return;
+      if (n.run == run && cost_value(n.g) <= g_next_value) return;
       n = Node{g_next, top.state, run, 0};
       push_open(env, next, g_next);
       std::push_heap(heap.begin(), heap.end(), Later{});

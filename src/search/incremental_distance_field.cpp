@@ -13,13 +13,14 @@ class OctileMoves {
   OctileMoves(const KnownMap& known, bool allow_corner_cutting)
       : known_(known), allow_corner_cutting_(allow_corner_cutting) {}
 
+  using Cost = OctileCost;
   [[nodiscard]] int state_count() const { return known_.size(); }
   static constexpr bool kZeroHeuristic = true;
-  [[nodiscard]] static double heuristic(int /*state*/) { return 0.0; }
+  [[nodiscard]] static Cost heuristic(int /*state*/) { return {}; }
   static Visit visit(int /*state*/, double /*g*/) { return Visit::Expand; }
   template <typename Sink>
   void for_each_successor(int state, Sink&& sink) const {
-    for_each_octile_neighbour(known_, state, allow_corner_cutting_, sink);
+    for_each_octile_neighbour<Cost>(known_, state, allow_corner_cutting_, sink);
   }
 
  private:
@@ -57,11 +58,13 @@ void IncrementalDistanceField::update(const KnownMap& known, std::span<const int
         if (x < 0 || y < 0 || x >= w || y >= h) continue;
         const int n = y * w + x;
         if (!known.is_free(n)) continue;
-        double best = search_.g(n);
+        const bool reached = search_.reached(n);
+        OctileCost best = reached ? search_.cost(n) : OctileCost{};
         int from = -1;
-        for_each_octile_neighbour(known, n, allow_corner_cutting_, [&](int m, double cost) {
-          const double d = search_.g(m) + cost;
-          if (d < best) {
+        for_each_octile_neighbour<OctileCost>(known, n, allow_corner_cutting_, [&](int m, OctileCost cost) {
+          if (!search_.reached(m)) return;
+          const OctileCost d = search_.cost(m) + cost;
+          if ((!reached && from < 0) || d.value() < best.value()) {
             best = d;
             from = m;
           }

@@ -11,6 +11,8 @@
 ///   blocked corner or squeeze between two diagonally touching blocked cells (a point robot
 ///   touches the shared corner point either way).
 
+#include <type_traits>
+
 #include "world/grid.hpp"
 #include "world/known_map.hpp"
 
@@ -28,11 +30,25 @@ inline namespace search {
   return known.is_free(Cell{a.x + dx, a.y}) && known.is_free(Cell{a.x, a.y + dy});
 }
 
+/// The cost of one straight (1 cell) or diagonal (sqrt(2) cells) step as a `Cost`: double or
+/// the exact OctileCost of grid_search.hpp.
+template <typename Cost>
+constexpr Cost octile_step(bool diagonal) {
+  if constexpr (std::is_same_v<Cost, double>) {
+    return diagonal ? kSqrt2 : 1.0;
+  } else {
+    return diagonal ? Cost{0, 1} : Cost{1, 0};
+  }
+}
+
 /// Calls `sink(next_index, cost_cells)` for every allowed move out of cell `index`, in heading
-/// order (see grid.hpp). `index` must be in the grid; its own state is not checked.
-template <typename Sink>
+/// order (see grid.hpp), with costs of type `Cost` (octile_step). `index` must be in the grid;
+/// its own state is not checked.
+template <typename Cost = double, typename Sink>
 inline void for_each_octile_neighbour(const KnownMap& known, int index, bool allow_corner_cutting,
                                       Sink&& sink) {
+  constexpr Cost kStraight = octile_step<Cost>(false);
+  constexpr Cost kDiagonal = octile_step<Cost>(true);
   const int w = known.width();
   const int h = known.height();
   const int x = index % w;
@@ -50,14 +66,14 @@ inline void for_each_octile_neighbour(const KnownMap& known, int index, bool all
   const bool n = has_n && free_at(index - w);
   const bool cut = allow_corner_cutting;
 
-  if (e) sink(index + 1, 1.0);
-  if (has_e && has_s && (cut || (e && s)) && free_at(index + w + 1)) sink(index + w + 1, kSqrt2);
-  if (s) sink(index + w, 1.0);
-  if (has_w && has_s && (cut || (wst && s)) && free_at(index + w - 1)) sink(index + w - 1, kSqrt2);
-  if (wst) sink(index - 1, 1.0);
-  if (has_w && has_n && (cut || (wst && n)) && free_at(index - w - 1)) sink(index - w - 1, kSqrt2);
-  if (n) sink(index - w, 1.0);
-  if (has_e && has_n && (cut || (e && n)) && free_at(index - w + 1)) sink(index - w + 1, kSqrt2);
+  if (e) sink(index + 1, kStraight);
+  if (has_e && has_s && (cut || (e && s)) && free_at(index + w + 1)) sink(index + w + 1, kDiagonal);
+  if (s) sink(index + w, kStraight);
+  if (has_w && has_s && (cut || (wst && s)) && free_at(index + w - 1)) sink(index + w - 1, kDiagonal);
+  if (wst) sink(index - 1, kStraight);
+  if (has_w && has_n && (cut || (wst && n)) && free_at(index - w - 1)) sink(index - w - 1, kDiagonal);
+  if (n) sink(index - w, kStraight);
+  if (has_e && has_n && (cut || (e && n)) && free_at(index - w + 1)) sink(index - w + 1, kDiagonal);
 }
 
 }  // namespace search

@@ -99,10 +99,12 @@ void GridDistanceOracle::watch_from_robot(std::span<const int> cells, double bou
 }
 
 double GridDistanceOracle::lower_bound_from_robot(int cell) const {
-  // Relative rounding allowed between a path length and its closed form or another path's sum.
+  // The octile length is exact: the fields' costs count straight and diagonal steps
+  // (search/grid_search.hpp, OctileCost), and no path has a smaller value. The triangle bound
+  // subtracts two rounded lengths: allow a relative 1e-9.
   constexpr double kSlack = 1e-9;
   const double res = known_.resolution_m();
-  double bound = octile_distance(robot_, known_.cell(cell)) * res * (1.0 - kSlack);
+  double bound = octile_distance(robot_, known_.cell(cell)) * res;
   if (dock_field_ != nullptr && dock_field_->current()) {
     const double to_robot = dock_field_->distance_m(known_.index(robot_));
     const double to_cell = dock_field_->distance_m(cell);

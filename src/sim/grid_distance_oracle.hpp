@@ -63,10 +63,10 @@ class GridDistanceOracle final : public DistanceOracle {
   [[nodiscard]] std::vector<double> from_dock(std::span<const int> cells, double bound_m) override;
   [[nodiscard]] int nearest_from_robot(std::span<const int> cells) override;
   void watch_from_robot(std::span<const int> cells, double bound_m, SettleWatcher& watcher) override;
-  /// The octile length (no path is shorter) and, when the dock field is up to date, the
-  /// triangle bound d(dock, cell) - d(dock, robot) (+infinity when the robot reaches the dock
-  /// but the dock does not reach `cell`); both less a relative 1e-9, since path lengths are
-  /// sums of doubles whose rounding depends on the path.
+  /// The octile length (no path is shorter; exact, as the fields' costs are) and, when the dock
+  /// field is up to date, the triangle bound d(dock, cell) - d(dock, robot) less a relative
+  /// 1e-9 for its two roundings (+infinity when the robot reaches the dock but the dock does
+  /// not reach `cell`).
   [[nodiscard]] double lower_bound_from_robot(int cell) const override;
 
   /// Expansions of all searches of this oracle (the dock field's updates included).
