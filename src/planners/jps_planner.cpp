@@ -58,10 +58,10 @@ class JumpEnvironment {
         // 3. ... after a straight move, plus the forced ones on each side q.
         for (const Step q : {Step{dy, dx}, Step{-dy, -dx}}) {
           if constexpr (kCut) {
-            if (!free(at.x + q.dx, at.y + q.dy) && free(at.x + dx + q.dx, at.y + dy + q.dy))
+            if (!is_free(at.x + q.dx, at.y + q.dy) && is_free(at.x + dx + q.dx, at.y + dy + q.dy))
               add(dx + q.dx, dy + q.dy);
           } else {
-            if (free(at.x + q.dx, at.y + q.dy) && !free(at.x - dx + q.dx, at.y - dy + q.dy)) {
+            if (is_free(at.x + q.dx, at.y + q.dy) && !is_free(at.x - dx + q.dx, at.y - dy + q.dy)) {
               add(q.dx, q.dy);
               add(dx + q.dx, dy + q.dy);
             }
@@ -73,8 +73,8 @@ class JumpEnvironment {
         add(dx, 0);
         add(0, dy);
         if constexpr (kCut) {
-          if (!free(at.x - dx, at.y) && free(at.x - dx, at.y + dy)) add(-dx, dy);
-          if (!free(at.x, at.y - dy) && free(at.x + dx, at.y - dy)) add(dx, -dy);
+          if (!is_free(at.x - dx, at.y) && is_free(at.x - dx, at.y + dy)) add(-dx, dy);
+          if (!is_free(at.x, at.y - dy) && is_free(at.x + dx, at.y - dy)) add(dx, -dy);
         }
       }
     }
@@ -89,20 +89,21 @@ class JumpEnvironment {
   [[nodiscard]] Cell cell_of(int state) const { return Cell{state % width_, state / width_}; }
   [[nodiscard]] int index_of(Cell c) const { return c.y * width_ + c.x; }
   /// Known free and inside the grid.
-  [[nodiscard]] bool free(int x, int y) const {
+  [[nodiscard]] bool is_free(int x, int y) const {
     return x >= 0 && y >= 0 && x < width_ && y < height_ && cells_[y * width_ + x] == CellState::Free;
   }
   /// The diagonal step from `c` by `s` is allowed (octile_grid.hpp's rule).
   [[nodiscard]] bool diagonal_allowed(Cell c, Step s) const {
-    return free(c.x + s.dx, c.y + s.dy) && (kCut || (free(c.x + s.dx, c.y) && free(c.x, c.y + s.dy)));
+    return is_free(c.x + s.dx, c.y + s.dy) &&
+           (kCut || (is_free(c.x + s.dx, c.y) && is_free(c.x, c.y + s.dy)));
   }
   /// Cell `c`, reached by the straight step `s`, has a forced neighbour.
   [[nodiscard]] bool straight_forced(Cell c, Step s) const {
     for (const Step q : {Step{s.dy, s.dx}, Step{-s.dy, -s.dx}}) {
       if constexpr (kCut) {
-        if (!free(c.x + q.dx, c.y + q.dy) && free(c.x + s.dx + q.dx, c.y + s.dy + q.dy)) return true;
+        if (!is_free(c.x + q.dx, c.y + q.dy) && is_free(c.x + s.dx + q.dx, c.y + s.dy + q.dy)) return true;
       } else {
-        if (free(c.x + q.dx, c.y + q.dy) && !free(c.x - s.dx + q.dx, c.y - s.dy + q.dy)) return true;
+        if (is_free(c.x + q.dx, c.y + q.dy) && !is_free(c.x - s.dx + q.dx, c.y - s.dy + q.dy)) return true;
       }
     }
     return false;
@@ -112,7 +113,7 @@ class JumpEnvironment {
   [[nodiscard]] int jump_straight(Cell c, Step s) const {
     for (;;) {
       c = Cell{c.x + s.dx, c.y + s.dy};
-      if (!free(c.x, c.y)) return -1;
+      if (!is_free(c.x, c.y)) return -1;
       if (c == goal_ || straight_forced(c, s)) return index_of(c);
     }
   }
@@ -124,8 +125,8 @@ class JumpEnvironment {
       c = Cell{c.x + s.dx, c.y + s.dy};
       if (c == goal_) return index_of(c);
       if constexpr (kCut) {
-        if ((!free(c.x - s.dx, c.y) && free(c.x - s.dx, c.y + s.dy)) ||
-            (!free(c.x, c.y - s.dy) && free(c.x + s.dx, c.y - s.dy))) {
+        if ((!is_free(c.x - s.dx, c.y) && is_free(c.x - s.dx, c.y + s.dy)) ||
+            (!is_free(c.x, c.y - s.dy) && is_free(c.x + s.dx, c.y - s.dy))) {
           return index_of(c);
         }
       }
