@@ -13,6 +13,14 @@
 ///   budget and does the same work every time (PRMstar is bounded the same way but checks for
 ///   a solution in a second thread, so its work varies a little; see ompl_planner.hpp).
 ///   `solved` is the fraction of queries solved.
+/// - `BM_ScenarioQuery/<planner>/<map>`: `astar` and `jps` on every reachable query (optimal
+///   length > 0) of each MovingAI scenario in tests/data (arena 160 queries, den312d 320,
+///   room-64-64-8 1000), start heading 0, no corner cutting. One iteration plans the whole set;
+///   `s_per_query` is the mean time per query, `expansions/query` the settled states (cells for
+///   `astar`, jump points for `jps`) and `cells/query` the mean path length in cells (equal for
+///   both: the check that they answer alike). Compare them with interleaved repetitions:
+///   `--benchmark_filter=ScenarioQuery --benchmark_repetitions=9
+///   --benchmark_enable_random_interleaving=true`.
 /// - `BM_AStarDen312d`, `BM_DijkstraDen312d`, `BM_DistanceFieldBounded/max_m:<m>`: the grid
 ///   searches on 512 seeded random reachable pairs of den312d; one iteration is one query.
 /// - `BM_<planner>512/<map>`: issue 4's query times on 512x512 maps (no 512x512 MovingAI map
@@ -179,11 +187,13 @@ void run_planner_512(benchmark::State& state, const char* planner_name) {
 
 // NOLINTBEGIN(readability-identifier-naming): Google Benchmark's BM_ names
 void BM_AStar512(benchmark::State& state) { run_planner_512(state, "astar"); }
+void BM_Jps512(benchmark::State& state) { run_planner_512(state, "jps"); }
 void BM_Lattice512(benchmark::State& state) { run_planner_512(state, "lattice"); }
 void BM_LatticeAStar512(benchmark::State& state) { run_planner_512(state, "lattice_astar"); }
 void BM_ShortestFewestTurns512(benchmark::State& state) { run_planner_512(state, "shortest_fewest_turns"); }
 // NOLINTEND(readability-identifier-naming)
 BENCHMARK(BM_AStar512)->Arg(0)->Arg(1)->Iterations(kQueries512)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Jps512)->Arg(0)->Arg(1)->Iterations(kQueries512)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Lattice512)->Arg(0)->Arg(1)->Iterations(kQueries512)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_LatticeAStar512)->Arg(0)->Arg(1)->Iterations(kQueries512)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ShortestFewestTurns512)->Arg(0)->Arg(1)->Iterations(kQueries512)->Unit(benchmark::kMillisecond);
@@ -257,6 +267,69 @@ const bool kPlannerQueriesRegistered = [] {
   for (const std::string& name : planner_names()) {
     benchmark::RegisterBenchmark(("BM_PlannerQuery/" + name).c_str(), planner_query, name)
         ->Unit(benchmark::kMillisecond);
+  }
+  return true;
+}();
+
+/// A MovingAI map of tests/data, fully known, and the reachable queries of its scenario.
+struct ScenarioMap {
+  const char* label;
+  const char* map_file;
+  const char* scen_file;
+};
+
+constexpr std::array<ScenarioMap, 3> kScenarioMaps{
+    ScenarioMap{"arena", "arena.map", "arena.map.scen"},
+    ScenarioMap{"den312d", "den312d.map", "den312d.map.scen"},
+    ScenarioMap{"room-64-64-8", "room-64-64-8.map", "room-64-64-8-random-1.scen"}};
+
+ScenarioSet load_scenario_set(const ScenarioMap& files) {
+  ScenarioSet s;
+  s.known = fully_known(load_movingai_map(std::string(FSWEEP_TEST_DATA) + "/" + files.map_file));
+  for (const ScenarioQuery& row : load_scenario(std::string(FSWEEP_TEST_DATA) + "/" + files.scen_file)) {
+    if (row.optimal_length <= 0.0) continue;  // 0 marks an unreachable pair
+    PlanRequest q;
+    q.start = row.start;
+    q.goal = row.goal;
+    s.queries.push_back(q);
+  }
+  return s;
+}
+
+/// One iteration = every query of map `which` of kScenarioMaps, planned in order.
+void scenario_query(benchmark::State& state, const std::string& name, std::size_t which) {
+  static const std::array<ScenarioSet, kScenarioMaps.size()> kSets{load_scenario_set(kScenarioMaps[0]),
+                                                                   load_scenario_set(kScenarioMaps[1]),
+                                                                   load_scenario_set(kScenarioMaps[2])};
+  const ScenarioSet& s = kSets[which];
+  const auto planner = make_planner(name, nlohmann::json::object());
+  double cells = 0.0;
+  for (const PlanRequest& q : s.queries) cells += planner->plan(s.known, q).length_m;  // warm-up, untimed
+  long expansions = 0;
+  for (auto _ : state) {
+    for (const PlanRequest& q : s.queries) {
+      const PlanResult r = planner->plan(s.known, q);
+      expansions += r.expansions;
+      benchmark::DoNotOptimize(r.length_m);
+    }
+  }
+  const auto queries = static_cast<double>(s.queries.size());
+  state.counters["queries"] = queries;
+  state.counters["cells/query"] = cells / queries;  // 1 m cells
+  state.counters["s_per_query"] = benchmark::Counter(
+      queries, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["expansions/query"] = benchmark::Counter(
+      static_cast<double>(expansions) / (queries * static_cast<double>(state.iterations())));
+}
+
+/// BM_ScenarioQuery/<planner>/<map> for astar and jps on every map of kScenarioMaps.
+const bool kScenarioQueriesRegistered = [] {
+  for (const char* name : {"astar", "jps"}) {
+    for (std::size_t m = 0; m < kScenarioMaps.size(); ++m) {
+      const std::string label = std::string("BM_ScenarioQuery/") + name + "/" + kScenarioMaps[m].label;
+      benchmark::RegisterBenchmark(label.c_str(), scenario_query, std::string(name), m)
+          ->Unit(benchmark::kMicrosecond);
+    }
   }
   return true;
 }();

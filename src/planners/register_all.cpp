@@ -7,6 +7,7 @@
 
 #include "planners/budget_params.hpp"
 #include "planners/grid_planner.hpp"
+#include "planners/jps_planner.hpp"
 #include "planners/lattice_planner.hpp"
 #include "planners/ompl_planner.hpp"
 #include "planners/registry.hpp"
@@ -38,6 +39,12 @@ ParamDecl<GridPlannerParams> grid_params() {
   return d;
 }
 
+ParamDecl<JpsPlannerParams> jps_params() {
+  ParamDecl<JpsPlannerParams> d;
+  declare_budget(d, "jump points one query may settle");
+  return d;
+}
+
 ParamDecl<LatticePlannerParams> lattice_params() {
   ParamDecl<LatticePlannerParams> d;
   declare_budget(d, "(cell, heading) states one query may settle");
@@ -61,6 +68,11 @@ PlannerCatalog make_catalog() {
                            grid_params, [](const GridPlannerParams& p) -> Made {
                              return std::make_unique<GridPlanner>(GridSearchKind::Dijkstra, p);
                            });
+  c.add<JpsPlannerParams>("jps", JpsPlanner::kCapabilities,
+                          "jump point search (Harabor 2011), deterministic and optimal: astar's lengths, "
+                          "settling only jump points",
+                          jps_params,
+                          [](const JpsPlannerParams& p) -> Made { return std::make_unique<JpsPlanner>(p); });
   c.add<LatticePlannerParams>("lattice", LatticePlanner::kCapabilities,
                               "Mei 2006 minimum-energy planner on the (cell, heading) lattice, Dijkstra",
                               lattice_params, [](const LatticePlannerParams& p) -> Made {

@@ -1,0 +1,187 @@
+#include "planners/jps_planner.hpp"
+
+#include <array>
+#include <vector>
+
+#include "planners/search_result.hpp"
+
+namespace fsweep {
+inline namespace planners {
+namespace {
+
+/// A unit step (dx, dy), each in -1..1, not both 0.
+struct Step {
+  int dx = 0;
+  int dy = 0;
+};
+
+constexpr int sign_of(int v) { return (v > 0) - (v < 0); }
+
+/// Search environment of one JPS query (the BestFirstSearch contract of grid_search.hpp): states
+/// are cell indices, but only jump points are ever opened; a successor is the jump point found
+/// from a state in one of its pruned directions, at the octile length of the segment between
+/// them. `kCut` is PlanRequest::allow_corner_cutting (the rules of the file comment of
+/// jps_planner.hpp). The direction a state was reached in comes from its parent in `search`,
+/// which runs this environment (a settled state's parent is final).
+template <bool kCut>
+class JumpEnvironment {
+ public:
+  JumpEnvironment(const KnownMap& known, Cell goal, const BestFirstSearch& search)
+      : cells_(known.cells().data().data()),
+        width_(known.width()),
+        height_(known.height()),
+        goal_(goal),
+        search_(search) {}
+
+  [[nodiscard]] int state_count() const { return width_ * height_; }
+  [[nodiscard]] double heuristic(int state) const { return octile_distance(cell_of(state), goal_); }
+  Visit visit(int state, double /*g*/) const {
+    return state == index_of(goal_) ? Visit::Goal : Visit::Expand;
+  }
+
+  template <typename Sink>
+  void for_each_successor(int state, Sink&& sink) const {
+    const Cell at = cell_of(state);
+    std::array<Step, 8> steps{};
+    int count = 0;
+    const auto add = [&](int dx, int dy) { steps[static_cast<std::size_t>(count++)] = Step{dx, dy}; };
+    const int parent = search_.parent(state);
+    if (parent < 0) {
+      // 1. The start: every direction.
+      for (const Cell d : kDirections) add(d.x, d.y);
+    } else {
+      const Cell from = cell_of(parent);
+      const int dx = sign_of(at.x - from.x);
+      const int dy = sign_of(at.y - from.y);
+      add(dx, dy);  // 2. The natural neighbour straight ahead ...
+      if (dx == 0 || dy == 0) {
+        // 3. ... after a straight move, plus the forced ones on each side q.
+        for (const Step q : {Step{dy, dx}, Step{-dy, -dx}}) {
+          if constexpr (kCut) {
+            if (!is_free(at.x + q.dx, at.y + q.dy) && is_free(at.x + dx + q.dx, at.y + dy + q.dy))
+              add(dx + q.dx, dy + q.dy);
+          } else {
+            if (is_free(at.x + q.dx, at.y + q.dy) && !is_free(at.x - dx + q.dx, at.y - dy + q.dy)) {
+              add(q.dx, q.dy);
+              add(dx + q.dx, dy + q.dy);
+            }
+          }
+        }
+      } else {
+        // 4. ... after a diagonal move, plus both of its straight components and (corner
+        //    cutting only) the forced neighbours.
+        add(dx, 0);
+        add(0, dy);
+        if constexpr (kCut) {
+          if (!is_free(at.x - dx, at.y) && is_free(at.x - dx, at.y + dy)) add(-dx, dy);
+          if (!is_free(at.x, at.y - dy) && is_free(at.x + dx, at.y - dy)) add(dx, -dy);
+        }
+      }
+    }
+    for (int k = 0; k < count; ++k) {
+      const Step s = steps[static_cast<std::size_t>(k)];
+      const int found = s.dx == 0 || s.dy == 0 ? jump_straight(at, s) : jump_diagonal(at, s);
+      if (found >= 0) sink(found, octile_distance(at, cell_of(found)));
+    }
+  }
+
+ private:
+  [[nodiscard]] Cell cell_of(int state) const { return Cell{state % width_, state / width_}; }
+  [[nodiscard]] int index_of(Cell c) const { return c.y * width_ + c.x; }
+  /// Known free and inside the grid.
+  [[nodiscard]] bool is_free(int x, int y) const {
+    return x >= 0 && y >= 0 && x < width_ && y < height_ && cells_[y * width_ + x] == CellState::Free;
+  }
+  /// The diagonal step from `c` by `s` is allowed (octile_grid.hpp's rule).
+  [[nodiscard]] bool diagonal_allowed(Cell c, Step s) const {
+    return is_free(c.x + s.dx, c.y + s.dy) &&
+           (kCut || (is_free(c.x + s.dx, c.y) && is_free(c.x, c.y + s.dy)));
+  }
+  /// Cell `c`, reached by the straight step `s`, has a forced neighbour.
+  [[nodiscard]] bool straight_forced(Cell c, Step s) const {
+    for (const Step q : {Step{s.dy, s.dx}, Step{-s.dy, -s.dx}}) {
+      if constexpr (kCut) {
+        if (!is_free(c.x + q.dx, c.y + q.dy) && is_free(c.x + s.dx + q.dx, c.y + s.dy + q.dy)) return true;
+      } else {
+        if (is_free(c.x + q.dx, c.y + q.dy) && !is_free(c.x - s.dx + q.dx, c.y - s.dy + q.dy)) return true;
+      }
+    }
+    return false;
+  }
+  /// The first jump point from `c` along the straight direction `s` (the goal or a cell with a
+  /// forced neighbour), or -1 if a blocked cell comes first.
+  [[nodiscard]] int jump_straight(Cell c, Step s) const {
+    for (;;) {
+      c = Cell{c.x + s.dx, c.y + s.dy};
+      if (!is_free(c.x, c.y)) return -1;
+      if (c == goal_ || straight_forced(c, s)) return index_of(c);
+    }
+  }
+  /// The first jump point from `c` along the diagonal `s`: the goal, a cell with a forced
+  /// neighbour (corner cutting only), or a cell from which jump_straight() along (dx, 0) or
+  /// (0, dy) finds one; -1 if a disallowed step comes first.
+  [[nodiscard]] int jump_diagonal(Cell c, Step s) const {
+    while (diagonal_allowed(c, s)) {
+      c = Cell{c.x + s.dx, c.y + s.dy};
+      if (c == goal_) return index_of(c);
+      if constexpr (kCut) {
+        if ((!is_free(c.x - s.dx, c.y) && is_free(c.x - s.dx, c.y + s.dy)) ||
+            (!is_free(c.x, c.y - s.dy) && is_free(c.x + s.dx, c.y - s.dy))) {
+          return index_of(c);
+        }
+      }
+      if (jump_straight(c, Step{s.dx, 0}) >= 0 || jump_straight(c, Step{0, s.dy}) >= 0) return index_of(c);
+    }
+    return -1;
+  }
+
+  const CellState* cells_;
+  int width_;
+  int height_;
+  Cell goal_;
+  const BestFirstSearch& search_;
+};
+
+/// Every cell of a chain of jump points, each consecutive pair on one straight or diagonal line.
+std::vector<Cell> fill_segments(const std::vector<Cell>& jump_points) {
+  std::vector<Cell> cells;
+  if (jump_points.empty()) return cells;
+  cells.push_back(jump_points.front());
+  for (std::size_t i = 1; i < jump_points.size(); ++i) {
+    const Cell to = jump_points[i];
+    const int dx = sign_of(to.x - cells.back().x);
+    const int dy = sign_of(to.y - cells.back().y);
+    while (cells.back() != to) cells.push_back(Cell{cells.back().x + dx, cells.back().y + dy});
+  }
+  return cells;
+}
+
+/// One query's search over `Env`: the filled-in cells from start to goal, or the failure.
+template <typename Env>
+SearchResult search_jumps(BestFirstSearch& search, Env env, const KnownMap& known, Cell start,
+                          const StopCondition& stop) {
+  SearchLimits limits;
+  limits.stop = stop;
+  const SearchOutcome outcome = search.run(env, known.index(start), limits);
+  SearchResult result = search_result(search, outcome, [&known](int s) { return known.cell(s); });
+  result.path = fill_segments(result.path);
+  return result;
+}
+
+}  // namespace
+
+std::unique_ptr<Planner> JpsPlanner::clone() const { return std::make_unique<JpsPlanner>(params_); }
+
+SearchResult JpsPlanner::search(const KnownMap& known, const PlanRequest& request,
+                                const StopCondition& stop) {
+  // Start == goal settles the start as the goal (a one-cell path).
+  if (request.allow_corner_cutting) {
+    return search_jumps(search_, JumpEnvironment<true>(known, request.goal, search_), known, request.start,
+                        stop);
+  }
+  return search_jumps(search_, JumpEnvironment<false>(known, request.goal, search_), known, request.start,
+                      stop);
+}
+
+}  // namespace planners
+}  // namespace fsweep
