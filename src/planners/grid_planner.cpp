@@ -10,7 +10,8 @@ namespace fsweep {
 inline namespace planners {
 namespace {
 
-/// Search environment of one query: cells are states, octile moves in cells, the goal cell
+/// Search environment of one query: cells are states, octile moves in cells (exact costs,
+/// OctileCost, so equal lengths tie exactly and the larger-g rule orders them), the goal cell
 /// ends the search; the heuristic is the octile distance for A* and 0 for Dijkstra (declared,
 /// so BestFirstSearch uses its Dijkstra open list: same order, f == g).
 template <bool kAStar>
@@ -23,15 +24,16 @@ class GridEnvironment {
         width_(known.width()),
         allow_corner_cutting_(allow_corner_cutting) {}
 
+  using Cost = OctileCost;
   static constexpr bool kZeroHeuristic = !kAStar;
   [[nodiscard]] int state_count() const { return known_.size(); }
-  [[nodiscard]] double heuristic(int state) const {
-    return kAStar ? octile_distance(Cell{state % width_, state / width_}, goal_) : 0.0;
+  [[nodiscard]] Cost heuristic(int state) const {
+    return kAStar ? octile_cost(Cell{state % width_, state / width_}, goal_) : Cost{};
   }
   Visit visit(int state, double /*g*/) const { return state == goal_index_ ? Visit::Goal : Visit::Expand; }
   template <typename Sink>
   void for_each_successor(int state, Sink&& sink) const {
-    for_each_octile_neighbour(known_, state, allow_corner_cutting_, sink);
+    for_each_octile_neighbour<Cost>(known_, state, allow_corner_cutting_, sink);
   }
 
  private:
@@ -44,7 +46,7 @@ class GridEnvironment {
 
 /// One query's search with `search` over `Env`: the cells from start to goal, or the failure.
 template <typename Env>
-SearchResult search_grid(BestFirstSearch& search, const Env& env, const KnownMap& known, Cell start,
+SearchResult search_grid(OctileSearch& search, const Env& env, const KnownMap& known, Cell start,
                          const StopCondition& stop) {
   SearchLimits limits;
   limits.stop = stop;

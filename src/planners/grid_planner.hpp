@@ -61,7 +61,7 @@ class GridPlanner final : public Planner {
  private:
   GridSearchKind kind_;
   GridPlannerParams params_;
-  BestFirstSearch search_;
+  OctileSearch search_;
 };
 
 }  // namespace planners

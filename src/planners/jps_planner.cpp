@@ -26,7 +26,8 @@ constexpr int sign_of(int v) { return (v > 0) - (v < 0); }
 template <bool kCut>
 class JumpEnvironment {
  public:
-  JumpEnvironment(const KnownMap& known, Cell goal, const BestFirstSearch& search)
+  using Cost = OctileCost;
+  JumpEnvironment(const KnownMap& known, Cell goal, const OctileSearch& search)
       : cells_(known.cells().data().data()),
         width_(known.width()),
         height_(known.height()),
@@ -34,7 +35,7 @@ class JumpEnvironment {
         search_(search) {}
 
   [[nodiscard]] int state_count() const { return width_ * height_; }
-  [[nodiscard]] double heuristic(int state) const { return octile_distance(cell_of(state), goal_); }
+  [[nodiscard]] Cost heuristic(int state) const { return octile_cost(cell_of(state), goal_); }
   Visit visit(int state, double /*g*/) const {
     return state == index_of(goal_) ? Visit::Goal : Visit::Expand;
   }
@@ -81,7 +82,7 @@ class JumpEnvironment {
     for (int k = 0; k < count; ++k) {
       const Step s = steps[static_cast<std::size_t>(k)];
       const int found = s.dx == 0 || s.dy == 0 ? jump_straight(at, s) : jump_diagonal(at, s);
-      if (found >= 0) sink(found, octile_distance(at, cell_of(found)));
+      if (found >= 0) sink(found, octile_cost(at, cell_of(found)));
     }
   }
 
@@ -139,7 +140,7 @@ class JumpEnvironment {
   int width_;
   int height_;
   Cell goal_;
-  const BestFirstSearch& search_;
+  const OctileSearch& search_;
 };
 
 /// Every cell of a chain of jump points, each consecutive pair on one straight or diagonal line.
@@ -158,7 +159,7 @@ std::vector<Cell> fill_segments(const std::vector<Cell>& jump_points) {
 
 /// One query's search over `Env`: the filled-in cells from start to goal, or the failure.
 template <typename Env>
-SearchResult search_jumps(BestFirstSearch& search, Env env, const KnownMap& known, Cell start,
+SearchResult search_jumps(OctileSearch& search, Env env, const KnownMap& known, Cell start,
                           const StopCondition& stop) {
   SearchLimits limits;
   limits.stop = stop;

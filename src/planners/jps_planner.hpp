@@ -66,7 +66,7 @@ class JpsPlanner final : public Planner {
 
  private:
   JpsPlannerParams params_;
-  BestFirstSearch search_;
+  OctileSearch search_;
 };
 
 }  // namespace planners

@@ -13,8 +13,8 @@ inline namespace planners {
 /// The result of the run of `search` that ended with `outcome`: Timeout when the stop condition
 /// ended it, NoPath when no goal state was reached, else Success with the cell of every state
 /// from the start to the goal (`cell_of(state)`); `expansions` in every case.
-template <typename CellOf>
-[[nodiscard]] SearchResult search_result(const BestFirstSearch& search, const SearchOutcome& outcome,
+template <typename Cost, typename CellOf>
+[[nodiscard]] SearchResult search_result(const BestFirstSearchT<Cost>& search, const SearchOutcome& outcome,
                                          CellOf cell_of) {
   SearchResult result;
   result.expansions = outcome.expansions;

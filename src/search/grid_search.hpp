@@ -50,6 +50,13 @@ struct OctileCost {
   friend constexpr bool operator==(OctileCost, OctileCost) = default;
 };
 
+/// The octile length between two cells as an exact cost: its value is octile_distance(a, b).
+[[nodiscard]] inline OctileCost octile_cost(Cell a, Cell b) {
+  const int dx = a.x > b.x ? a.x - b.x : b.x - a.x;
+  const int dy = a.y > b.y ? a.y - b.y : b.y - a.y;
+  return dx < dy ? OctileCost{dy - dx, dx} : OctileCost{dx - dy, dy};
+}
+
 /// The double a cost compares by (see OctileCost).
 [[nodiscard]] constexpr double cost_value(double c) { return c; }
 [[nodiscard]] constexpr double cost_value(OctileCost c) { return c.value(); }
@@ -60,7 +67,7 @@ struct EnvironmentCost {
   using type = double;
 };
 template <typename E>
-  requires requires { typename E::Cost; }
+requires requires { typename E::Cost; }
 struct EnvironmentCost<E> {
   using type = typename E::Cost;
 };
@@ -91,14 +98,13 @@ struct SuccessorSink {
 ///   environment.
 /// - `for_each_successor(s, sink)`: calls `sink(next_state, edge_cost)` for each successor.
 template <typename E, typename Cost>
-concept SearchEnvironment =
-    std::same_as<typename EnvironmentCost<E>::type, Cost> &&
+concept SearchEnvironment = std::same_as<typename EnvironmentCost<E>::type, Cost> &&
     requires(E& env, const E& cenv, int s, double g, SuccessorSink<Cost> sink) {
-      { cenv.state_count() } -> std::convertible_to<int>;
-      { cenv.heuristic(s) } -> std::convertible_to<Cost>;
-      { env.visit(s, g) } -> std::same_as<Visit>;
-      cenv.for_each_successor(s, sink);
-    };
+  { cenv.state_count() } -> std::convertible_to<int>;
+  { cenv.heuristic(s) } -> std::convertible_to<Cost>;
+  { env.visit(s, g) } -> std::same_as<Visit>;
+  cenv.for_each_successor(s, sink);
+};
 
 /// An environment whose heuristic is 0 everywhere (a Dijkstra search) may say so with
 /// `static constexpr bool kZeroHeuristic = true;`: its open list then holds (g, state) entries of

@@ -24,6 +24,14 @@ class MetricsRecorder {
 
   /// Appends the robot's new cell to the trajectory.
   void record_position(Cell c) { trajectory_.push_back(c); }
+  /// Counts one step of travel in heading `heading` (odd: diagonal) on cells of `resolution_m`:
+  /// distance_m is computed from the counts of straight and diagonal steps, exact as path
+  /// lengths are (world/motion.hpp), not summed step by step.
+  void record_step(int heading, double resolution_m) {
+    ++((heading & 1) != 0 ? diagonal_steps_ : straight_steps_);
+    metrics_.distance_m =
+        (static_cast<double>(straight_steps_) + static_cast<double>(diagonal_steps_) * kSqrt2) * resolution_m;
+  }
   /// Counts a recharge at the current (last) trajectory cell.
   void record_recharge() {
     ++metrics_.recharges;
@@ -45,6 +53,8 @@ class MetricsRecorder {
 
  private:
   RunMetrics metrics_;
+  long straight_steps_ = 0;
+  long diagonal_steps_ = 0;
   std::vector<ProgressSample> progress_;
   /// The travel distance (metres) of the next progress sample.
   double next_progress_m_ = 0.0;

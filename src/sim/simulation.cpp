@@ -114,7 +114,7 @@ bool Simulation::move_to(Cell next) {
     ++m.turns;
     m.turned_deg += 45.0 * cost.turns;
   }
-  m.distance_m += cost.metres;
+  recorder_.record_step(cost.heading, setup_->resolution_m);
   m.energy += cost.energy;
   ++m.steps;
   robot_.position = next;

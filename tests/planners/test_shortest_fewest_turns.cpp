@@ -26,12 +26,12 @@ using testing::expect_valid_path;
 using testing::known_from_ascii;
 using testing::mei_request;
 
-TEST(ShortestFewestTurns, OneTurnWhereDijkstraZigZags) {
+TEST(ShortestFewestTurns, OneTurnFromHeadingEast) {
   // Open 10x8 room, (0,4) -> (8,0): every shortest path has 4 east and 4 north-east steps
   // (length 4 + 4 sqrt(2)). From heading east the cheapest is E,E,E,E then NE,NE,NE,NE: one stop
   // and one 45-degree turn, energy 4 + 4 sqrt(2) + 0.5 + 0.4 (starting north-east would need a
-  // turn at the start and another back). Dijkstra's tie-breaking (larger g, then smaller cell
-  // index) returns a staircase with 3 stops and turns instead: 4 + 4 sqrt(2) + 3 x 0.9.
+  // turn at the start and another back). (Dijkstra, with exact octile costs, finds a one-turn
+  // path here too: its old staircase came from rounding in summed costs.)
   const auto m = known_from_ascii({
       "........G.",
       "..........",
@@ -53,13 +53,30 @@ TEST(ShortestFewestTurns, OneTurnWhereDijkstraZigZags) {
   EXPECT_NEAR(r.energy, length + 0.5 + 0.4, 1e-9);
   const std::vector<Cell> expected{{0, 4}, {1, 4}, {2, 4}, {3, 4}, {4, 4}, {5, 3}, {6, 2}, {7, 1}, {8, 0}};
   EXPECT_EQ(r.path, expected);
+}
 
+TEST(ShortestFewestTurns, FewerTurnsWhereDijkstraTurnsMore) {
+  // Two obstacles; (6,5) -> (1,2) from heading east. Every shortest path has the same length;
+  // Dijkstra's tie-breaking (smaller f, larger g, smaller cell index) picks one with more turns
+  // than the cheapest in energy, which shortest_fewest_turns finds.
+  const auto m = known_from_ascii({
+      "........",
+      "....#...",
+      ".G......",
+      "........",
+      "........",
+      "...#..S.",
+  });
+  const PlanRequest req = mei_request(m.start, m.goal, 0);
+  ShortestFewestTurnsPlanner sft;
+  const PlanResult r = sft.plan(m.known, req);
+  expect_valid_path(m.known, req, r);
   GridPlanner dijkstra(GridSearchKind::Dijkstra);
   const PlanResult d = dijkstra.plan(m.known, req);
   expect_valid_path(m.known, req, d);
-  EXPECT_NEAR(d.length_m, length, 1e-9);
-  EXPECT_EQ(d.turns, 3) << "dijkstra's tie-breaking changed; this case no longer shows a staircase";
-  EXPECT_NEAR(d.energy, length + 3 * 0.9, 1e-9);
+  EXPECT_EQ(r.length_m, d.length_m);  // exact lengths: equal, not merely close
+  EXPECT_LT(r.turns, d.turns);
+  EXPECT_LT(r.energy, d.energy);
 }
 
 TEST(ShortestFewestTurns, StartHeadingCounts) {

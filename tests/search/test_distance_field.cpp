@@ -46,7 +46,7 @@ TEST(DistanceField, MatchesPlannerLengths) {
         const PlanResult plan = astar.plan(known, req);
         const int i = known.index(target);
         if (plan.status == PlanStatus::Success) {
-          EXPECT_NEAR(field.distance_m(i), plan.length_m, 1e-9);
+          EXPECT_EQ(field.distance_m(i), plan.length_m);  // exact costs: bit for bit
           const std::vector<Cell> path = field.path_to(i);
           ASSERT_FALSE(path.empty());
           EXPECT_EQ(path.front(), source);
@@ -249,6 +249,23 @@ TEST(DistanceField, WatcherStopsTheSearch) {
   EXPECT_TRUE(field.reached(known.index(Cell{10, 0})));
   EXPECT_FALSE(field.reached(known.index(Cell{11, 0})));
   EXPECT_LT(field.expansions(), 200);
+}
+
+TEST(OctileCost, ValuesAreExactLengths) {
+  // The value of the octile cost is octile_distance() bit for bit, and on an open grid every
+  // field distance is exactly the octile length (summed doubles would drift in the last bits).
+  const KnownMap known = testing::random_known_map(300, 200, 0.0, 1, 1.0);
+  DistanceField field;
+  field.compute(known, Cell{150, 100}, DistanceQuery{});
+  for (int i = 0; i < known.size(); i += 7) {
+    const Cell c = known.cell(i);
+    EXPECT_EQ(octile_cost(Cell{150, 100}, c).value(), octile_distance(Cell{150, 100}, c));
+    ASSERT_EQ(field.distance_m(i), octile_distance(Cell{150, 100}, c)) << c.x << "," << c.y;
+  }
+  // Equal lengths compare equal, different ones in the order of their real values.
+  EXPECT_EQ((OctileCost{3, 2} + OctileCost{1, 1}).value(), (OctileCost{4, 3}).value());
+  EXPECT_GT((OctileCost{0, 29}).value(), (OctileCost{41, 0}).value());  // 29 sqrt(2) = 41.01...
+  EXPECT_LT((OctileCost{0, 70}).value(), (OctileCost{99, 0}).value());  // 70 sqrt(2) = 98.99...
 }
 
 }  // namespace
