@@ -13,6 +13,12 @@ namespace {
 /// different orders, so equal lengths may differ in the last bits).
 constexpr double kSlackCells = 1e-9;
 
+/// The search bound in cells of a query on cells of `resolution_m`: inclusive up to rounding, so
+/// a cell exactly at max_distance_m is reached.
+double limit_cells(const DistanceQuery& query, double resolution_m) {
+  return query.max_distance_m / resolution_m * (1.0 + 1e-12) + kSlackCells;
+}
+
 /// Dijkstra environment of one compute(): cells are states, octile moves, no heuristic, and the
 /// early-stop rule of DistanceQuery::stop_at_first_of in visit().
 class FieldEnvironment {
@@ -139,9 +145,9 @@ void DistanceField::compute(const KnownMap& known, Cell source, const DistanceQu
     targets = target_stamp_.data();
   }
 
-  // 2. Bound in cells, inclusive up to rounding: a cell exactly at max_distance_m is reached.
+  // 2. Bound in cells.
   SearchLimits limits;
-  limits.g_limit = query.max_distance_m / resolution_m_ * (1.0 + 1e-12) + kSlackCells;
+  limits.g_limit = limit_cells(query, resolution_m_);
   limits.stop = query.stop;
 
   // 3. Dijkstra from the source; a non-free source runs from no state, leaving the field empty.
@@ -167,6 +173,22 @@ std::vector<Cell> DistanceField::path_to(int index) const {
   path.reserve(states.size());
   for (const int s : states) path.push_back(Cell{s % width_, s / width_});
   return path;
+}
+
+std::optional<double> PointDistance::compute(const KnownMap& known, Cell source, Cell goal,
+                                             const DistanceQuery& query) {
+  expansions_ = 0;
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  if (!known.is_free(source) || !known.is_free(goal)) return kInf;  // as an empty or unreached field
+  SearchLimits limits;
+  limits.g_limit = limit_cells(query, known.resolution_m());
+  limits.stop = query.stop;
+  const OctileGoalEnvironment<true> env(known, goal, query.allow_corner_cutting);
+  const SearchOutcome outcome = search_.run(env, known.index(source), limits);
+  expansions_ = outcome.expansions;
+  if (outcome.goal >= 0) return search_.g(outcome.goal) * known.resolution_m();
+  if (outcome.stopped) return std::nullopt;
+  return kInf;
 }
 
 }  // namespace search

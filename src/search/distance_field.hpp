@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -91,6 +92,24 @@ class DistanceField {
   long expansions_ = 0;
   bool stopped_ = false;
   Cell source_{};
+};
+
+/// One path length over known free space by A* (octile heuristic, OctileGoalEnvironment of
+/// octile_grid.hpp), for a caller that needs the distance to a few cells rather than a field.
+/// Costs are exact, so the length equals DistanceField's for the same cell bit for bit.
+class PointDistance {
+ public:
+  /// Path length (metres) from `source` to `goal` under `query`'s bound and corner rule (its
+  /// target lists and watcher are not used): +infinity when `goal` is unreachable or beyond
+  /// max_distance_m as DistanceField reads it; nullopt when query.stop ended the search first.
+  [[nodiscard]] std::optional<double> compute(const KnownMap& known, Cell source, Cell goal,
+                                              const DistanceQuery& query);
+  /// Cells settled by the last compute().
+  [[nodiscard]] long expansions() const { return expansions_; }
+
+ private:
+  OctileSearch search_;
+  long expansions_ = 0;
 };
 
 }  // namespace search

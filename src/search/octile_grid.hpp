@@ -13,6 +13,7 @@
 
 #include <type_traits>
 
+#include "search/grid_search.hpp"
 #include "world/grid.hpp"
 #include "world/known_map.hpp"
 
@@ -75,6 +76,47 @@ inline void for_each_octile_neighbour(const KnownMap& known, int index, bool all
   if (n) sink(index - w, kStraight);
   if (has_e && has_n && (cut || (e && n)) && free_at(index - w + 1)) sink(index - w + 1, kDiagonal);
 }
+
+/// The search environment of one query to a goal cell over known free space (the contract of
+/// grid_search.hpp): cells are states, the moves above at exact costs (OctileCost), the goal
+/// ends the search; the heuristic is the octile length to the goal for A* (exact and
+/// consistent) and 0 for Dijkstra (declared, so the search uses its Dijkstra open list).
+template <bool kAStar>
+class OctileGoalEnvironment {
+ public:
+  using Cost = OctileCost;
+  static constexpr bool kZeroHeuristic = !kAStar;
+
+  OctileGoalEnvironment(const KnownMap& known, Cell goal, bool allow_corner_cutting)
+      : known_(known),
+        goal_(goal),
+        goal_index_(known.index(goal)),
+        width_(known.width()),
+        allow_corner_cutting_(allow_corner_cutting) {}
+
+  [[nodiscard]] int state_count() const { return known_.size(); }
+  [[nodiscard]] Cost heuristic(int state) const {
+    if constexpr (kAStar) {
+      return octile_cost(Cell{state % width_, state / width_}, goal_);
+    } else {
+      return Cost{};
+    }
+  }
+  [[nodiscard]] Visit visit(int state, double /*g*/) const {
+    return state == goal_index_ ? Visit::Goal : Visit::Expand;
+  }
+  template <typename Sink>
+  void for_each_successor(int state, Sink&& sink) const {
+    for_each_octile_neighbour<Cost>(known_, state, allow_corner_cutting_, sink);
+  }
+
+ private:
+  const KnownMap& known_;
+  Cell goal_;
+  int goal_index_;
+  int width_;
+  bool allow_corner_cutting_;
+};
 
 }  // namespace search
 }  // namespace fsweep

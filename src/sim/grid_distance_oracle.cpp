@@ -98,6 +98,18 @@ void GridDistanceOracle::watch_from_robot(std::span<const int> cells, double bou
   expansions_ += scratch_.watched_.expansions();
 }
 
+std::optional<double> GridDistanceOracle::probe_from_robot(int cell, double bound_m, long max_expansions) {
+  DistanceQuery q;
+  q.max_distance_m = bound_m;
+  q.allow_corner_cutting = corner_cutting_;
+  q.stop = StopCondition(SearchBudget{std::numeric_limits<double>::infinity(), max_expansions},
+                         StopCondition::Clock::time_point{});
+  const std::optional<double> d = scratch_.probe_.compute(known_, robot_, known_.cell(cell), q);
+  expansions_ += scratch_.probe_.expansions();
+  if (!d) return std::nullopt;
+  return *d <= bound_m ? *d : std::numeric_limits<double>::infinity();
+}
+
 double GridDistanceOracle::lower_bound_from_robot(int cell) const {
   // The octile length is exact: the fields' costs count straight and diagonal steps
   // (search/grid_search.hpp, OctileCost), and no path has a smaller value. The triangle bound

@@ -38,6 +38,7 @@ class DistanceScratch {
   Cached dock_search_;
   DistanceField nearest_;
   DistanceField watched_;
+  PointDistance probe_;
 };
 
 /// One decision's oracle. It refers to the simulation's belief (Belief::distance_oracle()) and
@@ -63,6 +64,9 @@ class GridDistanceOracle final : public DistanceOracle {
   [[nodiscard]] std::vector<double> from_dock(std::span<const int> cells, double bound_m) override;
   [[nodiscard]] int nearest_from_robot(std::span<const int> cells) override;
   void watch_from_robot(std::span<const int> cells, double bound_m, SettleWatcher& watcher) override;
+  /// A* from the robot (PointDistance): exact, so it reads as the robot's field would.
+  [[nodiscard]] std::optional<double> probe_from_robot(int cell, double bound_m,
+                                                       long max_expansions) override;
   /// The octile length (no path is shorter; exact, as the fields' costs are) and, when the dock
   /// field is up to date, the triangle bound d(dock, cell) - d(dock, robot) less a relative
   /// 1e-9 for its two roundings (+infinity when the robot reaches the dock but the dock does

@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <numeric>
+#include <optional>
 #include <vector>
 
 #include "core/config_error.hpp"
@@ -179,6 +181,12 @@ class WatchedChoice final : public SettleWatcher {
 
   /// The chosen representative (index into terms.reps), or -1.
   [[nodiscard]] int best() const { return best_; }
+  /// Representative i's cost at its lower bound (a lower bound of its cost).
+  [[nodiscard]] double bound_cost(std::size_t i) const { return cost_at(i, lower_bound_m_[i]); }
+  /// True while representative i is not reached and passes eq. 7 at its lower bound.
+  [[nodiscard]] bool open(std::size_t i) const { return open_[i] != 0; }
+  /// True when representative i, by its lower bound, can no longer beat or tie the best to win.
+  [[nodiscard]] bool beaten(std::size_t i) const { return loses(i, bound_cost(i)); }
 
  private:
   [[nodiscard]] double cost_at(std::size_t i, double d_g) const {
@@ -207,30 +215,60 @@ class WatchedChoice final : public SettleWatcher {
 
 }  // namespace
 
+namespace {
+
+/// Point searches (A*) a decision may try before it searches from the robot outward: at most
+/// this many, each settling at most kProbeCellsPerStep cells per cell of octile length plus
+/// kProbeCellsExtra (in open space A* settles about one cell per cell of length).
+constexpr int kMaxProbes = 8;
+constexpr long kProbeCellsPerStep = 16;
+constexpr long kProbeCellsExtra = 64;
+
+/// Exact lengths for the representatives with the lowest cost bounds, best bound first, by
+/// point searches, until the best one found is certified (every other bound loses; in open
+/// space, where lengths equal their octile bounds, the first probe does it). False when the
+/// probes ran out first: then `choice` holds what they found and a search from the robot must
+/// finish the choice.
+bool choose_by_probes(const Observation& obs, const EnergyAware::Terms& t, WatchedChoice& choice) {
+  // Cost bounds of the open representatives (the others last): finite, as their bounds are.
+  std::vector<double> key(t.reps.size());
+  for (std::size_t i = 0; i < key.size(); ++i)
+    key[i] = choice.open(i) ? choice.bound_cost(i) : std::numeric_limits<double>::infinity();
+  std::vector<std::size_t> order(t.reps.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return key[a] < key[b]; });
+  int probes = 0;
+  for (const std::size_t i : order) {
+    if (!choice.open(i)) continue;  // rejected by eq. 7 on its bound
+    // Sorted by bound: once one is beaten, so is every later one (ties: by index, too).
+    if (choice.beaten(i)) return true;
+    if (probes++ == kMaxProbes) return false;
+    const Cell goal = obs.known.cell(t.reps[i]);
+    const auto steps = static_cast<long>(std::ceil(octile_distance(obs.robot, goal)));
+    const std::optional<double> d =
+        obs.distances.probe_from_robot(t.reps[i], t.d_l, kProbeCellsExtra + kProbeCellsPerStep * steps);
+    if (!d) return false;
+    choice.settled(i, *d);
+  }
+  return true;
+}
+
+}  // namespace
+
 Decision EnergyAware::decide(const Observation& obs) {
   if (params_.distance != "path") return LinearScoredStrategy::decide(obs);
-  std::vector<int> reps;
-  reps.reserve(obs.clusters.size());
-  for (const auto& c : obs.clusters) reps.push_back(c.representative);
-  // Fast path for pure closest-frontier with no battery limit: the same argmin (nearest by
-  // path, ties to the lowest cluster index) found by one early-stopping search.
-  const bool pure_distance =
-      weights_[1] == 0.0 && weights_[2] == 0.0 && weights_[3] == 0.0 && weights_[0] > 0.0;
-  if (pure_distance && obs.battery.unlimited()) {
-    const int best = obs.distances.nearest_from_robot(reps);
-    if (best < 0) return on_no_candidate(obs);
-    return Decision::go_to(obs.known.cell(reps[static_cast<std::size_t>(best)]));
-  }
-  // Otherwise the argmin of candidates(), computing d_g only as far as it can matter.
-  if (reps.empty()) return on_no_candidate(obs);
+  if (obs.clusters.empty()) return on_no_candidate(obs);
+  // The argmin of candidates(), computing d_g only as far as it can matter: first by point
+  // searches for the best bounds, then, if they do not settle it, by a search from the robot
+  // that stops once no representative it has not reached can win.
   const Terms t = terms(obs);
   std::vector<double> lower_bound;
-  lower_bound.reserve(reps.size());
-  for (const int r : reps) lower_bound.push_back(obs.distances.lower_bound_from_robot(r));
+  lower_bound.reserve(t.reps.size());
+  for (const int r : t.reps) lower_bound.push_back(obs.distances.lower_bound_from_robot(r));
   WatchedChoice choice(t, weights_, std::move(lower_bound));
-  obs.distances.watch_from_robot(reps, t.d_l, choice);
+  if (!choose_by_probes(obs, t, choice)) obs.distances.watch_from_robot(t.reps, t.d_l, choice);
   if (choice.best() < 0) return on_no_candidate(obs);
-  return Decision::go_to(obs.known.cell(reps[static_cast<std::size_t>(choice.best())]));
+  return Decision::go_to(obs.known.cell(t.reps[static_cast<std::size_t>(choice.best())]));
 }
 
 Decision EnergyAware::on_no_candidate(const Observation& obs) {

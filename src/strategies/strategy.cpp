@@ -1,6 +1,7 @@
 #include "strategies/strategy.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -15,6 +16,11 @@ void DistanceOracle::watch_from_robot(std::span<const int> cells, double bound_m
   }
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return d[a] < d[b]; });
   for (const std::size_t k : order) watcher.settled(k, d[k]);
+}
+
+std::optional<double> DistanceOracle::probe_from_robot(int cell, double bound_m, long /*max_expansions*/) {
+  const std::array<int, 1> one{cell};
+  return from_robot(one, bound_m).front();
 }
 
 double linear_cost(std::span<const double> weights, std::span<const double> features) {

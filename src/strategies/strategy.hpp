@@ -38,6 +38,10 @@ class DistanceOracle {
   /// not reported), and lets the watcher stop the search once it has what it needs
   /// (search/distance_field.hpp). The default answers from from_robot() and never stops early.
   virtual void watch_from_robot(std::span<const int> cells, double bound_m, SettleWatcher& watcher);
+  /// The path length from the robot to `cell` exactly as from_robot({cell}, bound_m) gives it,
+  /// by a search that settles at most `max_expansions` cells (a point-to-point search, e.g. A*);
+  /// nullopt when that budget ran out first. The default asks from_robot().
+  [[nodiscard]] virtual std::optional<double> probe_from_robot(int cell, double bound_m, long max_expansions);
   /// A lower bound (metres) of the path length from the robot to `cell` (+infinity: `cell` is
   /// unreachable), known without a search from the robot. The default knows nothing: 0.
   [[nodiscard]] virtual double lower_bound_from_robot(int /*cell*/) const { return 0.0; }

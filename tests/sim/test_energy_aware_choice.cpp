@@ -90,6 +90,8 @@ std::array<double, 4> random_weights(Rng& rng, int round) {
 TEST(EnergyAwareChoice, BoundedSearchChoosesExactlyTheFullArgmin) {
   int decisions = 0;
   int goto_decisions = 0;
+  long bounded_work = 0;  // cells settled; a failed probe can cost one decision more than the full search
+  long full_work = 0;
   for (std::uint64_t seed = 1; seed <= 40; ++seed) {
     RandomDecision d(seed, seed % 3 == 0 ? 0.05 : 1.0);
     Rng rng = make_rng(seed, "weights");
@@ -123,12 +125,13 @@ TEST(EnergyAwareChoice, BoundedSearchChoosesExactlyTheFullArgmin) {
       ASSERT_EQ(decision.kind, Decision::Kind::GoTo) << "seed " << seed << " round " << round;
       EXPECT_EQ(decision.goal, c.cells[static_cast<std::size_t>(best)])
           << "seed " << seed << " round " << round;
-      // The bounded search does no more work than the full one.
-      EXPECT_LE(oracle.expansions(), full_oracle.expansions()) << "seed " << seed << " round " << round;
+      bounded_work += oracle.expansions();
+      full_work += full_oracle.expansions();
     }
   }
   EXPECT_EQ(decisions, 320);
   EXPECT_GT(goto_decisions, 200);  // most situations have a candidate: the test compares choices
+  EXPECT_LT(bounded_work, full_work / 2);
 }
 
 TEST(EnergyAwareChoice, LowerBoundsNeverExceedTheSearchedDistances) {
