@@ -208,50 +208,70 @@ constexpr std::array<Frame, 8> kFrames{{
     {0, -1, -1, 0, false, false},
 }};
 
+/// The first and last row of column k whose cells' corner intervals can meet the slopes from
+/// lo to hi, from slope = y * inverse[x] (inverse[x] = 1.0 / x). Conservative, a row more at
+/// most: the numerators are below 2^24, so the product is within 2^-26 of y / x, and y / x is
+/// an integer or at least 1 / x > 2^-13 away from one; the floor is off (by one) only for an
+/// integer quotient, and both bounds allow for that.
+int first_row(Slope lo, int k, const double* inverse) {
+  return static_cast<int>(static_cast<double>(lo.y * (2 * k - 1)) * inverse[lo.x]) / 2;
+}
+int last_row(Slope hi, int k, const double* inverse) {
+  return std::min(k, (static_cast<int>(static_cast<double>(hi.y * (2 * k + 1)) * inverse[hi.x]) + 2) / 2);
+}
+
 /// The shadowcasting sweep of one frame (see above). `opaque(u, v)` says whether a cell
 /// (0 <= v <= u + 1, u <= last_u) blocks; it must be true off the map and out of range.
 /// `targets(u)` is the last row of column u holding targets to decide (on the map, in range,
-/// v <= u). Calls seen(u, v) once for each visible target of the frame (v = 0 only when
-/// frame.owns_axis, v = u only when frame.owns_diagonal). `lit` and `next` are scratch.
-template <typename Opaque, typename Targets, typename Seen>
-void sweep(const Frame& frame, int last_u, Opaque&& opaque, Targets&& targets, Seen&& seen,
-           std::vector<Span>& lit, std::vector<Span>& next) {
+/// v <= u). For each target (u, v) of the frame (v = 0 only when frame.owns_axis, v = u only
+/// when frame.owns_diagonal) for which wanted(u, v) holds, calls seen(u, v) when it is
+/// visible. inverse[x] = 1.0 / x for x up to 2 * last_u + 1. `lit` and `next` are scratch.
+template <typename Opaque, typename Targets, typename Wanted, typename Seen>
+void sweep(const Frame& frame, int last_u, Opaque&& opaque, Targets&& targets, Wanted&& wanted, Seen&& seen,
+           const double* inverse, std::vector<Span>& lit, std::vector<Span>& next) {
   lit.assign(1, Span{Slope{0, 1}, Slope{1, 1}, true, true});
   bool upper_clear = !opaque(0, 1);  // (0, 1) .. (k-1, k) are not opaque
   for (int k = 1; k <= last_u && !lit.empty(); ++k) {
-    const int first_v = frame.owns_axis ? 0 : 1;
     const int last_v = std::min(targets(k), frame.owns_diagonal ? k : k - 1);
-    int next_v = first_v;
+    int next_v = frame.owns_axis ? 0 : 1;  // the first target not yet decided
     next.clear();
     for (const Span& s : lit) {
-      // The cells of column k whose corner interval meets s (a few more at most).
-      const int y0 = static_cast<int>(s.lo.y * (2 * k - 1) / s.lo.x / 2);
-      const int y1 = std::min(k, static_cast<int>((s.hi.y * (2 * k + 1) / s.hi.x + 1) / 2));
-      // 1. Targets, on lit_{k-1}: s holds most candidate slopes, lit is asked for the others.
+      // The cells of column k whose corner interval meets s, and the targets among them.
+      const int y0 = first_row(s.lo, k, inverse);
+      const int y1 = last_row(s.hi, k, inverse);
+      const int t0 = std::max(y0, next_v);
+      const int t1 = std::min(y1, last_v);
+      next_v = std::max(next_v, t1 + 1);
+      // On lit_{k-1}: s holds most candidate slopes, lit is asked for the others.
       const auto lit_at = [&](Slope q) { return contains(s, q) || contains(lit, q); };
-      const int top = std::min(y1, last_v);
-      for (int v = std::max(y0, next_v); v <= top; ++v) {
-        bool visible = lit_at(Slope{v, k}) && (v < k || !(opaque(k, k - 1) && opaque(k - 1, k)));
-        if (!visible && opaque(k, v)) {
-          visible = v < k ? lit_at(Slope{2 * v, 2 * k - 1}) : upper_clear && lit_at(Slope{1, 1});
-          if (!visible && v > 0) visible = !opaque(k, v - 1) && lit_at(Slope{2 * v - 1, 2 * k});
-        }
-        if (visible) seen(k, v);
-      }
-      next_v = std::max(next_v, top + 1);
-      // 2. lit_k: s minus the runs of opaque cells of column k and their corners.
-      Slope lo = s.lo;
+      Slope lo = s.lo;  // the part of s above the runs cut so far starts here
       bool lo_closed = s.lo_closed;
-      bool rest = true;  // the part of s above the runs cut so far is still to append
-      for (int y = y0; y <= y1 && rest; ++y) {
-        if (!opaque(k, y)) continue;
-        const int a = y;
-        while (y < y1 && opaque(k, y + 1)) ++y;
-        const Slope run_lo{2 * a - 1, 2 * k + 1};
-        if (compare(run_lo, s.hi) >= 0) break;
+      bool cutting = true;  // runs further up may still cut s
+      int run = -1;         // first row of the current run of opaque cells, -1: none
+      for (int y = y0; y <= y1; ++y) {
+        const bool o = opaque(k, y);
+        // 1. The target (k, y), on lit_{k-1}.
+        if (y >= t0 && y <= t1 && wanted(k, y)) {
+          bool visible = lit_at(Slope{y, k}) && (y < k || !(opaque(k, k - 1) && opaque(k - 1, k)));
+          if (!visible && o) {
+            visible = y < k ? lit_at(Slope{2 * y, 2 * k - 1}) : upper_clear && lit_at(Slope{1, 1});
+            if (!visible && y > 0) visible = !opaque(k, y - 1) && lit_at(Slope{2 * y - 1, 2 * k});
+          }
+          if (visible) seen(k, y);
+        }
+        // 2. lit_k: cut each run of opaque cells (k, run..top) and the corner at its top out of s.
+        if (o && run < 0) run = y;
+        if (run < 0 || (o && y < y1) || !cutting) continue;
+        const int top = o ? y : y - 1;
+        const Slope run_lo{2 * run - 1, 2 * k + 1};
+        run = -1;
+        if (compare(run_lo, s.hi) >= 0) {
+          cutting = false;
+          continue;
+        }
         append(next, lo, lo_closed, run_lo, true);
-        const Slope run_hi{2 * y + 1, 2 * k - 1};
-        const bool corner = opaque(k - 1, y + 1);
+        const Slope run_hi{2 * top + 1, 2 * k - 1};
+        const bool corner = opaque(k - 1, top + 1);
         const int c = compare(run_hi, lo);
         if (c > 0) {
           lo = run_hi;
@@ -259,9 +279,9 @@ void sweep(const Frame& frame, int last_u, Opaque&& opaque, Targets&& targets, S
         } else if (c == 0) {
           lo_closed = lo_closed && !corner;
         }
-        rest = compare(lo, s.hi) <= 0;
+        cutting = compare(lo, s.hi) <= 0;
       }
-      if (rest) append(next, lo, lo_closed, s.hi, s.hi_closed);
+      append(next, lo, lo_closed, s.hi, s.hi_closed);
     }
     upper_clear = upper_clear && !opaque(k, k + 1);
     std::swap(lit, next);
@@ -317,6 +337,8 @@ struct Sensor::Tables {
   /// rank[(dy + r) * (2r + 1) + dx + r]: the position of offset (dx, dy) in `order` (offsets
   /// in range only).
   std::vector<std::uint32_t> rank;
+  /// inverse[x] = 1.0 / x for x in [1, 2r + 1] (inverse[0] unused): slope denominators.
+  std::vector<double> inverse;
   /// By rank: the direction to the target's centre (radians, as heading_angle()); only with a
   /// limited field of view.
   std::vector<double> angles;
@@ -344,6 +366,8 @@ Sensor::Sensor(const SensorParams& params, double resolution_m)
     while (v < r && in_range(u, v + 1)) ++v;
     tables->extent[static_cast<std::size_t>(u)] = v;
   }
+  tables->inverse.assign(2 * static_cast<std::size_t>(r) + 2, 0.0);
+  for (std::size_t x = 1; x < tables->inverse.size(); ++x) tables->inverse[x] = 1.0 / static_cast<double>(x);
   // 1. Offset-table order by a counting sort on the squared distance: offsets visited row by
   //    row (dy, then dx, increasing) keep that order within each squared distance.
   const std::size_t side = 2 * static_cast<std::size_t>(r) + 1;
@@ -385,13 +409,12 @@ void Sensor::for_each_visible(int width, int height, Cell at, double heading_rad
   const std::size_t side = 2 * static_cast<std::size_t>(t.r) + 1;
   // Field of view (the robot's own cell is always seen), then visit.
   const auto target = [&](int index, int dx, int dy) {
-    if (skip(index)) return;
     const std::uint32_t rank =
         t.rank[static_cast<std::size_t>(dy + t.r) * side + static_cast<std::size_t>(dx + t.r)];
     if (limit_fov && rank != 0 && angle_distance(t.angles[rank], heading_rad) > half_fov) return;
     visit(index, rank);
   };
-  target(at_index, 0, 0);
+  if (!skip(at_index)) target(at_index, 0, 0);
   std::vector<Span> lit;
   std::vector<Span> next;
   for (const Frame& f : kFrames) {
@@ -413,10 +436,11 @@ void Sensor::for_each_visible(int width, int height, Cell at, double heading_rad
              opaque(at_index + u * step_u + v * step_v);
     };
     const auto targets = [&](int u) { return std::min(v_map, t.extent[static_cast<std::size_t>(u)]); };
+    const auto wanted = [&](int u, int v) { return !skip(at_index + u * step_u + v * step_v); };
     const auto seen = [&](int u, int v) {
       target(at_index + u * step_u + v * step_v, u * f.ux + v * f.vx, u * f.uy + v * f.vy);
     };
-    sweep(f, std::min(t.r, u_map), opaque_at, targets, seen, lit, next);
+    sweep(f, std::min(t.r, u_map), opaque_at, targets, wanted, seen, t.inverse.data(), lit, next);
   }
 }
 
