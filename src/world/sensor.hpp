@@ -116,6 +116,9 @@ class Sensor {
   void for_each_visible(int width, int height, Cell at, double heading_rad, Skip&& skip, Opaque&& opaque,
                         Visit&& visit) const;
 
+  /// True when every cell within range of `at` on the map is known (scan() has nothing to do).
+  [[nodiscard]] bool all_known(const KnownMap& known, Cell at) const;
+
   SensorParams params_;
   double range_cells_ = 0.0;
   std::shared_ptr<const Tables> tables_;  // null for a default-constructed sensor

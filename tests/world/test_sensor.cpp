@@ -887,6 +887,45 @@ TEST(SensorSweep, LongRangeInClutterEqualsTheRule) {
   }
 }
 
+TEST(SensorSweep, OneUnknownCellInAKnownDiscIsFound) {
+  // Every cell in range known but one: the scan reveals exactly that one (open space, so it is
+  // visible), wherever it lies in the disc (the rim included: (3, 4) is exactly 5 cells away)
+  // and wherever the robot stands. With none unknown, nothing is revealed and no noise drawn.
+  const WorldMap map = open_world(15, 13);
+  SensorParams p = range(5.0);
+  p.miss_probability = 0.5;
+  Sensor sensor(p, 1.0);
+  for (const Cell at : {Cell{7, 6}, Cell{0, 0}, Cell{14, 3}, Cell{2, 12}}) {
+    KnownMap all(15, 13, 1.0);
+    std::vector<int> in_range;
+    for (int i = 0; i < all.size(); ++i) {
+      const Cell c = all.cell(i);
+      if ((c.x - at.x) * (c.x - at.x) + (c.y - at.y) * (c.y - at.y) <= 25) {
+        all.reveal(i, false);
+        in_range.push_back(i);
+      }
+    }
+    Rng rng = make_rng(5, "sensor");
+    const Rng before = rng;
+    EXPECT_TRUE(sensor.scan(map, all, at, 0.0, rng).empty());
+    EXPECT_EQ(rng, before);
+    for (const int i : in_range) {
+      if (i == map.occupied.index(at)) continue;
+      KnownMap known(15, 13, 1.0);
+      for (const int j : in_range) {
+        if (j != i) known.reveal(j, false);
+      }
+      KnownMap expected_known = known;
+      Rng expected_rng = rng;
+      const auto got = sensor.scan(map, known, at, 0.0, rng);
+      const std::vector<int> expected = reference_scan(sensor, map, expected_known, at, 0.0, expected_rng);
+      ASSERT_EQ(std::vector<int>(got.begin(), got.end()), expected) << at.x << "," << at.y << " cell " << i;
+      ASSERT_EQ(rng, expected_rng);
+      ASSERT_NE(rng, before);  // one draw for the unknown cell
+    }
+  }
+}
+
 TEST(SensorSweep, RangeAtTheSupportedMaximum) {
   // 2000 cells is the documented maximum (sensor.hpp); more is refused.
   EXPECT_THROW(Sensor(range(2001.0), 1.0), std::invalid_argument);
