@@ -2,9 +2,12 @@
 /// Micro-benchmarks of the per-step world updates on a seeded 200 x 200 map (1 m cells, 15%
 /// obstacle cells; generated here so the numbers do not depend on the map generators):
 ///
+/// - `BM_SensorSetup/range:<cells>`: constructing a Sensor (its O(r^2) tables).
 /// - `BM_SensorScan/range:<cells>`: one sensor scan into unexplored space (fresh KnownMap),
 ///   from 256 fixed free cells in turn; `revealed_per_scan` cells revealed on average.
-/// - `BM_SensorScanKnown/range:10`: one scan where every cell in range is already known.
+/// - `BM_SensorScanBuilding/range:<cells>`: the same in a partly explored building (a
+///   generated office of 400 x 400 cells, its left half known; scans from 256 free cells).
+/// - `BM_SensorScanKnown/range:<cells>`: one scan where every cell in range is already known.
 /// - `BM_FrontierUpdate`: one incremental FrontierMap::update after a scan, cycling through 16
 ///   consecutive steps of a greedy exploration (after 100 warm-up steps).
 /// - `BM_FrontierRebuild`: a full FrontierMap::rebuild on the same 16 maps.
@@ -25,6 +28,7 @@
 #include "core/random.hpp"
 #include "world/frontiers.hpp"
 #include "world/known_map.hpp"
+#include "world/map_generators.hpp"
 #include "world/sensor.hpp"
 #include "world/world_map.hpp"
 
@@ -64,16 +68,24 @@ SensorParams sensor_params(double range_m) {
   return p;
 }
 
-/// One scan from a fresh (all unknown) KnownMap: the full cost of a scan into unexplored space.
-/// Fresh maps are prepared in batches with the timer paused, so the pause cost is amortised
-/// over a batch and the map copy is not timed. Argument: range (cells).
-void BM_SensorScan(benchmark::State& state) {  // NOLINT(readability-identifier-naming)
-  const WorldMap map = bench_world(0.15);
+/// Constructing a sensor with a range of `range` cells, 360 degree field of view.
+void BM_SensorSetup(benchmark::State& state) {  // NOLINT(readability-identifier-naming)
+  const SensorParams params = sensor_params(static_cast<double>(state.range(0)));
+  for (auto _ : state) {
+    Sensor sensor(params, 1.0);
+    benchmark::DoNotOptimize(sensor.range_cells());
+  }
+}
+BENCHMARK(BM_SensorSetup)->ArgName("range")->Arg(20)->Arg(100)->Arg(200)->Unit(benchmark::kMillisecond);
+
+/// One scan of `map` from each cell of `at` in turn, each into a copy of `start`. The copies are
+/// prepared in batches with the timer paused, so the pause cost is amortised over a batch and
+/// the map copy is not timed. Argument: range (cells).
+void scan_from(benchmark::State& state, const WorldMap& map, const KnownMap& start,
+               const std::vector<Cell>& at) {
   Sensor sensor(sensor_params(static_cast<double>(state.range(0))), map.resolution_m);
-  const std::vector<Cell> at = free_cells(map, 256, 0);
-  const KnownMap fresh(kSide, kSide, map.resolution_m);
   constexpr std::size_t kBatch = 64;
-  std::vector<KnownMap> pool(kBatch, fresh);
+  std::vector<KnownMap> pool(kBatch, start);
   Rng rng = make_rng(1, "sensor");
   std::size_t used = 0;
   std::size_t next = 0;
@@ -81,7 +93,7 @@ void BM_SensorScan(benchmark::State& state) {  // NOLINT(readability-identifier-
   for (auto _ : state) {
     if (used == kBatch) {
       state.PauseTiming();
-      for (KnownMap& k : pool) k = fresh;
+      for (KnownMap& k : pool) k = start;
       used = 0;
       state.ResumeTiming();
     }
@@ -92,7 +104,41 @@ void BM_SensorScan(benchmark::State& state) {  // NOLINT(readability-identifier-
   state.counters["revealed_per_scan"] =
       benchmark::Counter(static_cast<double>(revealed), benchmark::Counter::kAvgIterations);
 }
-BENCHMARK(BM_SensorScan)->ArgName("range")->Arg(10)->Arg(30);
+
+/// One scan from a fresh (all unknown) KnownMap: the full cost of a scan into unexplored space.
+void BM_SensorScan(benchmark::State& state) {  // NOLINT(readability-identifier-naming)
+  const WorldMap map = bench_world(0.15);
+  scan_from(state, map, KnownMap(kSide, kSide, map.resolution_m), free_cells(map, 256, 0));
+}
+BENCHMARK(BM_SensorScan)->ArgName("range")->Arg(10)->Arg(20)->Arg(30)->Arg(100)->Arg(200);
+
+/// One scan in a partly explored building: a generated office (400 x 400 cells: rooms at least
+/// 40 cells deep, corridors 20 wide, walls 3 thick, doors 16 wide, e.g. 20 m x 20 m at 5 cm),
+/// every cell of its left half known, scans from 256 free cells anywhere.
+void BM_SensorScanBuilding(benchmark::State& state) {  // NOLINT(readability-identifier-naming)
+  GeneratorParams g;
+  g.kind = "office";
+  g.width = 400;
+  g.height = 400;
+  g.min_room = 40;
+  g.corridor = 20;
+  g.wall = 3;
+  g.door = 16;
+  g.seed = 3;
+  const WorldMap map = generate_map(g);
+  KnownMap known(map.width(), map.height(), map.resolution_m);
+  for (int i = 0; i < known.size(); ++i) {
+    if (known.cell(i).x < map.width() / 2) known.reveal(i, map.occupied[i] != 0);
+  }
+  std::vector<Cell> at;
+  Rng rng = make_rng(7, "bench-cells");
+  while (at.size() < 256) {
+    const Cell c{static_cast<int>(uniform_below(rng, 400)), static_cast<int>(uniform_below(rng, 400))};
+    if (map.is_free(c)) at.push_back(c);
+  }
+  scan_from(state, map, known, at);
+}
+BENCHMARK(BM_SensorScanBuilding)->ArgName("range")->Arg(20)->Arg(100)->Arg(200);
 
 /// One scan where every cell in range is already known (the skip path; robot standing still).
 void BM_SensorScanKnown(benchmark::State& state) {  // NOLINT(readability-identifier-naming)
@@ -108,7 +154,7 @@ void BM_SensorScanKnown(benchmark::State& state) {  // NOLINT(readability-identi
     benchmark::DoNotOptimize(cells.data());
   }
 }
-BENCHMARK(BM_SensorScanKnown)->ArgName("range")->Arg(10);
+BENCHMARK(BM_SensorScanKnown)->ArgName("range")->Arg(10)->Arg(100);
 
 /// Snapshots of a greedy exploration (scan, go to the nearest frontier cell, repeat) on the
 /// bench map: the map after a scan, the cells that scan revealed, the frontiers before it.

@@ -2,9 +2,10 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
-#include <iterator>
+#include <cstring>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
@@ -79,141 +80,214 @@ bool walk_ray(int ex, int ey, OnCell&& on_cell, OnCorner&& on_corner) {
   }
 }
 
-/// One check of a ray, relative to the robot's cell: the ray is blocked here when cells a and
-/// b are both occupied. A cell the ray enters has b == a; a corner it passes through has the
-/// two cells beside the corner. (Used while building the tables.)
-struct Check {
-  int a_dx = 0;
-  int a_dy = 0;
-  int b_dx = 0;
-  int b_dy = 0;
-  friend bool operator==(const Check&, const Check&) = default;
+/// Largest supported range (cells). The tables of a sensor hold about 9 bytes per offset in
+/// range plus 4 bytes per cell of the (2r+1)^2 square around the robot, 8 more per offset with
+/// a limited field of view: at 2000 cells about 115 MB (215 MB with a limited field of view).
+constexpr int kMaxRangeCells = 2000;
+
+// ---------------------------------------------------------------------------------------------
+// Line of sight by exact shadowcasting: why it decides exactly the ray rule of sensor.hpp.
+//
+// Frames. Every offset (dx, dy) != (0, 0) is u * U + v * V with 0 <= v <= u in one of eight
+// frames (kFrames: U a unit axis vector, V a unit vector perpendicular to it). Frames are
+// reflections: they map cells to cells, corners to corners and a target's faces toward the
+// robot to faces toward the robot. Below, everything is in one frame, in doubled coordinates
+// relative to the robot's centre: cell (u, v) spans (2u-1, 2u+1) x (2v-1, 2v+1); the target
+// (t, v) has its centre ray to (2t, 2v), its u-face ray to (2t-1, 2v) and, for v > 0, its
+// v-face ray to (2t, 2v-1).
+//
+// Columns. A ray from the origin with slope s in [0, 1] meets the open interior of a cell
+// (c, y), c >= 1, exactly when s lies in the cell's open corner interval
+// ((2y-1)/(2c+1), (2y+1)/(2c-1)); it passes the corner (2c-1, Y), Y odd, when s = Y/(2c-1),
+// beside the cells (c, (Y-1)/2) and (c-1, (Y+1)/2). In column 0 it meets only the robot's cell
+// (at x = 1 it is at height s <= 1: the corner (1, 1) when s = 1). So, for a target (t, v):
+// - the centre ray crosses every column c < t entirely and, in column t, only the target,
+//   besides the corner (2t-1, 2t-1) when v = t (gcd(2t-1, t) = 1: no other corner with
+//   X = 2t-1 has slope v/t);
+// - the u-face ray crosses the columns c < t entirely and nothing of column t (its corners
+//   have X < 2t-1); for v = t see "Diagonal";
+// - the v-face ray crosses the columns c < t entirely and, in column t, only the cell (t, v-1)
+//   in front of the face (at x = 2t-1 its height (2v-1)(1 - 1/(2t)) lies in (2v-3, 2v-1) and
+//   is no corner: the heights of corners are odd integers).
+// Let lit_k be the slopes of [0, 1] that columns 1..k do not block: [0, 1] minus the open
+// corner intervals of their opaque cells and minus each corner slope Y/(2c-1), c <= k, whose
+// two side cells are both opaque. A target (t, v) is then seen exactly when
+// - its centre slope v/t is in lit_{t-1} (for v = t: and not both (t, t-1) and (t-1, t) are
+//   opaque), or, for an opaque target,
+// - its u-face slope 2v/(2t-1) is in lit_{t-1} (v < t), or
+// - its v-face slope (2v-1)/(2t) is in lit_{t-1} and (t, v-1) is not opaque (v > 0).
+// Diagonal (v = t): the u-face ray has slope 2t/(2t-1) > 1. It enters (0, 1) (it reaches
+// height 1 before x = 1), then (c, c) and (c, c+1) for 1 <= c < t (their intervals contain the
+// slope, those of (c, c-1) and (c, c+2) do not), and passes no corner (the slope's numerator in
+// lowest terms is even, a corner's is odd). It is clear exactly when 1 is in lit_{t-1} and
+// none of (0, 1), (1, 2), ..., (t-1, t) is opaque: 1 is blocked in lit_{t-1} only by an opaque
+// (c, c), which the ray enters, or by a corner (2c+1, 2c+1), c < t-1, whose side cell (c, c+1)
+// the ray enters.
+//
+// The sweep. lit_k is a sorted list of disjoint intervals with exact rational ends, each open
+// or closed, starting from lit_0 = [0, 1]. Column k first decides its targets on lit_{k-1},
+// then cuts its runs of consecutive opaque cells out of it: the run (k, a..b) blocks the open
+// interval ((2a-1)/(2k+1), (2b+1)/(2k-1)) (the intervals of neighbouring cells overlap), and
+// the corner slope (2b+1)/(2k-1) at its top too when (k-1, b+1) is opaque (a corner below the
+// top lies inside the run's interval; one beside a free cell of column k blocks nothing). Each
+// candidate slope of a target lies inside the target's open corner interval, so only the
+// cells whose interval meets lit_{k-1} are looked at, as targets and as blockers: the work
+// follows the cells that can be seen.
+//
+// Range and map. Every cell a ray to a target T touches (cells entered, cells beside corners,
+// and (t-1, t) on the diagonal) lies in the box spanned by the robot's cell and T, so it is on
+// the map when T is and no farther from the robot than T. Cells off the map or out of range
+// never decide a target on the map and in range, and the sweep treats them as opaque (which
+// ends each frame at the range or at the map's edge).
+//
+// Each target is decided in one frame: one on an axis (v = 0) by the frame whose V points to
+// +x or +y, one on a diagonal (v = u) by the frame whose U lies along x.
+// ---------------------------------------------------------------------------------------------
+
+/// A slope y / x (x > 0) in a frame (doubled coordinates), compared exactly.
+struct Slope {
+  std::int64_t y = 0;
+  std::int64_t x = 1;
 };
 
-/// A check as stored in the tables (8 bytes): cell a at (dx, dy) from the robot's cell, cell b
-/// at (b_dx, b_dy) from a (the two cells beside a corner are diagonal neighbours; (0, 0) for a
-/// cell check). For a centre-ray check, bit f of open_faces is set when face ray f of the same
-/// target is not implied blocked by this check blocking, so it must be walked; it lives here,
-/// next to the check, because the scan reads it right after finding the check blocked.
-struct Crossing {
-  std::int16_t dx = 0;
-  std::int16_t dy = 0;
-  std::int8_t b_dx = 0;
-  std::int8_t b_dy = 0;
-  std::uint8_t open_faces = 0;
-  std::uint8_t unused = 0;
-};
-static_assert(sizeof(Crossing) == 8);
-
-/// A face ray's own checks: crossings[first, first + count). Its leading checks that equal the
-/// centre ray's leading checks are not stored again (they are clear whenever the face ray is
-/// looked at, see Sensor::scan).
-struct FaceRay {
-  std::uint32_t first = 0;
-  std::uint32_t count = 0;
-};
-
-/// One target offset in range: the checks of its centre ray, crossings[first, first + count),
-/// and its face rays, faces[face_first, face_first + face_count). 16 bytes: the scan streams
-/// through all targets.
-struct Target {
-  std::uint32_t first = 0;
-  std::int16_t dx = 0;
-  std::int16_t dy = 0;
-  std::uint16_t count = 0;
-  std::uint8_t face_count = 0;
-  std::uint32_t face_first = 0;
-};
-static_assert(sizeof(Target) == 16);
-
-/// Largest supported range (cells): offsets and check counts are stored in 16 bits.
-constexpr int kMaxRangeCells = 16000;
-
-/// The checks of the ray from the robot's cell centre to (ex, ey) (doubled coordinates) for
-/// target offset (dx, dy): the target itself is never checked.
-std::vector<Check> ray_checks(int ex, int ey, int dx, int dy) {
-  std::vector<Check> out;
-  walk_ray(
-      ex, ey,
-      [&](int x, int y) {
-        if (x != dx || y != dy) out.push_back(Check{x, y, x, y});
-        return true;
-      },
-      [&](int ax, int ay, int bx, int by) {
-        out.push_back(Check{ax, ay, bx, by});
-        return true;
-      });
-  return out;
+/// -1, 0 or 1 as a < b, a == b or a > b (exact: numerators and denominators are at most
+/// 2 * kMaxRangeCells + 1).
+int compare(Slope a, Slope b) {
+  const std::int64_t l = a.y * b.x;
+  const std::int64_t r = b.y * a.x;
+  return (l > r) - (l < r);
 }
 
-/// The stored form of `c` (see Crossing).
-Crossing compact(const Check& c) {
-  Crossing out;
-  out.dx = static_cast<std::int16_t>(c.a_dx);
-  out.dy = static_cast<std::int16_t>(c.a_dy);
-  out.b_dx = static_cast<std::int8_t>(c.b_dx - c.a_dx);
-  out.b_dy = static_cast<std::int8_t>(c.b_dy - c.a_dy);
-  return out;
+/// An interval of slopes, lo <= hi, each end open or closed.
+struct Span {
+  Slope lo;
+  Slope hi;
+  bool lo_closed = true;
+  bool hi_closed = true;
+};
+
+bool contains(const Span& s, Slope q) {
+  const int lo = compare(q, s.lo);
+  const int hi = compare(q, s.hi);
+  return (lo > 0 || (lo == 0 && s.lo_closed)) && (hi < 0 || (hi == 0 && s.hi_closed));
 }
 
-/// The checks of one ray as a set over the offsets within `r` cells, to ask whether another
-/// check implies that this ray is blocked: a check blocks when all of its cells (one, or two
-/// for a corner) are occupied, so check c implies the ray is blocked when the ray has a check
-/// whose cells are among c's. Dense stamped arrays make assign() and each question O(1) per
-/// check, for O(r^2) memory (the order of the tables themselves).
-class CheckSet {
- public:
-  explicit CheckSet(int r)
-      : r_(r + 1),
-        side_(2 * r + 3),
-        cells_(static_cast<std::size_t>(side_) * static_cast<std::size_t>(side_), 0),
-        corners_(2 * cells_.size(), 0) {}
+/// True when slope q lies in one of the spans of `lit` (sorted, disjoint).
+bool contains(const std::vector<Span>& lit, Slope q) {
+  auto it = std::partition_point(lit.begin(), lit.end(), [&](const Span& s) { return compare(s.hi, q) < 0; });
+  for (; it != lit.end() && compare(it->lo, q) <= 0; ++it) {
+    if (contains(*it, q)) return true;
+  }
+  return false;
+}
 
-  /// Makes this the set of `ray`'s checks.
-  void assign(const std::vector<Check>& ray) {
-    ++stamp_;
-    for (const Check& c : ray) {
-      if (is_cell(c)) {
-        cells_[cell(c.a_dx, c.a_dy)] = stamp_;
-      } else {
-        corners_[corner(c)] = stamp_;
+/// Appends the span <lo, hi> to `out` unless it is empty.
+void append(std::vector<Span>& out, Slope lo, bool lo_closed, Slope hi, bool hi_closed) {
+  const int c = compare(lo, hi);
+  if (c < 0 || (c == 0 && lo_closed && hi_closed)) out.push_back(Span{lo, hi, lo_closed, hi_closed});
+}
+
+/// An octant frame: offset = u * (ux, uy) + v * (vx, vy), 0 <= v <= u. owns_axis: decides the
+/// offsets with v = 0; owns_diagonal: those with v = u.
+struct Frame {
+  int ux;
+  int uy;
+  int vx;
+  int vy;
+  bool owns_axis;
+  bool owns_diagonal;
+};
+
+constexpr std::array<Frame, 8> kFrames{{
+    {1, 0, 0, 1, true, true},
+    {1, 0, 0, -1, false, true},
+    {-1, 0, 0, 1, true, true},
+    {-1, 0, 0, -1, false, true},
+    {0, 1, 1, 0, true, false},
+    {0, 1, -1, 0, false, false},
+    {0, -1, 1, 0, true, false},
+    {0, -1, -1, 0, false, false},
+}};
+
+/// The first and last row of column k whose cells' corner intervals can meet the slopes from
+/// lo to hi, from slope = y * inverse[x] (inverse[x] = 1.0 / x). Conservative, a row more at
+/// most: the numerators are below 2^24, so the product is within 2^-26 of y / x, and y / x is
+/// an integer or at least 1 / x > 2^-13 away from one; the floor is off (by one) only for an
+/// integer quotient, and both bounds allow for that.
+int first_row(Slope lo, int k, const double* inverse) {
+  return static_cast<int>(static_cast<double>(lo.y * (2 * k - 1)) * inverse[lo.x]) / 2;
+}
+int last_row(Slope hi, int k, const double* inverse) {
+  return std::min(k, (static_cast<int>(static_cast<double>(hi.y * (2 * k + 1)) * inverse[hi.x]) + 2) / 2);
+}
+
+/// The shadowcasting sweep of one frame (see above). `opaque(u, v)` says whether a cell
+/// (0 <= v <= u + 1, u <= last_u) blocks; it must be true off the map and out of range.
+/// `targets(u)` is the last row of column u holding targets to decide (on the map, in range,
+/// v <= u). For each target (u, v) of the frame (v = 0 only when frame.owns_axis, v = u only
+/// when frame.owns_diagonal) for which wanted(u, v) holds, calls seen(u, v) when it is
+/// visible. inverse[x] = 1.0 / x for x up to 2 * last_u + 1. `lit` and `next` are scratch.
+template <typename Opaque, typename Targets, typename Wanted, typename Seen>
+void sweep(const Frame& frame, int last_u, Opaque&& opaque, Targets&& targets, Wanted&& wanted, Seen&& seen,
+           const double* inverse, std::vector<Span>& lit, std::vector<Span>& next) {
+  lit.assign(1, Span{Slope{0, 1}, Slope{1, 1}, true, true});
+  bool upper_clear = !opaque(0, 1);  // (0, 1) .. (k-1, k) are not opaque
+  for (int k = 1; k <= last_u && !lit.empty(); ++k) {
+    const int last_v = std::min(targets(k), frame.owns_diagonal ? k : k - 1);
+    int next_v = frame.owns_axis ? 0 : 1;  // the first target not yet decided
+    next.clear();
+    for (const Span& s : lit) {
+      // The cells of column k whose corner interval meets s, and the targets among them.
+      const int y0 = first_row(s.lo, k, inverse);
+      const int y1 = last_row(s.hi, k, inverse);
+      const int t0 = std::max(y0, next_v);
+      const int t1 = std::min(y1, last_v);
+      next_v = std::max(next_v, t1 + 1);
+      // On lit_{k-1}: s holds most candidate slopes, lit is asked for the others.
+      const auto lit_at = [&](Slope q) { return contains(s, q) || contains(lit, q); };
+      Slope lo = s.lo;  // the part of s above the runs cut so far starts here
+      bool lo_closed = s.lo_closed;
+      bool cutting = true;  // runs further up may still cut s
+      int run = -1;         // first row of the current run of opaque cells, -1: none
+      for (int y = y0; y <= y1; ++y) {
+        const bool o = opaque(k, y);
+        // 1. The target (k, y), on lit_{k-1}.
+        if (y >= t0 && y <= t1 && wanted(k, y)) {
+          bool visible = lit_at(Slope{y, k}) && (y < k || !(opaque(k, k - 1) && opaque(k - 1, k)));
+          if (!visible && o) {
+            visible = y < k ? lit_at(Slope{2 * y, 2 * k - 1}) : upper_clear && lit_at(Slope{1, 1});
+            if (!visible && y > 0) visible = !opaque(k, y - 1) && lit_at(Slope{2 * y - 1, 2 * k});
+          }
+          if (visible) seen(k, y);
+        }
+        // 2. lit_k: cut each run of opaque cells (k, run..top) and the corner at its top out of s.
+        if (o && run < 0) run = y;
+        if (run < 0 || (o && y < y1) || !cutting) continue;
+        const int top = o ? y : y - 1;
+        const Slope run_lo{2 * run - 1, 2 * k + 1};
+        run = -1;
+        if (compare(run_lo, s.hi) >= 0) {
+          cutting = false;
+          continue;
+        }
+        append(next, lo, lo_closed, run_lo, true);
+        const Slope run_hi{2 * top + 1, 2 * k - 1};
+        const bool corner = opaque(k - 1, top + 1);
+        const int c = compare(run_hi, lo);
+        if (c > 0) {
+          lo = run_hi;
+          lo_closed = !corner;
+        } else if (c == 0) {
+          lo_closed = lo_closed && !corner;
+        }
+        cutting = compare(lo, s.hi) <= 0;
       }
+      append(next, lo, lo_closed, s.hi, s.hi_closed);
     }
+    upper_clear = upper_clear && !opaque(k, k + 1);
+    std::swap(lit, next);
   }
-
-  /// True when `c` blocking implies this ray is blocked.
-  [[nodiscard]] bool blocked_by(const Check& c) const {
-    return cells_[cell(c.a_dx, c.a_dy)] == stamp_ || cells_[cell(c.b_dx, c.b_dy)] == stamp_ ||
-           (!is_cell(c) && corners_[corner(c)] == stamp_);
-  }
-
-  /// True when `other` being blocked implies this ray is blocked (every check of `other`
-  /// implies it): then this ray being clear implies `other` being clear.
-  [[nodiscard]] bool blocked_by(const std::vector<Check>& other) const {
-    return std::all_of(other.begin(), other.end(), [&](const Check& c) { return blocked_by(c); });
-  }
-
- private:
-  static bool is_cell(const Check& c) { return c.a_dx == c.b_dx && c.a_dy == c.b_dy; }
-  [[nodiscard]] std::size_t cell(int x, int y) const {
-    return static_cast<std::size_t>(y + r_) * static_cast<std::size_t>(side_) +
-           static_cast<std::size_t>(x + r_);
-  }
-  /// A corner by its point, (a + b) / 2 with odd doubled coordinates a + b, and which diagonal
-  /// pair of the four cells around it the check names.
-  [[nodiscard]] std::size_t corner(const Check& c) const {
-    const int px = (c.a_dx + c.b_dx + 2 * r_ - 1) / 2;
-    const int py = (c.a_dy + c.b_dy + 2 * r_ - 1) / 2;
-    const bool falling = (c.b_dx - c.a_dx) == (c.b_dy - c.a_dy);
-    return (falling ? cells_.size() : 0) + cell(px - r_, py - r_);
-  }
-
-  int r_;
-  int side_;
-  std::uint32_t stamp_ = 0;
-  std::vector<std::uint32_t> cells_;
-  std::vector<std::uint32_t> corners_;
-};
+}
 
 /// Smallest absolute difference between two angles (radians), in [0, pi].
 double angle_distance(double a, double b) {
@@ -248,14 +322,27 @@ SensorParams sensor_params_from_json(const nlohmann::json& j, const std::string&
 
 void to_json(nlohmann::json& j, const SensorParams& p) { j = sensor_params().write(p); }
 
+/// A target offset from the robot's cell (cells).
+struct Offset {
+  std::int16_t dx = 0;
+  std::int16_t dy = 0;
+};
+
 struct Sensor::Tables {
-  /// In offset-table order.
-  std::vector<Target> targets;
-  /// Direction to each target's centre (radians, as heading_angle()); read only with a
+  /// Offsets in range reach r cells along each axis.
+  int r = 0;
+  /// extent[u], u in [0, r]: the largest v with (u, v) in range (-1: none).
+  std::vector<int> extent;
+  /// The offsets in range in offset-table order: squared distance, then dy, then dx.
+  std::vector<Offset> order;
+  /// rank[(dy + r) * (2r + 1) + dx + r]: the position of offset (dx, dy) in `order` (offsets
+  /// in range only).
+  std::vector<std::uint32_t> rank;
+  /// inverse[x] = 1.0 / x for x in [1, 2r + 1] (inverse[0] unused): slope denominators.
+  std::vector<double> inverse;
+  /// By rank: the direction to the target's centre (radians, as heading_angle()); only with a
   /// limited field of view.
   std::vector<double> angles;
-  std::vector<Crossing> crossings;
-  std::vector<FaceRay> faces;
 };
 
 Sensor::Sensor(const SensorParams& params, double resolution_m)
@@ -270,129 +357,91 @@ Sensor::Sensor(const SensorParams& params, double resolution_m)
                                 " cells is more than the supported " + std::to_string(kMaxRangeCells));
   }
   auto tables = std::make_shared<Tables>();
-  std::vector<Target>& targets = tables->targets;
-  std::vector<Crossing>& crossings = tables->crossings;
-  // 1. Every offset within range, ordered by squared distance, then row, then column: this is
-  //    the "offset-table order" of scan() results and of noise draws.
   const double limit = squared_range_limit(range_cells_);
   const int r = static_cast<int>(std::floor(std::sqrt(limit)));
+  const auto in_range = [&](int dx, int dy) { return static_cast<double>(dx * dx + dy * dy) <= limit; };
+  tables->r = r;
+  tables->extent.assign(static_cast<std::size_t>(r) + 1, -1);
+  for (int u = 0; u <= r; ++u) {
+    int v = -1;
+    while (v < r && in_range(u, v + 1)) ++v;
+    tables->extent[static_cast<std::size_t>(u)] = v;
+  }
+  tables->inverse.assign(2 * static_cast<std::size_t>(r) + 2, 0.0);
+  for (std::size_t x = 1; x < tables->inverse.size(); ++x) tables->inverse[x] = 1.0 / static_cast<double>(x);
+  // 1. Offset-table order by a counting sort on the squared distance: offsets visited row by
+  //    row (dy, then dx, increasing) keep that order within each squared distance.
+  const std::size_t side = 2 * static_cast<std::size_t>(r) + 1;
+  std::vector<std::uint32_t> start(static_cast<std::size_t>(std::floor(limit)) + 2, 0);
   for (int dy = -r; dy <= r; ++dy) {
     for (int dx = -r; dx <= r; ++dx) {
-      if (static_cast<double>(dx * dx + dy * dy) <= limit) {
-        Target t;
-        t.dx = static_cast<std::int16_t>(dx);
-        t.dy = static_cast<std::int16_t>(dy);
-        targets.push_back(t);
-      }
+      if (in_range(dx, dy)) ++start[static_cast<std::size_t>(dx * dx + dy * dy) + 1];
     }
   }
-  std::sort(targets.begin(), targets.end(), [](const Target& a, const Target& b) {
-    const int da = a.dx * a.dx + a.dy * a.dy;
-    const int db = b.dx * b.dx + b.dy * b.dy;
-    if (da != db) return da < db;
-    if (a.dy != b.dy) return a.dy < b.dy;
-    return a.dx < b.dx;
-  });
-  // 2. The checks of each target's centre ray, in walk order, then its face rays that can make
-  //    a difference: a face ray implied by the centre ray or by the other face ray (e.g. the
-  //    face ray of a target straight ahead, whose checks equal the centre ray's) is dropped.
-  //    Each kept face ray stores its checks after its common prefix with the centre ray.
-  std::array<CheckSet, 2> sets{CheckSet(r), CheckSet(r)};
-  for (Target& t : targets) {
-    const int dx = t.dx;
-    const int dy = t.dy;
-    tables->angles.push_back(std::atan2(static_cast<double>(dy), static_cast<double>(dx)));
-    const std::vector<Check> centre = ray_checks(2 * dx, 2 * dy, dx, dy);
-    std::array<std::vector<Check>, 2> faces;  // vertical face, horizontal face
-    std::array<bool, 2> keep{dx != 0, dy != 0};
-    if (keep[0]) faces[0] = ray_checks(2 * dx - (dx > 0 ? 1 : -1), 2 * dy, dx, dy);
-    if (keep[1]) faces[1] = ray_checks(2 * dx, 2 * dy - (dy > 0 ? 1 : -1), dx, dy);
-    for (std::size_t f = 0; f < 2; ++f) {
-      if (!keep[f]) continue;
-      sets[f].assign(faces[f]);
-      keep[f] = !sets[f].blocked_by(centre);
-    }
-    if (keep[0] && keep[1]) {
-      if (sets[1].blocked_by(faces[0])) {
-        keep[1] = false;
-      } else if (sets[0].blocked_by(faces[1])) {
-        keep[0] = false;
-      }
-    }
-
-    t.first = static_cast<std::uint32_t>(crossings.size());
-    t.count = static_cast<std::uint16_t>(centre.size());
-    for (const Check& c : centre) crossings.push_back(compact(c));
-    t.face_first = static_cast<std::uint32_t>(tables->faces.size());
-    for (std::size_t f = 0; f < 2; ++f) {
-      if (!keep[f]) continue;
-      const unsigned bit = 1U << t.face_count;
-      ++t.face_count;
-      const std::vector<Check>& face = faces[f];
-      for (std::size_t k = 0; k < centre.size(); ++k) {
-        if (!sets[f].blocked_by(centre[k]))
-          crossings[t.first + k].open_faces |= static_cast<std::uint8_t>(bit);
-      }
-      const auto shared = std::mismatch(face.begin(), face.end(), centre.begin(), centre.end()).first;
-      tables->faces.push_back(FaceRay{static_cast<std::uint32_t>(crossings.size()),
-                                      static_cast<std::uint32_t>(face.end() - shared)});
-      std::transform(shared, face.end(), std::back_inserter(crossings), compact);
+  for (std::size_t d = 1; d < start.size(); ++d) start[d] += start[d - 1];
+  tables->order.resize(start.back());
+  tables->rank.assign(side * side, 0);
+  for (int dy = -r; dy <= r; ++dy) {
+    for (int dx = -r; dx <= r; ++dx) {
+      if (!in_range(dx, dy)) continue;
+      const std::uint32_t n = start[static_cast<std::size_t>(dx * dx + dy * dy)]++;
+      tables->order[n] = Offset{static_cast<std::int16_t>(dx), static_cast<std::int16_t>(dy)};
+      tables->rank[static_cast<std::size_t>(dy + r) * side + static_cast<std::size_t>(dx + r)] = n;
     }
   }
-  crossings.shrink_to_fit();
-  revealed_.reserve(targets.size());
+  // 2. Directions, for the field of view.
+  if (params_.fov_deg < 360.0) {
+    tables->angles.reserve(tables->order.size());
+    for (const Offset& o : tables->order) {
+      tables->angles.push_back(std::atan2(static_cast<double>(o.dy), static_cast<double>(o.dx)));
+    }
+  }
+  seen_bits_.assign((tables->order.size() + 63) / 64, 0);
   tables_ = std::move(tables);
 }
 
 template <typename Skip, typename Opaque, typename Visit>
 void Sensor::for_each_visible(int width, int height, Cell at, double heading_rad, Skip&& skip,
                               Opaque&& opaque, Visit&& visit) const {
+  const Tables& t = *tables_;
   const int at_index = at.y * width + at.x;
   const bool limit_fov = params_.fov_deg < 360.0;
   const double half_fov = params_.fov_deg * (M_PI / 360.0) + kAngleSlack;
-  // Whether check `c` blocks. Crossed cells lie inside the bounding box of the robot's and the
-  // target's cells, so they are on the map.
-  const auto blocks = [&](const Crossing& c) {
-    const int a = at_index + c.dy * width + c.dx;
-    return opaque(a) && opaque(a + c.b_dy * width + c.b_dx);
+  const std::size_t side = 2 * static_cast<std::size_t>(t.r) + 1;
+  // Field of view (the robot's own cell is always seen), then visit.
+  const auto target = [&](int index, int dx, int dy) {
+    const std::uint32_t rank =
+        t.rank[static_cast<std::size_t>(dy + t.r) * side + static_cast<std::size_t>(dx + t.r)];
+    if (limit_fov && rank != 0 && angle_distance(t.angles[rank], heading_rad) > half_fov) return;
+    visit(index, rank);
   };
-  const Crossing* const crossings = tables_->crossings.data();
-  const FaceRay* const faces = tables_->faces.data();
-  const double* const angles = tables_->angles.data();
-  const Target* const targets = tables_->targets.data();
-  const std::size_t target_count = tables_->targets.size();
-  for (std::size_t n = 0; n < target_count; ++n) {
-    const Target& t = targets[n];
-    // 1. The target must lie on the map and not be skipped.
-    const int x = at.x + t.dx;
-    const int y = at.y + t.dy;
-    if (x < 0 || y < 0 || x >= width || y >= height) continue;
-    const int index = at_index + t.dy * width + t.dx;
-    if (skip(index)) continue;
-    const bool own_cell = t.dx == 0 && t.dy == 0;
-    // 2. Field of view (the robot's own cell is always seen).
-    if (limit_fov && !own_cell && angle_distance(angles[n], heading_rad) > half_fov) continue;
-    // 3. Line of sight: the centre ray; for an opaque target whose centre ray is blocked at
-    //    check k, the face rays not implied blocked by check k (its open_faces bits). Such a
-    //    face ray does not contain check k, so its common prefix with the centre ray ends
-    //    before k and is clear: only its own stored checks remain. (One branch on a rarely set
-    //    mask rather than on the target's occupancy, which would mispredict often.)
-    const Crossing* c = crossings + t.first;
-    std::uint32_t k = 0;
-    while (k < t.count && !blocks(c[k])) ++k;
-    if (k < t.count) {
-      unsigned open = c[k].open_faces;
-      open &= 0U - static_cast<unsigned>(opaque(index));
-      if (open == 0) continue;
-      bool seen = false;
-      for (unsigned f = 0; f < t.face_count && !seen; ++f) {
-        if (((open >> f) & 1U) == 0) continue;
-        const FaceRay& ray = faces[t.face_first + f];
-        seen = std::none_of(crossings + ray.first, crossings + ray.first + ray.count, blocks);
-      }
-      if (!seen) continue;
+  if (!skip(at_index)) target(at_index, 0, 0);
+  std::vector<Span> lit;
+  std::vector<Span> next;
+  for (const Frame& f : kFrames) {
+    // A frame whose whole sector lies outside the field of view (by more than rounding can
+    // move an angle) has no target to visit.
+    if (limit_fov) {
+      const double c = std::cos(M_PI / 8.0);
+      const double s = std::sin(M_PI / 8.0);
+      const double mid = std::atan2(f.uy * c + f.vy * s, f.ux * c + f.vx * s);
+      if (angle_distance(mid, heading_rad) > half_fov + M_PI / 8.0 + 1e-6) continue;
     }
-    visit(index, own_cell);
+    // How far the map reaches along U and V.
+    const int u_map = f.ux > 0 ? width - 1 - at.x : f.ux < 0 ? at.x : f.uy > 0 ? height - 1 - at.y : at.y;
+    const int v_map = f.vx > 0 ? width - 1 - at.x : f.vx < 0 ? at.x : f.vy > 0 ? height - 1 - at.y : at.y;
+    const int step_u = f.ux + f.uy * width;
+    const int step_v = f.vx + f.vy * width;
+    const auto opaque_at = [&](int u, int v) {
+      return v > v_map || v > t.extent[static_cast<std::size_t>(u)] ||
+             opaque(at_index + u * step_u + v * step_v);
+    };
+    const auto targets = [&](int u) { return std::min(v_map, t.extent[static_cast<std::size_t>(u)]); };
+    const auto wanted = [&](int u, int v) { return !skip(at_index + u * step_u + v * step_v); };
+    const auto seen = [&](int u, int v) {
+      target(at_index + u * step_u + v * step_v, u * f.ux + v * f.vx, u * f.uy + v * f.vy);
+    };
+    sweep(f, std::min(t.r, u_map), opaque_at, targets, wanted, seen, t.inverse.data(), lit, next);
   }
 }
 
@@ -402,21 +451,62 @@ std::span<const int> Sensor::scan(const WorldMap& truth, KnownMap& known, Cell a
   if (!tables_ || !truth.occupied.in_bounds(at)) return {};
   const std::uint8_t* occ = truth.occupied.data().data();
   const bool noisy = params_.miss_probability > 0.0;
-  // reveal() below changes cell states in place, never the storage.
   const CellState* const known_state = known.cells().data().data();
+  // 0. Nothing to reveal when every cell in range on the map is known (a robot standing in
+  //    explored space): a byte search along the rows of the disc costs less than the sweep.
+  if (all_known(known, at)) return revealed_;
+  // 1. The visible targets that are still unknown, as bits by rank.
+  std::uint64_t* const bits = seen_bits_.data();
+  std::size_t first_word = seen_bits_.size();
+  std::size_t last_word = 0;
   for_each_visible(
       truth.width(), truth.height(), at, heading_rad,
       // Known cells never change, so only unknown targets are looked at.
       [&](int index) { return known_state[index] != CellState::Unknown; },
       [&](int index) { return occ[index] != 0; },
-      [&](int index, bool own_cell) {
-        // 4. Seeded miss: one draw per visible unknown cell, in table order; the robot's own
-        //    cell is never missed.
-        if (noisy && !own_cell && uniform01(rng) < params_.miss_probability) return;
-        known.reveal(index, occ[index] != 0);
-        revealed_.push_back(index);
+      [&](int, std::uint32_t rank) {
+        const std::size_t w = rank / 64;
+        bits[w] |= std::uint64_t{1} << (rank % 64);
+        first_word = std::min(first_word, w);
+        last_word = std::max(last_word, w);
       });
+  // 2. Reveal them in offset-table order (clearing the bits for the next scan).
+  const Offset* const order = tables_->order.data();
+  const int width = truth.width();
+  const int at_index = at.y * width + at.x;
+  for (std::size_t w = first_word; w <= last_word && w < seen_bits_.size(); ++w) {
+    std::uint64_t word = bits[w];
+    bits[w] = 0;
+    while (word != 0) {
+      const auto rank = static_cast<std::uint32_t>(w * 64 + static_cast<std::size_t>(std::countr_zero(word)));
+      word &= word - 1;
+      const int index = at_index + order[rank].dy * width + order[rank].dx;
+      // 3. Seeded miss: one draw per visible unknown cell, in table order; the robot's own
+      //    cell is never missed.
+      if (noisy && rank != 0 && uniform01(rng) < params_.miss_probability) continue;
+      known.reveal(index, occ[index] != 0);
+      revealed_.push_back(index);
+    }
+  }
   return revealed_;
+}
+
+bool Sensor::all_known(const KnownMap& known, Cell at) const {
+  static_assert(static_cast<int>(CellState::Unknown) == 0 && sizeof(CellState) == 1);
+  const Tables& t = *tables_;
+  const CellState* const state = known.cells().data().data();
+  for (int dy = -t.r; dy <= t.r; ++dy) {
+    const int y = at.y + dy;
+    if (y < 0 || y >= known.height()) continue;
+    const int reach = t.extent[static_cast<std::size_t>(std::abs(dy))];
+    const int x0 = std::max(0, at.x - reach);
+    const int x1 = std::min(known.width() - 1, at.x + reach);
+    if (x0 <= x1 &&
+        std::memchr(state + y * known.width() + x0, 0, static_cast<std::size_t>(x1 - x0 + 1)) != nullptr) {
+      return false;
+    }
+  }
+  return true;
 }
 
 ScanCounts Sensor::gain(const KnownMap& known, Cell at, double heading_rad) const {
@@ -426,7 +516,9 @@ ScanCounts Sensor::gain(const KnownMap& known, Cell at, double heading_rad) cons
   for_each_visible(
       known.width(), known.height(), at, heading_rad, [](int) { return false; },
       [&](int index) { return state[index] == CellState::Occupied; },
-      [&](int index, bool) { ++(state[index] == CellState::Unknown ? counts.unknown : counts.known); });
+      [&](int index, std::uint32_t) {
+        ++(state[index] == CellState::Unknown ? counts.unknown : counts.known);
+      });
   return counts;
 }
 

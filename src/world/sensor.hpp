@@ -69,10 +69,11 @@ struct ScanCounts {
   friend bool operator==(const ScanCounts&, const ScanCounts&) = default;
 };
 
-/// A sensor for one resolution. Precomputes, per target offset in range, the cells its rays
-/// cross, so a scan costs one table walk. Copyable value type: copies share the immutable
-/// tables and each has its own result buffer (so one instance must not scan from two threads
-/// at once, but copies may).
+/// A sensor for one resolution. Precomputes the offsets in range in offset-table order (O(r^2)
+/// memory for a range of r cells, at most 2000 cells); a scan sweeps the eight octants around
+/// the robot by exact shadowcasting, so its cost follows the cells that can be seen. Copyable
+/// value type: copies share the immutable tables and each has its own result buffers (so one
+/// instance must not scan from two threads at once, but copies may).
 class Sensor {
  public:
   Sensor() = default;
@@ -90,11 +91,11 @@ class Sensor {
   /// transparent). Known free and unknown targets need their centre ray clear; known occupied
   /// targets their centre ray or a face ray (an unknown target is not assumed to be a wall).
   /// Noise is ignored. Cells off the map are not counted. `at` off the map: both counts 0.
-  /// Uses the same precomputed tables as scan(); does not change anything.
+  /// Uses the same sweep as scan(); does not change anything.
   [[nodiscard]] ScanCounts gain(const KnownMap& known, Cell at, double heading_rad) const;
 
   /// True when `target` is visible from `at` on `truth` under the range and ray rules (ignores
-  /// field of view and noise). Walks the rays directly, independently of the tables. For tests
+  /// field of view and noise). Walks the rays directly, independently of the sweep. For tests
   /// and for information-gain estimates.
   [[nodiscard]] bool visible(const WorldMap& truth, Cell at, Cell target) const;
 
@@ -105,19 +106,25 @@ class Sensor {
  private:
   struct Tables;  // defined in sensor.cpp; immutable once built
 
-  /// The one walk over the tables behind scan() and gain(), on a width x height grid: for each
-  /// target in offset-table order that is on the grid, not skip(index), inside the field of
-  /// view and in line of sight with opaque(index) as the obstacle test (for check cells and
-  /// for choosing the occupied-target rule), calls visit(index, own_cell). Defined in
+  /// The one sweep behind scan() and gain(), on a width x height grid: for each target in range
+  /// that is on the grid, not skip(index), inside the field of view and in line of sight with
+  /// opaque(index) as the obstacle test (for crossed cells and for choosing the occupied-target
+  /// rule), calls visit(index, rank) once, rank being its position in offset-table order (the
+  /// robot's own cell has rank 0). The order of the calls is unspecified. Defined in
   /// sensor.cpp, the only place it is used.
   template <typename Skip, typename Opaque, typename Visit>
   void for_each_visible(int width, int height, Cell at, double heading_rad, Skip&& skip, Opaque&& opaque,
                         Visit&& visit) const;
 
+  /// True when every cell within range of `at` on the map is known (scan() has nothing to do).
+  [[nodiscard]] bool all_known(const KnownMap& known, Cell at) const;
+
   SensorParams params_;
   double range_cells_ = 0.0;
   std::shared_ptr<const Tables> tables_;  // null for a default-constructed sensor
   std::vector<int> revealed_;
+  /// Scratch of scan(): one bit per offset in range, by rank; all zero between scans.
+  std::vector<std::uint64_t> seen_bits_;
 };
 
 }  // namespace world

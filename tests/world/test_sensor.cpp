@@ -688,5 +688,251 @@ TEST(SensorGain, OffTheMapOrDefaultSensorCountsNothing) {
   EXPECT_EQ(Sensor(range(1.0), 1.0).gain(KnownMap(4, 4, 1.0), Cell{0, 0}, 0.0), (ScanCounts{3, 0}));
 }
 
+// --- The sweep of scan() and gain() against the rule, target by target ---
+
+/// Offsets of the (2r+1)^2 square in offset-table order: squared distance, then dy, then dx.
+std::vector<Cell> offsets_in_table_order(int r) {
+  std::vector<Cell> out;
+  for (int dy = -r; dy <= r; ++dy) {
+    for (int dx = -r; dx <= r; ++dx) out.push_back(Cell{dx, dy});
+  }
+  std::stable_sort(out.begin(), out.end(),
+                   [](Cell a, Cell b) { return a.x * a.x + a.y * a.y < b.x * b.x + b.y * b.y; });
+  return out;
+}
+
+/// The field-of-view test as documented in sensor.hpp, with the sensor's slack (1e-9 rad) and
+/// the same double computations: the direction to the target's centre by std::atan2.
+bool in_field_of_view(const SensorParams& p, Cell offset, double heading_rad) {
+  if (p.fov_deg >= 360.0 || offset == Cell{0, 0}) return true;
+  double d = std::fmod(std::atan2(static_cast<double>(offset.y), static_cast<double>(offset.x)) - heading_rad,
+                       2.0 * M_PI);
+  if (d < 0.0) d += 2.0 * M_PI;
+  if (d > M_PI) d = 2.0 * M_PI - d;
+  return d <= p.fov_deg * (M_PI / 360.0) + 1e-9;
+}
+
+/// scan() spelled out: every unknown target on the map in offset-table order, the field of
+/// view, then Sensor::visible() (range and rays, walked directly); one noise draw per visible
+/// unknown target but the robot's cell.
+std::vector<int> reference_scan(const Sensor& sensor, const WorldMap& truth, KnownMap& known, Cell at,
+                                double heading_rad, Rng& rng) {
+  std::vector<int> out;
+  const SensorParams& p = sensor.params();
+  for (const Cell o : offsets_in_table_order(static_cast<int>(sensor.range_cells()) + 1)) {
+    const Cell c{at.x + o.x, at.y + o.y};
+    if (!truth.occupied.in_bounds(c) || known.state(c) != CellState::Unknown) continue;
+    const bool own = o == Cell{0, 0};
+    if (!in_field_of_view(p, o, heading_rad)) continue;
+    if (!own && !sensor.visible(truth, at, c)) continue;
+    if (p.miss_probability > 0.0 && !own && uniform01(rng) < p.miss_probability) continue;
+    const int i = truth.occupied.index(c);
+    known.reveal(i, !truth.is_free(i));
+    out.push_back(i);
+  }
+  return out;
+}
+
+/// gain() spelled out: the same targets, known occupied cells as the only walls.
+ScanCounts reference_gain(const Sensor& sensor, const KnownMap& known, Cell at, double heading_rad) {
+  ScanCounts counts;
+  const WorldMap walls = walls_of(known);
+  for (const Cell o : offsets_in_table_order(static_cast<int>(sensor.range_cells()) + 1)) {
+    const Cell c{at.x + o.x, at.y + o.y};
+    if (!known.in_bounds(c) || !in_field_of_view(sensor.params(), o, heading_rad)) continue;
+    if (o != Cell{0, 0} && !sensor.visible(walls, at, c)) continue;
+    ++(known.state(c) == CellState::Unknown ? counts.unknown : counts.known);
+  }
+  return counts;
+}
+
+/// A seeded map with obstacle cells of density p and the shapes that stress the ray rules:
+/// straight runs, long walls at grazing slopes (1/2 .. 1/9) and diagonal lines (whose steps
+/// are diagonal gaps), some of them doubled into opaque diagonal pairs.
+WorldMap stress_world(int width, int height, double p, std::uint64_t seed) {
+  WorldMap map = open_world(width, height);
+  Rng rng = make_rng(seed, "stress-map");
+  const auto below = [&](int n) {
+    return static_cast<int>(uniform_below(rng, static_cast<std::uint64_t>(n)));
+  };
+  const auto put = [&](int x, int y) {
+    if (map.occupied.in_bounds(Cell{x, y})) map.occupied.at(Cell{x, y}) = 1;
+  };
+  for (int i = 0; i < map.occupied.size(); ++i) map.occupied[i] = uniform01(rng) < p ? 1 : 0;
+  for (int k = below(6); k > 0; --k) {  // runs along a row or a column
+    const int x = below(width);
+    const int y = below(height);
+    const bool along_x = below(2) == 0;
+    for (int j = 0, n = 2 + below(12); j < n; ++j) put(along_x ? x + j : x, along_x ? y : y + j);
+  }
+  for (int k = below(4); k > 0; --k) {  // grazing walls: slope 1/m, either way up
+    const int m = 2 + below(8);
+    const int x = below(width);
+    const int y = below(height);
+    const int sx = below(2) == 0 ? 1 : -1;
+    const int sy = below(2) == 0 ? 1 : -1;
+    const bool steep = below(2) == 0;
+    for (int j = 0; j < 3 * m; ++j) {
+      const int a = sx * j;
+      const int b = sy * (j / m);
+      put(steep ? x + b : x + a, steep ? y + a : y + b);
+    }
+  }
+  for (int k = below(4); k > 0; --k) {  // diagonal lines, sometimes doubled
+    const int x = below(width);
+    const int y = below(height);
+    const int sx = below(2) == 0 ? 1 : -1;
+    const bool doubled = below(2) == 0;
+    for (int j = 0, n = 3 + below(10); j < n; ++j) {
+      put(x + sx * j, y + j);
+      if (doubled) put(x + sx * j + 1, y + j);
+    }
+  }
+  return map;
+}
+
+TEST(SensorSweep, EqualsTheRuleTargetByTarget) {
+  // Seeded random cases: map size and density, robot anywhere (edges and corners included),
+  // range (whole and fractional numbers of cells, and metres that round, e.g. 3.0 m / 0.3 m),
+  // field of view and heading, noise, and a partly known map (scan skips known targets; gain()
+  // sees only the known walls). Every scan must reveal the same cells in the same order with
+  // the same noise draws, and gain() must count the same cells.
+  const std::vector<double> ranges_cells = {0.5, 1.0, 1.5, 2.0,  2.2,  3.0,  4.0,  5.0,  5.5,
+                                            7.0, 8.0, 9.9, 10.0, 12.5, 15.0, 18.0, 20.0, 25.0};
+  const std::vector<double> fovs = {360.0, 359.0, 270.0, 180.0, 120.0, 90.0, 45.0, 10.0};
+  Rng rng = make_rng(2024, "sensor-sweep-test");
+  const auto below = [&](int n) {
+    return static_cast<int>(uniform_below(rng, static_cast<std::uint64_t>(n)));
+  };
+  int scans = 0;
+  int revealed = 0;
+  int occupied_revealed = 0;
+  for (int trial = 0; trial < 1500; ++trial) {
+    const bool tiny = below(5) == 0;  // maps narrower than the range, down to one cell
+    const int width = tiny ? 1 + below(8) : 20 + below(40);
+    const int height = tiny ? 1 + below(8) : 20 + below(40);
+    const double u = uniform01(rng);
+    const double density = 0.05 + 0.55 * u * u;  // 0.05 .. 0.6, mostly sparse
+    WorldMap truth = stress_world(width, height, density, static_cast<std::uint64_t>(trial));
+    // Resolution and range: exact metres (1 m cells), or a range that is a whole number of
+    // cells only up to rounding (e.g. 3.0 m at 0.3 m).
+    const double range_cells =
+        ranges_cells[static_cast<std::size_t>(below(static_cast<int>(ranges_cells.size())))];
+    const bool rounding = below(2) == 0;
+    truth.resolution_m = rounding ? 0.3 : 1.0;
+    SensorParams p;
+    p.range_m = rounding ? range_cells * 0.3 : range_cells;
+    p.fov_deg = below(2) == 0 ? 360.0 : fovs[static_cast<std::size_t>(below(static_cast<int>(fovs.size())))];
+    p.miss_probability = below(3) == 0 ? 0.3 : 0.0;
+    // Robot: anywhere, often on an edge or in a corner.
+    Cell at{below(width), below(height)};
+    if (below(3) == 0) at.x = below(2) == 0 ? 0 : width - 1;
+    if (below(3) == 0) at.y = below(2) == 0 ? 0 : height - 1;
+    // Headings: the eight headings of the robot and arbitrary ones.
+    const double heading = below(2) == 0 ? heading_angle(below(8)) : (2.0 * uniform01(rng) - 1.0) * M_PI;
+    // Known map: empty, or some cells already known (free or occupied as in the truth).
+    KnownMap known(width, height, truth.resolution_m);
+    const double known_share = below(3) != 0 ? 0.0 : 0.6 * uniform01(rng);
+    for (int i = 0; i < known.size(); ++i) {
+      if (uniform01(rng) < known_share) known.reveal(i, !truth.is_free(i));
+    }
+    Sensor sensor(p, truth.resolution_m);
+    const std::uint64_t seed = static_cast<std::uint64_t>(trial);
+    const std::string where = "trial " + std::to_string(trial) + ": " + std::to_string(width) + "x" +
+                              std::to_string(height) + " at " + std::to_string(at.x) + "," +
+                              std::to_string(at.y) + " range_m " + std::to_string(p.range_m) + " fov " +
+                              std::to_string(p.fov_deg) + " heading " + std::to_string(heading);
+    // gain() on the partly known map, before the scans change it.
+    ASSERT_EQ(sensor.gain(known, at, heading), reference_gain(sensor, known, at, heading)) << where;
+    // Two scans in a row from the same known map: the second one sees what the first one left.
+    KnownMap expected_known = known;
+    Rng scan_rng = make_rng(seed, "sensor");
+    Rng expected_rng = scan_rng;
+    for (int again = 0; again < 2; ++again) {
+      const auto got = sensor.scan(truth, known, at, heading, scan_rng);
+      const std::vector<int> expected =
+          reference_scan(sensor, truth, expected_known, at, heading, expected_rng);
+      ASSERT_EQ(std::vector<int>(got.begin(), got.end()), expected) << where << " scan " << again;
+      ASSERT_EQ(known, expected_known) << where;
+      ASSERT_EQ(scan_rng, expected_rng) << where;  // the same number of noise draws
+      ++scans;
+      revealed += static_cast<int>(expected.size());
+      for (const int i : expected) occupied_revealed += truth.is_free(i) ? 0 : 1;
+    }
+    // gain() on the map the scans left (fewer unknown cells, more known walls).
+    ASSERT_EQ(sensor.gain(known, at, heading), reference_gain(sensor, known, at, heading)) << where;
+  }
+  // The cases are not trivial: many cells and walls seen.
+  EXPECT_EQ(scans, 3000);
+  EXPECT_GT(revealed, 20000);
+  EXPECT_GT(occupied_revealed, 4000);
+}
+
+TEST(SensorSweep, LongRangeInClutterEqualsTheRule) {
+  // A few scans at 40 cells on 90 x 90 maps (robot inside and on the edge): long grazing rays.
+  for (const double p : {0.02, 0.08}) {
+    const WorldMap truth = stress_world(90, 90, p, static_cast<std::uint64_t>(p * 1000));
+    const Sensor sensor(range(40.0), 1.0);
+    for (const Cell at : {Cell{45, 45}, Cell{0, 30}, Cell{89, 89}, Cell{20, 70}}) {
+      KnownMap known(90, 90, 1.0);
+      KnownMap expected_known = known;
+      Rng rng = make_rng(1, "sensor");
+      Sensor s = sensor;
+      const auto got = s.scan(truth, known, at, 0.0, rng);
+      const std::vector<int> expected = reference_scan(sensor, truth, expected_known, at, 0.0, rng);
+      ASSERT_EQ(std::vector<int>(got.begin(), got.end()), expected)
+          << "p " << p << " at " << at.x << "," << at.y;
+      ASSERT_EQ(sensor.gain(known, at, 0.0), reference_gain(sensor, known, at, 0.0));
+    }
+  }
+}
+
+TEST(SensorSweep, OneUnknownCellInAKnownDiscIsFound) {
+  // Every cell in range known but one: the scan reveals exactly that one (open space, so it is
+  // visible), wherever it lies in the disc (the rim included: (3, 4) is exactly 5 cells away)
+  // and wherever the robot stands. With none unknown, nothing is revealed and no noise drawn.
+  const WorldMap map = open_world(15, 13);
+  SensorParams p = range(5.0);
+  p.miss_probability = 0.5;
+  Sensor sensor(p, 1.0);
+  for (const Cell at : {Cell{7, 6}, Cell{0, 0}, Cell{14, 3}, Cell{2, 12}}) {
+    KnownMap all(15, 13, 1.0);
+    std::vector<int> in_range;
+    for (int i = 0; i < all.size(); ++i) {
+      const Cell c = all.cell(i);
+      if ((c.x - at.x) * (c.x - at.x) + (c.y - at.y) * (c.y - at.y) <= 25) {
+        all.reveal(i, false);
+        in_range.push_back(i);
+      }
+    }
+    Rng rng = make_rng(5, "sensor");
+    const Rng before = rng;
+    EXPECT_TRUE(sensor.scan(map, all, at, 0.0, rng).empty());
+    EXPECT_EQ(rng, before);
+    for (const int i : in_range) {
+      if (i == map.occupied.index(at)) continue;
+      KnownMap known(15, 13, 1.0);
+      for (const int j : in_range) {
+        if (j != i) known.reveal(j, false);
+      }
+      KnownMap expected_known = known;
+      Rng expected_rng = rng;
+      const auto got = sensor.scan(map, known, at, 0.0, rng);
+      const std::vector<int> expected = reference_scan(sensor, map, expected_known, at, 0.0, expected_rng);
+      ASSERT_EQ(std::vector<int>(got.begin(), got.end()), expected) << at.x << "," << at.y << " cell " << i;
+      ASSERT_EQ(rng, expected_rng);
+      ASSERT_NE(rng, before);  // one draw for the unknown cell
+    }
+  }
+}
+
+TEST(SensorSweep, RangeAtTheSupportedMaximum) {
+  // 2000 cells is the documented maximum (sensor.hpp); more is refused.
+  EXPECT_THROW(Sensor(range(2001.0), 1.0), std::invalid_argument);
+  // A long range on a small map: the cells of the map, nothing else.
+  const WorldMap map = open_world(30, 20);
+  EXPECT_EQ(scan_fresh(map, range(500.0), Cell{3, 17}).revealed.size(), 600U);
+}
+
 }  // namespace test_sensor
 }  // namespace fsweep
