@@ -258,6 +258,20 @@ bool choose_by_probes(const Observation& obs, const EnergyAware::Terms& t, Watch
 Decision EnergyAware::decide(const Observation& obs) {
   if (params_.distance != "path") return LinearScoredStrategy::decide(obs);
   if (obs.clusters.empty()) return on_no_candidate(obs);
+  // Pure closest frontier without a battery limit: the nearest representative by path (ties to
+  // the lowest cluster index), by one search from the robot that stops at the first one. Among
+  // walls this beats probing (an A* to a representative behind a wall settles most of what
+  // that search would).
+  const bool pure_distance =
+      weights_[1] == 0.0 && weights_[2] == 0.0 && weights_[3] == 0.0 && weights_[0] > 0.0;
+  if (pure_distance && obs.battery.unlimited()) {
+    std::vector<int> reps;
+    reps.reserve(obs.clusters.size());
+    for (const auto& c : obs.clusters) reps.push_back(c.representative);
+    const int best = obs.distances.nearest_from_robot(reps);
+    if (best < 0) return on_no_candidate(obs);
+    return Decision::go_to(obs.known.cell(reps[static_cast<std::size_t>(best)]));
+  }
   // The argmin of candidates(), computing d_g only as far as it can matter: first by point
   // searches for the best bounds, then, if they do not settle it, by a search from the robot
   // that stops once no representative it has not reached can win.

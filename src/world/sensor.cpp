@@ -255,8 +255,10 @@ void sweep(const Frame& frame, int last_u, Opaque&& opaque, Targets&& targets, W
         if (y >= t0 && y <= t1 && wanted(k, y)) {
           bool visible = lit_at(Slope{y, k}) && (y < k || !(opaque(k, k - 1) && opaque(k - 1, k)));
           if (!visible && o) {
-            visible = y < k ? lit_at(Slope{2 * y, 2 * k - 1}) : upper_clear && lit_at(Slope{1, 1});
-            if (!visible && y > 0) visible = !opaque(k, y - 1) && lit_at(Slope{2 * y - 1, 2 * k});
+            const std::int64_t y2 = 2 * static_cast<std::int64_t>(y);
+            const std::int64_t k2 = 2 * static_cast<std::int64_t>(k);
+            visible = y < k ? lit_at(Slope{y2, k2 - 1}) : upper_clear && lit_at(Slope{1, 1});
+            if (!visible && y > 0) visible = !opaque(k, y - 1) && lit_at(Slope{y2 - 1, k2});
           }
           if (visible) seen(k, y);
         }
@@ -384,7 +386,7 @@ Sensor::Sensor(const SensorParams& params, double resolution_m)
   for (int dy = -r; dy <= r; ++dy) {
     for (int dx = -r; dx <= r; ++dx) {
       if (!in_range(dx, dy)) continue;
-      const std::uint32_t n = start[static_cast<std::size_t>(dx * dx + dy * dy)]++;
+      const std::uint32_t n = start[static_cast<std::size_t>(dx * dx) + static_cast<std::size_t>(dy * dy)]++;
       tables->order[n] = Offset{static_cast<std::int16_t>(dx), static_cast<std::int16_t>(dy)};
       tables->rank[static_cast<std::size_t>(dy + r) * side + static_cast<std::size_t>(dx + r)] = n;
     }
@@ -501,8 +503,8 @@ bool Sensor::all_known(const KnownMap& known, Cell at) const {
     const int reach = t.extent[static_cast<std::size_t>(std::abs(dy))];
     const int x0 = std::max(0, at.x - reach);
     const int x1 = std::min(known.width() - 1, at.x + reach);
-    if (x0 <= x1 &&
-        std::memchr(state + y * known.width() + x0, 0, static_cast<std::size_t>(x1 - x0 + 1)) != nullptr) {
+    if (x0 <= x1 && std::memchr(state + static_cast<std::ptrdiff_t>(y) * known.width() + x0, 0,
+                                static_cast<std::size_t>(x1 - x0) + 1) != nullptr) {
       return false;
     }
   }
