@@ -15,7 +15,7 @@
 #include "world/known_map.hpp"
 
 namespace fsweep {
-namespace {
+namespace test_energy_aware_choice {  // not anonymous: unity builds put it beside other test files' helpers
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
@@ -157,5 +157,5 @@ TEST(EnergyAwareChoice, LowerBoundsNeverExceedTheSearchedDistances) {
   EXPECT_GT(infinite_bounds, 0);  // blobs the dock cannot reach, though the robot's blob can
 }
 
-}  // namespace
+}  // namespace test_energy_aware_choice
 }  // namespace fsweep
