@@ -235,7 +235,25 @@ nlohmann::json planner_query_params(const std::string& name) {
   if (name.rfind("ompl:", 0) != 0) return nlohmann::json::object();
   const long iterations = name == "ompl:LazyPRMstar" ? kLazyPrmIterations : kOmplIterations;
   return {{"max_iterations", iterations}, {"time_limit_s", 60.0}};
-  return nlohmann::json::object();
+}
+
+/// The timed part of the query benchmarks: every query of `s` in order per iteration; sets the
+/// counters `queries`, `s_per_query` and `expansions/query`.
+void time_queries(benchmark::State& state, Planner& planner, const ScenarioSet& s) {
+  long expansions = 0;
+  for (auto _ : state) {
+    for (const PlanRequest& q : s.queries) {
+      const PlanResult r = planner.plan(s.known, q);
+      expansions += r.expansions;
+      benchmark::DoNotOptimize(r.length_m);
+    }
+  }
+  const auto queries = static_cast<double>(s.queries.size());
+  state.counters["queries"] = queries;
+  state.counters["s_per_query"] = benchmark::Counter(
+      queries, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["expansions/query"] = benchmark::Counter(
+      static_cast<double>(expansions) / (queries * static_cast<double>(state.iterations())));
 }
 
 /// One iteration = the whole fixed query set, planned in order.
@@ -245,21 +263,8 @@ void planner_query(benchmark::State& state, const std::string& name) {
   long solved = 0;
   for (const PlanRequest& q : s.queries)
     solved += planner->plan(s.known, q).status == PlanStatus::Success ? 1 : 0;
-  long expansions = 0;
-  for (auto _ : state) {
-    for (const PlanRequest& q : s.queries) {
-      const PlanResult r = planner->plan(s.known, q);
-      expansions += r.expansions;
-      benchmark::DoNotOptimize(r.energy);
-    }
-  }
-  const auto queries = static_cast<double>(s.queries.size());
-  state.counters["queries"] = queries;
-  state.counters["solved"] = static_cast<double>(solved) / queries;
-  state.counters["s_per_query"] = benchmark::Counter(
-      queries, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
-  state.counters["expansions/query"] = benchmark::Counter(
-      static_cast<double>(expansions) / (queries * static_cast<double>(state.iterations())));
+  time_queries(state, *planner, s);
+  state.counters["solved"] = static_cast<double>(solved) / static_cast<double>(s.queries.size());
 }
 
 /// One BM_PlannerQuery/<name> per registered planner.
@@ -305,21 +310,8 @@ void scenario_query(benchmark::State& state, const std::string& name, std::size_
   const auto planner = make_planner(name, nlohmann::json::object());
   double cells = 0.0;
   for (const PlanRequest& q : s.queries) cells += planner->plan(s.known, q).length_m;  // warm-up, untimed
-  long expansions = 0;
-  for (auto _ : state) {
-    for (const PlanRequest& q : s.queries) {
-      const PlanResult r = planner->plan(s.known, q);
-      expansions += r.expansions;
-      benchmark::DoNotOptimize(r.length_m);
-    }
-  }
-  const auto queries = static_cast<double>(s.queries.size());
-  state.counters["queries"] = queries;
-  state.counters["cells/query"] = cells / queries;  // 1 m cells
-  state.counters["s_per_query"] = benchmark::Counter(
-      queries, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
-  state.counters["expansions/query"] = benchmark::Counter(
-      static_cast<double>(expansions) / (queries * static_cast<double>(state.iterations())));
+  time_queries(state, *planner, s);
+  state.counters["cells/query"] = cells / static_cast<double>(s.queries.size());  // 1 m cells
 }
 
 /// BM_ScenarioQuery/<planner>/<map> for astar and jps on every map of kScenarioMaps.

@@ -28,7 +28,7 @@
 #include "core/random.hpp"
 #include "world/frontiers.hpp"
 #include "world/known_map.hpp"
-#include "world/map_generators.hpp"
+#include "world/map_spec.hpp"
 #include "world/sensor.hpp"
 #include "world/world_map.hpp"
 
@@ -53,10 +53,11 @@ WorldMap bench_world(double p) {
 std::vector<Cell> free_cells(const WorldMap& map, int n, int margin) {
   std::vector<Cell> out;
   Rng rng = make_rng(7, "bench-cells");
-  const auto span = static_cast<std::uint64_t>(kSide - 2 * margin);
+  const auto span_x = static_cast<std::uint64_t>(map.width() - 2 * margin);
+  const auto span_y = static_cast<std::uint64_t>(map.height() - 2 * margin);
   while (static_cast<int>(out.size()) < n) {
-    const Cell c{margin + static_cast<int>(uniform_below(rng, span)),
-                 margin + static_cast<int>(uniform_below(rng, span))};
+    const Cell c{margin + static_cast<int>(uniform_below(rng, span_x)),
+                 margin + static_cast<int>(uniform_below(rng, span_y))};
     if (map.is_free(c)) out.push_back(c);
   }
   return out;
@@ -116,27 +117,12 @@ BENCHMARK(BM_SensorScan)->ArgName("range")->Arg(10)->Arg(20)->Arg(30)->Arg(100)-
 /// 40 cells deep, corridors 20 wide, walls 3 thick, doors 16 wide, e.g. 20 m x 20 m at 5 cm),
 /// every cell of its left half known, scans from 256 free cells anywhere.
 void BM_SensorScanBuilding(benchmark::State& state) {  // NOLINT(readability-identifier-naming)
-  GeneratorParams g;
-  g.kind = "office";
-  g.width = 400;
-  g.height = 400;
-  g.min_room = 40;
-  g.corridor = 20;
-  g.wall = 3;
-  g.door = 16;
-  g.seed = 3;
-  const WorldMap map = generate_map(g);
+  const WorldMap map = load_map_spec("office:w=400,h=400,min_room=40,corridor=20,wall=3,door=16,seed=3");
   KnownMap known(map.width(), map.height(), map.resolution_m);
   for (int i = 0; i < known.size(); ++i) {
     if (known.cell(i).x < map.width() / 2) known.reveal(i, map.occupied[i] != 0);
   }
-  std::vector<Cell> at;
-  Rng rng = make_rng(7, "bench-cells");
-  while (at.size() < 256) {
-    const Cell c{static_cast<int>(uniform_below(rng, 400)), static_cast<int>(uniform_below(rng, 400))};
-    if (map.is_free(c)) at.push_back(c);
-  }
-  scan_from(state, map, known, at);
+  scan_from(state, map, known, free_cells(map, 256, 0));
 }
 BENCHMARK(BM_SensorScanBuilding)->ArgName("range")->Arg(20)->Arg(100)->Arg(200);
 

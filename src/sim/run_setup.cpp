@@ -103,6 +103,13 @@ void check_sensor_range(const RunSetup& setup) {
             std::to_string(kSqrt2 * setup.resolution_m) +
             " m at this resolution); allowed: >= sqrt(2) x resolution, so a robot sees its 8 neighbours");
   }
+  if (!(range_m / setup.resolution_m <= Sensor::kMaxRangeCells)) {
+    throw ConfigError(
+        "robot/sensor/range_m",
+        "value " + std::to_string(range_m) + " m is " + std::to_string(range_m / setup.resolution_m) +
+            " cells at this resolution; allowed: at most " + std::to_string(Sensor::kMaxRangeCells) +
+            " cells (" + std::to_string(Sensor::kMaxRangeCells * setup.resolution_m) + " m)");
+  }
 }
 
 double shortest_path_from_start_m(const RunSetup& setup, Cell target) {

@@ -68,10 +68,10 @@ Simulation::Simulation(const RunSpec& spec) {
   strategy_ = ClonePtr<Strategy>(strategy.make(derive_seed(spec.seed, "strategy")));
   heuristics_ = HeuristicsPolicy(spec.heuristics.value_or(Heuristics{}));
   planner_ = ClonePtr<Planner>(spec.planner.make());
+  check_sensor_range(*setup);
   sensor_ = Sensor(spec.robot.sensor, setup->resolution_m);
   belief_ = Belief(*setup);
   robot_ = RobotState(*setup);
-  check_sensor_range(*setup);
   setup->stop_cell = stop_cell_of(*setup);
 
   recorder_ = MetricsRecorder(robot_.position);

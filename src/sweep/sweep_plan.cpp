@@ -20,6 +20,7 @@
 #include "sim/heuristics.hpp"
 #include "strategies/registry.hpp"
 #include "sweep/sweep_axes.hpp"
+#include "world/sensor.hpp"
 
 namespace fsweep {
 inline namespace sweep {
@@ -232,7 +233,8 @@ SweepPlan SweepPlan::build(const json& sweep, const std::string& file, std::vect
   plan.planners_ = sweep_detail::parse_planners(get("planners"), problems);
   plan.robots_ = sweep_detail::parse_robots(get("robot"), problems);
 
-  // 4. Robot against maps: the dock is a free cell, the sensor sees the 8 neighbours.
+  // 4. Robot against maps: the dock is a free cell, the sensor sees the 8 neighbours and its
+  //    range in cells is one the sensor supports.
   std::set<std::pair<std::pair<int, int>, std::size_t>> docks_checked;
   std::set<std::pair<double, double>> ranges_checked;
   for (const auto& r : plan.robots_) {
@@ -245,12 +247,18 @@ SweepPlan SweepPlan::build(const json& sweep, const std::string& file, std::vect
                            plan.maps_[m].label + "; allowed: a free cell of every map");
       }
       const double range = r.params.sensor.range_m;
-      if (ranges_checked.insert({range, map.resolution_m}).second &&
-          range / map.resolution_m < std::sqrt(2.0)) {
+      const bool new_range = ranges_checked.insert({range, map.resolution_m}).second;
+      if (new_range && range / map.resolution_m < std::sqrt(2.0)) {
         problems.push_back("/robot/sensor/range_m: value " + json(range).dump() +
                            " m is below one diagonal cell of map " + plan.maps_[m].label +
                            "; allowed: >= sqrt(2) x resolution (" +
                            json(std::sqrt(2.0) * map.resolution_m).dump() + " m)");
+      }
+      if (new_range && !(range / map.resolution_m <= Sensor::kMaxRangeCells)) {
+        problems.push_back("/robot/sensor/range_m: value " + json(range).dump() + " m is " +
+                           json(range / map.resolution_m).dump() + " cells of map " + plan.maps_[m].label +
+                           "; allowed: at most " + std::to_string(Sensor::kMaxRangeCells) + " cells (" +
+                           json(Sensor::kMaxRangeCells * map.resolution_m).dump() + " m)");
       }
     }
   }

@@ -80,11 +80,6 @@ bool walk_ray(int ex, int ey, OnCell&& on_cell, OnCorner&& on_corner) {
   }
 }
 
-/// Largest supported range (cells). The tables of a sensor hold about 9 bytes per offset in
-/// range plus 4 bytes per cell of the (2r+1)^2 square around the robot, 8 more per offset with
-/// a limited field of view: at 2000 cells about 115 MB (215 MB with a limited field of view).
-constexpr int kMaxRangeCells = 2000;
-
 // ---------------------------------------------------------------------------------------------
 // Line of sight by exact shadowcasting: why it decides exactly the ray rule of sensor.hpp.
 //

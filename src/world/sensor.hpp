@@ -76,6 +76,10 @@ struct ScanCounts {
 /// instance must not scan from two threads at once, but copies may).
 class Sensor {
  public:
+  /// Largest supported range (cells): the tables grow with its square (about 115 MB at 2000
+  /// cells, 215 MB with a limited field of view). RunSetup refuses longer ranges.
+  static constexpr int kMaxRangeCells = 2000;
+
   Sensor() = default;
   Sensor(const SensorParams& params, double resolution_m);
 

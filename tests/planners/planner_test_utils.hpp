@@ -95,6 +95,15 @@ inline void expect_valid_path(const KnownMap& known, const PlanRequest& request,
   EXPECT_NEAR(result.length_m, chain_length_cells(result.path) * known.resolution_m(), 1e-9);
 }
 
+/// A query from `start` to `goal` with the default energy model and start heading.
+inline PlanRequest request_for(Cell start, Cell goal, bool allow_corner_cutting = false) {
+  PlanRequest r;
+  r.start = start;
+  r.goal = goal;
+  r.allow_corner_cutting = allow_corner_cutting;
+  return r;
+}
+
 /// A query under the `mei2006` energy preset (Mei 2006 section V-A).
 inline PlanRequest mei_request(Cell start, Cell goal, int start_heading = 0) {
   PlanRequest r;

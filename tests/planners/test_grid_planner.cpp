@@ -13,14 +13,7 @@ namespace {
 
 using testing::expect_valid_path;
 using testing::known_from_ascii;
-
-PlanRequest request_for(Cell start, Cell goal, bool allow_corner_cutting = false) {
-  PlanRequest r;
-  r.start = start;
-  r.goal = goal;
-  r.allow_corner_cutting = allow_corner_cutting;
-  return r;
-}
+using testing::request_for;
 
 class GridPlannerBoth : public ::testing::TestWithParam<GridSearchKind> {};
 

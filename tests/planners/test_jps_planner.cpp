@@ -24,6 +24,7 @@ namespace test_jps_planner {  // not anonymous: unity builds put it beside other
 
 using testing::expect_valid_path;
 using testing::known_from_ascii;
+using testing::request_for;
 
 /// Straight and diagonal steps of a cell chain.
 struct StepCounts {
@@ -39,14 +40,6 @@ StepCounts step_counts(const std::vector<Cell>& path) {
     ++(diagonal ? n.diagonal : n.straight);
   }
   return n;
-}
-
-PlanRequest request_for(Cell start, Cell goal, bool allow_corner_cutting = false) {
-  PlanRequest r;
-  r.start = start;
-  r.goal = goal;
-  r.allow_corner_cutting = allow_corner_cutting;
-  return r;
 }
 
 /// Plans `req` with both planners and checks that jps answers as astar does: the same status;

@@ -1,7 +1,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -266,6 +268,51 @@ TEST(OctileCost, ValuesAreExactLengths) {
   EXPECT_EQ((OctileCost{3, 2} + OctileCost{1, 1}).value(), (OctileCost{4, 3}).value());
   EXPECT_GT((OctileCost{0, 29}).value(), (OctileCost{41, 0}).value());  // 29 sqrt(2) = 41.01...
   EXPECT_LT((OctileCost{0, 70}).value(), (OctileCost{99, 0}).value());  // 70 sqrt(2) = 98.99...
+}
+
+TEST(PointDistance, SameLengthAsTheFieldBitForBit) {
+  DistanceField field;
+  PointDistance point;
+  int reached = 0;
+  int unreached = 0;
+  for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+    const KnownMap known = testing::random_known_map(40, 30, 0.3, seed, 0.25);
+    Rng rng = make_rng(seed, "point");
+    const Cell source = testing::random_free_cell(known, rng);
+    DistanceQuery q = bounded_query(seed % 2 == 0 ? 4.0 : kInf);
+    q.allow_corner_cutting = seed % 3 == 0;
+    field.compute(known, source, q);
+    for (int t = 0; t < 40; ++t) {
+      const Cell goal = testing::random_free_cell(known, rng);
+      const std::optional<double> d = point.compute(known, source, goal, q);
+      ASSERT_TRUE(d.has_value());
+      // The same bound rule too: beyond max_distance_m both read +infinity.
+      const double expected = field.distance_m(known.index(goal));
+      EXPECT_EQ(*d, expected) << "seed " << seed << " goal " << goal.x << "," << goal.y;
+      ++(std::isinf(*d) ? unreached : reached);
+    }
+  }
+  EXPECT_GT(reached, 50);
+  EXPECT_GT(unreached, 50);  // the 4 m bound and walled-in cells
+}
+
+TEST(PointDistance, OpenSpaceBudgetAndBlockedGoals) {
+  const KnownMap known = testing::random_known_map(60, 60, 0.0, 1, 1.0);
+  PointDistance point;
+  // Open space: A* with exact ties settles about one cell per cell of length.
+  EXPECT_EQ(point.compute(known, Cell{0, 0}, Cell{50, 20}, DistanceQuery{}),
+            octile_distance(Cell{0, 0}, Cell{50, 20}));
+  EXPECT_LE(point.expansions(), 51);
+  // A budget below that: no answer, rather than a wrong one.
+  DistanceQuery tight;
+  tight.stop = StopCondition(SearchBudget{kInf, 10}, StopCondition::Clock::now());
+  EXPECT_FALSE(point.compute(known, Cell{0, 0}, Cell{50, 20}, tight).has_value());
+  // An occupied or unknown goal is unreachable at once.
+  const KnownMap walls = testing::known_from_ascii({"..#", "..?"}).known;
+  EXPECT_EQ(point.compute(walls, Cell{0, 0}, Cell{2, 0}, DistanceQuery{}), kInf);
+  EXPECT_EQ(point.expansions(), 0);
+  EXPECT_EQ(point.compute(walls, Cell{0, 0}, Cell{2, 1}, DistanceQuery{}), kInf);
+  EXPECT_EQ(point.expansions(), 0);
 }
 
 }  // namespace

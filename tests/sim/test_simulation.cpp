@@ -123,6 +123,19 @@ TEST(Simulation, DockUnreachableOrBlockedIsAConfigError) {
   }
 }
 
+TEST(Simulation, SensorRangeBeyondTheSupportedCellsIsAConfigError) {
+  auto s = spec_for("free:w=20,h=20,res=0.01", "closest_frontier");
+  s.robot.sensor.range_m = 30.0;  // 3000 cells
+  try {
+    (void)simulate(s);
+    FAIL();
+  } catch (const ConfigError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("robot/sensor/range_m"), std::string::npos) << what;
+    EXPECT_NE(what.find("at most 2000 cells"), std::string::npos) << what;
+  }
+}
+
 TEST(Simulation, NoFrontierLeftInAClosedBoxEndsComplete) {
   RunSpec s;
   s.map = std::make_shared<const WorldMap>(parse_ascii_map("#####\n#S..#\n#####\n"));

@@ -170,6 +170,10 @@ TEST(SweepValidation, RobotProblemsAtTheirPaths) {
   EXPECT_HAS(m3,
              "/robot/dock: cell (0, 0) is outside or occupied in map free:w=20,h=20; allowed: a free cell");
   EXPECT_HAS(m3, "/robot/sensor/range_m: value 1.0 m is below one diagonal cell");
+  s["robot"]["sensor"]["range_m"] = 5000;  // 5000 cells of 1 m
+  EXPECT_HAS(problems_of(s),
+             "/robot/sensor/range_m: value 5000.0 m is 5000.0 cells of map free:w=20,h=20; "
+             "allowed: at most 2000 cells (2000.0 m)");
 }
 
 TEST(SweepValidation, ProgressStepInTwoPlacesIsAProblem) {
