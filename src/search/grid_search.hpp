@@ -237,9 +237,12 @@ class BestFirstSearchT {
     int state;
     /// The open-list order: smaller f, then larger g, then smaller state.
     static bool before(const HeapItem& a, const HeapItem& b) {
-      if (a.f != b.f) return a.f < b.f;
-      if (a.g != b.g) return a.g > b.g;
-      return a.state < b.state;
+      // Bitwise, not short-circuit: no branches, so the heap's child selection needs none.
+      return static_cast<bool>(
+          static_cast<unsigned>(a.f < b.f) |
+          (static_cast<unsigned>(a.f == b.f) &
+           (static_cast<unsigned>(a.g > b.g) |
+            (static_cast<unsigned>(a.g == b.g) & static_cast<unsigned>(a.state < b.state)))));
     }
   };
   /// The open-list entry of a ZeroHeuristicEnvironment (f == g).
@@ -248,8 +251,8 @@ class BestFirstSearchT {
     int state;
     /// The open-list order: smaller g, then smaller state.
     static bool before(const DijkstraItem& a, const DijkstraItem& b) {
-      if (a.g != b.g) return a.g < b.g;
-      return a.state < b.state;
+      return static_cast<bool>(static_cast<unsigned>(a.g < b.g) | (static_cast<unsigned>(a.g == b.g) &
+                                                                   static_cast<unsigned>(a.state < b.state)));
     }
   };
   /// The open list `Env`'s searches use.
@@ -362,9 +365,15 @@ SearchOutcome BestFirstSearchT<Cost>::expand(Env& env, const SearchLimits& limit
       const Cost g_next = g_top + cost;
       const double g_next_value = cost_value(g_next);
       if (g_next_value > g_limit) return;
-      if (n.run == run && cost_value(n.g) <= g_next_value) return;
+      const bool reached = n.run == run;
+      if (reached && cost_value(n.g) <= g_next_value) return;
       n = Node{g_next, top.state, run, 0};
-      heap.push_or_update(open_item(env, next, g_next));
+      // Only a state reached in this run can have an entry (begin_run() emptied the open list).
+      if (reached) {
+        heap.push_or_update(open_item(env, next, g_next));
+      } else {
+        heap.push(open_item(env, next, g_next));
+      }
     });
   }
   return outcome;

@@ -40,13 +40,17 @@ class IndexedHeap {
   [[nodiscard]] bool empty() const { return items_.empty(); }
   [[nodiscard]] std::size_t size() const { return items_.size(); }
 
+  /// Inserts `item`, whose state the heap must not hold (below reset()'s state count).
+  void push(const Item& item) {
+    items_.push_back(item);
+    sift_up(items_.size() - 1, item);
+  }
   /// Inserts `item`, or replaces the entry of `item.state` if the heap holds one (its key may
   /// move either way). The state must be below reset()'s state count.
   void push_or_update(const Item& item) {
     const std::uint32_t at = position_[idx(item.state)];
     if (at == kAbsent) {
-      items_.push_back(item);
-      sift_up(items_.size() - 1, item);
+      push(item);
     } else if (at > 0 && Item::before(item, items_[(at - 1) / kArity])) {
       sift_up(at, item);
     } else {
@@ -90,9 +94,7 @@ class IndexedHeap {
       if (first >= n) break;
       const std::size_t end = first + kArity < n ? first + kArity : n;
       std::size_t best = first;
-      for (std::size_t c = first + 1; c < end; ++c) {
-        if (Item::before(items_[c], items_[best])) best = c;
-      }
+      for (std::size_t c = first + 1; c < end; ++c) best = Item::before(items_[c], items_[best]) ? c : best;
       if (!Item::before(items_[best], item)) break;
       place(at, items_[best]);
       at = best;
