@@ -8,7 +8,6 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <limits>
 #include <vector>
 
 namespace fsweep {
@@ -25,18 +24,12 @@ class IndexedHeap {
 
   /// Empties the heap and sizes the positions for states 0..state_count-1.
   void reset(std::size_t state_count) {
-    if (position_.size() != state_count) {
-      items_.clear();
-      position_.assign(state_count, kAbsent);
-      return;
-    }
-    clear();
-  }
-  /// Empties the heap (time proportional to the entries left).
-  void clear() {
-    for (const Item& item : items_) position_[idx(item.state)] = kAbsent;
     items_.clear();
+    if (position_.size() != state_count) position_.assign(state_count, 0);
   }
+  /// Empties the heap (in constant time: positions are checked against the entries, not
+  /// cleared).
+  void clear() { items_.clear(); }
   [[nodiscard]] bool empty() const { return items_.empty(); }
   [[nodiscard]] std::size_t size() const { return items_.size(); }
 
@@ -49,7 +42,7 @@ class IndexedHeap {
   /// move either way). The state must be below reset()'s state count.
   void push_or_update(const Item& item) {
     const std::uint32_t at = position_[idx(item.state)];
-    if (at == kAbsent) {
+    if (at >= items_.size() || items_[at].state != item.state) {
       push(item);
     } else if (at > 0 && Item::before(item, items_[(at - 1) / kArity])) {
       sift_up(at, item);
@@ -60,7 +53,6 @@ class IndexedHeap {
   /// Removes and returns the first entry; the heap must not be empty.
   Item pop() {
     const Item top = items_.front();
-    position_[idx(top.state)] = kAbsent;
     const Item last = items_.back();
     items_.pop_back();
     if (!items_.empty()) sift_down(0, last);
@@ -68,7 +60,6 @@ class IndexedHeap {
   }
 
  private:
-  static constexpr std::uint32_t kAbsent = std::numeric_limits<std::uint32_t>::max();
   static std::size_t idx(int state) { return static_cast<std::size_t>(state); }
 
   /// Puts `item` at `at` and records its position.
@@ -103,7 +94,8 @@ class IndexedHeap {
   }
 
   std::vector<Item> items_;
-  /// Slot of each state's entry in items_, kAbsent when it has none.
+  /// Slot of each state's entry in items_ while it has one; else stale (a slot past the end or
+  /// holding another state), which is how push_or_update() tells that it has none.
   std::vector<std::uint32_t> position_;
 };
 
