@@ -247,16 +247,14 @@ nlohmann::json planner_query_params(const std::string& name) {
   return {{"max_iterations", iterations}, {"time_limit_s", 60.0}};
 }
 
-/// The timed part of the query benchmarks: every query of `s` in order per iteration; sets the
-/// counters `queries`, `s_per_query` and `expansions/query`.
-void time_queries(benchmark::State& state, Planner& planner, const ScenarioSet& s) {
+/// The timed part of the query benchmarks: every query of `s` in order per iteration, answered
+/// by `answer(query)`, which returns its expansions; sets the counters `queries`, `s_per_query`
+/// and `expansions/query`.
+template <typename Answer>
+void time_answers(benchmark::State& state, const ScenarioSet& s, Answer&& answer) {
   long expansions = 0;
   for (auto _ : state) {
-    for (const PlanRequest& q : s.queries) {
-      const PlanResult r = planner.plan(s.known, q);
-      expansions += r.expansions;
-      benchmark::DoNotOptimize(r.length_m);
-    }
+    for (const PlanRequest& q : s.queries) expansions += answer(q);
   }
   const auto queries = static_cast<double>(s.queries.size());
   state.counters["queries"] = queries;
@@ -264,6 +262,15 @@ void time_queries(benchmark::State& state, Planner& planner, const ScenarioSet& 
       queries, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
   state.counters["expansions/query"] = benchmark::Counter(
       static_cast<double>(expansions) / (queries * static_cast<double>(state.iterations())));
+}
+
+/// time_answers() with `planner`.
+void time_queries(benchmark::State& state, Planner& planner, const ScenarioSet& s) {
+  time_answers(state, s, [&](const PlanRequest& q) {
+    const PlanResult r = planner.plan(s.known, q);
+    benchmark::DoNotOptimize(r.length_m);
+    return r.expansions;
+  });
 }
 
 /// One iteration = the whole fixed query set, planned in order.
@@ -361,20 +368,11 @@ void textbook_query(benchmark::State& state, std::size_t which) {
       return;
     }
   }
-  long expansions = 0;
-  for (auto _ : state) {
-    for (const PlanRequest& q : s.queries) {
-      const textbook::TextbookResult r = astar.search(q.start, q.goal);
-      expansions += r.expansions;
-      benchmark::DoNotOptimize(r.length);
-    }
-  }
-  const auto queries = static_cast<double>(s.queries.size());
-  state.counters["queries"] = queries;
-  state.counters["s_per_query"] = benchmark::Counter(
-      queries, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
-  state.counters["expansions/query"] = benchmark::Counter(
-      static_cast<double>(expansions) / (queries * static_cast<double>(state.iterations())));
+  time_answers(state, s, [&](const PlanRequest& q) {
+    const textbook::TextbookResult r = astar.search(q.start, q.goal);
+    benchmark::DoNotOptimize(r.length);
+    return r.expansions;
+  });
 }
 
 /// BM_TextbookAstar/<map> on every map of kScenarioMaps.
