@@ -16,11 +16,11 @@
 /// incremental_distance_field.hpp, the latter by continuing a run after costs dropped) and the
 /// geodesic distances of the strategies run it with a zero heuristic.
 ///
-/// Memory: the per-state data (16 bytes: cost, parent, run and pass stamps), the open list and its
-/// positions (4 bytes a state, indexed_heap.hpp) live in a BestFirstSearch object and are reused
-/// by every run(). A run takes fresh stamps instead of clearing the data, so a query costs time
-/// proportional to the states it touches, and nothing is allocated per expansion once the open
-/// list has grown to its working size.
+/// Memory: the per-state data (16 bytes: cost, parent, run and pass stamps), the open lists and
+/// the A* list's positions (4 bytes a state, indexed_heap.hpp) live in a BestFirstSearch object
+/// and are reused by every run(). A run takes fresh stamps instead of clearing the data, so a query costs
+/// time proportional to the states it touches, and nothing is allocated per expansion once the open list has
+/// grown to its working size.
 
 #include <algorithm>
 #include <concepts>
@@ -152,8 +152,11 @@ struct SearchOutcome {
 /// Open-list order (deterministic tie-breaking): smaller f = g + h first; on equal f the
 /// larger g first (the deeper state, which on grids with a consistent heuristic reaches the
 /// goal with fewer expansions); on equal f and g the smaller state id first. The key is a
-/// total order on open-list entries, so a run is fully determined by the environment. The open
-/// list (IndexedHeap) holds one entry per open state and re-keys it when a cheaper path is found.
+/// total order on open-list entries, so a run is fully determined by the environment, and any
+/// open list that pops in this order gives the same run. A*'s list (IndexedHeap) holds one entry
+/// per open state and re-keys it when a cheaper path is found. The Dijkstra list (a binary heap
+/// of 16-byte entries) takes a duplicate instead and skips stale entries when popped: measured
+/// faster there (fields over many states, which the indexed heap's positions add a cache line to).
 template <typename Cost>
 class BestFirstSearchT {
  public:
@@ -198,12 +201,19 @@ class BestFirstSearchT {
     Node& node = nodes_[idx(state)];
     if (node.run == run_ && cost_value(node.g) <= cost_value(g)) return false;
     node = Node{g, parent, run_, 0};
-    open_list<Env>().push_or_update(open_item(env, state, g));
+    if constexpr (ZeroHeuristicEnvironment<Env>) {
+      dijkstra_heap_.push_back(open_item(env, state, g));  // ordered by resume(), all at once
+    } else {
+      heap_.push_or_update(open_item(env, state, g));
+    }
     return true;
   }
   /// Searches from the states opened by lower_cost() since reopen() (or from run()'s seeds).
   template <SearchEnvironment<Cost> Env>
   SearchOutcome resume(Env& env, const SearchLimits& limits = {}) {
+    if constexpr (ZeroHeuristicEnvironment<Env>) {
+      std::make_heap(dijkstra_heap_.begin(), dijkstra_heap_.end(), Later{});
+    }
     return expand(env, limits);
   }
 
@@ -249,12 +259,23 @@ class BestFirstSearchT {
   struct DijkstraItem {
     double g;
     int state;
-    /// The open-list order: smaller g, then smaller state.
-    static bool before(const DijkstraItem& a, const DijkstraItem& b) {
-      return static_cast<bool>(static_cast<unsigned>(a.g < b.g) | (static_cast<unsigned>(a.g == b.g) &
-                                                                   static_cast<unsigned>(a.state < b.state)));
+  };
+  /// std heap comparator of the Dijkstra list: true when `a` comes out after `b` (smaller g, then
+  /// smaller state first). A function object so that the heap algorithms inline it.
+  struct Later {
+    bool operator()(const DijkstraItem& a, const DijkstraItem& b) const {
+      if (a.g != b.g) return a.g > b.g;
+      return a.state > b.state;
     }
   };
+  /// Removes and returns the first entry of a non-empty open list.
+  static HeapItem pop_open(IndexedHeap<HeapItem>& heap) { return heap.pop(); }
+  static DijkstraItem pop_open(std::vector<DijkstraItem>& heap) {
+    std::pop_heap(heap.begin(), heap.end(), Later{});
+    const DijkstraItem top = heap.back();
+    heap.pop_back();
+    return top;
+  }
   /// The open list `Env`'s searches use.
   template <typename Env>
   auto& open_list() {
@@ -271,6 +292,19 @@ class BestFirstSearchT {
       return DijkstraItem{cost_value(g), state};
     } else {
       return HeapItem{cost_value(g + static_cast<Cost>(env.heuristic(state))), cost_value(g), state};
+    }
+  }
+  /// Opens `state` at cost `g` on `Env`'s open list; `reached`: it may have an entry already
+  /// (reached in this run; begin_run() emptied the lists, so a state first reached has none).
+  template <typename Env>
+  void open(const Env& env, int state, Cost g, bool reached) {
+    if constexpr (ZeroHeuristicEnvironment<Env>) {
+      dijkstra_heap_.push_back(open_item(env, state, g));
+      std::push_heap(dijkstra_heap_.begin(), dijkstra_heap_.end(), Later{});
+    } else if (reached) {
+      heap_.push_or_update(open_item(env, state, g));
+    } else {
+      heap_.push(open_item(env, state, g));
     }
   }
   /// Per-state search data, together so that a relaxation touches one cache line (16 bytes).
@@ -303,9 +337,12 @@ class BestFirstSearchT {
     }
     ++run_;
     ++pass_;
-    heap_.clear();
     dijkstra_heap_.clear();
-    open_list<Env>().reset(n);
+    if constexpr (ZeroHeuristicEnvironment<Env>) {
+      heap_.clear();
+    } else {
+      heap_.reset(n);
+    }
   }
 
   static constexpr std::uint16_t kLastStamp = std::numeric_limits<std::uint16_t>::max();
@@ -313,7 +350,7 @@ class BestFirstSearchT {
   std::uint16_t run_ = 0;  // >= 1 once sized, so fresh nodes (stamps 0) are neither reached nor settled
   std::uint16_t pass_ = 0;
   IndexedHeap<HeapItem> heap_;
-  IndexedHeap<DijkstraItem> dijkstra_heap_;
+  std::vector<DijkstraItem> dijkstra_heap_;
 };
 
 /// The search over double costs (planners, geodesic regions).
@@ -330,14 +367,18 @@ SearchOutcome BestFirstSearchT<Cost>::expand(Env& env, const SearchLimits& limit
   const double g_limit = limits.g_limit;
   const std::uint16_t run = run_;
   const std::uint16_t pass = pass_;
-  // With a zero heuristic (costs >= 0) a settled state is never improved, so the cost
-  // comparison alone skips settled states.
+  // With a zero heuristic (costs >= 0) a settled state is never improved and its stale entries
+  // cost more than it, so the cost comparisons alone skip settled states.
   constexpr bool kDijkstra = ZeroHeuristicEnvironment<Env>;
   auto& heap = open_list<Env>();
   while (!heap.empty()) {
-    // 1. Take the best entry (the open list holds one per open state, at its current cost).
-    const auto top = heap.pop();
+    // 1. Take the best entry; Dijkstra: skip it if stale (a cheaper entry of its state came
+    //    first). A*'s list holds one entry per open state, at its current cost.
+    const auto top = pop_open(heap);
     Node& node = nodes_[idx(top.state)];
+    if constexpr (kDijkstra) {
+      if (top.g > cost_value(node.g)) continue;
+    }
 
     // 2. The stop condition: budget spent or time up ends the run before the next visit.
     if (stop.should_stop(outcome.expansions)) {
@@ -368,12 +409,7 @@ SearchOutcome BestFirstSearchT<Cost>::expand(Env& env, const SearchLimits& limit
       const bool reached = n.run == run;
       if (reached && cost_value(n.g) <= g_next_value) return;
       n = Node{g_next, top.state, run, 0};
-      // Only a state reached in this run can have an entry (begin_run() emptied the open list).
-      if (reached) {
-        heap.push_or_update(open_item(env, next, g_next));
-      } else {
-        heap.push(open_item(env, next, g_next));
-      }
+      open(env, next, g_next, reached);
     });
   }
   return outcome;
