@@ -8,12 +8,14 @@ inline namespace sim {
 Belief::Belief(const RunSetup& setup)
     : known_(setup.map().width(), setup.map().height(), setup.resolution_m),
       frontiers_(known_),
+      clusters_(known_, setup.cluster_max_length_m, setup.allow_corner_cutting()),
       sensor_rng_(make_rng(setup.spec.seed, "sensor")),
       dropped_(static_cast<std::size_t>(known_.size()), 0) {}
 
 int Belief::sense(Sensor& sensor, const RunSetup& setup, Cell at, int heading, Cell dock) {
   const auto revealed = sensor.scan(setup.map(), known_, at, heading_angle(heading), sensor_rng_);
   frontiers_.update(known_, revealed);
+  clusters_.revealed(revealed);
   dock_field_.take_in(known_, revealed, dock, setup.allow_corner_cutting());
   for (const int i : revealed) {
     if (known_.is_free(i) && setup.reachable[i] != 0) ++known_reachable_;
@@ -22,8 +24,15 @@ int Belief::sense(Sensor& sensor, const RunSetup& setup, Cell at, int heading, C
   return static_cast<int>(revealed.size());
 }
 
-std::vector<FrontierCluster> Belief::clusters(const RunSetup& setup) const {
-  return frontiers_.clusters(known_, setup.cluster_max_length_m, setup.allow_corner_cutting(), dropped_);
+const std::vector<FrontierCluster>& Belief::clusters() {
+  return clusters_.clusters(known_, frontiers_, dropped_);
+}
+
+void Belief::drop(Cell goal) {
+  const int i = known_.index(goal);
+  if (dropped_[static_cast<std::size_t>(i)] != 0) return;
+  dropped_[static_cast<std::size_t>(i)] = 1;
+  clusters_.exclusion_changed(i);
 }
 
 GridDistanceOracle Belief::distance_oracle(const RunSetup& setup, Cell robot, Cell dock,

@@ -572,6 +572,69 @@ TEST(Frontiers, ClustersMatchReferenceDuringExplorations) {
   }
 }
 
+TEST(Frontiers, TrackedClustersMatchFromScratch) {
+  // FrontierClusters rebuilds only the clusters holding a changed cell: after any number of
+  // scans and exclusion changes (both ways) it must equal the reference, for every setting.
+  SensorParams params;
+  params.range_m = 4.0;
+  params.miss_probability = 0.2;
+  std::uint64_t seed = 300;
+  for (const WorldMap& map : exploration_maps()) {
+    SCOPED_TRACE("map " + std::to_string(map.width()) + "x" + std::to_string(map.height()));
+    Sensor sensor(params, map.resolution_m);
+    KnownMap known(map.width(), map.height(), map.resolution_m);
+    FrontierMap frontiers(known);
+    struct Tracked {
+      bool cut;
+      double length;
+      FrontierClusters clusters;
+    };
+    std::vector<Tracked> tracked;
+    for (const bool cut : {false, true}) {
+      for (const double length : {0.0, 2.0, 7.5})
+        tracked.push_back({cut, length, FrontierClusters(known, length, cut)});
+    }
+    std::vector<std::uint8_t> excluded(static_cast<std::size_t>(known.size()), 0);
+    Rng rng = make_rng(++seed, "sensor");
+    Rng choices = make_rng(seed, "test-choices");
+    Cell at = map.start;
+    int checks = 0;
+    for (int step = 0; step < 400; ++step) {
+      const auto revealed = sensor.scan(map, known, at, 0.0, rng);
+      frontiers.update(known, revealed);
+      for (auto& t : tracked) t.clusters.revealed(revealed);
+      // Exclude some frontier cells, and let some excluded cells back in.
+      for (int k = 0; k < 3 && frontiers.count() > 0; ++k) {
+        const auto cells = frontiers.cells();
+        const int c = cells[static_cast<std::size_t>(uniform01(choices) * static_cast<double>(cells.size()))];
+        if (uniform01(choices) < 0.3) {
+          excluded[static_cast<std::size_t>(c)] ^= 1;
+          for (auto& t : tracked) t.clusters.exclusion_changed(c);
+        }
+      }
+      if (uniform01(choices) < 0.5) {  // some calls see several scans at once
+        ++checks;
+        for (auto& t : tracked) {
+          const auto& got = t.clusters.clusters(known, frontiers, excluded);
+          const auto want = reference_clusters(known, t.length, t.cut, excluded);
+          ASSERT_EQ(got.size(), want.size()) << "step " << step << " cut " << t.cut << " length " << t.length;
+          for (std::size_t k = 0; k < got.size(); ++k) {
+            ASSERT_EQ(got[k].cells, want[k].cells) << "step " << step << " cluster " << k;
+            ASSERT_EQ(got[k].representative, want[k].representative);
+            ASSERT_EQ(got[k].centroid_x, want[k].centroid_x);
+            ASSERT_EQ(got[k].centroid_y, want[k].centroid_y);
+            ASSERT_EQ(got[k].length_m, want[k].length_m);
+          }
+        }
+      }
+      if (frontiers.count() == 0) break;
+      const int target = nearest_frontier(known, frontiers, at);
+      at = known.cell(target < 0 ? frontiers.cells().front() : target);
+    }
+    EXPECT_GE(checks, 3);
+  }
+}
+
 TEST(Frontiers, ManyUpdatesWithoutQueriesStayConsistent) {
   // cells() and clusters() sort and prune the frontier list; between them update() alone must
   // keep it bounded and correct (here: a whole exploration without a query until the end).
