@@ -654,6 +654,18 @@ TEST(Frontiers, ManyUpdatesWithoutQueriesStayConsistent) {
   EXPECT_EQ(copy.cells(), frontiers.cells());
 }
 
+TEST(Frontiers, IncrementalMatchesFromScratchWithABeamLidar) {
+  // A beam lidar reveals cells in beam order and leaves cells between beams unknown.
+  SensorParams params;
+  params.model = SensorModel::Beams;
+  params.beams = 60;
+  params.fov_deg = 270.0;
+  params.range_m = 6.0;
+  params.miss_probability = 0.2;
+  std::uint64_t seed = 100;
+  for (const WorldMap& map : exploration_maps()) explore_and_check(map, params, ++seed);
+}
+
 TEST(Frontiers, IncrementalMatchesFromScratch) {
   std::vector<SensorParams> sensors(4);
   sensors[0].range_m = 4.0;
