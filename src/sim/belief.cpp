@@ -1,5 +1,7 @@
 #include "sim/belief.hpp"
 
+#include <cmath>
+
 #include "search/distance_field.hpp"
 
 namespace fsweep {
@@ -40,7 +42,19 @@ GridDistanceOracle Belief::distance_oracle(const RunSetup& setup, Cell robot, Ce
   return GridDistanceOracle(known_, robot, dock, setup.allow_corner_cutting(), &dock_field_, scratch);
 }
 
-bool Belief::frontier_reachable_from(Cell from, const RunSetup& setup) const {
+bool Belief::frontier_reachable_from(Cell from, const RunSetup& setup) {
+  // When the dock field reaches `from`, `from` reaches exactly what the dock reaches (moves are
+  // symmetric, and the field follows the same corner rule): no search needed.
+  if (dock_field_.ready()) {
+    (void)dock_field_.bring_up_to_date(known_);
+    if (std::isfinite(dock_field_.distance_m(known_.index(from)))) {
+      for (const int i : frontiers_.cells()) {
+        if (dropped_[static_cast<std::size_t>(i)] == 0 && std::isfinite(dock_field_.distance_m(i)))
+          return true;
+      }
+      return false;
+    }
+  }
   std::vector<int> open;
   for (const int i : frontiers_.cells()) {
     if (dropped_[static_cast<std::size_t>(i)] == 0) open.push_back(i);

@@ -48,8 +48,9 @@ class Belief {
   /// Never offer `goal` to a strategy again (unobservable, or no path found).
   void drop(Cell goal);
 
-  /// True when some frontier cell not dropped is reachable from `from` over known free cells.
-  [[nodiscard]] bool frontier_reachable_from(Cell from, const RunSetup& setup) const;
+  /// True when some frontier cell not dropped is reachable from `from` over known free cells
+  /// (read from the dock field when it reaches `from`, which it brings up to date; else searched).
+  [[nodiscard]] bool frontier_reachable_from(Cell from, const RunSetup& setup);
 
   /// Known reachable free cells / reachable free cells of `setup` (1 when there are none).
   [[nodiscard]] double coverage(const RunSetup& setup) const;

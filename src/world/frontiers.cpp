@@ -256,7 +256,7 @@ FrontierClusters::FrontierClusters(const KnownMap& known, double max_length_m, b
       width_(known.width()),
       height_(known.height()),
       owner_(static_cast<std::size_t>(known.size()), kNone),
-      dirty_(static_cast<std::size_t>(known.size()), 0) {}
+      flags_(static_cast<std::size_t>(known.size()), 0) {}
 
 void FrontierClusters::revealed(std::span<const int> cells) {
   if (!everything_dirty_) revealed_.insert(revealed_.end(), cells.begin(), cells.end());
@@ -266,17 +266,17 @@ void FrontierClusters::exclusion_changed(int index) {
   if (!everything_dirty_) exclusion_changed_.push_back(index);
 }
 
+void FrontierClusters::mark(int key) { flags_[static_cast<std::size_t>(key)] |= kWalkAgain; }
+
 void FrontierClusters::mark_near(int cell, int after) {
   const int cx = cell % width_;
   const int cy = cell / width_;
+  const int x0 = std::max(cx - 1, 0);
+  const int x1 = std::min(cx + 1, width_ - 1);
   for (int y = std::max(cy - 1, 0); y <= std::min(cy + 1, height_ - 1); ++y) {
-    for (int x = std::max(cx - 1, 0); x <= std::min(cx + 1, width_ - 1); ++x) {
-      const int key = owner_[static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) +
-                             static_cast<std::size_t>(x)];
-      if (key <= after || key == last_marked_) continue;  // none (-1), replayed, or just marked
-      const auto k = std::lower_bound(keys_.begin(), keys_.end(), key) - keys_.begin();
-      changed_[static_cast<std::size_t>(k)] = 1;
-      last_marked_ = key;
+    const int* row = owner_.data() + static_cast<std::ptrdiff_t>(y) * width_;
+    for (int x = x0; x <= x1; ++x) {
+      if (row[x] > after) mark(row[x]);  // else none (-1), or replayed already
     }
   }
 }
@@ -312,20 +312,25 @@ const std::vector<FrontierCluster>& FrontierClusters::clusters(const KnownMap& k
   // 1. The cells to walk from besides the pieces' own starts: every frontier cell the first
   //    time; later the changed cells. Pieces within one cell of a changed cell must be walked
   //    again.
+  if (!everything_dirty_ && revealed_.empty() && exclusion_changed_.empty()) return clusters_;
   starts_.clear();
-  changed_.assign(clusters_.size(), 0);
-  last_marked_ = kNone;
   if (everything_dirty_) {
     starts_ = frontiers.cells();  // ascending: already a min-heap
     everything_dirty_ = false;
   } else {
     dirty_cells_.clear();
     const auto dirty = [&](int cell) {
-      if (dirty_[static_cast<std::size_t>(cell)] != 0) return;
-      dirty_[static_cast<std::size_t>(cell)] = 1;
+      std::uint8_t& flag = flags_[static_cast<std::size_t>(cell)];
+      if ((flag & kChanged) != 0) return;
+      flag |= kChanged;
       dirty_cells_.push_back(cell);
     };
+    // A walk reads its cells' neighbours: whether they may join (frontier, not excluded) and
+    // the known state of those beside a diagonal. States change only at revealed cells; whether
+    // a cell may join only at a revealed cell's 8-neighbours (and itself) or where the
+    // exclusion changed, and such a cell may join now or was in a piece before.
     for (const int r : revealed_) {
+      mark_near(r, -1);
       const int rx = r % w;
       const int ry = r / w;
       for (int y = std::max(ry - 1, 0); y <= std::min(ry + 1, h - 1); ++y) {
@@ -334,15 +339,15 @@ const std::vector<FrontierCluster>& FrontierClusters::clusters(const KnownMap& k
     }
     for (const int e : exclusion_changed_) dirty(e);
     for (const int d : dirty_cells_) {
-      dirty_[static_cast<std::size_t>(d)] = 0;
-      mark_near(d, -1);
-      starts_.push_back(d);
+      flags_[static_cast<std::size_t>(d)] &= static_cast<std::uint8_t>(~kChanged);
+      const bool open = walk.open(d);
+      if (open || owner_[static_cast<std::size_t>(d)] >= 0) mark_near(d, -1);
+      if (open) starts_.push_back(d);
     }
     std::make_heap(starts_.begin(), starts_.end(), std::greater<>{});
   }
   revealed_.clear();
   exclusion_changed_.clear();
-  if (starts_.empty()) return clusters_;
 
   // 2. The loop of FrontierMap::clusters, replayed in increasing order of start cell over the
   //    last call's pieces and the cells in starts_. owner_ of a cell holds its piece's start:
@@ -351,8 +356,9 @@ const std::vector<FrontierCluster>& FrontierClusters::clusters(const KnownMap& k
   next_.clear();
   next_.reserve(clusters_.size() + starts_.size() / 2);
   std::vector<Node> piece;
-  // Grows the piece of `start` (not yet placed by this call, open) into next_; a piece not
-  // replayed yet that loses a cell to it must be walked again. True when it equals `old`.
+  // Grows the piece of `start` (not yet placed by this call, open) into next_. A piece not
+  // replayed yet that loses a cell to it must be walked again (the callers mark what is near
+  // the cells taken). True when it equals `old`.
   const auto grow = [&](int start, const FrontierCluster* old) {
     piece.clear();
     owner_[static_cast<std::size_t>(start)] = start;
@@ -361,7 +367,8 @@ const std::vector<FrontierCluster>& FrontierClusters::clusters(const KnownMap& k
     for (std::size_t head = 0; head < piece.size() && piece.size() < cap; ++head) {
       walk.for_each_link(piece[head], free_now, [&](const Node& n) {
         if (piece.size() == cap) return;
-        if (owner_[static_cast<std::size_t>(n.i)] > start) mark_near(n.i, start);
+        const int taken_from = owner_[static_cast<std::size_t>(n.i)];
+        if (taken_from > start) mark(taken_from);
         owner_[static_cast<std::size_t>(n.i)] = start;
         piece.push_back(n);
       });
@@ -379,7 +386,7 @@ const std::vector<FrontierCluster>& FrontierClusters::clusters(const KnownMap& k
   };
   std::size_t k = 0;  // next piece of the last call
   while (k < clusters_.size() || !starts_.empty()) {
-    if (!starts_.empty() && (k == clusters_.size() || starts_.front() < keys_[k])) {
+    if (!starts_.empty() && (k == clusters_.size() || starts_.front() < clusters_[k].cells.front())) {
       const int cell = starts_.front();
       std::pop_heap(starts_.begin(), starts_.end(), std::greater<>{});
       starts_.pop_back();
@@ -389,27 +396,41 @@ const std::vector<FrontierCluster>& FrontierClusters::clusters(const KnownMap& k
     // The last call's piece k, starting at s: kept when nothing near it changed (a piece built
     // by this call that took one of its cells marked it too).
     FrontierCluster& old = clusters_[k];
-    const int s = keys_[k];
-    const bool intact = changed_[k] == 0;
+    const int s = old.cells.front();
+    std::uint8_t& flag = flags_[static_cast<std::size_t>(s)];
+    const bool intact = (flag & kWalkAgain) == 0;
+    flag &= static_cast<std::uint8_t>(~kWalkAgain);
     ++k;
     if (intact) {
       next_.push_back(std::move(old));
       continue;
     }
-    // Walk again from s (when it is still open and free): the same piece changes nothing that
-    // follows; otherwise the cells near the old and the new piece must be walked again, and
-    // the old cells left over are walked from in turn.
+    // Walk again from s (when it is still open and free). A later piece reads what this one
+    // holds only through the cells placed differently from the last call: those in one of the
+    // old and new pieces but not in both (every old cell when there is no new piece). The old
+    // cells left over are walked from in turn.
     for (const int c : old.cells) {
       if (owner_[static_cast<std::size_t>(c)] == s) owner_[static_cast<std::size_t>(c)] = kNone;
     }
-    const int mark = owner_[static_cast<std::size_t>(s)];
-    const bool same = mark == kNone && walk.open(s) && grow(s, &old);
-    if (same) continue;
-    if (mark == kNone && walk.open(s)) {
-      for (const int c : next_.back().cells) mark_near(c, s);
+    if (owner_[static_cast<std::size_t>(s)] == kNone && walk.open(s)) {
+      if (grow(s, &old)) continue;  // the same piece
+      const std::vector<int>& now = next_.back().cells;
+      auto a = old.cells.begin();
+      auto b = now.begin();
+      while (a != old.cells.end() || b != now.end()) {
+        if (b == now.end() || (a != old.cells.end() && *a < *b)) {
+          mark_near(*a++, s);
+        } else if (a == old.cells.end() || *b < *a) {
+          mark_near(*b++, s);
+        } else {
+          ++a;
+          ++b;
+        }
+      }
+    } else {
+      for (const int c : old.cells) mark_near(c, s);
     }
     for (const int c : old.cells) {
-      mark_near(c, s);
       if (owner_[static_cast<std::size_t>(c)] == kNone && c != s) {
         starts_.push_back(c);
         std::push_heap(starts_.begin(), starts_.end(), std::greater<>{});
@@ -417,8 +438,6 @@ const std::vector<FrontierCluster>& FrontierClusters::clusters(const KnownMap& k
     }
   }
   std::swap(clusters_, next_);
-  keys_.clear();
-  for (const auto& c : clusters_) keys_.push_back(c.cells.front());
   return clusters_;
 }
 

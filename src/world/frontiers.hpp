@@ -137,6 +137,8 @@ class FrontierClusters {
                                                std::span<const std::uint8_t> excluded);
 
  private:
+  /// Marks the last call's piece starting at `key` as changed: it must be walked again.
+  void mark(int key);
   /// Marks as changed the pieces of the last call that hold a cell within one cell of `cell`
   /// and start after `after` (pieces not yet replayed).
   void mark_near(int cell, int after);
@@ -149,18 +151,16 @@ class FrontierClusters {
   /// Per cell: the lowest member of the piece holding it (this call's once replayed, else the
   /// last call's), or -1.
   std::vector<int> owner_;
-  /// Per cell: 1 while it is a changed cell (scratch of clusters(), all 0 between calls).
-  std::vector<std::uint8_t> dirty_;
+  /// Per cell, scratch of clusters() (all 0 between calls): kChanged while it is a changed
+  /// cell; kWalkAgain when it starts a piece of the last call that must be walked again.
+  static constexpr std::uint8_t kChanged = 1;
+  static constexpr std::uint8_t kWalkAgain = 2;
+  std::vector<std::uint8_t> flags_;
   /// Cells revealed, or whose exclusion changed, since the last clusters() call.
   std::vector<int> revealed_;
   std::vector<int> exclusion_changed_;
-  /// The clusters, ordered by lowest member; their lowest members; per cluster 1 when it must
-  /// be walked again (scratch of clusters()).
+  /// The clusters, ordered by lowest member.
   std::vector<FrontierCluster> clusters_;
-  std::vector<int> keys_;
-  std::vector<std::uint8_t> changed_;
-  /// The key mark_near() marked last (-1: none this call).
-  int last_marked_ = -1;
   /// Scratch of clusters(): changed cells, cells to walk from (a min-heap), the next clusters.
   std::vector<int> dirty_cells_;
   std::vector<int> starts_;
