@@ -21,6 +21,11 @@
 ///   both: the check that they answer alike). Compare them with interleaved repetitions:
 ///   `--benchmark_filter=ScenarioQuery --benchmark_repetitions=9
 ///   --benchmark_enable_random_interleaving=true`.
+/// - `BM_TextbookAstar/<map>`: the yardstick of `astar` (bench/textbook_astar.hpp: a compact
+///   standalone octile A*, Warthog's open list) on the same maps and queries as
+///   `BM_ScenarioQuery`; it must find MovingAI's optimal length, and `astar`'s length and
+///   expansions, on every query (checked before timing). Compare
+///   `--benchmark_filter='ScenarioQuery/astar|TextbookAstar'` with interleaved repetitions.
 /// - `BM_AStarDen312d`, `BM_DijkstraDen312d`, `BM_DistanceFieldBounded/max_m:<m>`: the grid
 ///   searches on 512 seeded random reachable pairs of den312d; one iteration is one query.
 /// - `BM_<planner>512/<map>`: issue 4's query times on 512x512 maps (no 512x512 MovingAI map
@@ -37,6 +42,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -44,10 +50,12 @@
 #include <vector>
 
 #include "core/random.hpp"
+#include "evaluation/scenario_check.hpp"
 #include "planners/grid_planner.hpp"
 #include "planners/planner.hpp"
 #include "planners/registry.hpp"
 #include "search/distance_field.hpp"
+#include "textbook_astar.hpp"
 #include "world/energy_model.hpp"
 #include "world/known_map.hpp"
 #include "world/map_loaders.hpp"
@@ -202,6 +210,8 @@ BENCHMARK(BM_ShortestFewestTurns512)->Arg(0)->Arg(1)->Iterations(kQueries512)->U
 struct ScenarioSet {
   KnownMap known;
   std::vector<PlanRequest> queries;
+  /// MovingAI's optimal length of each query (cells; load_scenario_set() only).
+  std::vector<double> optimal_lengths;
 };
 
 constexpr std::size_t kScenarioStride = 10;
@@ -237,16 +247,14 @@ nlohmann::json planner_query_params(const std::string& name) {
   return {{"max_iterations", iterations}, {"time_limit_s", 60.0}};
 }
 
-/// The timed part of the query benchmarks: every query of `s` in order per iteration; sets the
-/// counters `queries`, `s_per_query` and `expansions/query`.
-void time_queries(benchmark::State& state, Planner& planner, const ScenarioSet& s) {
+/// The timed part of the query benchmarks: every query of `s` in order per iteration, answered
+/// by `answer(query)`, which returns its expansions; sets the counters `queries`, `s_per_query`
+/// and `expansions/query`.
+template <typename Answer>
+void time_answers(benchmark::State& state, const ScenarioSet& s, Answer&& answer) {
   long expansions = 0;
   for (auto _ : state) {
-    for (const PlanRequest& q : s.queries) {
-      const PlanResult r = planner.plan(s.known, q);
-      expansions += r.expansions;
-      benchmark::DoNotOptimize(r.length_m);
-    }
+    for (const PlanRequest& q : s.queries) expansions += answer(q);
   }
   const auto queries = static_cast<double>(s.queries.size());
   state.counters["queries"] = queries;
@@ -254,6 +262,15 @@ void time_queries(benchmark::State& state, Planner& planner, const ScenarioSet& 
       queries, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
   state.counters["expansions/query"] = benchmark::Counter(
       static_cast<double>(expansions) / (queries * static_cast<double>(state.iterations())));
+}
+
+/// time_answers() with `planner`.
+void time_queries(benchmark::State& state, Planner& planner, const ScenarioSet& s) {
+  time_answers(state, s, [&](const PlanRequest& q) {
+    const PlanResult r = planner.plan(s.known, q);
+    benchmark::DoNotOptimize(r.length_m);
+    return r.expansions;
+  });
 }
 
 /// One iteration = the whole fixed query set, planned in order.
@@ -297,16 +314,22 @@ ScenarioSet load_scenario_set(const ScenarioMap& files) {
     q.start = row.start;
     q.goal = row.goal;
     s.queries.push_back(q);
+    s.optimal_lengths.push_back(row.optimal_length);
   }
   return s;
 }
 
-/// One iteration = every query of map `which` of kScenarioMaps, planned in order.
-void scenario_query(benchmark::State& state, const std::string& name, std::size_t which) {
+/// The query set of map `which` of kScenarioMaps (loaded once).
+const ScenarioSet& scenario_set(std::size_t which) {
   static const std::array<ScenarioSet, kScenarioMaps.size()> kSets{load_scenario_set(kScenarioMaps[0]),
                                                                    load_scenario_set(kScenarioMaps[1]),
                                                                    load_scenario_set(kScenarioMaps[2])};
-  const ScenarioSet& s = kSets[which];
+  return kSets[which];
+}
+
+/// One iteration = every query of map `which` of kScenarioMaps, planned in order.
+void scenario_query(benchmark::State& state, const std::string& name, std::size_t which) {
+  const ScenarioSet& s = scenario_set(which);
   const auto planner = make_planner(name, nlohmann::json::object());
   double cells = 0.0;
   for (const PlanRequest& q : s.queries) cells += planner->plan(s.known, q).length_m;  // warm-up, untimed
@@ -326,5 +349,39 @@ const bool kScenarioQueriesRegistered = [] {
   return true;
 }();
 
+/// One iteration = every query of map `which` of kScenarioMaps by the textbook A*
+/// (textbook_astar.hpp), in order. Before timing, every query is checked against MovingAI's
+/// optimal length (kScenarioToleranceRel: the older files print 6 digits) and against `astar`: the same
+/// length (1e-9: `astar` sums its steps) and the same expansions (both expand in the order of
+/// BestFirstSearchT); any difference fails the benchmark.
+void textbook_query(benchmark::State& state, std::size_t which) {
+  const ScenarioSet& s = scenario_set(which);
+  textbook::TextbookAStar astar(s.known);
+  const auto planner = make_planner("astar", nlohmann::json::object());
+  for (std::size_t i = 0; i < s.queries.size(); ++i) {
+    const textbook::TextbookResult r = astar.search(s.queries[i].start, s.queries[i].goal);
+    const PlanResult p = planner->plan(s.known, s.queries[i]);
+    if (std::abs(r.length - s.optimal_lengths[i]) > kScenarioToleranceRel * s.optimal_lengths[i] ||
+        std::abs(r.length - p.length_m) > 1e-9 || r.expansions != p.expansions ||
+        r.path_cells != p.path.size()) {
+      state.SkipWithError(("query " + std::to_string(i) + " differs from MovingAI or astar").c_str());
+      return;
+    }
+  }
+  time_answers(state, s, [&](const PlanRequest& q) {
+    const textbook::TextbookResult r = astar.search(q.start, q.goal);
+    benchmark::DoNotOptimize(r.length);
+    return r.expansions;
+  });
+}
+
+/// BM_TextbookAstar/<map> on every map of kScenarioMaps.
+const bool kTextbookQueriesRegistered = [] {
+  for (std::size_t m = 0; m < kScenarioMaps.size(); ++m) {
+    const std::string label = std::string("BM_TextbookAstar/") + kScenarioMaps[m].label;
+    benchmark::RegisterBenchmark(label.c_str(), textbook_query, m)->Unit(benchmark::kMicrosecond);
+  }
+  return true;
+}();
 }  // namespace
 }  // namespace fsweep

@@ -2,6 +2,7 @@
 /// @file search_result.hpp
 /// A planner's SearchResult from a BestFirstSearch run (src/search/grid_search.hpp).
 
+#include <cstddef>
 #include <vector>
 
 #include "planners/planner.hpp"
@@ -23,9 +24,11 @@ template <typename Cost, typename CellOf>
     return result;
   }
   result.status = PlanStatus::Success;
-  const std::vector<int> states = search.path_to(outcome.goal);
-  result.path.reserve(states.size());
-  for (const int s : states) result.path.push_back(cell_of(s));
+  // The parent chain backwards, written in place (one allocation).
+  std::size_t cells = 0;
+  for (int s = outcome.goal; s >= 0; s = search.parent(s)) ++cells;
+  result.path.resize(cells);
+  for (int s = outcome.goal; s >= 0; s = search.parent(s)) result.path[--cells] = cell_of(s);
   return result;
 }
 

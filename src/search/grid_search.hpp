@@ -16,10 +16,11 @@
 /// incremental_distance_field.hpp, the latter by continuing a run after costs dropped) and the
 /// geodesic distances of the strategies run it with a zero heuristic.
 ///
-/// Memory: the per-state data (16 bytes: cost, parent, run and pass stamps) and the heap live in
-/// a BestFirstSearch object and are reused by every run(). A run takes fresh stamps instead of
-/// clearing the data, so a query costs time proportional to the states it touches, and nothing
-/// is allocated per expansion once the heap has grown to its working size.
+/// Memory: the per-state data (16 bytes: cost, parent, run and pass stamps), the open list and its
+/// positions (4 bytes a state, indexed_heap.hpp) live in a BestFirstSearch object and are reused
+/// by every run(). A run takes fresh stamps instead of clearing the data, so a query costs time
+/// proportional to the states it touches, and nothing is allocated per expansion once the open
+/// list has grown to its working size.
 
 #include <algorithm>
 #include <concepts>
@@ -28,6 +29,7 @@
 #include <span>
 #include <vector>
 
+#include "search/indexed_heap.hpp"
 #include "search/stop_condition.hpp"
 #include "world/grid.hpp"
 
@@ -150,8 +152,8 @@ struct SearchOutcome {
 /// Open-list order (deterministic tie-breaking): smaller f = g + h first; on equal f the
 /// larger g first (the deeper state, which on grids with a consistent heuristic reaches the
 /// goal with fewer expansions); on equal f and g the smaller state id first. The key is a
-/// total order on heap entries, so a run is fully determined by the environment.
-/// Duplicate heap entries replace decrease-key; stale ones are skipped when popped.
+/// total order on open-list entries, so a run is fully determined by the environment. The open
+/// list (IndexedHeap) holds one entry per open state and re-keys it when a cheaper path is found.
 template <typename Cost>
 class BestFirstSearchT {
  public:
@@ -159,7 +161,7 @@ class BestFirstSearchT {
   /// is hit. A `start` outside [0, state_count()) gives an empty run.
   template <SearchEnvironment<Cost> Env>
   SearchOutcome run(Env& env, int start, const SearchLimits& limits = {}) {
-    begin_run(static_cast<int>(env.state_count()));
+    begin_run<Env>(static_cast<int>(env.state_count()));
     (void)lower_cost(env, start, Cost{}, -1);
     return expand(env, limits);
   }
@@ -168,7 +170,7 @@ class BestFirstSearchT {
   /// seeds have parent -1.
   template <SearchEnvironment<Cost> Env>
   SearchOutcome run(Env& env, std::span<const SearchSeedT<Cost>> seeds, const SearchLimits& limits = {}) {
-    begin_run(static_cast<int>(env.state_count()));
+    begin_run<Env>(static_cast<int>(env.state_count()));
     for (const SearchSeedT<Cost>& seed : seeds) (void)lower_cost(env, seed.state, seed.g, -1);
     return resume(env, limits);
   }
@@ -196,14 +198,12 @@ class BestFirstSearchT {
     Node& node = nodes_[idx(state)];
     if (node.run == run_ && cost_value(node.g) <= cost_value(g)) return false;
     node = Node{g, parent, run_, 0};
-    push_open(env, state, g);
+    open_list<Env>().push_or_update(open_item(env, state, g));
     return true;
   }
   /// Searches from the states opened by lower_cost() since reopen() (or from run()'s seeds).
   template <SearchEnvironment<Cost> Env>
   SearchOutcome resume(Env& env, const SearchLimits& limits = {}) {
-    auto& heap = open_list<Env>();
-    std::make_heap(heap.begin(), heap.end(), Later{});
     return expand(env, limits);
   }
 
@@ -230,27 +230,29 @@ class BestFirstSearchT {
   }
 
  private:
+  /// The open-list entry: costs as cost_value().
   struct HeapItem {
     double f;
     double g;
     int state;
+    /// The open-list order: smaller f, then larger g, then smaller state.
+    static bool before(const HeapItem& a, const HeapItem& b) {
+      // Bitwise, not short-circuit: no branches, so the heap's child selection needs none.
+      return static_cast<bool>(
+          static_cast<unsigned>(a.f < b.f) |
+          (static_cast<unsigned>(a.f == b.f) &
+           (static_cast<unsigned>(a.g > b.g) |
+            (static_cast<unsigned>(a.g == b.g) & static_cast<unsigned>(a.state < b.state)))));
+    }
   };
   /// The open-list entry of a ZeroHeuristicEnvironment (f == g).
   struct DijkstraItem {
     double g;
     int state;
-  };
-  /// std heap comparator: true when `a` must come out after `b` (max-heap of priority).
-  /// A function object (not a function pointer) so that the heap algorithms inline it.
-  struct Later {
-    bool operator()(const HeapItem& a, const HeapItem& b) const {
-      if (a.f != b.f) return a.f > b.f;
-      if (a.g != b.g) return a.g < b.g;
-      return a.state > b.state;
-    }
-    bool operator()(const DijkstraItem& a, const DijkstraItem& b) const {
-      if (a.g != b.g) return a.g > b.g;
-      return a.state > b.state;
+    /// The open-list order: smaller g, then smaller state.
+    static bool before(const DijkstraItem& a, const DijkstraItem& b) {
+      return static_cast<bool>(static_cast<unsigned>(a.g < b.g) | (static_cast<unsigned>(a.g == b.g) &
+                                                                   static_cast<unsigned>(a.state < b.state)));
     }
   };
   /// The open list `Env`'s searches use.
@@ -262,13 +264,13 @@ class BestFirstSearchT {
       return heap_;
     }
   }
-  /// Pushes `state` at cost `g` onto `Env`'s open list (without restoring the heap order).
+  /// The entry of `state` at cost `g` on `Env`'s open list.
   template <typename Env>
-  void push_open(const Env& env, int state, Cost g) {
+  static auto open_item(const Env& env, int state, Cost g) {
     if constexpr (ZeroHeuristicEnvironment<Env>) {
-      dijkstra_heap_.push_back({cost_value(g), state});
+      return DijkstraItem{cost_value(g), state};
     } else {
-      heap_.push_back({cost_value(g + static_cast<Cost>(env.heuristic(state))), cost_value(g), state});
+      return HeapItem{cost_value(g + static_cast<Cost>(env.heuristic(state))), cost_value(g), state};
     }
   }
   /// Per-state search data, together so that a relaxation touches one cache line (16 bytes).
@@ -288,8 +290,10 @@ class BestFirstSearchT {
   template <SearchEnvironment<Cost> Env>
   SearchOutcome expand(Env& env, const SearchLimits& limits);
 
-  /// Sizes the arrays for `count` states and starts a new run with fresh run and pass stamps, so
-  /// nothing is cleared between runs (but once every 65535 runs, when the stamps would wrap).
+  /// Sizes the arrays for `count` states (the open list `Env` uses included) and starts a new run
+  /// with fresh run and pass stamps, so nothing is cleared between runs (but once every 65535
+  /// runs, when the stamps would wrap).
+  template <typename Env>
   void begin_run(int count) {
     const auto n = static_cast<std::size_t>(count);
     if (nodes_.size() != n || run_ == kLastStamp || pass_ == kLastStamp) {
@@ -301,14 +305,15 @@ class BestFirstSearchT {
     ++pass_;
     heap_.clear();
     dijkstra_heap_.clear();
+    open_list<Env>().reset(n);
   }
 
   static constexpr std::uint16_t kLastStamp = std::numeric_limits<std::uint16_t>::max();
   std::vector<Node> nodes_;
   std::uint16_t run_ = 0;  // >= 1 once sized, so fresh nodes (stamps 0) are neither reached nor settled
   std::uint16_t pass_ = 0;
-  std::vector<HeapItem> heap_;
-  std::vector<DijkstraItem> dijkstra_heap_;
+  IndexedHeap<HeapItem> heap_;
+  IndexedHeap<DijkstraItem> dijkstra_heap_;
 };
 
 /// The search over double costs (planners, geodesic regions).
@@ -325,20 +330,14 @@ SearchOutcome BestFirstSearchT<Cost>::expand(Env& env, const SearchLimits& limit
   const double g_limit = limits.g_limit;
   const std::uint16_t run = run_;
   const std::uint16_t pass = pass_;
-  // With a zero heuristic (costs >= 0) a settled state is never improved and its stale entries
-  // cost more than it, so the cost comparisons alone skip settled states.
+  // With a zero heuristic (costs >= 0) a settled state is never improved, so the cost
+  // comparison alone skips settled states.
   constexpr bool kDijkstra = ZeroHeuristicEnvironment<Env>;
   auto& heap = open_list<Env>();
   while (!heap.empty()) {
-    // 1. Take the best entry; skip it if stale (state settled or a cheaper entry exists).
-    std::pop_heap(heap.begin(), heap.end(), Later{});
-    const auto top = heap.back();
-    heap.pop_back();
+    // 1. Take the best entry (the open list holds one per open state, at its current cost).
+    const auto top = heap.pop();
     Node& node = nodes_[idx(top.state)];
-    if (top.g > cost_value(node.g)) continue;
-    if constexpr (!kDijkstra) {
-      if (node.pass == pass) continue;
-    }
 
     // 2. The stop condition: budget spent or time up ends the run before the next visit.
     if (stop.should_stop(outcome.expansions)) {
@@ -366,10 +365,15 @@ SearchOutcome BestFirstSearchT<Cost>::expand(Env& env, const SearchLimits& limit
       const Cost g_next = g_top + cost;
       const double g_next_value = cost_value(g_next);
       if (g_next_value > g_limit) return;
-      if (n.run == run && cost_value(n.g) <= g_next_value) return;
+      const bool reached = n.run == run;
+      if (reached && cost_value(n.g) <= g_next_value) return;
       n = Node{g_next, top.state, run, 0};
-      push_open(env, next, g_next);
-      std::push_heap(heap.begin(), heap.end(), Later{});
+      // Only a state reached in this run can have an entry (begin_run() emptied the open list).
+      if (reached) {
+        heap.push_or_update(open_item(env, next, g_next));
+      } else {
+        heap.push(open_item(env, next, g_next));
+      }
     });
   }
   return outcome;
