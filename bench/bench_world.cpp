@@ -8,6 +8,9 @@
 /// - `BM_SensorScanBuilding/range:<cells>`: the same in a partly explored building (a
 ///   generated office of 400 x 400 cells, its left half known; scans from 256 free cells).
 /// - `BM_SensorScanKnown/range:<cells>`: one scan where every cell in range is already known.
+/// - `BM_BeamScan/beams:<n>/range_m:<m>`: one scan of the beam model (n beams over 270 degrees
+///   for 1080, else 180) in a 60 m x 60 m office at 5 cm per cell (1200 x 1200 cells), fresh
+///   KnownMap, from 256 free cells; `BM_GridScanOffice/range_m:<m>`: the grid model there.
 /// - `BM_FrontierUpdate`: one incremental FrontierMap::update after a scan, cycling through 16
 ///   consecutive steps of a greedy exploration (after 100 warm-up steps).
 /// - `BM_FrontierRebuild`: a full FrontierMap::rebuild on the same 16 maps.
@@ -79,12 +82,12 @@ void BM_SensorSetup(benchmark::State& state) {  // NOLINT(readability-identifier
 }
 BENCHMARK(BM_SensorSetup)->ArgName("range")->Arg(20)->Arg(100)->Arg(200)->Unit(benchmark::kMillisecond);
 
-/// One scan of `map` from each cell of `at` in turn, each into a copy of `start`. The copies are
-/// prepared in batches with the timer paused, so the pause cost is amortised over a batch and
-/// the map copy is not timed. Argument: range (cells).
+/// One scan of `map` from each cell of `at` in turn, each into a copy of `start`, with a sensor
+/// of `params`. The copies are prepared in batches with the timer paused, so the pause cost is
+/// amortised over a batch and the map copy is not timed.
 void scan_from(benchmark::State& state, const WorldMap& map, const KnownMap& start,
-               const std::vector<Cell>& at) {
-  Sensor sensor(sensor_params(static_cast<double>(state.range(0))), map.resolution_m);
+               const std::vector<Cell>& at, const SensorParams& params) {
+  Sensor sensor(params, map.resolution_m);
   constexpr std::size_t kBatch = 64;
   std::vector<KnownMap> pool(kBatch, start);
   Rng rng = make_rng(1, "sensor");
@@ -109,7 +112,8 @@ void scan_from(benchmark::State& state, const WorldMap& map, const KnownMap& sta
 /// One scan from a fresh (all unknown) KnownMap: the full cost of a scan into unexplored space.
 void BM_SensorScan(benchmark::State& state) {  // NOLINT(readability-identifier-naming)
   const WorldMap map = bench_world(0.15);
-  scan_from(state, map, KnownMap(kSide, kSide, map.resolution_m), free_cells(map, 256, 0));
+  scan_from(state, map, KnownMap(kSide, kSide, map.resolution_m), free_cells(map, 256, 0),
+            sensor_params(static_cast<double>(state.range(0))));
 }
 BENCHMARK(BM_SensorScan)->ArgName("range")->Arg(10)->Arg(20)->Arg(30)->Arg(100)->Arg(200);
 
@@ -122,9 +126,36 @@ void BM_SensorScanBuilding(benchmark::State& state) {  // NOLINT(readability-ide
   for (int i = 0; i < known.size(); ++i) {
     if (known.cell(i).x < map.width() / 2) known.reveal(i, map.occupied[i] != 0);
   }
-  scan_from(state, map, known, free_cells(map, 256, 0));
+  scan_from(state, map, known, free_cells(map, 256, 0), sensor_params(static_cast<double>(state.range(0))));
 }
 BENCHMARK(BM_SensorScanBuilding)->ArgName("range")->Arg(20)->Arg(100)->Arg(200);
+
+/// A 60 m x 60 m office at 5 cm per cell: rooms at least 4 m, corridors 2 m, walls 15 cm,
+/// doors 1 m.
+WorldMap fine_office() {
+  return load_map_spec("office:w=1200,h=1200,min_room=80,corridor=40,wall=3,door=20,seed=3,res=0.05");
+}
+
+/// One beam-model scan into unexplored space in fine_office(): 1080 beams over 270 degrees
+/// (Hokuyo UTM-30LX) or 181 over 180 (SICK LMS 200); argument 1: range (m).
+void BM_BeamScan(benchmark::State& state) {  // NOLINT(readability-identifier-naming)
+  const WorldMap map = fine_office();
+  SensorParams params = sensor_params(static_cast<double>(state.range(1)));
+  params.model = SensorModel::Beams;
+  params.beams = static_cast<int>(state.range(0));
+  params.fov_deg = params.beams == 1080 ? 270.0 : 180.0;
+  scan_from(state, map, KnownMap(map.width(), map.height(), map.resolution_m), free_cells(map, 256, 0),
+            params);
+}
+BENCHMARK(BM_BeamScan)->ArgNames({"beams", "range_m"})->Args({1080, 30})->Args({181, 8})->Args({181, 30});
+
+/// The grid model in the same office, same cells (argument: range in m; 30 m = 600 cells).
+void BM_GridScanOffice(benchmark::State& state) {  // NOLINT(readability-identifier-naming)
+  const WorldMap map = fine_office();
+  scan_from(state, map, KnownMap(map.width(), map.height(), map.resolution_m), free_cells(map, 256, 0),
+            sensor_params(static_cast<double>(state.range(0))));
+}
+BENCHMARK(BM_GridScanOffice)->ArgName("range_m")->Arg(8)->Arg(30);
 
 /// One scan where every cell in range is already known (the skip path; robot standing still).
 void BM_SensorScanKnown(benchmark::State& state) {  // NOLINT(readability-identifier-naming)

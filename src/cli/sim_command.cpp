@@ -85,7 +85,8 @@ Command add_sim_command(CLI::App& app) {
   sub->add_option(
       "--robot", o->robot,
       "Robot setting key=value (repeatable): sensor.range_m, sensor.fov_deg, sensor.miss_probability, "
-      "energy (distance|mei2006|pioneer3dx), battery, dock=[x,y], start_heading, allow_corner_cutting");
+      "sensor.model (grid|beams), sensor.beams, energy (distance|mei2006|pioneer3dx), battery, dock=[x,y], "
+      "start_heading, allow_corner_cutting");
   sub->add_option("--sim", o->sim,
                   "Loop setting key=value (repeatable): cluster_max_length_m, max_steps, stuck_decisions, "
                   "progress_step_m");

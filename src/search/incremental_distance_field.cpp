@@ -43,33 +43,44 @@ void IncrementalDistanceField::update(const KnownMap& known, std::span<const int
   search_.reopen();
   const int w = known.width();
   const int h = known.height();
-  // 1. Every new move has a revealed free cell as an end, or is a diagonal between two
-  //    neighbours of one (its corner cell was revealed): re-relax the 3x3 block around each
-  //    revealed free cell from its neighbours (moves are symmetric), opening the cells whose
-  //    distance drops (each lowered at once, so later blocks read it).
+  // 1. Every new move has a revealed free cell r as an end, or is a diagonal between two
+  //    orthogonal neighbours a, b of r whose corner r (with the cell c across from it) had to
+  //    be free (only without corner cutting). Relax r from its neighbours (its moves out are
+  //    followed when the search expands it) and a, b from each other, opening the cells whose
+  //    distance drops (each lowered at once, so later ones read it).
+  const CellState* state = known.cells().data().data();
+  const auto free_at = [&](int x, int y) {
+    return x >= 0 && y >= 0 && x < w && y < h && state[y * w + x] == CellState::Free;
+  };
+  constexpr OctileCost kDiagonal = octile_step<OctileCost>(true);
+  const auto relax_across = [&](int to, int from) {
+    if (search_.reached(from)) (void)search_.lower_cost(env, to, search_.cost(from) + kDiagonal, from);
+  };
   for (const int r : revealed) {
-    if (!known.is_free(r)) continue;
+    if (state[r] != CellState::Free) continue;
+    const bool reached = search_.reached(r);
+    OctileCost best = reached ? search_.cost(r) : OctileCost{};
+    int from = -1;
+    for_each_octile_neighbour<OctileCost>(known, r, allow_corner_cutting_, [&](int m, OctileCost cost) {
+      if (!search_.reached(m)) return;
+      const OctileCost d = search_.cost(m) + cost;
+      if ((!reached && from < 0) || d.value() < best.value()) {
+        best = d;
+        from = m;
+      }
+    });
+    if (from >= 0) (void)search_.lower_cost(env, r, best, from);
+    if (allow_corner_cutting_) continue;
     const int rx = r % w;
     const int ry = r / w;
-    for (int dy = -1; dy <= 1; ++dy) {
-      for (int dx = -1; dx <= 1; ++dx) {
-        const int x = rx + dx;
-        const int y = ry + dy;
-        if (x < 0 || y < 0 || x >= w || y >= h) continue;
-        const int n = y * w + x;
-        if (!known.is_free(n)) continue;
-        const bool reached = search_.reached(n);
-        OctileCost best = reached ? search_.cost(n) : OctileCost{};
-        int from = -1;
-        for_each_octile_neighbour<OctileCost>(known, n, allow_corner_cutting_, [&](int m, OctileCost cost) {
-          if (!search_.reached(m)) return;
-          const OctileCost d = search_.cost(m) + cost;
-          if ((!reached && from < 0) || d.value() < best.value()) {
-            best = d;
-            from = m;
-          }
-        });
-        if (from >= 0) (void)search_.lower_cost(env, n, best, from);
+    for (const int dx : {-1, 1}) {
+      for (const int dy : {-1, 1}) {
+        // a = r + (dx, 0), b = r + (0, dy), c = r + (dx, dy): the move a-b needs r and c free.
+        if (!free_at(rx + dx, ry) || !free_at(rx, ry + dy) || !free_at(rx + dx, ry + dy)) continue;
+        const int a_cell = r + dx;
+        const int b_cell = r + dy * w;
+        relax_across(a_cell, b_cell);
+        relax_across(b_cell, a_cell);
       }
     }
   }

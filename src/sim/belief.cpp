@@ -1,5 +1,7 @@
 #include "sim/belief.hpp"
 
+#include <cmath>
+
 #include "search/distance_field.hpp"
 
 namespace fsweep {
@@ -8,12 +10,14 @@ inline namespace sim {
 Belief::Belief(const RunSetup& setup)
     : known_(setup.map().width(), setup.map().height(), setup.resolution_m),
       frontiers_(known_),
+      clusters_(known_, setup.cluster_max_length_m, setup.allow_corner_cutting()),
       sensor_rng_(make_rng(setup.spec.seed, "sensor")),
       dropped_(static_cast<std::size_t>(known_.size()), 0) {}
 
 int Belief::sense(Sensor& sensor, const RunSetup& setup, Cell at, int heading, Cell dock) {
   const auto revealed = sensor.scan(setup.map(), known_, at, heading_angle(heading), sensor_rng_);
   frontiers_.update(known_, revealed);
+  clusters_.revealed(revealed);
   dock_field_.take_in(known_, revealed, dock, setup.allow_corner_cutting());
   for (const int i : revealed) {
     if (known_.is_free(i) && setup.reachable[i] != 0) ++known_reachable_;
@@ -22,8 +26,15 @@ int Belief::sense(Sensor& sensor, const RunSetup& setup, Cell at, int heading, C
   return static_cast<int>(revealed.size());
 }
 
-std::vector<FrontierCluster> Belief::clusters(const RunSetup& setup) const {
-  return frontiers_.clusters(known_, setup.cluster_max_length_m, setup.allow_corner_cutting(), dropped_);
+const std::vector<FrontierCluster>& Belief::clusters() {
+  return clusters_.clusters(known_, frontiers_, dropped_);
+}
+
+void Belief::drop(Cell goal) {
+  const int i = known_.index(goal);
+  if (dropped_[static_cast<std::size_t>(i)] != 0) return;
+  dropped_[static_cast<std::size_t>(i)] = 1;
+  clusters_.exclusion_changed(i);
 }
 
 GridDistanceOracle Belief::distance_oracle(const RunSetup& setup, Cell robot, Cell dock,
@@ -31,7 +42,19 @@ GridDistanceOracle Belief::distance_oracle(const RunSetup& setup, Cell robot, Ce
   return GridDistanceOracle(known_, robot, dock, setup.allow_corner_cutting(), &dock_field_, scratch);
 }
 
-bool Belief::frontier_reachable_from(Cell from, const RunSetup& setup) const {
+bool Belief::frontier_reachable_from(Cell from, const RunSetup& setup) {
+  // When the dock field reaches `from`, `from` reaches exactly what the dock reaches (moves are
+  // symmetric, and the field follows the same corner rule): no search needed.
+  if (dock_field_.ready()) {
+    (void)dock_field_.bring_up_to_date(known_);
+    if (std::isfinite(dock_field_.distance_m(known_.index(from)))) {
+      for (const int i : frontiers_.cells()) {
+        if (dropped_[static_cast<std::size_t>(i)] == 0 && std::isfinite(dock_field_.distance_m(i)))
+          return true;
+      }
+      return false;
+    }
+  }
   std::vector<int> open;
   for (const int i : frontiers_.cells()) {
     if (dropped_[static_cast<std::size_t>(i)] == 0) open.push_back(i);

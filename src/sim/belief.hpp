@@ -34,9 +34,10 @@ class Belief {
   [[nodiscard]] const KnownMap& known() const { return known_; }
   [[nodiscard]] const FrontierMap& frontiers() const { return frontiers_; }
 
-  /// Frontier clusters of the goals not dropped (FrontierMap::clusters, split at
-  /// `setup.cluster_max_length_m`).
-  [[nodiscard]] std::vector<FrontierCluster> clusters(const RunSetup& setup) const;
+  /// Frontier clusters of the goals not dropped (FrontierMap::clusters, split at the setup's
+  /// `cluster_max_length_m`), kept up to date from what each scan revealed (FrontierClusters).
+  /// The reference stays valid until the next call or scan.
+  [[nodiscard]] const std::vector<FrontierCluster>& clusters();
 
   /// The distance oracle of one decision, from `robot` and `dock`, searching in `scratch`. It
   /// refers to this belief (the known map and the dock field): use it for that decision only,
@@ -45,10 +46,11 @@ class Belief {
                                                    DistanceScratch& scratch);
 
   /// Never offer `goal` to a strategy again (unobservable, or no path found).
-  void drop(Cell goal) { dropped_[static_cast<std::size_t>(known_.index(goal))] = 1; }
+  void drop(Cell goal);
 
-  /// True when some frontier cell not dropped is reachable from `from` over known free cells.
-  [[nodiscard]] bool frontier_reachable_from(Cell from, const RunSetup& setup) const;
+  /// True when some frontier cell not dropped is reachable from `from` over known free cells
+  /// (read from the dock field when it reaches `from`, which it brings up to date; else searched).
+  [[nodiscard]] bool frontier_reachable_from(Cell from, const RunSetup& setup);
 
   /// Known reachable free cells / reachable free cells of `setup` (1 when there are none).
   [[nodiscard]] double coverage(const RunSetup& setup) const;
@@ -62,6 +64,7 @@ class Belief {
  private:
   KnownMap known_;
   FrontierMap frontiers_;
+  FrontierClusters clusters_;
   /// The sensor's noise stream (used only when SensorParams::miss_probability > 0).
   Rng sensor_rng_;
   DockField dock_field_;

@@ -110,22 +110,31 @@ std::optional<double> GridDistanceOracle::probe_from_robot(int cell, double boun
   return *d <= bound_m ? *d : std::numeric_limits<double>::infinity();
 }
 
-double GridDistanceOracle::lower_bound_from_robot(int cell) const {
+std::vector<double> GridDistanceOracle::lower_bounds_from_robot(std::span<const int> cells) const {
   // The octile length is exact: the fields' costs count straight and diagonal steps
   // (search/grid_search.hpp, OctileCost), and no path has a smaller value. The triangle bound
   // subtracts two rounded lengths: allow a relative 1e-9.
   constexpr double kSlack = 1e-9;
+  constexpr double kInf = std::numeric_limits<double>::infinity();
   const double res = known_.resolution_m();
-  double bound = octile_distance(robot_, known_.cell(cell)) * res;
-  if (dock_field_ != nullptr && dock_field_->current()) {
-    const double to_robot = dock_field_->distance_m(known_.index(robot_));
-    const double to_cell = dock_field_->distance_m(cell);
-    if (std::isfinite(to_robot)) {
-      if (!std::isfinite(to_cell)) return std::numeric_limits<double>::infinity();
-      bound = std::max(bound, to_cell - to_robot - kSlack * (to_cell + to_robot));
+  const bool triangle = dock_field_ != nullptr && dock_field_->current() &&
+                        std::isfinite(dock_field_->distance_m(known_.index(robot_)));
+  const double to_robot = triangle ? dock_field_->distance_m(known_.index(robot_)) : 0.0;
+  std::vector<double> out;
+  out.reserve(cells.size());
+  for (const int cell : cells) {
+    double bound = octile_distance(robot_, known_.cell(cell)) * res;
+    if (triangle) {
+      const double to_cell = dock_field_->distance_m(cell);
+      if (!std::isfinite(to_cell)) {
+        bound = kInf;
+      } else {
+        bound = std::max(bound, to_cell - to_robot - kSlack * (to_cell + to_robot));
+      }
     }
+    out.push_back(bound);
   }
-  return bound;
+  return out;
 }
 
 }  // namespace sim

@@ -71,7 +71,7 @@ class GridDistanceOracle final : public DistanceOracle {
   /// field is up to date, the triangle bound d(dock, cell) - d(dock, robot) less a relative
   /// 1e-9 for its two roundings (+infinity when the robot reaches the dock but the dock does
   /// not reach `cell`).
-  [[nodiscard]] double lower_bound_from_robot(int cell) const override;
+  [[nodiscard]] std::vector<double> lower_bounds_from_robot(std::span<const int> cells) const override;
 
   /// Expansions of all searches of this oracle (the dock field's updates included).
   [[nodiscard]] long expansions() const { return expansions_; }

@@ -2,12 +2,13 @@
 
 #include <algorithm>
 #include <chrono>
+#include <iterator>
 
 namespace fsweep {
 inline namespace sim {
 
 SegmentRestriction HeuristicsPolicy::restrict_to_segment(const KnownMap& known, Cell robot,
-                                                         std::vector<FrontierCluster>& clusters) {
+                                                         const std::vector<FrontierCluster>& clusters) {
   SegmentRestriction out;
   if (!heuristics_.segment) return out;
   if (known.known_count() != segmented_known_count_) {
@@ -28,7 +29,9 @@ SegmentRestriction HeuristicsPolicy::restrict_to_segment(const KnownMap& known, 
       std::none_of(clusters.begin(), clusters.end(), inside)) {
     return out;
   }
-  std::erase_if(clusters, [&](const FrontierCluster& c) { return !inside(c); });
+  segment_clusters_.clear();
+  std::copy_if(clusters.begin(), clusters.end(), std::back_inserter(segment_clusters_), inside);
+  out.clusters = &segment_clusters_;
   segment_mask_.assign(s.label.size(), 0);
   for (std::size_t i = 0; i < segment_mask_.size(); ++i) segment_mask_[i] = s.label[i] == mine ? 1 : 0;
   out.mask = &segment_mask_;

@@ -21,6 +21,9 @@ struct SegmentRestriction {
   /// One flag per cell of the robot's segment, for Observation::segment_mask; null when
   /// nothing was restricted. Valid until the next restrict_to_segment().
   const std::vector<std::uint8_t>* mask = nullptr;
+  /// The clusters whose representative lies in that segment; null when nothing was
+  /// restricted. Valid until the next restrict_to_segment().
+  const std::vector<FrontierCluster>* clusters = nullptr;
   /// Time spent segmenting the known map for this decision (seconds; 0 when the cached
   /// segmentation was still current).
   double segmentation_time_s = 0.0;
@@ -34,11 +37,11 @@ class HeuristicsPolicy {
   [[nodiscard]] const Heuristics& heuristics() const { return heuristics_; }
 
   /// `seg`: when the robot's segment is a room holding the representative of some cluster,
-  /// keeps only such clusters and returns the segment's mask; otherwise leaves `clusters` as
-  /// they are (null mask). Segments `known` again when it changed since the last call. Without
+  /// returns such clusters of `clusters` and the segment's mask; otherwise nothing (null mask
+  /// and clusters). Segments `known` again when it changed since the last call. Without
   /// `seg`: nothing.
   SegmentRestriction restrict_to_segment(const KnownMap& known, Cell robot,
-                                         std::vector<FrontierCluster>& clusters);
+                                         const std::vector<FrontierCluster>& clusters);
 
   /// `rr`: whether a journey to `goal` should go on, on the current map (the rule in
   /// simulation.hpp). `goal_was_frontier`: the goal was a frontier cell when chosen.
@@ -53,6 +56,7 @@ class HeuristicsPolicy {
   std::shared_ptr<const Segmentation> segmentation_;
   int segmented_known_count_ = -1;
   std::vector<std::uint8_t> segment_mask_;
+  std::vector<FrontierCluster> segment_clusters_;
 };
 
 }  // namespace sim

@@ -110,7 +110,10 @@ RobotParams robot_params_from_json(const nlohmann::json& j, const std::string& w
   return robot_params().read(j, where);
 }
 
-void to_json(nlohmann::json& j, const RobotParams& r) { j = robot_params().write(r); }
+void to_json(nlohmann::json& j, const RobotParams& r) {
+  j = robot_params().write(r);
+  j["sensor"] = r.sensor;  // world's to_json: the beam keys only when they are not defaults
+}
 
 const ParamDecl<SimParams>& sim_params() {
   static const ParamDecl<SimParams> kDecl = make_sim_params();

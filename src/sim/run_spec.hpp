@@ -40,6 +40,8 @@ struct RobotParams {
 [[nodiscard]] const ParamDecl<RobotParams>& robot_params();
 /// robot_params().read(j, where): every problem at its JSON path, as one ConfigError.
 [[nodiscard]] RobotParams robot_params_from_json(const nlohmann::json& j, const std::string& where);
+/// robot_params().write(r) with the sensor written by its own to_json (sensor.hpp: the beam
+/// model's keys only when they are not defaults); run keys and runs.csv record this.
 void to_json(nlohmann::json& j, const RobotParams& r);
 
 /// Loop settings (docs/architecture.md, "The simulation loop and metrics").

@@ -174,15 +174,15 @@ bool Simulation::step() {
 std::optional<Decision> Simulation::decide() {
   const RunSetup& setup = *setup_;
   RunMetrics& m = recorder_.metrics();
-  auto clusters = belief_.clusters(setup);
+  const std::vector<FrontierCluster>& clusters = belief_.clusters();
   const SegmentRestriction segment =
       heuristics_.restrict_to_segment(belief_.known(), robot_.position, clusters);
   m.segmentation_time_s += segment.segmentation_time_s;
   GridDistanceOracle oracle = belief_.distance_oracle(setup, robot_.position, robot_.dock, scratch_);
-  const auto observation = [&](const std::vector<std::uint8_t>* mask) {
+  const auto observation = [&](const SegmentRestriction& restriction) {
     return Observation{belief_.known(),
                        belief_.frontiers(),
-                       clusters,
+                       restriction.clusters != nullptr ? *restriction.clusters : clusters,
                        oracle,
                        setup.spec.robot.sensor,
                        robot_.position,
@@ -192,7 +192,7 @@ std::optional<Decision> Simulation::decide() {
                        robot_.dock,
                        robot_.battery_view(),
                        m.decisions,
-                       mask};
+                       restriction.mask};
   };
   const auto t_decide = Clock::now();
   // sim.stop_at_cell: arrived -> target_reached; known free and reachable -> go straight there.
@@ -207,12 +207,11 @@ std::optional<Decision> Simulation::decide() {
     to_stop_cell = std::isfinite(oracle.from_robot(stop, std::numeric_limits<double>::infinity()).front());
   }
   Decision decision =
-      to_stop_cell ? Decision::go_to(*setup.stop_cell) : strategy_->decide(observation(segment.mask));
+      to_stop_cell ? Decision::go_to(*setup.stop_cell) : strategy_->decide(observation(segment));
   if (segment.mask != nullptr && decision.kind == Decision::Kind::Finish) {
     // Every candidate of the robot's room failed the strategy's own tests (e.g. unreachable):
     // the segment restriction holds only while the room offers a usable candidate.
-    clusters = belief_.clusters(setup);
-    decision = strategy_->decide(observation(nullptr));
+    decision = strategy_->decide(observation(SegmentRestriction{}));
   }
   m.decision_time_s += seconds_since(t_decide);
   m.planner_expansions += oracle.expansions();

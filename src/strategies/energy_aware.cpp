@@ -6,7 +6,6 @@
 #include <cstdint>
 #include <limits>
 #include <nlohmann/json.hpp>
-#include <numeric>
 #include <optional>
 #include <vector>
 
@@ -60,13 +59,27 @@ EnergyAware::EnergyAware(std::string name, const EnergyAwareParams& params)
     : name_(std::move(name)), params_(params), weights_{params.w1, params.w2, params.w3, params.w4} {}
 
 /// What one decision knows besides d_g: per cluster representative its dock distance d_gb
-/// and its turn theta_rel, and the battery's reach d_l (eq. 5) and state (eq. 9).
+/// and its turn theta_rel (computed when first asked for: a decision may never need most of
+/// them), and the battery's reach d_l (eq. 5) and state (eq. 9).
 struct EnergyAware::Terms {
   std::vector<int> reps;
   std::vector<double> d_gb;
-  std::vector<double> theta;
   double d_l = 0.0;
   bool above_half = true;
+  /// Theta_rel's inputs: the robot's cell and direction of travel theta_r (radians).
+  Cell robot;
+  double theta_r = 0.0;
+  int width = 1;
+
+  /// Eq. 10 for representative i (the same value every time it is asked for).
+  [[nodiscard]] double theta(std::size_t i) const {
+    double& t = theta_[i];
+    if (std::isnan(t)) {
+      const int r = reps[i];
+      t = theta_rel(theta_r, direction(robot, Cell{r % width, r / width}));
+    }
+    return t;
+  }
 
   /// Eq. 7 (strict) on finite lengths: can the robot reach representative i at d_g and still
   /// get back to the dock?
@@ -75,8 +88,17 @@ struct EnergyAware::Terms {
   }
   /// The feature row of representative i at robot distance d_g (kFeatures order).
   [[nodiscard]] std::array<double, kFeatures> features(std::size_t i, double d_g) const {
-    return {d_g, d_gb[i], above_half ? -d_gb[i] : d_gb[i], theta[i]};
+    return {d_g, d_gb[i], above_half ? -d_gb[i] : d_gb[i], theta(i)};
   }
+  /// The same row with theta_rel at its lower bound 0. Its cost with weights >= 0 is a lower
+  /// bound of the row's: linear_cost adds the theta term last, and adding w4 theta >= 0 never
+  /// rounds below the sum before it.
+  [[nodiscard]] std::array<double, kFeatures> features_without_theta(std::size_t i, double d_g) const {
+    return {d_g, d_gb[i], above_half ? -d_gb[i] : d_gb[i], 0.0};
+  }
+
+  /// Theta_rel per representative, NaN until computed.
+  mutable std::vector<double> theta_;
 };
 
 EnergyAware::Terms EnergyAware::terms(const Observation& obs) const {
@@ -98,8 +120,10 @@ EnergyAware::Terms EnergyAware::terms(const Observation& obs) const {
     const auto metric = params_.distance == "euclidean" ? &euclidean_distance : &octile_distance;
     for (const int r : t.reps) t.d_gb.push_back(metric(obs.known.cell(r), obs.dock) * res);
   }
-  const double theta_r = direction(obs.previous_position, obs.robot);
-  for (const int r : t.reps) t.theta.push_back(theta_rel(theta_r, direction(obs.robot, obs.known.cell(r))));
+  t.robot = obs.robot;
+  t.theta_r = direction(obs.previous_position, obs.robot);
+  t.width = obs.known.width();
+  t.theta_.assign(t.reps.size(), std::numeric_limits<double>::quiet_NaN());
   return t;
 }
 
@@ -168,7 +192,7 @@ class WatchedChoice final : public SettleWatcher {
     for (std::size_t i = 0; i < open_.size(); ++i) {
       if (open_[i] == 0) continue;
       const double d_g = std::max(radius_m, lower_bound_m_[i]);
-      if (!terms_.feasible(i, d_g) || loses(i, cost_at(i, d_g))) {
+      if (!terms_.feasible(i, d_g) || loses(i, cost_without_theta(i, d_g)) || loses(i, cost_at(i, d_g))) {
         open_[i] = 0;
         continue;
       }
@@ -181,16 +205,27 @@ class WatchedChoice final : public SettleWatcher {
 
   /// The chosen representative (index into terms.reps), or -1.
   [[nodiscard]] int best() const { return best_; }
-  /// Representative i's cost at its lower bound (a lower bound of its cost).
-  [[nodiscard]] double bound_cost(std::size_t i) const { return cost_at(i, lower_bound_m_[i]); }
+  /// Representative i's cost at its lower bound with theta_rel at 0 (a lower bound of its
+  /// cost that needs no theta_rel).
+  [[nodiscard]] double bound_cost(std::size_t i) const { return cost_without_theta(i, lower_bound_m_[i]); }
   /// True while representative i is not reached and passes eq. 7 at its lower bound.
   [[nodiscard]] bool open(std::size_t i) const { return open_[i] != 0; }
-  /// True when representative i, by its lower bound, can no longer beat or tie the best to win.
+  /// True when representative i, by bound_cost(), can no longer beat or tie the best to win.
   [[nodiscard]] bool beaten(std::size_t i) const { return loses(i, bound_cost(i)); }
+  /// True when representative i, by its cost at its lower bound, can no longer win.
+  [[nodiscard]] bool beaten_with_theta(std::size_t i) const {
+    return loses(i, cost_at(i, lower_bound_m_[i]));
+  }
 
  private:
+  /// Representative i's cost at robot distance d_g (its theta_rel only when w4 counts).
   [[nodiscard]] double cost_at(std::size_t i, double d_g) const {
+    if (weights_[3] == 0.0) return cost_without_theta(i, d_g);  // w4 * theta_rel adds 0
     const auto row = terms_.features(i, d_g);
+    return linear_cost(weights_, row);
+  }
+  [[nodiscard]] double cost_without_theta(std::size_t i, double d_g) const {
+    const auto row = terms_.features_without_theta(i, d_g);
     return linear_cost(weights_, row);
   }
   /// True when cost `bound` of representative i cannot beat or tie the best so far to win.
@@ -230,18 +265,29 @@ constexpr long kProbeCellsExtra = 64;
 /// probes ran out first: then `choice` holds what they found and a search from the robot must
 /// finish the choice.
 bool choose_by_probes(const Observation& obs, const EnergyAware::Terms& t, WatchedChoice& choice) {
-  // Cost bounds of the open representatives (the others last): finite, as their bounds are.
-  std::vector<double> key(t.reps.size());
-  for (std::size_t i = 0; i < key.size(); ++i)
-    key[i] = choice.open(i) ? choice.bound_cost(i) : std::numeric_limits<double>::infinity();
-  std::vector<std::size_t> order(t.reps.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return key[a] < key[b]; });
+  // The open representatives (the others are rejected by eq. 7 on their bound) by cost bound
+  // without theta_rel, then index: a heap, as a decision mostly looks at the first few.
+  struct Entry {
+    double key;
+    std::size_t i;
+  };
+  const auto later = [](const Entry& a, const Entry& b) {
+    return a.key > b.key || (a.key == b.key && a.i > b.i);
+  };
+  std::vector<Entry> heap;
+  heap.reserve(t.reps.size());
+  for (std::size_t i = 0; i < t.reps.size(); ++i) {
+    if (choice.open(i)) heap.push_back({choice.bound_cost(i), i});
+  }
+  std::make_heap(heap.begin(), heap.end(), later);
   int probes = 0;
-  for (const std::size_t i : order) {
-    if (!choice.open(i)) continue;  // rejected by eq. 7 on its bound
-    // Sorted by bound: once one is beaten, so is every later one (ties: by index, too).
+  while (!heap.empty()) {
+    std::pop_heap(heap.begin(), heap.end(), later);
+    const std::size_t i = heap.back().i;
+    heap.pop_back();
+    // In bound order: once one is beaten, so is every later one (ties: by index, too).
     if (choice.beaten(i)) return true;
+    if (choice.beaten_with_theta(i)) continue;  // its turn makes it lose: no need to measure it
     if (probes++ == kMaxProbes) return false;
     const Cell goal = obs.known.cell(t.reps[i]);
     const auto steps = static_cast<long>(std::ceil(octile_distance(obs.robot, goal)));
@@ -276,10 +322,7 @@ Decision EnergyAware::decide(const Observation& obs) {
   // searches for the best bounds, then, if they do not settle it, by a search from the robot
   // that stops once no representative it has not reached can win.
   const Terms t = terms(obs);
-  std::vector<double> lower_bound;
-  lower_bound.reserve(t.reps.size());
-  for (const int r : t.reps) lower_bound.push_back(obs.distances.lower_bound_from_robot(r));
-  WatchedChoice choice(t, weights_, std::move(lower_bound));
+  WatchedChoice choice(t, weights_, obs.distances.lower_bounds_from_robot(t.reps));
   if (!choose_by_probes(obs, t, choice)) obs.distances.watch_from_robot(t.reps, t.d_l, choice);
   if (choice.best() < 0) return on_no_candidate(obs);
   return Decision::go_to(obs.known.cell(t.reps[static_cast<std::size_t>(choice.best())]));

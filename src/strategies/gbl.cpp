@@ -16,8 +16,7 @@ inline namespace strategies {
 ScanCounts GainScanner::at(const Observation& obs, Cell p) {
   const double resolution_m = obs.known.resolution_m();
   const SensorParams& s = obs.sensor;
-  if (!ready_ || resolution_m != resolution_m_ || s.range_m != params_.range_m ||
-      s.fov_deg != params_.fov_deg) {
+  if (!ready_ || resolution_m != resolution_m_ || s != params_) {
     sensor_ = Sensor(s, resolution_m);
     params_ = s;
     resolution_m_ = resolution_m;

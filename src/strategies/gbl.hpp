@@ -18,8 +18,9 @@ namespace fsweep {
 inline namespace strategies {
 
 /// Information-gain scans for strategies (Holz 2010 sections IV-B and IV-C): a Sensor for the
-/// observation's sensor model and map resolution, built on first use and rebuilt only when
-/// either changes. Copies share the sensor's immutable ray tables.
+/// observation's sensor model (grid or beams, with its parameters) and map resolution, built
+/// on first use and rebuilt only when either changes. Copies share the sensor's immutable ray
+/// tables.
 class GainScanner {
  public:
   /// Sensor::gain() on obs.known from `p`, facing scan_heading(obs, p).
@@ -28,7 +29,8 @@ class GainScanner {
   /// The heading assumed for a simulated scan at `p` (radians, as heading_angle()): the
   /// direction of the straight line from the robot to p (the robot's last leg towards p; the
   /// path's actual last step is not known to strategies), or the robot's current heading when
-  /// p is the robot's cell. Matters only with a field of view below 360 degrees.
+  /// p is the robot's cell. Matters only with a field of view below 360 degrees or with the
+  /// beam model (its beams turn with the heading).
   [[nodiscard]] static double scan_heading(const Observation& obs, Cell p);
 
  private:

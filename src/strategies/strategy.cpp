@@ -23,12 +23,6 @@ std::optional<double> DistanceOracle::probe_from_robot(int cell, double bound_m,
   return from_robot(one, bound_m).front();
 }
 
-double linear_cost(std::span<const double> weights, std::span<const double> features) {
-  double cost = 0.0;
-  for (std::size_t f = 0; f < features.size(); ++f) cost += weights[f] * features[f];
-  return cost;
-}
-
 int argmin_linear(const Candidates& c, std::span<const double> weights) {
   const auto k = static_cast<std::size_t>(c.feature_count);
   int best = -1;

@@ -42,9 +42,11 @@ class DistanceOracle {
   /// by a search that settles at most `max_expansions` cells (a point-to-point search, e.g. A*);
   /// nullopt when that budget ran out first. The default asks from_robot().
   [[nodiscard]] virtual std::optional<double> probe_from_robot(int cell, double bound_m, long max_expansions);
-  /// A lower bound (metres) of the path length from the robot to `cell` (+infinity: `cell` is
-  /// unreachable), known without a search from the robot. The default knows nothing: 0.
-  [[nodiscard]] virtual double lower_bound_from_robot(int /*cell*/) const { return 0.0; }
+  /// Per cell, a lower bound (metres) of the path length from the robot to it (+infinity: it
+  /// is unreachable), known without a search from the robot. The default knows nothing: 0.
+  [[nodiscard]] virtual std::vector<double> lower_bounds_from_robot(std::span<const int> cells) const {
+    return std::vector<double>(cells.size(), 0.0);
+  }
 };
 
 /// Battery as the strategy sees it.
@@ -143,7 +145,11 @@ struct Candidates {
 /// weights . features, summed in feature order from 0.0: the cost argmin_linear compares. It
 /// never decreases when a feature with a non-negative weight grows, so a lower bound of a
 /// feature gives a lower bound of the cost (the energy-aware choice bounds d_g so).
-[[nodiscard]] double linear_cost(std::span<const double> weights, std::span<const double> features);
+[[nodiscard]] inline double linear_cost(std::span<const double> weights, std::span<const double> features) {
+  double cost = 0.0;
+  for (std::size_t f = 0; f < features.size(); ++f) cost += weights[f] * features[f];
+  return cost;
+}
 
 /// Index of argmin_i weights . features_i; ties break to the lowest i. -1 when empty.
 [[nodiscard]] int argmin_linear(const Candidates& c, std::span<const double> weights);

@@ -126,7 +126,7 @@ WorldMap known_as_world(const KnownMap& known) {
   return view;
 }
 
-double exploration_objective(const WorldMap& view, const Sensor& sensor, Cell at,
+double exploration_objective(const WorldMap& view, const Sensor& sensor, Cell at, double heading_rad,
                              std::span<const double> weights) {
   const int r = static_cast<int>(std::floor(sensor.range_cells()));
   double h = 0.0;
@@ -135,7 +135,7 @@ double exploration_objective(const WorldMap& view, const Sensor& sensor, Cell at
       const Cell p{x, y};
       const int i = view.occupied.index(p);
       if (weights[static_cast<std::size_t>(i)] == 0.0 || !view.is_free(i)) continue;
-      if (p == at || sensor.visible(view, at, p)) h += weights[static_cast<std::size_t>(i)];
+      if (p == at || sensor.visible(view, at, p, heading_rad)) h += weights[static_cast<std::size_t>(i)];
     }
   }
   return h;
@@ -157,7 +157,7 @@ std::optional<Cell> gradient_step(const KnownMap& known, const Sensor& sensor, C
       continue;
     }
     if (!(field.to_frontier_m[static_cast<std::size_t>(known.index(n))] < here)) continue;  // progress
-    const double value = exploration_objective(view, sensor, n, field.weight);
+    const double value = exploration_objective(view, sensor, n, heading_angle(h), field.weight);
     if (value > best) {  // strict: ties keep the lower heading
       best = value;
       step = n;

@@ -124,15 +124,17 @@ struct ExplorationField {
 
 /// Equation 2 on the grid: H(at) = the sum of `weight` over the known free cells visible from
 /// `at` (`at` itself included), visibility by the rules of `sensor` (Sensor::visible(), range
-/// included, field of view ignored: the paper's sensor is omnidirectional) on `view`
+/// included; grid model: field of view ignored, the paper's sensor is omnidirectional; beam
+/// model: the beams of a scan facing `heading_rad`, radians as heading_angle()) on `view`
 /// (known_as_world()).
 [[nodiscard]] double exploration_objective(const WorldMap& view, const Sensor& sensor, Cell at,
-                                           std::span<const double> weight);
+                                           double heading_rad, std::span<const double> weight);
 
 /// The discrete gradient step (equations 10-11: u = dH/dr). Candidates: the 8 neighbours of
 /// `robot` it can step to under any corner rule (known free; a diagonal also needs both cells
 /// beside it known free) that bring it strictly nearer to A_c (field.to_frontier_m). Result:
-/// the candidate with the largest exploration_objective() (ties: the lowest heading, grid.hpp);
+/// the candidate with the largest exploration_objective() facing the step's heading (ties: the
+/// lowest heading, grid.hpp);
 /// empty when there is none (the robot is on A_c, or A_c is out of reach).
 /// Why the progress condition: our H counts only cells known now, while the continuous law
 /// also gains from the cells it is about to sense; pure ascent of the discrete H stops short

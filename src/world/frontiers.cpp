@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -138,51 +140,49 @@ std::vector<int> FrontierMap::cells() const {
 std::vector<FrontierCluster> FrontierMap::clusters(const KnownMap& known, double max_length_m,
                                                    bool allow_corner_cutting,
                                                    std::span<const std::uint8_t> excluded) const {
-  std::vector<FrontierCluster> result;
   if (flags_.size() != static_cast<std::size_t>(known.size()) || width_ != known.width()) {
     throw std::invalid_argument(
         "FrontierMap::clusters: the known map's size differs from the frontier map's");
   }
-  if (!excluded.empty() && excluded.size() != flags_.size()) {
-    throw std::invalid_argument("FrontierMap::clusters: excluded has " + std::to_string(excluded.size()) +
-                                " flags for " + std::to_string(flags_.size()) + " cells");
+  FrontierClusters from_scratch(known, max_length_m, allow_corner_cutting);
+  return from_scratch.clusters(known, *this, excluded);
+}
+
+namespace {
+
+/// FrontierClusters::owner_ marks besides a lowest member index.
+constexpr int kNone = -1;         // not in a cluster
+constexpr int kInComponent = -2;  // in the component being split into pieces (scratch)
+
+/// A cell in a walk, with its coordinates (carried along to avoid divisions).
+struct Node {
+  int i;
+  int x;
+  int y;
+};
+
+/// What the walks of FrontierClusters read: the map, the frontier and exclusion flags, and the
+/// owner marks.
+struct Walk {
+  int w;
+  int h;
+  const CellState* state;
+  const FrontierMap& frontiers;
+  const std::uint8_t* skip;  // null: nothing excluded
+  int* owner;
+  bool allow_corner_cutting;
+
+  /// True when cell `i` may join a cluster: a frontier cell, not excluded.
+  [[nodiscard]] bool open(int i) const {
+    return frontiers.is_frontier(i) && (skip == nullptr || skip[i] == 0);
   }
-  if (count_ == 0) return result;
-  normalise();
-  const int w = known.width();
-  const int h = known.height();
-  const double resolution_m = known.resolution_m();
-  const CellState* state = known.cells().data().data();
-  std::uint8_t* flags = flags_.data();
-  const std::uint8_t* skip = excluded.empty() ? nullptr : excluded.data();
 
-  // Scratch marks live in flags_ and are cleared on every exit (also by an exception).
-  struct ClearMarks {
-    const std::vector<int>& list;
-    std::uint8_t* flags;
-    ~ClearMarks() {
-      for (const int i : list) flags[i] &= static_cast<std::uint8_t>(~kPlaced);
-    }
-  } const clear_marks{list_, flags};
-
-  // 1. Piece size in cells: floor(max_length_m / resolution_m), at least 1 (with slack for
-  //    ratios such as 3.0 / 0.3 that round just below an integer); no splitting when <= 0.
-  std::size_t cap = std::max<std::size_t>(static_cast<std::size_t>(count_), 1);
-  if (max_length_m > 0.0) {
-    const double ratio = std::floor(max_length_m / resolution_m * (1.0 + 1e-9));
-    cap = ratio < 1.0 ? 1 : static_cast<std::size_t>(std::min(ratio, static_cast<double>(cap)));
-  }
-
-  // A cell in a walk, with its coordinates (carried along to avoid divisions).
-  struct Node {
-    int i;
-    int x;
-    int y;
-  };
-  // Calls visit(node) for every neighbour of `c` linked to it by the motion rule that is a
-  // frontier cell, not excluded and not yet placed, in heading order. `c` is a copy: visit()
-  // may grow the vector it came from. Unrolled over the eight headings.
-  const auto for_each_link = [&](const Node c, auto&& visit) {
+  /// Calls visit(node) for every neighbour of `c` linked to it by the motion rule
+  /// (FrontierMap::clusters) that may join a cluster and whose owner mark is `wanted(mark)`, in
+  /// heading order. `c` is a copy: visit() may grow the vector it came from. Unrolled over the
+  /// eight headings.
+  template <typename Wanted, typename Visit>
+  void for_each_link(const Node c, Wanted&& wanted, Visit&& visit) const {
     const bool interior = c.x > 0 && c.y > 0 && c.x < w - 1 && c.y < h - 1;
     const auto step = [&]<std::size_t K>(std::integral_constant<std::size_t, K>) {
       constexpr int kDx = kDirections[K].x;
@@ -191,8 +191,7 @@ std::vector<FrontierCluster> FrontierMap::clusters(const KnownMap& known, double
       const int ny = c.y + kDy;
       if (!interior && (nx < 0 || ny < 0 || nx >= w || ny >= h)) return;
       const int n = c.i + kDy * w + kDx;
-      if ((flags[n] & (kFrontier | kPlaced)) != kFrontier) return;
-      if (skip != nullptr && skip[n] != 0) return;
+      if (!wanted(owner[n]) || !open(n)) return;
       // Diagonal: both cells beside it must be known free.
       if constexpr (kDx != 0 && kDy != 0) {
         if (!allow_corner_cutting &&
@@ -206,72 +205,240 @@ std::vector<FrontierCluster> FrontierMap::clusters(const KnownMap& known, double
       (step(std::integral_constant<std::size_t, K>{}), ...);
     };
     steps(std::make_index_sequence<kDirections.size()>{});
-  };
+  }
+};
 
-  // Appends the cluster of `members` (reordered by index here).
-  const auto add_piece = [&](std::vector<Node>& members) {
-    std::sort(members.begin(), members.end(), [](const Node& a, const Node& b) { return a.i < b.i; });
-    FrontierCluster cl;
-    cl.cells.reserve(members.size());
-    const auto n = static_cast<long long>(members.size());
-    long long sx = 0;
-    long long sy = 0;
+/// The cluster of `members` (reordered by index here): centroid, length and representative.
+FrontierCluster make_cluster(std::vector<Node>& members, int w, int h, double resolution_m) {
+  std::sort(members.begin(), members.end(), [](const Node& a, const Node& b) { return a.i < b.i; });
+  FrontierCluster cl;
+  cl.cells.reserve(members.size());
+  const auto n = static_cast<long long>(members.size());
+  long long sx = 0;
+  long long sy = 0;
+  for (const Node& m : members) {
+    cl.cells.push_back(m.i);
+    sx += m.x;
+    sy += m.y;
+  }
+  // Cell (x, y) has its centre at (x, y) in cell units (as in euclidean_distance()).
+  cl.centroid_x = static_cast<double>(sx) / static_cast<double>(n);
+  cl.centroid_y = static_cast<double>(sy) / static_cast<double>(n);
+  cl.length_m = static_cast<double>(n) * resolution_m;
+  // Representative: nearest to the centroid, compared exactly as
+  // n^2 d^2 = (n x - sum x)^2 + (n y - sum y)^2; members are ascending and only a strictly
+  // smaller distance wins, so ties keep the lowest index. |n x - sum x| <= n * side, so
+  // 64 bits suffice while 2 (n * side)^2 < 2^63; else 128.
+  const auto nearest = [&]<typename T>(T best) {
     for (const Node& m : members) {
-      cl.cells.push_back(m.i);
-      sx += m.x;
-      sy += m.y;
-    }
-    // Cell (x, y) has its centre at (x, y) in cell units (as in euclidean_distance()).
-    cl.centroid_x = static_cast<double>(sx) / static_cast<double>(n);
-    cl.centroid_y = static_cast<double>(sy) / static_cast<double>(n);
-    cl.length_m = static_cast<double>(n) * resolution_m;
-    // Representative: nearest to the centroid, compared exactly as
-    // n^2 d^2 = (n x - sum x)^2 + (n y - sum y)^2; members are ascending and only a strictly
-    // smaller distance wins, so ties keep the lowest index. |n x - sum x| <= n * side, so
-    // 64 bits suffice while 2 (n * side)^2 < 2^63; else 128.
-    const auto nearest = [&]<typename T>(T best) {
-      for (const Node& m : members) {
-        const T ex = static_cast<T>(n) * m.x - sx;
-        const T ey = static_cast<T>(n) * m.y - sy;
-        const T d = ex * ex + ey * ey;
-        if (best < 0 || d < best) {
-          best = d;
-          cl.representative = m.i;
-        }
+      const T ex = static_cast<T>(n) * m.x - sx;
+      const T ey = static_cast<T>(n) * m.y - sy;
+      const T d = ex * ex + ey * ey;
+      if (best < 0 || d < best) {
+        best = d;
+        cl.representative = m.i;
       }
-    };
-    if (n * std::max(w, h) < (1LL << 30)) {
-      nearest(static_cast<long long>(-1));
-    } else {
-      nearest(static_cast<Int128>(-1));
     }
-    result.push_back(std::move(cl));
   };
+  if (n * std::max(w, h) < (1LL << 30)) {
+    nearest(static_cast<long long>(-1));
+  } else {
+    nearest(static_cast<Int128>(-1));
+  }
+  return cl;
+}
 
-  // 2. Pieces, by walks over the cells not yet placed, each from the lowest-index one left.
-  //    Links never join two components, so a walk stays inside the component of its start
-  //    cell, and the pieces of each component come out exactly as the per-component rule in
-  //    frontiers.hpp makes them (the lowest cell left overall is the lowest left in its
-  //    component). Without splitting a walk takes the whole component. Every piece starts at
-  //    its lowest member, so pieces come out ordered by lowest member.
+}  // namespace
+
+FrontierClusters::FrontierClusters(const KnownMap& known, double max_length_m, bool allow_corner_cutting)
+    : max_length_m_(max_length_m),
+      allow_corner_cutting_(allow_corner_cutting),
+      width_(known.width()),
+      height_(known.height()),
+      owner_(static_cast<std::size_t>(known.size()), kNone),
+      flags_(static_cast<std::size_t>(known.size()), 0) {}
+
+void FrontierClusters::revealed(std::span<const int> cells) {
+  if (!everything_dirty_) revealed_.insert(revealed_.end(), cells.begin(), cells.end());
+}
+
+void FrontierClusters::exclusion_changed(int index) {
+  if (!everything_dirty_) exclusion_changed_.push_back(index);
+}
+
+void FrontierClusters::mark(int key) { flags_[static_cast<std::size_t>(key)] |= kWalkAgain; }
+
+void FrontierClusters::mark_near(int cell, int after) {
+  const int cx = cell % width_;
+  const int cy = cell / width_;
+  const int x0 = std::max(cx - 1, 0);
+  const int x1 = std::min(cx + 1, width_ - 1);
+  for (int y = std::max(cy - 1, 0); y <= std::min(cy + 1, height_ - 1); ++y) {
+    const int* row = owner_.data() + static_cast<std::ptrdiff_t>(y) * width_;
+    for (int x = x0; x <= x1; ++x) {
+      if (row[x] > after) mark(row[x]);  // else none (-1), or replayed already
+    }
+  }
+}
+
+const std::vector<FrontierCluster>& FrontierClusters::clusters(const KnownMap& known,
+                                                               const FrontierMap& frontiers,
+                                                               std::span<const std::uint8_t> excluded) {
+  if (owner_.size() != static_cast<std::size_t>(known.size()) || width_ != known.width()) {
+    throw std::invalid_argument(
+        "FrontierClusters::clusters: the known map's size differs from the clusters'");
+  }
+  if (!excluded.empty() && excluded.size() != owner_.size()) {
+    throw std::invalid_argument("FrontierMap::clusters: excluded has " + std::to_string(excluded.size()) +
+                                " flags for " + std::to_string(owner_.size()) + " cells");
+  }
+  const int w = width_;
+  const int h = height_;
+  const Walk walk{w,
+                  h,
+                  known.cells().data().data(),
+                  frontiers,
+                  excluded.empty() ? nullptr : excluded.data(),
+                  owner_.data(),
+                  allow_corner_cutting_};
+  // Piece size in cells: floor(max_length_m / resolution_m), at least 1 (with slack for ratios
+  // such as 3.0 / 0.3 that round just below an integer); no splitting when <= 0.
+  std::size_t cap = std::numeric_limits<std::size_t>::max();
+  if (max_length_m_ > 0.0) {
+    const double ratio = std::floor(max_length_m_ / known.resolution_m() * (1.0 + 1e-9));
+    cap = ratio < 1.0 ? 1 : static_cast<std::size_t>(std::min(ratio, 1e18));
+  }
+
+  // 1. The cells to walk from besides the pieces' own starts: every frontier cell the first
+  //    time; later the changed cells. Pieces within one cell of a changed cell must be walked
+  //    again.
+  if (!everything_dirty_ && revealed_.empty() && exclusion_changed_.empty()) return clusters_;
+  starts_.clear();
+  if (everything_dirty_) {
+    starts_ = frontiers.cells();  // ascending: already a min-heap
+    everything_dirty_ = false;
+  } else {
+    dirty_cells_.clear();
+    const auto dirty = [&](int cell) {
+      std::uint8_t& flag = flags_[static_cast<std::size_t>(cell)];
+      if ((flag & kChanged) != 0) return;
+      flag |= kChanged;
+      dirty_cells_.push_back(cell);
+    };
+    // A walk reads its cells' neighbours: whether they may join (frontier, not excluded) and
+    // the known state of those beside a diagonal. States change only at revealed cells; whether
+    // a cell may join only at a revealed cell's 8-neighbours (and itself) or where the
+    // exclusion changed, and such a cell may join now or was in a piece before.
+    for (const int r : revealed_) {
+      mark_near(r, -1);
+      const int rx = r % w;
+      const int ry = r / w;
+      for (int y = std::max(ry - 1, 0); y <= std::min(ry + 1, h - 1); ++y) {
+        for (int x = std::max(rx - 1, 0); x <= std::min(rx + 1, w - 1); ++x) dirty(y * w + x);
+      }
+    }
+    for (const int e : exclusion_changed_) dirty(e);
+    for (const int d : dirty_cells_) {
+      flags_[static_cast<std::size_t>(d)] &= static_cast<std::uint8_t>(~kChanged);
+      const bool open = walk.open(d);
+      if (open || owner_[static_cast<std::size_t>(d)] >= 0) mark_near(d, -1);
+      if (open) starts_.push_back(d);
+    }
+    std::make_heap(starts_.begin(), starts_.end(), std::greater<>{});
+  }
+  revealed_.clear();
+  exclusion_changed_.clear();
+
+  // 2. The loop of FrontierMap::clusters, replayed in increasing order of start cell over the
+  //    last call's pieces and the cells in starts_. owner_ of a cell holds its piece's start:
+  //    <= the current start once placed by this call, > it while still in a piece not yet
+  //    replayed.
+  next_.clear();
+  next_.reserve(clusters_.size() + starts_.size() / 2);
   std::vector<Node> piece;
-  piece.reserve(std::min(cap, list_.size()));
-  result.reserve(list_.size() / cap + 16);
-  for (const int start : list_) {
-    if ((flags[start] & kPlaced) != 0 || (skip != nullptr && skip[start] != 0)) continue;
+  // Grows the piece of `start` (not yet placed by this call, open) into next_. A piece not
+  // replayed yet that loses a cell to it must be walked again (the callers mark what is near
+  // the cells taken). True when it equals `old`.
+  const auto grow = [&](int start, const FrontierCluster* old) {
     piece.clear();
-    flags[start] |= kPlaced;
+    owner_[static_cast<std::size_t>(start)] = start;
     piece.push_back(Node{start, start % w, start / w});
+    const auto free_now = [start](int mark) { return mark < 0 || mark > start; };
     for (std::size_t head = 0; head < piece.size() && piece.size() < cap; ++head) {
-      for_each_link(piece[head], [&](const Node& n) {
+      walk.for_each_link(piece[head], free_now, [&](const Node& n) {
         if (piece.size() == cap) return;
-        flags[n.i] |= kPlaced;
+        const int taken_from = owner_[static_cast<std::size_t>(n.i)];
+        if (taken_from > start) mark(taken_from);
+        owner_[static_cast<std::size_t>(n.i)] = start;
         piece.push_back(n);
       });
     }
-    add_piece(piece);
+    next_.push_back(make_cluster(piece, w, h, known.resolution_m()));
+    return old != nullptr && old->cells == next_.back().cells;
+  };
+  // Starts a walk from `cell` when it is open and not yet placed; its piece differs from the
+  // last call's (there was none at `cell`): what is near it must be walked again.
+  const auto walk_from = [&](int cell) {
+    const int mark = owner_[static_cast<std::size_t>(cell)];
+    if ((mark >= 0 && mark <= cell) || !walk.open(cell)) return;
+    grow(cell, nullptr);
+    for (const int c : next_.back().cells) mark_near(c, cell);
+  };
+  std::size_t k = 0;  // next piece of the last call
+  while (k < clusters_.size() || !starts_.empty()) {
+    if (!starts_.empty() && (k == clusters_.size() || starts_.front() < clusters_[k].cells.front())) {
+      const int cell = starts_.front();
+      std::pop_heap(starts_.begin(), starts_.end(), std::greater<>{});
+      starts_.pop_back();
+      walk_from(cell);
+      continue;
+    }
+    // The last call's piece k, starting at s: kept when nothing near it changed (a piece built
+    // by this call that took one of its cells marked it too).
+    FrontierCluster& old = clusters_[k];
+    const int s = old.cells.front();
+    std::uint8_t& flag = flags_[static_cast<std::size_t>(s)];
+    const bool intact = (flag & kWalkAgain) == 0;
+    flag &= static_cast<std::uint8_t>(~kWalkAgain);
+    ++k;
+    if (intact) {
+      next_.push_back(std::move(old));
+      continue;
+    }
+    // Walk again from s (when it is still open and free). A later piece reads what this one
+    // holds only through the cells placed differently from the last call: those in one of the
+    // old and new pieces but not in both (every old cell when there is no new piece). The old
+    // cells left over are walked from in turn.
+    for (const int c : old.cells) {
+      if (owner_[static_cast<std::size_t>(c)] == s) owner_[static_cast<std::size_t>(c)] = kNone;
+    }
+    if (owner_[static_cast<std::size_t>(s)] == kNone && walk.open(s)) {
+      if (grow(s, &old)) continue;  // the same piece
+      const std::vector<int>& now = next_.back().cells;
+      auto a = old.cells.begin();
+      auto b = now.begin();
+      while (a != old.cells.end() || b != now.end()) {
+        if (b == now.end() || (a != old.cells.end() && *a < *b)) {
+          mark_near(*a++, s);
+        } else if (a == old.cells.end() || *b < *a) {
+          mark_near(*b++, s);
+        } else {
+          ++a;
+          ++b;
+        }
+      }
+    } else {
+      for (const int c : old.cells) mark_near(c, s);
+    }
+    for (const int c : old.cells) {
+      if (owner_[static_cast<std::size_t>(c)] == kNone && c != s) {
+        starts_.push_back(c);
+        std::push_heap(starts_.begin(), starts_.end(), std::greater<>{});
+      }
+    }
   }
-  return result;
+  std::swap(clusters_, next_);
+  return clusters_;
 }
 
 }  // namespace world

@@ -40,9 +40,8 @@ struct FrontierCluster {
 /// that cells() and clusters() cost O(F log F) in the number F of frontier cells, not O(map).
 ///
 /// Not thread-safe on one object: cells() and clusters() are const but reorganise that list
-/// (sorting cells added since the last call, dropping removed ones) and clusters() uses
-/// per-cell scratch marks, so no member may run concurrently with them on the same object.
-/// Distinct objects (copies) are independent.
+/// (sorting cells added since the last call, dropping removed ones), so no member may run
+/// concurrently with them on the same object. Distinct objects (copies) are independent.
 class FrontierMap {
  public:
   FrontierMap() = default;
@@ -78,7 +77,8 @@ class FrontierMap {
   /// closed when it holds that many cells or the walk runs out; then the next piece starts
   /// from the lowest-index cell left. Pieces can therefore be shorter than the limit.
   ///
-  /// Clusters are ordered by their lowest member index. O(F log F) for F frontier cells.
+  /// Clusters are ordered by their lowest member index. O(F log F) for F frontier cells, plus
+  /// O(map) for the scratch marks: a simulation keeps them up to date with FrontierClusters.
   [[nodiscard]] std::vector<FrontierCluster> clusters(const KnownMap& known, double max_length_m,
                                                       bool allow_corner_cutting,
                                                       std::span<const std::uint8_t> excluded = {}) const;
@@ -87,7 +87,6 @@ class FrontierMap {
   // flags_ bits per cell.
   static constexpr std::uint8_t kFrontier = 1;  // the cell is a frontier cell
   static constexpr std::uint8_t kListed = 2;    // the cell is in list_ (frontier or stale)
-  static constexpr std::uint8_t kPlaced = 4;    // clusters() scratch: already in a piece
 
   /// Marks cell `i` frontier or not, keeping list_ and the counts in step.
   void set(int i, bool frontier);
@@ -102,6 +101,70 @@ class FrontierMap {
   mutable std::size_t stale_ = 0;
   int count_ = 0;
   int width_ = 0;
+};
+
+/// The clusters of one FrontierMap, kept up to date between calls: exactly what
+/// FrontierMap::clusters(known, max_length_m, allow_corner_cutting, excluded) returns, rebuilding
+/// only the pieces a change can reach.
+///
+/// How: FrontierMap::clusters grows its pieces one by one, each from the lowest frontier cell
+/// not yet in one. A piece's walk reads only its own cells and their 8-neighbours (the
+/// neighbours' frontier and exclusion flags, whether an earlier piece holds them, and the known
+/// state of the cells beside a diagonal). clusters() replays that loop in the same order over
+/// the pieces of the last call and the cells that changed: a piece is kept as it is unless a
+/// changed cell (a revealed cell or one of its 8-neighbours, or a cell whose exclusion changed)
+/// lies within one cell of it, or a piece built earlier in this call, different from the last
+/// call's, does; otherwise its walk would read what it read last time. Every other piece is
+/// walked again, and the cells it no longer holds are walked from in turn. The pieces built
+/// again are those near the robot's new scans, plus those a different piece pushes along
+/// (pieces of a long frontier can shift one after another). Memory: 5 bytes per map cell plus
+/// the clusters. Copyable value type (a copy forks it).
+class FrontierClusters {
+ public:
+  FrontierClusters() = default;
+  /// Empty, for maps of `known`'s size; the first clusters() call builds every cluster.
+  FrontierClusters(const KnownMap& known, double max_length_m, bool allow_corner_cutting);
+
+  /// Takes note of cells that just became known (their neighbours may change too).
+  void revealed(std::span<const int> cells);
+  /// Takes note that cell `index`'s exclusion flag changed.
+  void exclusion_changed(int index);
+
+  /// The clusters of the frontier cells of `frontiers` (kept in step with `known`) not
+  /// `excluded` (empty, or one flag per cell), ordered by lowest member as
+  /// FrontierMap::clusters orders them. The reference stays valid until the next call.
+  const std::vector<FrontierCluster>& clusters(const KnownMap& known, const FrontierMap& frontiers,
+                                               std::span<const std::uint8_t> excluded);
+
+ private:
+  /// Marks the last call's piece starting at `key` as changed: it must be walked again.
+  void mark(int key);
+  /// Marks as changed the pieces of the last call that hold a cell within one cell of `cell`
+  /// and start after `after` (pieces not yet replayed).
+  void mark_near(int cell, int after);
+
+  double max_length_m_ = 0.0;
+  bool allow_corner_cutting_ = false;
+  bool everything_dirty_ = true;
+  int width_ = 0;
+  int height_ = 0;
+  /// Per cell: the lowest member of the piece holding it (this call's once replayed, else the
+  /// last call's), or -1.
+  std::vector<int> owner_;
+  /// Per cell, scratch of clusters() (all 0 between calls): kChanged while it is a changed
+  /// cell; kWalkAgain when it starts a piece of the last call that must be walked again.
+  static constexpr std::uint8_t kChanged = 1;
+  static constexpr std::uint8_t kWalkAgain = 2;
+  std::vector<std::uint8_t> flags_;
+  /// Cells revealed, or whose exclusion changed, since the last clusters() call.
+  std::vector<int> revealed_;
+  std::vector<int> exclusion_changed_;
+  /// The clusters, ordered by lowest member.
+  std::vector<FrontierCluster> clusters_;
+  /// Scratch of clusters(): changed cells, cells to walk from (a min-heap), the next clusters.
+  std::vector<int> dirty_cells_;
+  std::vector<int> starts_;
+  std::vector<FrontierCluster> next_;
 };
 
 }  // namespace world

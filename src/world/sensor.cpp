@@ -300,7 +300,8 @@ const ParamDecl<SensorParams>& sensor_params() {
   static const ParamDecl<P> kDecl = [] {
     ParamDecl<P> d;
     d.number("range_m", &P::range_m, "sensing radius").above(0).unit("m");
-    d.number("fov_deg", &P::fov_deg, "field of view, centred on the heading; 360: omnidirectional")
+    d.number("fov_deg", &P::fov_deg,
+             "field of view, centred on the heading (360: omnidirectional); beams span it")
         .above(0)
         .at_most(360)
         .unit("deg");
@@ -308,6 +309,14 @@ const ParamDecl<SensorParams>& sensor_params() {
              "probability that a visible unknown cell is missed on one scan (the run's \"sensor\" stream)")
         .at_least(0)
         .below(1);
+    d.choice(
+        "model", &P::model, {{"grid", SensorModel::Grid}, {"beams", SensorModel::Beams}},
+        "physical model: \"grid\" sees every cell in range and in line of sight; \"beams\" a beam lidar, "
+        "`beams` rays over fov_deg, each stopped by the first obstacle (cells between beams unseen)");
+    d.integer("beams", &P::beams,
+              "number of beams of the \"beams\" model, spread over fov_deg (first and last at +-fov_deg/2; "
+              "at 360 evenly, one on the heading)")
+        .range(1, kMaxBeams);
     return d;
   }();
   return kDecl;
@@ -317,7 +326,14 @@ SensorParams sensor_params_from_json(const nlohmann::json& j, const std::string&
   return sensor_params().read(j, where);
 }
 
-void to_json(nlohmann::json& j, const SensorParams& p) { j = sensor_params().write(p); }
+void to_json(nlohmann::json& j, const SensorParams& p) {
+  j = sensor_params().write(p);
+  // Absent while default, so that run keys of configurations without a beam sensor stay as
+  // they were (as sim's stop_at_cell).
+  const SensorParams defaults;
+  if (p.model == defaults.model) j.erase("model");
+  if (p.beams == defaults.beams) j.erase("beams");
+}
 
 /// A target offset from the robot's cell (cells).
 struct Offset {
@@ -352,6 +368,10 @@ Sensor::Sensor(const SensorParams& params, double resolution_m)
   if (range_cells_ > kMaxRangeCells) {
     throw std::invalid_argument("Sensor: range_m / resolution_m = " + std::to_string(range_cells_) +
                                 " cells is more than the supported " + std::to_string(kMaxRangeCells));
+  }
+  if (params_.model == SensorModel::Beams) {
+    beams_ = BeamLidar(params_.beams, params_.fov_deg, squared_range_limit(range_cells_));
+    return;
   }
   auto tables = std::make_shared<Tables>();
   const double limit = squared_range_limit(range_cells_);
@@ -444,6 +464,9 @@ void Sensor::for_each_visible(int width, int height, Cell at, double heading_rad
 
 std::span<const int> Sensor::scan(const WorldMap& truth, KnownMap& known, Cell at, double heading_rad,
                                   Rng& rng) {
+  if (params_.model == SensorModel::Beams) {
+    return beams_.scan(truth, known, at, heading_rad, params_.miss_probability, rng);
+  }
   revealed_.clear();
   if (!tables_ || !truth.occupied.in_bounds(at)) return {};
   const std::uint8_t* occ = truth.occupied.data().data();
@@ -507,6 +530,7 @@ bool Sensor::all_known(const KnownMap& known, Cell at) const {
 }
 
 ScanCounts Sensor::gain(const KnownMap& known, Cell at, double heading_rad) const {
+  if (params_.model == SensorModel::Beams) return beams_.gain(known, at, heading_rad);
   ScanCounts counts;
   if (!tables_ || !known.in_bounds(at)) return counts;
   const CellState* const state = known.cells().data().data();
@@ -519,7 +543,8 @@ ScanCounts Sensor::gain(const KnownMap& known, Cell at, double heading_rad) cons
   return counts;
 }
 
-bool Sensor::visible(const WorldMap& truth, Cell at, Cell target) const {
+bool Sensor::visible(const WorldMap& truth, Cell at, Cell target, double heading_rad) const {
+  if (params_.model == SensorModel::Beams) return beams_.visible(truth, at, target, heading_rad);
   if (!truth.occupied.in_bounds(at) || !truth.occupied.in_bounds(target)) return false;
   const int dx = target.x - at.x;
   const int dy = target.y - at.y;

@@ -1,8 +1,10 @@
 #pragma once
 /// @file sensor.hpp
-/// Omnidirectional range sensor with optional field of view and seeded per-cell misses.
+/// Range sensor with optional field of view and seeded per-cell misses, in one of two physical
+/// models (SensorParams::model): "grid" sees every cell in range that is in line of sight;
+/// "beams" is a beam lidar (a fixed fan of rays, as in Stage and real laser scanners).
 ///
-/// Visibility rule (precise, tested in tests/world/test_sensor.cpp):
+/// Grid model: visibility rule (precise, tested in tests/world/test_sensor.cpp):
 /// - Range: a cell is in range when the Euclidean distance between the centres of the robot's
 ///   cell and the target cell is <= range_m / resolution_m (cells). The boundary is included.
 /// - Field of view: with fov_deg < 360 the direction to the target cell centre must lie within
@@ -29,6 +31,38 @@
 ///   Occupied cells that are visible are themselves observed.
 /// - Noise: with miss_probability p > 0 every visible, still unknown cell stays unknown with
 ///   probability p on this scan (drawn from the run's "sensor" stream in a fixed cell order).
+///
+/// Beam model (tested in tests/world/test_beam_lidar.cpp; code in beam_lidar.hpp):
+/// - Beams: n = `beams` rays. Beam i (i = 0..n-1) points at angle heading_rad + theta_i
+///   (radians, clockwise on screen from +x, as heading_angle(); direction (cos, sin) in double
+///   on the grid's (x, y)), with F = fov_deg in radians: for fov_deg < 360,
+///   theta_i = F * (i / (n-1) - 1/2), so beam 0 is at -F/2 and beam n-1 at +F/2 (n = 1:
+///   theta_0 = 0); for fov_deg = 360, theta_i = 2 pi (i - floor(n/2)) / n: evenly spaced,
+///   without repeating beam 0, beam floor(n/2) on the heading.
+/// - Traversal: in cells relative to the robot's cell centre (cell (x, y) spans
+///   [x - 1/2, x + 1/2] x [y - 1/2, y + 1/2]), a beam starts at (0, 0) in the robot's own cell
+///   and walks Amanatides-Woo in double arithmetic: it leaves cell (x, y) through its vertical
+///   side at t_x = (|x| + 1/2) / |cos| and through its horizontal side at
+///   t_y = (|y| + 1/2) / |sin| (t: distance along the beam in cells), whichever is smaller.
+///   A ray from a cell centre never runs along a cell boundary. When |t_x - t_y| <= 1e-9 the
+///   beam passes through the corner: it touches the two cells beside the corner only at that
+///   point and is blocked there only when both are occupied (the grid model's corner rule);
+///   then both are entered (first the one across the vertical side) and the beam ends.
+///   Otherwise it moves on to the diagonal cell. Outside the map counts as occupied: a beam
+///   ends at the map's edge (cells off the map are never revealed).
+/// - Obstacles: the first occupied cell a beam enters is entered (revealed) and ends the beam.
+///   The robot's own cell is entered by every beam and never blocks.
+/// - Range: a beam is range_m / resolution_m cells long (the grid model's slack): it ends
+///   before a boundary it would cross at t beyond that. Of the cells it enters, those in range
+///   by the grid model's rule (centre to centre, inclusive) are seen: both models see inside
+///   the same disc. Field of view: only through the beams' directions.
+/// - Scan order: scan() reveals in beam order (0..n-1) and, along each beam, in the order the
+///   beam enters cells; a cell seen by several beams counts at its first visit.
+/// - Noise: with p > 0 each visited, still unknown cell other than the robot's is missed with
+///   probability p on this scan: one draw from the "sensor" stream per such cell, at its first
+///   visit, in scan order; a missed cell is not drawn again on this scan (it still stops a
+///   beam if it is occupied).
+/// - At long range, cells between two beams are not seen: fewer cells than the grid model.
 
 #include <cstdint>
 #include <memory>
@@ -38,42 +72,55 @@
 
 #include "core/params.hpp"
 #include "core/random.hpp"
+#include "world/beam_lidar.hpp"
 #include "world/grid.hpp"
 #include "world/known_map.hpp"
+#include "world/scan_counts.hpp"
 #include "world/world_map.hpp"
 
 namespace fsweep {
 inline namespace world {
 
+/// The physical model of a Sensor (rules in the file comment above).
+enum class SensorModel {
+  Grid,   ///< "grid": every cell in range and in line of sight (exact shadowcasting)
+  Beams,  ///< "beams": a beam lidar, `beams` rays over the field of view
+};
+
 struct SensorParams {
-  /// Sensing radius (metres), > 0.
+  /// Sensing radius (metres), > 0; for "beams" the beams' length.
   double range_m = 10.0;
-  /// Field of view (degrees), in (0, 360]; 360 = omnidirectional.
+  /// Field of view (degrees), in (0, 360]; 360 = omnidirectional. For "beams" the angle the
+  /// beams are spread over, centred on the heading.
   double fov_deg = 360.0;
   /// Probability that a visible unknown cell is missed on one scan, in [0, 1).
   double miss_probability = 0.0;
+  /// The physical model.
+  SensorModel model = SensorModel::Grid;
+  /// Number of beams, in [1, kMaxBeams]; used only by SensorModel::Beams.
+  int beams = 360;
+  friend bool operator==(const SensorParams&, const SensorParams&) = default;
 };
 
-/// The declared parameters (core/params.hpp): range_m, fov_deg, miss_probability.
+/// Most beams a sensor may have (declared upper bound of `beams`).
+inline constexpr int kMaxBeams = 100000;
+
+/// The declared parameters (core/params.hpp): range_m, fov_deg, miss_probability, model, beams.
 [[nodiscard]] const ParamDecl<SensorParams>& sensor_params();
 /// sensor_params().read(j, where): every problem at its JSON path, as one ConfigError.
 [[nodiscard]] SensorParams sensor_params_from_json(const nlohmann::json& j, const std::string& where);
+/// sensor_params().write(p) without `model` and `beams` while they hold their defaults, so that
+/// the recorded JSON (run keys, runs.csv columns) of a grid sensor is what it was before the
+/// beam model existed.
 void to_json(nlohmann::json& j, const SensorParams& p);
 
-/// Cells a scan would see, by their state on the known map (see Sensor::gain).
-struct ScanCounts {
-  /// Visible cells that are still unknown: the cells the scan could reveal.
-  int unknown = 0;
-  /// Visible cells that are already known (free or occupied), the robot's own cell included.
-  int known = 0;
-  friend bool operator==(const ScanCounts&, const ScanCounts&) = default;
-};
-
-/// A sensor for one resolution. Precomputes the offsets in range in offset-table order (O(r^2)
-/// memory for a range of r cells, at most 2000 cells); a scan sweeps the eight octants around
-/// the robot by exact shadowcasting, so its cost follows the cells that can be seen. Copyable
-/// value type: copies share the immutable tables and each has its own result buffers (so one
-/// instance must not scan from two threads at once, but copies may).
+/// A sensor for one resolution, of either model. Grid: precomputes the offsets in range in
+/// offset-table order (O(r^2) memory for a range of r cells, at most 2000 cells); a scan sweeps
+/// the eight octants around the robot by exact shadowcasting, so its cost follows the cells
+/// that can be seen. Beams: set-up O(beams), a scan O(beams x r) (BeamLidar). Copyable value
+/// type: copies share the immutable tables and each has its own result buffers (so one
+/// instance must not scan from two threads at once, nor, with the beam model, call gain(); but
+/// copies may).
 class Sensor {
  public:
   /// Largest supported range (cells): the tables grow with its square (about 115 MB at 2000
@@ -85,8 +132,9 @@ class Sensor {
 
   /// Scans from `at` facing `heading_rad` (radians, clockwise on screen from +x, as
   /// heading_angle()). Reveals visible unknown cells of `truth` into `known` and returns the
-  /// indices of the cells revealed by this scan, in increasing offset-table order. The span
-  /// stays valid until the next call. `rng` is used only when miss_probability > 0.
+  /// indices of the cells revealed by this scan: grid model in increasing offset-table order,
+  /// beam model in scan order (beam by beam, along each beam). The span stays valid until the
+  /// next call. `rng` is used only when miss_probability > 0.
   std::span<const int> scan(const WorldMap& truth, KnownMap& known, Cell at, double heading_rad, Rng& rng);
 
   /// What a scan from `at` facing `heading_rad` would see on the robot's own map `known`, for
@@ -94,14 +142,20 @@ class Sensor {
   /// ray rules as scan(), with known occupied cells as the only obstacles (unknown cells are
   /// transparent). Known free and unknown targets need their centre ray clear; known occupied
   /// targets their centre ray or a face ray (an unknown target is not assumed to be a wall).
-  /// Noise is ignored. Cells off the map are not counted. `at` off the map: both counts 0.
-  /// Uses the same sweep as scan(); does not change anything.
+  /// Beam model: the same beams as scan(), stopped by known occupied cells (which are counted)
+  /// and the map's edge; each cell once. Noise is ignored. Cells off the map are not counted.
+  /// `at` off the map: both counts 0. Uses the same walk as scan(); does not change the maps.
   [[nodiscard]] ScanCounts gain(const KnownMap& known, Cell at, double heading_rad) const;
 
-  /// True when `target` is visible from `at` on `truth` under the range and ray rules (ignores
-  /// field of view and noise). Walks the rays directly, independently of the sweep. For tests
-  /// and for information-gain estimates.
-  [[nodiscard]] bool visible(const WorldMap& truth, Cell at, Cell target) const;
+  /// True when `target` is visible from `at` on `truth`, noise ignored. Grid model: the range
+  /// and ray rules (field of view and heading ignored), walking the rays directly,
+  /// independently of the sweep. Beam model: a scan from `at` facing `heading_rad` would
+  /// reveal it (beams turn with the heading). For tests and for information-gain estimates.
+  [[nodiscard]] bool visible(const WorldMap& truth, Cell at, Cell target, double heading_rad) const;
+  /// visible() facing heading 0 (east): the grid model's rule, which ignores the heading.
+  [[nodiscard]] bool visible(const WorldMap& truth, Cell at, Cell target) const {
+    return visible(truth, at, target, 0.0);
+  }
 
   [[nodiscard]] const SensorParams& params() const { return params_; }
   /// Sensing radius in cells.
@@ -125,7 +179,8 @@ class Sensor {
 
   SensorParams params_;
   double range_cells_ = 0.0;
-  std::shared_ptr<const Tables> tables_;  // null for a default-constructed sensor
+  std::shared_ptr<const Tables> tables_;  // null for a default-constructed sensor and for beams
+  BeamLidar beams_;                       // the beam model; empty for the grid model
   std::vector<int> revealed_;
   /// Scratch of scan(): one bit per offset in range, by rank; all zero between scans.
   std::vector<std::uint64_t> seen_bits_;

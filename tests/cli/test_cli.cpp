@@ -23,6 +23,14 @@ std::string temp_dir(const std::string& name) {
   return dir.string();
 }
 
+/// The first line of a text file ("" when it cannot be read).
+std::string first_line(const std::string& path) {
+  std::ifstream f(path);
+  std::string line;
+  std::getline(f, line);
+  return line;
+}
+
 TEST(Cli, SimWritesCsvProgressAndPng) {
   const std::string out = temp_dir("sim");
   const Outcome r = fsweep(
@@ -34,9 +42,7 @@ TEST(Cli, SimWritesCsvProgressAndPng) {
   for (const char* f : {"run.csv", "progress.csv", "trajectory.png"}) {
     EXPECT_TRUE(std::filesystem::exists(out + "/" + f)) << f;
   }
-  std::ifstream csv(out + "/run.csv");
-  std::string header;
-  std::getline(csv, header);
+  const std::string header = first_line(out + "/run.csv");
   for (const char* col : {"map", "strategy.w1", "robot.sensor.range_m", "robot.battery", "seed", "end_reason",
                           "distance_m", "coverage", "recharges"}) {
     EXPECT_NE(header.find(col), std::string::npos) << col;
@@ -81,6 +87,31 @@ TEST(Cli, StartInsideObstacleNamesTheCell) {
   const Outcome r = fsweep("sim --map \"free:w=10,h=10,start=0;0\" --out " + temp_dir("start"));
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.output.find("(0, 0)"), std::string::npos) << r.output;
+}
+
+TEST(Cli, UnknownSensorModelIsExit2ListingTheModels) {
+  const Outcome r = fsweep("sim --map free:w=10,h=10 --robot sensor.model=foo --out " + temp_dir("model"));
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.output.find("sensor.model"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("\"grid\""), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("\"beams\""), std::string::npos) << r.output;
+  const Outcome zero = fsweep("sim --map free:w=10,h=10 --robot sensor.beams=0 --out " + temp_dir("beams"));
+  EXPECT_EQ(zero.code, 2);
+  EXPECT_NE(zero.output.find("sensor.beams"), std::string::npos) << zero.output;
+  EXPECT_NE(zero.output.find("[1, 100000]"), std::string::npos) << zero.output;
+}
+
+TEST(Cli, SimWithABeamLidarRecordsItsKeys) {
+  const std::string out = temp_dir("beam_sim");
+  const Outcome r = fsweep(
+      "sim --map rooms:w=40,h=30,door=3,seed=1 --robot sensor.range_m=8 --robot sensor.model=beams "
+      "--robot sensor.beams=181 --robot sensor.fov_deg=180 --out " +
+      out);
+  ASSERT_EQ(r.code, 0) << r.output;
+  const std::string header = first_line(out + "/run.csv");
+  EXPECT_NE(header.find("robot.sensor.model"), std::string::npos) << header;
+  EXPECT_NE(header.find("robot.sensor.beams"), std::string::npos) << header;
+  std::filesystem::remove_all(out);
 }
 
 TEST(Cli, PlanScenarioReportsZeroMismatches) {

@@ -66,12 +66,15 @@ TEST(CliDescribe, RobotAndSimSettingsListTheirParametersWithNestedSensorFlattene
   const auto j = nlohmann::json::parse(robot.output);
   std::vector<std::string> names;
   for (const auto& p : j["params"]) names.push_back(p["name"].get<std::string>());
-  EXPECT_EQ(names,
-            (std::vector<std::string>{"sensor.range_m", "sensor.fov_deg", "sensor.miss_probability", "energy",
-                                      "battery", "dock", "start_heading", "allow_corner_cutting"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"sensor.range_m", "sensor.fov_deg", "sensor.miss_probability",
+                                             "sensor.model", "sensor.beams", "energy", "battery", "dock",
+                                             "start_heading", "allow_corner_cutting"}));
   EXPECT_EQ(j["params"][0]["allowed"], "a number > 0");
   EXPECT_EQ(j["params"][0]["unit"], "m");
-  EXPECT_EQ(j["params"][6]["allowed"], "an integer in [0, 7]");
+  EXPECT_EQ(j["params"][3]["allowed"], "one of \"grid\", \"beams\"");
+  EXPECT_EQ(j["params"][3]["default"], "grid");
+  EXPECT_EQ(j["params"][4]["allowed"], "an integer in [1, 100000]");
+  EXPECT_EQ(j["params"][8]["allowed"], "an integer in [0, 7]");
   const auto sim = run_fsweep("describe sim");
   ASSERT_EQ(sim.code, 0) << sim.output;
   for (const char* p :

@@ -258,7 +258,7 @@ TEST(TargetSeekingGradient, WeightsAndObjectiveInACorridorByHand) {
   sp.range_m = 2.0;
   const Sensor sensor(sp, 1.0);
   const WorldMap view = known_as_world(s.known);
-  EXPECT_DOUBLE_EQ(exploration_objective(view, sensor, Cell{4, 1}, field.weight),
+  EXPECT_DOUBLE_EQ(exploration_objective(view, sensor, Cell{4, 1}, 0.0, field.weight),
                    0.5 * (1.0 / 6 + 1.0 / 5 + 1.0 / 4 + 1.0 / 3 + 1.0 / 2));
   // Only the step east brings the robot nearer to the frontier.
   EXPECT_EQ(gradient_step(s.known, sensor, Cell{4, 1}, field), (Cell{5, 1}));
@@ -284,8 +284,8 @@ TEST(TargetSeekingGradient, StepsAwayFromTheWallAmongProgressingMoves) {
   const WorldMap view = known_as_world(s.known);
   // East (3,1) and south-east (3,2) both bring the robot one cell nearer to the frontier
   // column x = 7; south-east sees row 4 as well instead of the wall row 0.
-  const double east = exploration_objective(view, sensor, Cell{3, 1}, field.weight);
-  const double south_east = exploration_objective(view, sensor, Cell{3, 2}, field.weight);
+  const double east = exploration_objective(view, sensor, Cell{3, 1}, heading_angle(0), field.weight);
+  const double south_east = exploration_objective(view, sensor, Cell{3, 2}, heading_angle(1), field.weight);
   EXPECT_GT(south_east, east);
   EXPECT_EQ(gradient_step(s.known, sensor, Cell{2, 1}, field), (Cell{3, 2}));
   p.motion = TargetMotion::Gradient;

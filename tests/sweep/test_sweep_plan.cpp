@@ -226,6 +226,8 @@ TEST(SweepPlan, RunKeyChangesWithEverySingleField) {
   vary("/planners", json{"dijkstra"});
   vary("/robot/battery", 401);
   vary("/robot/sensor", json{{"range_m", 11}});
+  vary("/robot/sensor", json{{"model", "beams"}});
+  vary("/robot/sensor", json{{"beams", 90}});
   vary("/robot/dock", json{2, 2});
   vary("/sim", json{{"stuck_decisions", 50}});
   vary("/seed", 1);
@@ -251,7 +253,8 @@ TEST(SweepPlan, RunKeyIsTheSameForTheSameConfigurationInAnySweep) {
       json::parse(R"(["rooms:w=30,h=20,seed=1", {"generator": "free", "w": 20, "h": 20, "label": "f"}])");
   other["strategies"] =
       json::parse(R"([{"name": "energy_aware", "label": "ea", "params": {"w1": [5, 10.0]}}])");
-  other["robot"] = json{{"dock", {start.x, start.y}}};  // the default dock, written out
+  // The default dock and the default sensor model, written out.
+  other["robot"] = json{{"dock", {start.x, start.y}}, {"sensor", {{"model", "grid"}, {"beams", 360}}}};
   const SweepPlan o = SweepPlan::from_json(other, "o.json");
   ASSERT_EQ(o.run_count(), 4U);
   EXPECT_EQ(o.run_key(3), key);  // map 1, w1 = 10.0: defaults resolved, labels ignored

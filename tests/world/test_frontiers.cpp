@@ -425,6 +425,21 @@ std::vector<WorldMap> exploration_maps() {
   return maps;
 }
 
+/// Sensors the explorations below run with: full circle, half circle, noisy, and a narrow
+/// short one.
+std::vector<SensorParams> exploration_sensors() {
+  std::vector<SensorParams> sensors(4);
+  sensors[0].range_m = 4.0;
+  sensors[1].range_m = 6.0;
+  sensors[1].fov_deg = 180.0;
+  sensors[2].range_m = 5.0;
+  sensors[2].miss_probability = 0.3;
+  sensors[3].range_m = 1.5;  // >= sqrt(2) cells: a frontier's diagonal unknown is in range
+  sensors[3].fov_deg = 90.0;
+  sensors[3].miss_probability = 0.1;
+  return sensors;
+}
+
 /// Clusters by the rule in frontiers.hpp, written plainly over the whole map.
 std::vector<FrontierCluster> reference_clusters(const KnownMap& known, double max_length_m, bool cut,
                                                 const std::vector<std::uint8_t>& excluded) {
@@ -572,6 +587,71 @@ TEST(Frontiers, ClustersMatchReferenceDuringExplorations) {
   }
 }
 
+TEST(Frontiers, TrackedClustersMatchFromScratch) {
+  // FrontierClusters rebuilds only the clusters holding a changed cell: after any number of
+  // scans and exclusion changes (both ways) it must equal the reference, for every setting.
+  std::uint64_t seed = 300;
+  int checks = 0;
+  for (const SensorParams& params : exploration_sensors()) {
+    for (const WorldMap& map : exploration_maps()) {
+      SCOPED_TRACE("map " + std::to_string(map.width()) + "x" + std::to_string(map.height()) + " range " +
+                   std::to_string(params.range_m));
+      Sensor sensor(params, map.resolution_m);
+      KnownMap known(map.width(), map.height(), map.resolution_m);
+      FrontierMap frontiers(known);
+      struct Tracked {
+        bool cut;
+        double length;
+        FrontierClusters clusters;
+      };
+      std::vector<Tracked> tracked;
+      for (const bool cut : {false, true}) {
+        for (const double length : {0.0, 2.0, 7.5})
+          tracked.push_back({cut, length, FrontierClusters(known, length, cut)});
+      }
+      std::vector<std::uint8_t> excluded(static_cast<std::size_t>(known.size()), 0);
+      Rng rng = make_rng(++seed, "sensor");
+      Rng choices = make_rng(seed, "test-choices");
+      Cell at = map.start;
+      for (int step = 0; step < 400; ++step) {
+        const auto revealed = sensor.scan(map, known, at, 0.5 * step, rng);
+        frontiers.update(known, revealed);
+        for (auto& t : tracked) t.clusters.revealed(revealed);
+        // Exclude some frontier cells, and let some excluded cells back in.
+        for (int k = 0; k < 3 && frontiers.count() > 0; ++k) {
+          const auto cells = frontiers.cells();
+          const int c =
+              cells[static_cast<std::size_t>(uniform01(choices) * static_cast<double>(cells.size()))];
+          if (uniform01(choices) < 0.3) {
+            excluded[static_cast<std::size_t>(c)] ^= 1;
+            for (auto& t : tracked) t.clusters.exclusion_changed(c);
+          }
+        }
+        if (uniform01(choices) < 0.5 || frontiers.count() == 0) {  // some calls see several scans
+          ++checks;
+          for (auto& t : tracked) {
+            const auto& got = t.clusters.clusters(known, frontiers, excluded);
+            const auto want = reference_clusters(known, t.length, t.cut, excluded);
+            ASSERT_EQ(got.size(), want.size())
+                << "step " << step << " cut " << t.cut << " length " << t.length;
+            for (std::size_t k = 0; k < got.size(); ++k) {
+              ASSERT_EQ(got[k].cells, want[k].cells) << "step " << step << " cluster " << k;
+              ASSERT_EQ(got[k].representative, want[k].representative);
+              ASSERT_EQ(got[k].centroid_x, want[k].centroid_x);
+              ASSERT_EQ(got[k].centroid_y, want[k].centroid_y);
+              ASSERT_EQ(got[k].length_m, want[k].length_m);
+            }
+          }
+        }
+        if (frontiers.count() == 0) break;
+        const int target = nearest_frontier(known, frontiers, at);
+        at = known.cell(target < 0 ? frontiers.cells().front() : target);
+      }
+    }
+  }
+  EXPECT_GT(checks, 300);
+}
+
 TEST(Frontiers, ManyUpdatesWithoutQueriesStayConsistent) {
   // cells() and clusters() sort and prune the frontier list; between them update() alone must
   // keep it bounded and correct (here: a whole exploration without a query until the end).
@@ -591,16 +671,20 @@ TEST(Frontiers, ManyUpdatesWithoutQueriesStayConsistent) {
   EXPECT_EQ(copy.cells(), frontiers.cells());
 }
 
+TEST(Frontiers, IncrementalMatchesFromScratchWithABeamLidar) {
+  // A beam lidar reveals cells in beam order and leaves cells between beams unknown.
+  SensorParams params;
+  params.model = SensorModel::Beams;
+  params.beams = 60;
+  params.fov_deg = 270.0;
+  params.range_m = 6.0;
+  params.miss_probability = 0.2;
+  std::uint64_t seed = 100;
+  for (const WorldMap& map : exploration_maps()) explore_and_check(map, params, ++seed);
+}
+
 TEST(Frontiers, IncrementalMatchesFromScratch) {
-  std::vector<SensorParams> sensors(4);
-  sensors[0].range_m = 4.0;
-  sensors[1].range_m = 6.0;
-  sensors[1].fov_deg = 180.0;
-  sensors[2].range_m = 5.0;
-  sensors[2].miss_probability = 0.3;
-  sensors[3].range_m = 1.5;  // >= sqrt(2) cells: a frontier's diagonal unknown is in range
-  sensors[3].fov_deg = 90.0;
-  sensors[3].miss_probability = 0.1;
+  const std::vector<SensorParams> sensors = exploration_sensors();
   std::uint64_t seed = 0;
   for (const WorldMap& map : exploration_maps()) {
     for (const SensorParams& params : sensors) {

@@ -9,51 +9,23 @@
 
 #include "core/config_error.hpp"
 #include "world/ascii_world.hpp"
+#include "world/scan_fixture.hpp"
 #include "world/sensor.hpp"
 
 namespace fsweep {
 namespace test_sensor {  // not anonymous: unity builds put it beside other test files' helpers
 
 using test::ascii_world;
-
-WorldMap open_world(int width, int height) {
-  return ascii_world(std::vector<std::string>(static_cast<std::size_t>(height),
-                                              std::string(static_cast<std::size_t>(width), '.')));
-}
-
-/// Obstacles with probability p (seeded), start cell free.
-WorldMap random_world(int width, int height, double p, std::uint64_t seed) {
-  WorldMap map = open_world(width, height);
-  Rng rng = make_rng(seed, "test-map");
-  for (int i = 0; i < map.occupied.size(); ++i) map.occupied[i] = uniform01(rng) < p ? 1 : 0;
-  map.start = Cell{width / 2, height / 2};
-  map.occupied.at(map.start) = 0;
-  return map;
-}
-
-struct ScanResult {
-  KnownMap known;
-  std::vector<int> revealed;
-};
-
-/// One scan from a fresh KnownMap.
-ScanResult scan_fresh(const WorldMap& map, const SensorParams& params, Cell at, double heading_rad = 0.0,
-                      std::uint64_t seed = 1) {
-  Sensor sensor(params, map.resolution_m);
-  ScanResult r{KnownMap(map.width(), map.height(), map.resolution_m), {}};
-  Rng rng = make_rng(seed, "sensor");
-  const auto revealed = sensor.scan(map, r.known, at, heading_rad, rng);
-  r.revealed.assign(revealed.begin(), revealed.end());
-  return r;
-}
+using test::known;
+using test::open_world;
+using test::random_world;
+using test::scan_fresh;
 
 SensorParams range(double range_m) {
   SensorParams p;
   p.range_m = range_m;
   return p;
 }
-
-bool known(const ScanResult& r, Cell c) { return r.known.state(c) != CellState::Unknown; }
 
 TEST(Sensor, RangeBoundaryIsInclusive) {
   const WorldMap map = open_world(13, 13);
@@ -536,14 +508,7 @@ TEST(SensorParams, UnknownKeyIsConfigError) {
 }
 
 /// The message of the ConfigError thrown for `j`, or "" when none is thrown.
-std::string error_of(const nlohmann::json& j) {
-  try {
-    (void)sensor_params_from_json(j, "/runs/0/sensor");
-  } catch (const ConfigError& e) {
-    return e.what();
-  }
-  return "";
-}
+std::string error_of(const nlohmann::json& j) { return test::sensor_params_error(j, "/runs/0/sensor"); }
 
 TEST(SensorParams, InvalidValuesNamePathValueAndRange) {
   const std::string range_error = error_of({{"range_m", -1.5}});
