@@ -19,8 +19,8 @@
 ///   the size at which energy-aware decisions used to cost 95x closest frontier's (issue 14).
 /// - `BM_RappaportFree/r:<m>/<strategy>`: Rappaport 2016's free space (10 m cells, sensor 30 m,
 ///   `distance` energy, battery range r, dock at the centre) on an unclipped square, half-width
-///   r/2 + r_s + 1 cell, as sweeps/paper/ sizes it; closest_frontier and energy_aware
-///   (10,0,9,20).
+///   r/2 + r_s + 1 cell, as sweeps/paper/ sizes it, at r = 1800, 3600 and the paper's 9000 m;
+///   closest_frontier and energy_aware (10,0,9,20).
 
 #include <benchmark/benchmark.h>
 
@@ -237,7 +237,7 @@ const bool kLargeRunsRegistered = [] {
                                  })
         ->Unit(benchmark::kMillisecond)
         ->Iterations(1);
-    for (const double range_m : {1800.0, 3600.0}) {
+    for (const double range_m : {1800.0, 3600.0, 9000.0}) {
       const std::string name =
           "BM_RappaportFree/r:" + std::to_string(static_cast<int>(range_m)) + "/" + strategy.label;
       benchmark::RegisterBenchmark(name.c_str(),
