@@ -289,8 +289,9 @@ const std::vector<FrontierCluster>& FrontierClusters::clusters(const KnownMap& k
         "FrontierClusters::clusters: the known map's size differs from the clusters'");
   }
   if (!excluded.empty() && excluded.size() != owner_.size()) {
-    throw std::invalid_argument("FrontierMap::clusters: excluded has " + std::to_string(excluded.size()) +
-                                " flags for " + std::to_string(owner_.size()) + " cells");
+    throw std::invalid_argument("FrontierClusters::clusters: excluded has " +
+                                std::to_string(excluded.size()) + " flags for " +
+                                std::to_string(owner_.size()) + " cells");
   }
   const int w = width_;
   const int h = height_;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <deque>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -650,6 +651,16 @@ TEST(Frontiers, TrackedClustersMatchFromScratch) {
     }
   }
   EXPECT_GT(checks, 300);
+}
+
+TEST(Frontiers, TrackedClustersRefuseAMapOfAnotherSize) {
+  const KnownMap known = ascii_known({"..?", "..."});
+  const KnownMap other = ascii_known({"..?", "...", "..."});
+  FrontierClusters clusters(known, 0.0, false);
+  EXPECT_THROW((void)clusters.clusters(other, FrontierMap(other), {}), std::invalid_argument);
+  const std::vector<std::uint8_t> wrong(3, 0);
+  EXPECT_THROW((void)clusters.clusters(known, FrontierMap(known), wrong), std::invalid_argument);
+  EXPECT_EQ(clusters.clusters(known, FrontierMap(known), {}).size(), 1U);
 }
 
 TEST(Frontiers, ManyUpdatesWithoutQueriesStayConsistent) {
