@@ -2,15 +2,35 @@
 /// `fsweep`: the frontier-sweep command line. Errors in the configuration print one message
 /// naming the file, JSON path or map cell and exit with code 2.
 
+#include <malloc.h>
+
 #include <iostream>
 #include <map>
 
 #include "cli/commands.hpp"
 #include "core/config_error.hpp"
 
+namespace {
+
+/// The allocator policy of a batch engine. A sweep runs thousands of simulations, each of which
+/// allocates and frees map-sized arrays; glibc's default hands the top of the heap back to the
+/// system once 128 KB of it are free, and the next run faults the same pages in again
+/// (measured: 1-4 thousand page faults instead of 700 on 1/20 of the weight search, 5-8% of its
+/// time). Keep up to 512 MB of freed heap for the next run instead. Arrays of 128 KB and more
+/// still get their own mappings, returned when freed, so a run's peak stays what it needs.
+void keep_freed_memory() {
+  constexpr int kTrimThreshold = 512 << 20;
+  constexpr int kMmapThreshold = 128 << 10;  // glibc's default, now fixed (no longer adaptive)
+  (void)mallopt(M_TRIM_THRESHOLD, kTrimThreshold);
+  (void)mallopt(M_MMAP_THRESHOLD, kMmapThreshold);
+}
+
+}  // namespace
+
 // A function-try-block: whatever escapes the setup or a command ends in the message and exit code
 // 2 too, not in std::terminate.
 int main(int argc, char** argv) try {
+  keep_freed_memory();
   CLI::App app{"frontier-sweep: experiments on 2D frontier exploration strategies and planners"};
   app.require_subcommand(1);
   std::map<std::string, fsweep::cli::Command> commands;

@@ -1,8 +1,9 @@
 #pragma once
 /// @file distance_field.hpp
 /// One-to-many shortest path lengths over known free space (8-connected, octile costs),
-/// bounded by a maximum distance, with early stop at targets. Search arrays are reused
-/// between queries (reset by generation stamp, not by clearing). Moves and corner cutting follow
+/// bounded by a maximum distance, with early stop at targets, and single lengths by A* in the same
+/// storage. Search arrays are reused between queries (reset by generation stamp, not by
+/// clearing). Moves and corner cutting follow
 /// src/search/octile_grid.hpp; the search is the generic core of src/search/grid_search.hpp with a
 /// zero heuristic.
 
@@ -11,6 +12,7 @@
 #include <limits>
 #include <optional>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "search/grid_search.hpp"
@@ -59,6 +61,8 @@ struct DistanceQuery {
   StopCondition stop{};
 };
 
+/// A field of path lengths from one source, kept in reusable search storage (12 bytes a cell:
+/// exact costs and stamps, no parents; each compute() replaces the last one's field).
 class DistanceField {
  public:
   DistanceField() = default;
@@ -66,50 +70,37 @@ class DistanceField {
   /// Dijkstra from `source` over known-free cells (a non-free source gives an empty field).
   void compute(const KnownMap& known, Cell source, const DistanceQuery& query);
 
+  /// One path length by A* (octile heuristic, OctileGoalEnvironment of octile_grid.hpp) in this
+  /// field's storage, for a caller that needs the distance to a few cells rather than a field.
+  /// Costs are exact, so the length equals compute()'s for the same cell bit for bit. Under
+  /// `query`'s bound and corner rule (its target lists and watcher are not used): +infinity when
+  /// `goal` is unreachable or beyond max_distance_m as distance_m() reads it; nullopt when
+  /// query.stop ended the search first. Afterwards the field holds the cells the A* settled
+  /// (exact lengths, as a consistent heuristic settles each cell at its final cost).
+  [[nodiscard]] std::optional<double> compute_to(const KnownMap& known, Cell source, Cell goal,
+                                                 const DistanceQuery& query);
+
   /// Path length (metres) from the source to cell `index`, or +infinity if not settled.
   [[nodiscard]] double distance_m(int index) const;
   [[nodiscard]] bool reached(int index) const {
     return distance_m(index) < std::numeric_limits<double>::infinity();
   }
-  /// The shortest path source..index as cells (empty if not reached).
-  [[nodiscard]] std::vector<Cell> path_to(int index) const;
-  /// Cells settled by the last compute().
+  /// Cells settled by the last compute() or compute_to().
   [[nodiscard]] long expansions() const { return expansions_; }
   /// True if DistanceQuery::stop ended the last compute() early.
   [[nodiscard]] bool stopped() const { return stopped_; }
   [[nodiscard]] Cell source() const { return source_; }
 
  private:
-  OctileSearch search_;                      // exact costs in cells; scaled to metres on read
-  std::vector<std::uint32_t> target_stamp_;  // == target_generation_: cell is a stop target
-  /// With a watcher, per target cell its first position in the target list, and per position
-  /// the next position of the same cell (-1: none).
-  std::vector<int> first_position_;
-  std::vector<int> next_position_;
-  std::uint32_t target_generation_ = 0;
-  int width_ = 0;
+  OctileDistanceSearch search_;  // exact costs in cells; scaled to metres on read
+  /// Per cell: a stop target of the running compute() (all false between calls).
+  std::vector<bool> is_target_;
+  /// With a watcher: (cell, position in the target list) of every listed cell, sorted.
+  std::vector<std::pair<int, int>> target_positions_;
   double resolution_m_ = 1.0;
   long expansions_ = 0;
   bool stopped_ = false;
   Cell source_{};
-};
-
-/// One path length over known free space by A* (octile heuristic, OctileGoalEnvironment of
-/// octile_grid.hpp), for a caller that needs the distance to a few cells rather than a field.
-/// Costs are exact, so the length equals DistanceField's for the same cell bit for bit.
-class PointDistance {
- public:
-  /// Path length (metres) from `source` to `goal` under `query`'s bound and corner rule (its
-  /// target lists and watcher are not used): +infinity when `goal` is unreachable or beyond
-  /// max_distance_m as DistanceField reads it; nullopt when query.stop ended the search first.
-  [[nodiscard]] std::optional<double> compute(const KnownMap& known, Cell source, Cell goal,
-                                              const DistanceQuery& query);
-  /// Cells settled by the last compute().
-  [[nodiscard]] long expansions() const { return expansions_; }
-
- private:
-  OctileSearch search_;
-  long expansions_ = 0;
 };
 
 }  // namespace search

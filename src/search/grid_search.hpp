@@ -16,17 +16,19 @@
 /// incremental_distance_field.hpp, the latter by continuing a run after costs dropped) and the
 /// geodesic distances of the strategies run it with a zero heuristic.
 ///
-/// Memory: the per-state data (16 bytes: cost, parent, run and pass stamps), the open lists and
-/// the A* list's positions (4 bytes a state, indexed_heap.hpp) live in a BestFirstSearch object
-/// and are reused by every run(). A run takes fresh stamps instead of clearing the data, so a query costs
-/// time proportional to the states it touches, and nothing is allocated per expansion once the open list has
-/// grown to its working size.
+/// Memory: the per-state data (16 bytes: cost, parent, run and pass stamps; 12 bytes for exact
+/// octile costs without parents, Parents::Dropped, the distance searches that read lengths only),
+/// the open lists and the A* list's positions (4 bytes a state, indexed_heap.hpp) live in a
+/// BestFirstSearch object and are reused by every run(). A run takes fresh stamps instead of clearing the
+/// data, so a query costs time proportional to the states it touches, and nothing is allocated per expansion
+/// once the open list has grown to its working size.
 
 #include <algorithm>
 #include <concepts>
 #include <cstdint>
 #include <limits>
 #include <span>
+#include <type_traits>
 #include <vector>
 
 #include "search/indexed_heap.hpp"
@@ -146,8 +148,12 @@ struct SearchOutcome {
   bool stopped = false;
 };
 
+/// Whether a BestFirstSearchT keeps each state's parent (for paths) or only its cost (for
+/// lengths: 4 bytes a state less).
+enum class Parents : std::uint8_t { Kept, Dropped };
+
 /// Reusable best-first search storage with a generic run(), over costs of type `Cost` (double
-/// or OctileCost; the environments' cost type).
+/// or OctileCost; the environments' cost type), keeping parents or not (`P`).
 ///
 /// Open-list order (deterministic tie-breaking): smaller f = g + h first; on equal f the
 /// larger g first (the deeper state, which on grids with a consistent heuristic reaches the
@@ -157,9 +163,11 @@ struct SearchOutcome {
 /// per open state and re-keys it when a cheaper path is found. The Dijkstra list (a binary heap
 /// of 16-byte entries) takes a duplicate instead and skips stale entries when popped: measured
 /// faster there (fields over many states, which the indexed heap's positions add a cache line to).
-template <typename Cost>
+template <typename Cost, Parents P = Parents::Kept>
 class BestFirstSearchT {
  public:
+  static constexpr bool kKeepsParents = P == Parents::Kept;
+
   /// Runs from `start` until visit() returns Goal or Stop, the open list empties, or a limit
   /// is hit. A `start` outside [0, state_count()) gives an empty run.
   template <SearchEnvironment<Cost> Env>
@@ -192,15 +200,15 @@ class BestFirstSearchT {
     heap_.clear();
     dijkstra_heap_.clear();
   }
-  /// Opens `state` at cost `g`, reached from `parent` (-1: none), if that is below its cost so
-  /// far (between reopen() and resume()). Returns whether it did; a state outside the state
-  /// range is ignored.
+  /// Opens `state` at cost `g`, reached from `parent` (-1: none; not kept with Parents::Dropped),
+  /// if that is below its cost so far (between reopen() and resume()). Returns whether it did; a
+  /// state outside the state range is ignored.
   template <SearchEnvironment<Cost> Env>
   bool lower_cost(const Env& env, int state, Cost g, int parent) {
     if (!in_range(state)) return false;
     Node& node = nodes_[idx(state)];
     if (node.run == run_ && cost_value(node.g) <= cost_value(g)) return false;
-    node = Node{g, parent, run_, 0};
+    node = make_node(g, parent, run_);
     if constexpr (ZeroHeuristicEnvironment<Env>) {
       dijkstra_heap_.push_back(open_item(env, state, g));  // ordered by resume(), all at once
     } else {
@@ -229,9 +237,11 @@ class BestFirstSearchT {
   /// True if `state` was settled (its g is final) in the last run.
   [[nodiscard]] bool settled(int state) const { return in_range(state) && nodes_[idx(state)].pass == pass_; }
   /// Predecessor of a reached state on its best path (-1 for the start or unreached states).
-  [[nodiscard]] int parent(int state) const { return reached(state) ? nodes_[idx(state)].parent : -1; }
+  [[nodiscard]] int parent(int state) const requires(kKeepsParents) {
+    return reached(state) ? nodes_[idx(state)].parent : -1;
+  }
   /// State ids start..state of a reached state, in path order (empty if not reached).
-  [[nodiscard]] std::vector<int> path_to(int state) const {
+  [[nodiscard]] std::vector<int> path_to(int state) const requires(kKeepsParents) {
     std::vector<int> path;
     if (!reached(state)) return path;
     for (int s = state; s >= 0; s = nodes_[idx(s)].parent) path.push_back(s);
@@ -307,8 +317,9 @@ class BestFirstSearchT {
       heap_.push(open_item(env, state, g));
     }
   }
-  /// Per-state search data, together so that a relaxation touches one cache line (16 bytes).
-  struct Node {
+  /// Per-state search data, together so that a relaxation touches one cache line (16 bytes; 12
+  /// without the parent).
+  struct NodeWithParent {
     Cost g;
     int parent;
     /// == run_: reached in this run (g and parent are valid); else stale.
@@ -317,6 +328,22 @@ class BestFirstSearchT {
     /// grow with every pass, so a stale one never matches.
     std::uint16_t pass;
   };
+  /// The same without the parent (Parents::Dropped).
+  struct NodeWithoutParent {
+    Cost g;
+    std::uint16_t run;
+    std::uint16_t pass;
+  };
+  using Node = std::conditional_t<kKeepsParents, NodeWithParent, NodeWithoutParent>;
+  static_assert(kKeepsParents || !std::is_same_v<Cost, OctileCost> || sizeof(Node) == 12);
+  /// A node reached at `g` from `parent` in run `run`, not settled.
+  static Node make_node(Cost g, [[maybe_unused]] int parent, std::uint16_t run) {
+    if constexpr (kKeepsParents) {
+      return Node{g, parent, run, 0};
+    } else {
+      return Node{g, run, 0};
+    }
+  }
   static std::size_t idx(int state) { return static_cast<std::size_t>(state); }
   [[nodiscard]] bool in_range(int state) const { return state >= 0 && idx(state) < nodes_.size(); }
 
@@ -331,7 +358,7 @@ class BestFirstSearchT {
   void begin_run(int count) {
     const auto n = static_cast<std::size_t>(count);
     if (nodes_.size() != n || run_ == kLastStamp || pass_ == kLastStamp) {
-      nodes_.assign(n, Node{Cost{}, -1, 0, 0});
+      nodes_.assign(n, make_node(Cost{}, -1, 0));
       run_ = 0;
       pass_ = 0;
     }
@@ -355,12 +382,14 @@ class BestFirstSearchT {
 
 /// The search over double costs (planners, geodesic regions).
 using BestFirstSearch = BestFirstSearchT<double>;
-/// The search over exact octile costs (distance fields).
+/// The search over exact octile costs with paths (grid planners).
 using OctileSearch = BestFirstSearchT<OctileCost>;
+/// The search over exact octile costs for lengths only (distance fields).
+using OctileDistanceSearch = BestFirstSearchT<OctileCost, Parents::Dropped>;
 
-template <typename Cost>
+template <typename Cost, Parents P>
 template <SearchEnvironment<Cost> Env>
-SearchOutcome BestFirstSearchT<Cost>::expand(Env& env, const SearchLimits& limits) {
+SearchOutcome BestFirstSearchT<Cost, P>::expand(Env& env, const SearchLimits& limits) {
   SearchOutcome outcome;
   // Locals, not reads through `limits`, in the hot loop.
   const StopCondition stop = limits.stop;
@@ -408,7 +437,7 @@ SearchOutcome BestFirstSearchT<Cost>::expand(Env& env, const SearchLimits& limit
       if (g_next_value > g_limit) return;
       const bool reached = n.run == run;
       if (reached && cost_value(n.g) <= g_next_value) return;
-      n = Node{g_next, top.state, run, 0};
+      n = make_node(g_next, top.state, run);
       open(env, next, g_next, reached);
     });
   }

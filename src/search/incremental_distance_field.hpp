@@ -36,7 +36,7 @@ class IncrementalDistanceField {
   [[nodiscard]] long expansions() const { return expansions_; }
 
  private:
-  OctileSearch search_;  // its exact costs (cells) are the field; +infinity where unreachable
+  OctileDistanceSearch search_;  // its exact costs (cells) are the field; +infinity where unreachable
   double resolution_m_ = 1.0;
   bool allow_corner_cutting_ = false;
   long expansions_ = 0;

@@ -42,10 +42,10 @@ GridDistanceOracle Belief::distance_oracle(const RunSetup& setup, Cell robot, Ce
   return GridDistanceOracle(known_, robot, dock, setup.allow_corner_cutting(), &dock_field_, scratch);
 }
 
-bool Belief::frontier_reachable_from(Cell from, const RunSetup& setup) {
-  // When the dock field reaches `from`, `from` reaches exactly what the dock reaches (moves are
-  // symmetric, and the field follows the same corner rule): no search needed.
-  if (dock_field_.ready()) {
+bool Belief::frontier_reachable_from(Cell from, Cell dock, const RunSetup& setup, DistanceScratch& scratch) {
+  // When the dock field is built and reaches `from`, `from` reaches exactly what the dock
+  // reaches (moves are symmetric, and the field follows the same corner rule): no search needed.
+  if (dock_field_.built()) {
     (void)dock_field_.bring_up_to_date(known_);
     if (std::isfinite(dock_field_.distance_m(known_.index(from)))) {
       for (const int i : frontiers_.cells()) {
@@ -59,15 +59,8 @@ bool Belief::frontier_reachable_from(Cell from, const RunSetup& setup) {
   for (const int i : frontiers_.cells()) {
     if (dropped_[static_cast<std::size_t>(i)] == 0) open.push_back(i);
   }
-  if (open.empty()) return false;
-  DistanceField field;
-  DistanceQuery q;
-  q.allow_corner_cutting = setup.allow_corner_cutting();
-  q.stop_at_first_of = open;
-  field.compute(known_, from, q);
-  bool reachable = false;
-  for (const int i : open) reachable = reachable || field.reached(i);
-  return reachable;
+  // The nearest of them is -1 only when none is reachable.
+  return distance_oracle(setup, from, dock, scratch).nearest_from_robot(open) >= 0;
 }
 
 double Belief::coverage(const RunSetup& setup) const {

@@ -49,8 +49,10 @@ class Belief {
   void drop(Cell goal);
 
   /// True when some frontier cell not dropped is reachable from `from` over known free cells
-  /// (read from the dock field when it reaches `from`, which it brings up to date; else searched).
-  [[nodiscard]] bool frontier_reachable_from(Cell from, const RunSetup& setup);
+  /// (read from the dock field when it is built and reaches `from`, which it brings up to date;
+  /// else searched in `scratch`, as the decisions' searches; `dock` as for distance_oracle()).
+  [[nodiscard]] bool frontier_reachable_from(Cell from, Cell dock, const RunSetup& setup,
+                                             DistanceScratch& scratch);
 
   /// Known reachable free cells / reachable free cells of `setup` (1 when there are none).
   [[nodiscard]] double coverage(const RunSetup& setup) const;

@@ -16,40 +16,40 @@ GridDistanceOracle::GridDistanceOracle(const KnownMap& known, Cell robot, Cell d
       corner_cutting_(allow_corner_cutting),
       dock_field_(dock_field),
       scratch_(scratch) {
-  scratch_.robot_field_.bound_m = -1.0;
-  scratch_.dock_search_.bound_m = -1.0;
+  scratch_.bound_m_ = -1.0;
 }
 
-std::vector<double> GridDistanceOracle::lookup(DistanceScratch::Cached& c, Cell source,
-                                               std::span<const int> cells, double bound_m) {
-  // The search stops once every asked cell is settled, so a cached field answers only the
-  // same cells with a bound at least as large.
-  if (c.bound_m < bound_m || !std::equal(cells.begin(), cells.end(), c.cells.begin(), c.cells.end())) {
+std::vector<double> GridDistanceOracle::lookup(Cell source, std::span<const int> cells, double bound_m) {
+  // The search stops once every asked cell is settled, so the field answers again only the
+  // same cells from the same source with a bound at least as large.
+  DistanceScratch& s = scratch_;
+  if (s.bound_m_ < bound_m || s.source_ != source ||
+      !std::equal(cells.begin(), cells.end(), s.cells_.begin(), s.cells_.end())) {
     DistanceQuery q;
     q.max_distance_m = bound_m;
     q.allow_corner_cutting = corner_cutting_;
     q.stop_when_all_settled = cells;
-    c.field.compute(known_, source, q);
-    c.bound_m = bound_m;
-    c.cells.assign(cells.begin(), cells.end());
-    expansions_ += c.field.expansions();
+    s.field_.compute(known_, source, q);
+    s.source_ = source;
+    s.bound_m_ = bound_m;
+    s.cells_.assign(cells.begin(), cells.end());
+    expansions_ += s.field_.expansions();
   }
   std::vector<double> out;
   out.reserve(cells.size());
   for (const int i : cells) {
-    const double d = c.field.distance_m(i);
+    const double d = s.field_.distance_m(i);
     out.push_back(d <= bound_m ? d : std::numeric_limits<double>::infinity());
   }
   return out;
 }
 
 std::vector<double> GridDistanceOracle::from_robot(std::span<const int> cells, double bound_m) {
-  return lookup(scratch_.robot_field_, robot_, cells, bound_m);
+  return lookup(robot_, cells, bound_m);
 }
 
 std::vector<double> GridDistanceOracle::from_dock(std::span<const int> cells, double bound_m) {
-  if (dock_field_ == nullptr || !dock_field_->ready())
-    return lookup(scratch_.dock_search_, dock_, cells, bound_m);
+  if (dock_field_ == nullptr || !dock_field_->ready()) return lookup(dock_, cells, bound_m);
   expansions_ += dock_field_->bring_up_to_date(known_);
   std::vector<double> out;
   out.reserve(cells.size());
@@ -62,22 +62,21 @@ std::vector<double> GridDistanceOracle::from_dock(std::span<const int> cells, do
 
 int GridDistanceOracle::nearest_from_robot(std::span<const int> cells) {
   if (cells.empty()) return -1;
-  const DistanceField* field = &scratch_.robot_field_.field;
-  const bool cached = scratch_.robot_field_.bound_m == std::numeric_limits<double>::infinity() &&
-                      std::equal(cells.begin(), cells.end(), scratch_.robot_field_.cells.begin(),
-                                 scratch_.robot_field_.cells.end());
-  if (!cached) {
+  DistanceScratch& s = scratch_;
+  const bool held = s.bound_m_ == std::numeric_limits<double>::infinity() && s.source_ == robot_ &&
+                    std::equal(cells.begin(), cells.end(), s.cells_.begin(), s.cells_.end());
+  if (!held) {
     DistanceQuery q;
     q.allow_corner_cutting = corner_cutting_;
     q.stop_at_first_of = cells;
-    scratch_.nearest_.compute(known_, robot_, q);
-    expansions_ += scratch_.nearest_.expansions();
-    field = &scratch_.nearest_;
+    s.field_.compute(known_, robot_, q);
+    s.bound_m_ = -1.0;  // exact for the nearest cells only
+    expansions_ += s.field_.expansions();
   }
   int best = -1;
   double best_d = std::numeric_limits<double>::infinity();
   for (std::size_t k = 0; k < cells.size(); ++k) {
-    const double d = field->distance_m(cells[k]);
+    const double d = s.field_.distance_m(cells[k]);
     if (d < best_d) {  // strict: ties keep the lowest position
       best_d = d;
       best = static_cast<int>(k);
@@ -88,14 +87,15 @@ int GridDistanceOracle::nearest_from_robot(std::span<const int> cells) {
 
 void GridDistanceOracle::watch_from_robot(std::span<const int> cells, double bound_m,
                                           SettleWatcher& watcher) {
-  // Its own field: a watched search may end early, so it must not pass for the cached one.
+  // A watched search may end early, so it must not pass for a settle-all one.
   DistanceQuery q;
   q.max_distance_m = bound_m;
   q.allow_corner_cutting = corner_cutting_;
   q.stop_when_all_settled = cells;
   q.watcher = &watcher;
-  scratch_.watched_.compute(known_, robot_, q);
-  expansions_ += scratch_.watched_.expansions();
+  scratch_.field_.compute(known_, robot_, q);
+  scratch_.bound_m_ = -1.0;
+  expansions_ += scratch_.field_.expansions();
 }
 
 std::optional<double> GridDistanceOracle::probe_from_robot(int cell, double bound_m, long max_expansions) {
@@ -104,8 +104,9 @@ std::optional<double> GridDistanceOracle::probe_from_robot(int cell, double boun
   q.allow_corner_cutting = corner_cutting_;
   q.stop = StopCondition(SearchBudget{std::numeric_limits<double>::infinity(), max_expansions},
                          StopCondition::Clock::time_point{});
-  const std::optional<double> d = scratch_.probe_.compute(known_, robot_, known_.cell(cell), q);
-  expansions_ += scratch_.probe_.expansions();
+  const std::optional<double> d = scratch_.field_.compute_to(known_, robot_, known_.cell(cell), q);
+  scratch_.bound_m_ = -1.0;
+  expansions_ += scratch_.field_.expansions();
   if (!d) return std::nullopt;
   return *d <= bound_m ? *d : std::numeric_limits<double>::infinity();
 }

@@ -26,14 +26,16 @@ void MetricsRecorder::reach_target(std::string detail) {
   }
 }
 
-RunResult MetricsRecorder::result() const {
+RunResult MetricsRecorder::result() const& { return MetricsRecorder(*this).result(); }
+
+RunResult MetricsRecorder::result() && {
   RunResult r;
   r.end = end_;
-  r.end_detail = end_detail_;
+  r.end_detail = std::move(end_detail_);
   r.metrics = metrics_;
-  r.progress = progress_;
-  r.trajectory = trajectory_;
-  r.recharge_steps = recharge_steps_;
+  r.progress = std::move(progress_);
+  r.trajectory = std::move(trajectory_);
+  r.recharge_steps = std::move(recharge_steps_);
   return r;
 }
 

@@ -49,7 +49,9 @@ class MetricsRecorder {
 
   /// The record as a result: end reason and detail, metrics, progress, trajectory, recharges.
   /// The caller adds what depends on the map (areas, coverage, the final map).
-  [[nodiscard]] RunResult result() const;
+  [[nodiscard]] RunResult result() const&;
+  /// The same, moving the trajectory and the progress curve out instead of copying them.
+  [[nodiscard]] RunResult result() &&;
 
  private:
   RunMetrics metrics_;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "planners/registry.hpp"
@@ -296,7 +297,7 @@ void Simulation::arrive(const Decision& decision, const Journey& journey) {
 
 void Simulation::finish() {
   // Complete when no (undropped) frontier cell is reachable from the robot at all.
-  if (!belief_.frontier_reachable_from(robot_.position, *setup_)) {
+  if (!belief_.frontier_reachable_from(robot_.position, robot_.dock, *setup_, scratch_)) {
     recorder_.end(EndReason::Complete);
   } else if (!robot_.battery.unlimited()) {
     recorder_.end(EndReason::RangeLimited);
@@ -306,10 +307,14 @@ void Simulation::finish() {
   }
 }
 
-RunResult Simulation::result() const {
+RunResult Simulation::result() const& { return completed(recorder_.result()); }
+
+RunResult Simulation::result() && { return completed(std::move(recorder_).result()); }
+
+RunResult Simulation::completed(RunResult recorded) const {
   const RunSetup& setup = *setup_;
   const KnownMap& known = belief_.known();
-  RunResult r = recorder_.result();
+  RunResult r = std::move(recorded);
   const double distance_m = r.metrics.distance_m;
   const double cell_area = setup.resolution_m * setup.resolution_m;
   r.metrics.explored_area_m2 = known.free_count() * cell_area;
@@ -336,7 +341,12 @@ RunResult Simulation::run() {
   return result();
 }
 
-RunResult simulate(const RunSpec& spec) { return Simulation(spec).run(); }
+RunResult simulate(const RunSpec& spec) {
+  Simulation sim(spec);
+  while (sim.step()) {
+  }
+  return std::move(sim).result();
+}
 
 }  // namespace sim
 }  // namespace fsweep

@@ -80,7 +80,10 @@ class Simulation {
 
   [[nodiscard]] bool ended() const { return recorder_.ended(); }
   /// The result so far (final once ended()).
-  [[nodiscard]] RunResult result() const;
+  [[nodiscard]] RunResult result() const&;
+  /// The same, moving the trajectory and the progress curve out of a simulation that is done
+  /// (simulate(): a long run's trajectory is not copied at its end).
+  [[nodiscard]] RunResult result() &&;
 
   [[nodiscard]] const KnownMap& known() const { return belief_.known(); }
   [[nodiscard]] Cell robot() const { return robot_.position; }
@@ -91,6 +94,9 @@ class Simulation {
 
   /// Decides (step 1 of step()); empty when the run ended instead (the stop cell reached).
   std::optional<Decision> decide();
+  /// `recorded` (the recorder's result) completed with what depends on the map: areas, coverage,
+  /// the final map and frontiers (result()).
+  [[nodiscard]] RunResult completed(RunResult recorded) const;
   /// Plans and travels toward `journey.goal` (step 2 of step()); false when the run ended.
   bool travel(const Decision& decision, const Journey& journey);
   /// After a journey (step 3 of step()): recharge, drop an unobservable goal, the stuck rule.

@@ -49,15 +49,9 @@ TEST(DistanceField, MatchesPlannerLengths) {
         const int i = known.index(target);
         if (plan.status == PlanStatus::Success) {
           EXPECT_EQ(field.distance_m(i), plan.length_m);  // exact costs: bit for bit
-          const std::vector<Cell> path = field.path_to(i);
-          ASSERT_FALSE(path.empty());
-          EXPECT_EQ(path.front(), source);
-          EXPECT_EQ(path.back(), target);
-          EXPECT_NEAR(testing::chain_length_cells(path) * 0.25, field.distance_m(i), 1e-9);
         } else {
           EXPECT_EQ(plan.status, PlanStatus::NoPath);
           EXPECT_FALSE(field.reached(i));
-          EXPECT_TRUE(field.path_to(i).empty());
         }
       }
     }
@@ -169,7 +163,6 @@ TEST(DistanceField, NonFreeSourceGivesEmptyField) {
     field.compute(m.known, bad, {});  // also forgets the previous field
     for (int i = 0; i < m.known.size(); ++i) EXPECT_FALSE(field.reached(i));
     EXPECT_EQ(field.expansions(), 0);
-    EXPECT_TRUE(field.path_to(0).empty());
   }
 }
 
@@ -270,9 +263,9 @@ TEST(OctileCost, ValuesAreExactLengths) {
   EXPECT_LT((OctileCost{0, 70}).value(), (OctileCost{99, 0}).value());  // 70 sqrt(2) = 98.99...
 }
 
-TEST(PointDistance, SameLengthAsTheFieldBitForBit) {
+TEST(DistanceField, OneLengthByAStarEqualsTheFieldsBitForBit) {
   DistanceField field;
-  PointDistance point;
+  DistanceField point;
   int reached = 0;
   int unreached = 0;
   for (std::uint64_t seed = 1; seed <= 6; ++seed) {
@@ -284,35 +277,70 @@ TEST(PointDistance, SameLengthAsTheFieldBitForBit) {
     field.compute(known, source, q);
     for (int t = 0; t < 40; ++t) {
       const Cell goal = testing::random_free_cell(known, rng);
-      const std::optional<double> d = point.compute(known, source, goal, q);
+      const std::optional<double> d = point.compute_to(known, source, goal, q);
       ASSERT_TRUE(d.has_value());
       // The same bound rule too: beyond max_distance_m both read +infinity.
       const double expected = field.distance_m(known.index(goal));
       EXPECT_EQ(*d, expected) << "seed " << seed << " goal " << goal.x << "," << goal.y;
       ++(std::isinf(*d) ? unreached : reached);
+      // Every cell the A* settled reads its exact length, as the field does.
+      for (int i = 0; i < known.size(); ++i) {
+        if (point.reached(i)) {
+          ASSERT_EQ(point.distance_m(i), field.distance_m(i)) << "seed " << seed;
+        }
+      }
     }
   }
   EXPECT_GT(reached, 50);
   EXPECT_GT(unreached, 50);  // the 4 m bound and walled-in cells
 }
 
-TEST(PointDistance, OpenSpaceBudgetAndBlockedGoals) {
+TEST(DistanceField, OneLengthByAStarWithBudgetAndBlockedGoals) {
   const KnownMap known = testing::random_known_map(60, 60, 0.0, 1, 1.0);
-  PointDistance point;
+  DistanceField point;
   // Open space: A* with exact ties settles about one cell per cell of length.
-  EXPECT_EQ(point.compute(known, Cell{0, 0}, Cell{50, 20}, DistanceQuery{}),
+  EXPECT_EQ(point.compute_to(known, Cell{0, 0}, Cell{50, 20}, DistanceQuery{}),
             octile_distance(Cell{0, 0}, Cell{50, 20}));
   EXPECT_LE(point.expansions(), 51);
   // A budget below that: no answer, rather than a wrong one.
   DistanceQuery tight;
   tight.stop = StopCondition(SearchBudget{kInf, 10}, StopCondition::Clock::now());
-  EXPECT_FALSE(point.compute(known, Cell{0, 0}, Cell{50, 20}, tight).has_value());
-  // An occupied or unknown goal is unreachable at once.
+  EXPECT_FALSE(point.compute_to(known, Cell{0, 0}, Cell{50, 20}, tight).has_value());
+  EXPECT_TRUE(point.stopped());
+  // An occupied or unknown goal is unreachable at once, and the field reads empty.
   const KnownMap walls = testing::known_from_ascii({"..#", "..?"}).known;
-  EXPECT_EQ(point.compute(walls, Cell{0, 0}, Cell{2, 0}, DistanceQuery{}), kInf);
+  EXPECT_EQ(point.compute_to(walls, Cell{0, 0}, Cell{2, 0}, DistanceQuery{}), kInf);
   EXPECT_EQ(point.expansions(), 0);
-  EXPECT_EQ(point.compute(walls, Cell{0, 0}, Cell{2, 1}, DistanceQuery{}), kInf);
+  EXPECT_EQ(point.compute_to(walls, Cell{0, 0}, Cell{2, 1}, DistanceQuery{}), kInf);
   EXPECT_EQ(point.expansions(), 0);
+  for (int i = 0; i < walls.size(); ++i) EXPECT_FALSE(point.reached(i));
+}
+
+TEST(DistanceField, TargetsOfOneQueryDoNotStopTheNext) {
+  // The stop targets are marked for one compute() only: a later query without targets, or with
+  // other ones, on the same field runs as on a fresh one.
+  const KnownMap known = testing::random_known_map(50, 40, 0.2, 3, 1.0);
+  Rng rng = make_rng(3, "targets");
+  DistanceField reused;
+  for (int round = 0; round < 30; ++round) {
+    const Cell source = testing::random_free_cell(known, rng);
+    std::vector<int> targets;
+    for (int k = 0; k < 1 + round % 4; ++k)
+      targets.push_back(known.index(testing::random_free_cell(known, rng)));
+    DistanceQuery q;
+    if (round % 2 == 0) {
+      q.stop_at_first_of = targets;
+    } else {
+      q.stop_when_all_settled = targets;
+    }
+    reused.compute(known, source, q);
+    DistanceField fresh;
+    fresh.compute(known, source, q);
+    for (int i = 0; i < known.size(); ++i)
+      ASSERT_EQ(reused.distance_m(i), fresh.distance_m(i)) << "round " << round;
+    EXPECT_EQ(reused.expansions(), fresh.expansions());
+    if (round % 5 == 4) (void)reused.compute_to(known, source, known.cell(targets.front()), DistanceQuery{});
+  }
 }
 
 }  // namespace

@@ -60,6 +60,9 @@ struct RandomDecision {
     previous = uniform_below(rng, 4) == 0 ? robot : free_cell(rng);
     dock_field.take_in(known, first, dock, corner_cutting);
     dock_field.take_in(known, second, dock, corner_cutting);
+    // As in a run after its first decision that asked: the field is built (its work is not the
+    // decision's).
+    if (dock_field.ready()) (void)dock_field.bring_up_to_date(known);
     // Battery: unlimited, or a reach between a quarter and twice the map's diagonal, above or
     // below half charge.
     if (uniform_below(rng, 3) != 0) {
@@ -182,6 +185,7 @@ TEST(EnergyAwareChoice, InOpenSpaceOnePointSearchSettlesTheChoice) {
   const std::vector<FrontierCluster> clusters = frontiers.clusters(known, 3.0, false);
   DockField dock;
   dock.take_in(known, revealed, centre, false);
+  (void)dock.bring_up_to_date(known);  // built, as after a run's first decision
   for (const auto& w : {std::array<double, 4>{10, 0, 9, 20}, std::array<double, 4>{1, 0, 0, 0}}) {
     EnergyAware ea = energy_aware(w);
     BatteryView battery;
