@@ -4,6 +4,7 @@
 
 #include "core/config_error.hpp"
 #include "planners/search_result.hpp"
+#include "search/cell_indexer.hpp"
 #include "search/octile_grid.hpp"
 
 namespace fsweep {
@@ -17,7 +18,8 @@ SearchResult search_grid(OctileSearch& search, const Env& env, const KnownMap& k
   SearchLimits limits;
   limits.stop = stop;
   const SearchOutcome outcome = search.run(env, known.index(start), limits);
-  return search_result(search, outcome, [&known](int s) { return known.cell(s); });
+  const CellIndexer cells(known.width());  // no division per path cell
+  return search_result(search, outcome, [&cells](int s) { return cells.cell(s); });
 }
 
 }  // namespace

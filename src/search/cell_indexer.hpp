@@ -4,6 +4,7 @@
 /// for the hot loops that turn state ids back into cells (the A* heuristic runs once per opened
 /// state; a 32-bit division costs tens of cycles, a multiply and shift a few).
 
+#include <bit>
 #include <cstdint>
 
 #include "world/grid.hpp"
@@ -18,8 +19,7 @@ class CellIndexer {
  public:
   explicit CellIndexer(int width) : width_(width) {
     const auto w = static_cast<std::uint64_t>(width);
-    int l = 0;
-    while ((std::uint64_t{1} << l) < w) ++l;
+    const int l = static_cast<int>(std::bit_width(w - 1));  // ceil(log2 width); 0 for width 1
     shift_ = 32 + l;
     magic_ = ((std::uint64_t{1} << shift_) + w - 1) / w;  // ceil(2^shift / width) <= 2^33
   }
