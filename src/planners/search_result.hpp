@@ -25,10 +25,9 @@ template <typename Cost, typename CellOf>
   }
   result.status = PlanStatus::Success;
   // The parent chain backwards, written in place (one allocation).
-  std::size_t cells = 0;
-  for (int s = outcome.goal; s >= 0; s = search.parent(s)) ++cells;
+  std::size_t cells = search.trace_back(outcome.goal, [](int /*state*/) {});
   result.path.resize(cells);
-  for (int s = outcome.goal; s >= 0; s = search.parent(s)) result.path[--cells] = cell_of(s);
+  (void)search.trace_back(outcome.goal, [&](int s) { result.path[--cells] = cell_of(s); });
   return result;
 }
 

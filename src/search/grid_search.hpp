@@ -240,11 +240,20 @@ class BestFirstSearchT {
   [[nodiscard]] int parent(int state) const requires(kKeepsParents) {
     return reached(state) ? nodes_[idx(state)].parent : -1;
   }
+  /// Calls `visit(s)` for every state of the best path to `state`, from `state` back to the
+  /// start, and returns their number (0, calling nothing, if `state` was not reached). The
+  /// states of a reached state's chain are all reached, so the walk checks none of them.
+  template <typename F>
+  std::size_t trace_back(int state, F&& visit) const requires(kKeepsParents) {
+    if (!reached(state)) return 0;
+    std::size_t count = 0;
+    for (int s = state; s >= 0; s = nodes_[idx(s)].parent, ++count) visit(s);
+    return count;
+  }
   /// State ids start..state of a reached state, in path order (empty if not reached).
   [[nodiscard]] std::vector<int> path_to(int state) const requires(kKeepsParents) {
     std::vector<int> path;
-    if (!reached(state)) return path;
-    for (int s = state; s >= 0; s = nodes_[idx(s)].parent) path.push_back(s);
+    (void)trace_back(state, [&path](int s) { path.push_back(s); });
     std::reverse(path.begin(), path.end());
     return path;
   }
