@@ -653,6 +653,48 @@ TEST(Frontiers, TrackedClustersMatchFromScratch) {
   EXPECT_GT(checks, 300);
 }
 
+TEST(Frontiers, TrackedClustersSeeADiagonalOpenedByARevealedCell) {
+  // Frontier cells c (1, 1), s (1, 2) and n (2, 2) stay frontier cells while r (2, 1), beside
+  // the diagonal c-n, is revealed free without becoming a frontier cell itself (its neighbours
+  // are all known): no cell changes whether it may join a cluster, only r's known state, which
+  // opens the diagonal c-n (without corner cutting). The pieces near r must be walked again
+  // all the same.
+  const KnownMap before = ascii_known({
+      "?###",
+      "?.?#",
+      "?..#",
+      "????",
+  });
+  const int r = before.index(Cell{2, 1});
+  int changed = 0;
+  for (const bool cut : {false, true}) {
+    for (const double length : {0.0, 1.0, 2.0, 3.0, 4.0, 5.0}) {
+      KnownMap known = before;
+      FrontierMap frontiers(known);
+      FrontierClusters tracked(known, length, cut);
+      const std::vector<FrontierCluster> first = tracked.clusters(known, frontiers, {});
+      known.reveal(r, false);
+      const std::vector<int> revealed{r};
+      frontiers.update(known, revealed);
+      tracked.revealed(revealed);
+      ASSERT_FALSE(frontiers.is_frontier(r));
+      ASSERT_EQ(frontiers.cells(), (std::vector<int>{known.index(Cell{1, 1}), known.index(Cell{1, 2}),
+                                                     known.index(Cell{2, 2})}));
+      const auto& got = tracked.clusters(known, frontiers, {});
+      const auto want = reference_clusters(known, length, cut, {});
+      ASSERT_EQ(got.size(), want.size()) << "cut " << cut << " length " << length;
+      for (std::size_t k = 0; k < got.size(); ++k) {
+        ASSERT_EQ(got[k].cells, want[k].cells) << "cut " << cut << " length " << length << " cluster " << k;
+        ASSERT_EQ(got[k].representative, want[k].representative);
+      }
+      bool same = first.size() == want.size();
+      for (std::size_t k = 0; same && k < want.size(); ++k) same = first[k].cells == want[k].cells;
+      changed += same ? 0 : 1;
+    }
+  }
+  EXPECT_GT(changed, 0);  // some pieces do change
+}
+
 TEST(Frontiers, TrackedClustersRefuseAMapOfAnotherSize) {
   const KnownMap known = ascii_known({"..?", "..."});
   const KnownMap other = ascii_known({"..?", "...", "..."});
