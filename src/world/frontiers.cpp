@@ -22,6 +22,20 @@ __extension__ typedef __int128 Int128;
 inline bool frontier_at(const CellState* s, int w, int h, int x, int y) {
   const int i = y * w + x;
   if (s[i] != CellState::Free) return false;
+  constexpr CellState kUnknown = CellState::Unknown;
+  constexpr CellState kOccupied = CellState::Occupied;
+  if (x > 0 && y > 0 && x < w - 1 && y < h - 1) {  // all eight neighbours on the map
+    if (s[i - 1] == kUnknown || s[i + 1] == kUnknown || s[i - w] == kUnknown || s[i + w] == kUnknown) {
+      return true;
+    }
+    // A diagonal neighbour counts unless both cells beside it are occupied.
+    const bool west = s[i - 1] == kOccupied;
+    const bool east = s[i + 1] == kOccupied;
+    const bool north = s[i - w] == kOccupied;
+    const bool south = s[i + w] == kOccupied;
+    return (s[i - w - 1] == kUnknown && !(west && north)) || (s[i - w + 1] == kUnknown && !(east && north)) ||
+           (s[i + w - 1] == kUnknown && !(west && south)) || (s[i + w + 1] == kUnknown && !(east && south));
+  }
   for (const Cell d : kDirections) {
     const int nx = x + d.x;
     const int ny = y + d.y;
@@ -34,6 +48,10 @@ inline bool frontier_at(const CellState* s, int w, int h, int x, int y) {
   }
   return false;
 }
+
+/// FrontierMap::flags_ bit besides kFrontier and kListed: tested during this update() (clear
+/// between calls).
+constexpr std::uint8_t kTested = 4;
 
 }  // namespace
 
@@ -94,18 +112,27 @@ void FrontierMap::update(const KnownMap& known, std::span<const int> revealed) {
   const int h = known.height();
   const CellState* s = known.cells().data().data();
   // A cell's status depends only on its 3x3 neighbourhood, so only the revealed cells and
-  // their 8-neighbours can change.
-  for (const int r : revealed) {
-    const int rx = r % w;
-    const int ry = r / w;
-    const int x0 = std::max(rx - 1, 0);
-    const int x1 = std::min(rx + 1, w - 1);
-    const int y0 = std::max(ry - 1, 0);
-    const int y1 = std::min(ry + 1, h - 1);
-    for (int y = y0; y <= y1; ++y) {
-      for (int x = x0; x <= x1; ++x) set(y * w + x, frontier_at(s, w, h, x, y));
+  // their 8-neighbours can change; each of them is tested once (flagged kTested meanwhile:
+  // neighbourhoods of cells revealed together overlap).
+  static_assert((kTested & (kFrontier | kListed)) == 0);
+  const auto each_neighbourhood = [&](auto&& visit) {
+    for (const int r : revealed) {
+      const int rx = r % w;
+      const int ry = r / w;
+      const int x0 = std::max(rx - 1, 0);
+      const int x1 = std::min(rx + 1, w - 1);
+      for (int y = std::max(ry - 1, 0); y <= std::min(ry + 1, h - 1); ++y) {
+        for (int x = x0; x <= x1; ++x) visit(y * w + x, x, y);
+      }
     }
-  }
+  };
+  each_neighbourhood([&](int i, int x, int y) {
+    if ((flags_[static_cast<std::size_t>(i)] & kTested) != 0) return;
+    set(i, frontier_at(s, w, h, x, y));
+    flags_[static_cast<std::size_t>(i)] |= kTested;
+  });
+  each_neighbourhood(
+      [&](int i, int, int) { flags_[static_cast<std::size_t>(i)] &= static_cast<std::uint8_t>(~kTested); });
   // Keep the list within a constant factor of the frontier count.
   if (stale_ > 64 && stale_ > static_cast<std::size_t>(count_)) normalise();
 }

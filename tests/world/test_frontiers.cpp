@@ -39,6 +39,48 @@ TEST(Frontiers, FrontierIsKnownFreeCellWithUnknownNeighbour) {
   EXPECT_EQ(FrontierMap(known).count(), 5);
 }
 
+TEST(Frontiers, FrontierTestMatchesTheDefinitionOnRandomMaps) {
+  // The definition in frontiers.hpp, spelled out, against is_frontier_cell() at every cell of
+  // seeded random maps (edges, corners and interior cells; sealed diagonals are common with
+  // many occupied cells).
+  Rng rng = make_rng(7, "frontier-definition");
+  int frontier_cells = 0;
+  int sealed_only = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    const int width = 1 + static_cast<int>(uniform_below(rng, 12));
+    const int height = 1 + static_cast<int>(uniform_below(rng, 12));
+    KnownMap known(width, height, 1.0);
+    for (int i = 0; i < known.size(); ++i) {
+      const double u = uniform01(rng);
+      if (u < 0.4) known.reveal(i, false);
+      if (u >= 0.4 && u < 0.75) known.reveal(i, true);
+    }
+    for (int i = 0; i < known.size(); ++i) {
+      const Cell c = known.cell(i);
+      bool want = false;
+      bool sealed = false;
+      if (known.is_free(c)) {
+        for (const Cell d : kDirections) {
+          const Cell n{c.x + d.x, c.y + d.y};
+          if (!known.in_bounds(n) || known.state(n) != CellState::Unknown) continue;
+          const bool diagonal = d.x != 0 && d.y != 0;
+          if (diagonal && known.state(Cell{n.x, c.y}) == CellState::Occupied &&
+              known.state(Cell{c.x, n.y}) == CellState::Occupied) {
+            sealed = true;
+          } else {
+            want = true;
+          }
+        }
+      }
+      ASSERT_EQ(is_frontier_cell(known, i), want) << "trial " << trial << " cell " << c.x << "," << c.y;
+      frontier_cells += want ? 1 : 0;
+      sealed_only += sealed && !want ? 1 : 0;
+    }
+  }
+  EXPECT_GT(frontier_cells, 1000);
+  EXPECT_GT(sealed_only, 20);
+}
+
 TEST(Frontiers, SealedDiagonalIsNotFrontier) {
   const KnownMap sealed = ascii_known({
       ".#?",
