@@ -401,10 +401,16 @@ const std::vector<FrontierCluster>& FrontierClusters::clusters(const KnownMap& k
                            [lowest](const FrontierCluster& c) { return c.cells.front() < lowest; }) -
       clusters_.begin());
   next_.clear();
-  // Grows the piece of `start` (not yet placed by this call, open) into next_. A piece not
-  // replayed yet that loses a cell to it must be walked again (the callers mark what is near
-  // the cells taken). True when it equals `old`, which is then moved into next_ as it is;
-  // otherwise piece_ holds the new piece's cells (ascending, with coordinates).
+  // What must be walked again besides the pieces near changed cells: a piece's walk reads a
+  // neighbour's owner mark only as "placed by an earlier piece" or not, and the walk is the
+  // same as last time unless a cell it read as placed is not placed now. (A cell it read as
+  // not placed and did not take, it met only once the piece was full, or not at all: reading it
+  // as placed now changes nothing.) So a piece that loses a cell to an earlier one is walked
+  // again (grow() marks it), and so are the pieces near the cells a piece walked again leaves
+  // free (step 2 below); a cell taken by another piece needs nothing more.
+  // Grows the piece of `start` (not yet placed by this call, open) into next_. True when it
+  // equals `old`, which is then moved into next_ as it is; otherwise piece_ holds the new
+  // piece's cells (ascending, with coordinates).
   const auto grow = [&](int start, FrontierCluster* old) {
     piece_.clear();
     owner_[static_cast<std::size_t>(start)] = start;
@@ -433,13 +439,11 @@ const std::vector<FrontierCluster>& FrontierClusters::clusters(const KnownMap& k
     next_.push_back(make_cluster(piece_, w, h, known.resolution_m(), std::move(storage)));
     return false;
   };
-  // Starts a walk from `cell` when it is open and not yet placed; its piece differs from the
-  // last call's (there was none at `cell`): what is near it must be walked again.
+  // Starts a walk from `cell` when it is open and not yet placed (there was no piece at `cell`).
   const auto walk_from = [&](int cell) {
     const int mark = owner_[static_cast<std::size_t>(cell)];
     if ((mark >= 0 && mark <= cell) || !walk.open(cell)) return;
     grow(cell, nullptr);
-    for (const Node& n : piece_) mark_near(n.x, n.y, cell);
   };
   std::size_t k = first;  // next piece of the last call
   while ((k < clusters_.size() && marked_ > 0) || !starts_.empty()) {
@@ -463,33 +467,17 @@ const std::vector<FrontierCluster>& FrontierClusters::clusters(const KnownMap& k
     }
     flag &= static_cast<std::uint8_t>(~kWalkAgain);
     --marked_;
-    // Walk again from s (when it is still open and free). A later piece reads what this one
-    // holds only through the cells placed differently from the last call: those in one of the
-    // old and new pieces but not in both (every old cell when there is no new piece). The old
-    // cells left over are walked from in turn.
+    // Walk again from s (when it is still open and free). The old cells it leaves free may
+    // change what any later piece reads (those near them are marked), and are walked from in
+    // turn.
     for (const int c : old.cells) {
       if (owner_[static_cast<std::size_t>(c)] == s) owner_[static_cast<std::size_t>(c)] = kNone;
     }
-    if (owner_[static_cast<std::size_t>(s)] == kNone && walk.open(s)) {
-      if (grow(s, &old)) continue;  // the same piece
-      auto a = old.cells.begin();
-      auto b = piece_.begin();
-      while (a != old.cells.end() || b != piece_.end()) {
-        if (b == piece_.end() || (a != old.cells.end() && *a < b->i)) {
-          mark_near(*a++, s);
-        } else if (a == old.cells.end() || b->i < *a) {
-          mark_near(b->x, b->y, s);
-          ++b;
-        } else {
-          ++a;
-          ++b;
-        }
-      }
-    } else {
-      for (const int c : old.cells) mark_near(c, s);
-    }
+    if (owner_[static_cast<std::size_t>(s)] == kNone && walk.open(s) && grow(s, &old)) continue;  // the same
     for (const int c : old.cells) {
-      if (owner_[static_cast<std::size_t>(c)] == kNone && c != s) {
+      if (owner_[static_cast<std::size_t>(c)] != kNone) continue;
+      mark_near(c, s);
+      if (c != s) {
         starts_.push_back(c);
         std::push_heap(starts_.begin(), starts_.end(), std::greater<>{});
       }

@@ -112,10 +112,12 @@ class FrontierMap {
 /// neighbours' frontier and exclusion flags, whether an earlier piece holds them, and the known
 /// state of the cells beside a diagonal). clusters() replays that loop in the same order over
 /// the pieces of the last call and the cells that changed: a piece is kept as it is unless a
-/// changed cell (a revealed cell or one of its 8-neighbours, or a cell whose exclusion changed)
-/// lies within one cell of it, or a piece built earlier in this call, different from the last
-/// call's, does; otherwise its walk would read what it read last time. Every other piece is
-/// walked again, and the cells it no longer holds are walked from in turn. The pieces built
+/// changed cell (a revealed cell, or one whose status changed: one of its 8-neighbours, or a
+/// cell whose exclusion changed) lies within one cell of it, or it lost a cell to a piece built
+/// earlier in this call, or a piece walked again earlier in this call left a cell free within
+/// one cell of it; otherwise its walk would read what it read last time, or differ only in
+/// cells it never took (frontiers.cpp says why). Every other piece is walked again, and the
+/// cells it no longer holds are walked from in turn. The pieces built
 /// again are those near the robot's new scans, plus those a different piece pushes along
 /// (pieces of a long frontier can shift one after another); the replay starts at the first of
 /// them and stops after the last, leaving the pieces before and after in place. Memory: 5

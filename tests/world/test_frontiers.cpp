@@ -635,8 +635,12 @@ TEST(Frontiers, TrackedClustersMatchFromScratch) {
   // scans and exclusion changes (both ways) it must equal the reference, for every setting.
   std::uint64_t seed = 300;
   int checks = 0;
+  // Besides the exploration maps, open space: long frontiers cut into short pieces, which shift
+  // one after another as the frontier grows.
+  std::vector<WorldMap> maps = exploration_maps();
+  maps.push_back(random_world(40, 40, 0.02, 3));
   for (const SensorParams& params : exploration_sensors()) {
-    for (const WorldMap& map : exploration_maps()) {
+    for (const WorldMap& map : maps) {
       SCOPED_TRACE("map " + std::to_string(map.width()) + "x" + std::to_string(map.height()) + " range " +
                    std::to_string(params.range_m));
       Sensor sensor(params, map.resolution_m);
@@ -649,7 +653,7 @@ TEST(Frontiers, TrackedClustersMatchFromScratch) {
       };
       std::vector<Tracked> tracked;
       for (const bool cut : {false, true}) {
-        for (const double length : {0.0, 2.0, 7.5})
+        for (const double length : {0.0, 2.0, 3.0, 7.5})
           tracked.push_back({cut, length, FrontierClusters(known, length, cut)});
       }
       std::vector<std::uint8_t> excluded(static_cast<std::size_t>(known.size()), 0);
