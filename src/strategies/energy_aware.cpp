@@ -250,6 +250,30 @@ class WatchedChoice final : public SettleWatcher {
 
 }  // namespace
 
+bool octile_path_known_free(const KnownMap& known, Cell from, Cell to) {
+  const int sx = to.x > from.x ? 1 : (to.x < from.x ? -1 : 0);
+  const int sy = to.y > from.y ? 1 : (to.y < from.y ? -1 : 0);
+  const int ax = std::abs(to.x - from.x);
+  const int ay = std::abs(to.y - from.y);
+  const int diagonal_steps = std::min(ax, ay);
+  const int straight_steps = std::max(ax, ay) - diagonal_steps;
+  const Cell straight = ax > ay ? Cell{sx, 0} : Cell{0, sy};
+  const auto clear = [&](bool diagonal_first) {
+    Cell c = from;
+    if (!known.is_free(c)) return false;
+    for (const bool diagonal : {diagonal_first, !diagonal_first}) {
+      for (int k = diagonal ? diagonal_steps : straight_steps; k > 0; --k) {
+        if (diagonal && !(known.is_free(Cell{c.x + sx, c.y}) && known.is_free(Cell{c.x, c.y + sy})))
+          return false;
+        c = diagonal ? Cell{c.x + sx, c.y + sy} : Cell{c.x + straight.x, c.y + straight.y};
+        if (!known.is_free(c)) return false;
+      }
+    }
+    return true;
+  };
+  return clear(true) || (diagonal_steps > 0 && straight_steps > 0 && clear(false));
+}
+
 namespace {
 
 /// Point searches (A*) a decision may try before it searches from the robot outward: at most
@@ -260,7 +284,8 @@ constexpr long kProbeCellsPerStep = 16;
 constexpr long kProbeCellsExtra = 64;
 
 /// Exact lengths for the representatives with the lowest cost bounds, best bound first, by
-/// point searches, until the best one found is certified (every other bound loses; in open
+/// point searches (or without one where a known free path of octile length shows that length
+/// exact, octile_path_known_free), until the best one found is certified (every other bound loses; in open
 /// space, where lengths equal their octile bounds, the first probe does it). False when the
 /// probes ran out first: then `choice` holds what they found and a search from the robot must
 /// finish the choice.
@@ -288,9 +313,17 @@ bool choose_by_probes(const Observation& obs, const EnergyAware::Terms& t, Watch
     // In bound order: once one is beaten, so is every later one (ties: by index, too).
     if (choice.beaten(i)) return true;
     if (choice.beaten_with_theta(i)) continue;  // its turn makes it lose: no need to measure it
-    if (probes++ == kMaxProbes) return false;
     const Cell goal = obs.known.cell(t.reps[i]);
-    const auto steps = static_cast<long>(std::ceil(octile_distance(obs.robot, goal)));
+    const double octile = octile_distance(obs.robot, goal);
+    if (octile_path_known_free(obs.known, obs.robot, goal)) {
+      // The octile length is exact: the value a point search returns (its length is computed
+      // the same way from the same step counts), read against the bound d_l as it reads it.
+      const double d = octile * obs.known.resolution_m();
+      choice.settled(i, d <= t.d_l ? d : std::numeric_limits<double>::infinity());
+      continue;
+    }
+    if (probes++ == kMaxProbes) return false;
+    const auto steps = static_cast<long>(std::ceil(octile));
     const std::optional<double> d =
         obs.distances.probe_from_robot(t.reps[i], t.d_l, kProbeCellsExtra + kProbeCellsPerStep * steps);
     if (!d) return false;

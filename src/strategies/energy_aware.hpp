@@ -54,6 +54,13 @@ struct ClosestFrontierParams {
 /// the robot as soon as no representative it has not reached can win: d_g is at least the
 /// search radius and the oracle's lower bound (octile length, triangle through the dock), which
 /// bound its cost and eq. 7 (issue 14; the weight search reads candidates() in full).
+/// True when one of two shortest octile paths from `from` to `to` (every diagonal step first,
+/// or every straight step first) runs over known free cells only, each diagonal step with both
+/// cells beside it known free. Such a path is valid with or without corner cutting, and no path
+/// is shorter than the octile length, so that length (octile_distance) is then the shortest
+/// path length over known free space. O(octile length).
+[[nodiscard]] bool octile_path_known_free(const KnownMap& known, Cell from, Cell to);
+
 class EnergyAware final : public LinearScoredStrategy {
  public:
   /// `name` is the registry name ("energy_aware" or "closest_frontier").

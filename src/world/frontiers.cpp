@@ -22,6 +22,20 @@ __extension__ typedef __int128 Int128;
 inline bool frontier_at(const CellState* s, int w, int h, int x, int y) {
   const int i = y * w + x;
   if (s[i] != CellState::Free) return false;
+  constexpr CellState kUnknown = CellState::Unknown;
+  constexpr CellState kOccupied = CellState::Occupied;
+  if (x > 0 && y > 0 && x < w - 1 && y < h - 1) {  // all eight neighbours on the map
+    if (s[i - 1] == kUnknown || s[i + 1] == kUnknown || s[i - w] == kUnknown || s[i + w] == kUnknown) {
+      return true;
+    }
+    // A diagonal neighbour counts unless both cells beside it are occupied.
+    const bool west = s[i - 1] == kOccupied;
+    const bool east = s[i + 1] == kOccupied;
+    const bool north = s[i - w] == kOccupied;
+    const bool south = s[i + w] == kOccupied;
+    return (s[i - w - 1] == kUnknown && !(west && north)) || (s[i - w + 1] == kUnknown && !(east && north)) ||
+           (s[i + w - 1] == kUnknown && !(west && south)) || (s[i + w + 1] == kUnknown && !(east && south));
+  }
   for (const Cell d : kDirections) {
     const int nx = x + d.x;
     const int ny = y + d.y;
@@ -34,6 +48,10 @@ inline bool frontier_at(const CellState* s, int w, int h, int x, int y) {
   }
   return false;
 }
+
+/// FrontierMap::flags_ bit besides kFrontier and kListed: tested during this update() (clear
+/// between calls).
+constexpr std::uint8_t kTested = 4;
 
 }  // namespace
 
@@ -94,18 +112,27 @@ void FrontierMap::update(const KnownMap& known, std::span<const int> revealed) {
   const int h = known.height();
   const CellState* s = known.cells().data().data();
   // A cell's status depends only on its 3x3 neighbourhood, so only the revealed cells and
-  // their 8-neighbours can change.
-  for (const int r : revealed) {
-    const int rx = r % w;
-    const int ry = r / w;
-    const int x0 = std::max(rx - 1, 0);
-    const int x1 = std::min(rx + 1, w - 1);
-    const int y0 = std::max(ry - 1, 0);
-    const int y1 = std::min(ry + 1, h - 1);
-    for (int y = y0; y <= y1; ++y) {
-      for (int x = x0; x <= x1; ++x) set(y * w + x, frontier_at(s, w, h, x, y));
+  // their 8-neighbours can change; each of them is tested once (flagged kTested meanwhile:
+  // neighbourhoods of cells revealed together overlap).
+  static_assert((kTested & (kFrontier | kListed)) == 0);
+  const auto each_neighbourhood = [&](auto&& visit) {
+    for (const int r : revealed) {
+      const int rx = r % w;
+      const int ry = r / w;
+      const int x0 = std::max(rx - 1, 0);
+      const int x1 = std::min(rx + 1, w - 1);
+      for (int y = std::max(ry - 1, 0); y <= std::min(ry + 1, h - 1); ++y) {
+        for (int x = x0; x <= x1; ++x) visit(y * w + x, x, y);
+      }
     }
-  }
+  };
+  each_neighbourhood([&](int i, int x, int y) {
+    if ((flags_[static_cast<std::size_t>(i)] & kTested) != 0) return;
+    set(i, frontier_at(s, w, h, x, y));
+    flags_[static_cast<std::size_t>(i)] |= kTested;
+  });
+  each_neighbourhood(
+      [&](int i, int, int) { flags_[static_cast<std::size_t>(i)] &= static_cast<std::uint8_t>(~kTested); });
   // Keep the list within a constant factor of the frontier count.
   if (stale_ > 64 && stale_ > static_cast<std::size_t>(count_)) normalise();
 }
@@ -154,12 +181,8 @@ namespace {
 constexpr int kNone = -1;         // not in a cluster
 constexpr int kInComponent = -2;  // in the component being split into pieces (scratch)
 
-/// A cell in a walk, with its coordinates (carried along to avoid divisions).
-struct Node {
-  int i;
-  int x;
-  int y;
-};
+/// A cell in a walk, with its coordinates.
+using Node = FrontierClusters::PieceCell;
 
 /// What the walks of FrontierClusters read: the map, the frontier and exclusion flags, and the
 /// owner marks.
@@ -208,10 +231,13 @@ struct Walk {
   }
 };
 
-/// The cluster of `members` (reordered by index here): centroid, length and representative.
-FrontierCluster make_cluster(std::vector<Node>& members, int w, int h, double resolution_m) {
-  std::sort(members.begin(), members.end(), [](const Node& a, const Node& b) { return a.i < b.i; });
+/// The cluster of `members` (ascending by index): centroid, length and representative. Its
+/// cell list is written into `storage` (a spare vector whose allocation it reuses).
+FrontierCluster make_cluster(const std::vector<Node>& members, int w, int h, double resolution_m,
+                             std::vector<int> storage) {
   FrontierCluster cl;
+  cl.cells = std::move(storage);
+  cl.cells.clear();
   cl.cells.reserve(members.size());
   const auto n = static_cast<long long>(members.size());
   long long sx = 0;
@@ -266,20 +292,26 @@ void FrontierClusters::exclusion_changed(int index) {
   if (!everything_dirty_) exclusion_changed_.push_back(index);
 }
 
-void FrontierClusters::mark(int key) { flags_[static_cast<std::size_t>(key)] |= kWalkAgain; }
+void FrontierClusters::mark(int key) {
+  std::uint8_t& flag = flags_[static_cast<std::size_t>(key)];
+  if ((flag & kWalkAgain) != 0) return;
+  flag |= kWalkAgain;
+  ++marked_;
+  lowest_marked_ = std::min(lowest_marked_, key);
+}
 
-void FrontierClusters::mark_near(int cell, int after) {
-  const int cx = cell % width_;
-  const int cy = cell / width_;
-  const int x0 = std::max(cx - 1, 0);
-  const int x1 = std::min(cx + 1, width_ - 1);
-  for (int y = std::max(cy - 1, 0); y <= std::min(cy + 1, height_ - 1); ++y) {
-    const int* row = owner_.data() + static_cast<std::ptrdiff_t>(y) * width_;
-    for (int x = x0; x <= x1; ++x) {
-      if (row[x] > after) mark(row[x]);  // else none (-1), or replayed already
+void FrontierClusters::mark_near(int x, int y, int after) {
+  const int x0 = std::max(x - 1, 0);
+  const int x1 = std::min(x + 1, width_ - 1);
+  for (int ny = std::max(y - 1, 0); ny <= std::min(y + 1, height_ - 1); ++ny) {
+    const int* row = owner_.data() + static_cast<std::ptrdiff_t>(ny) * width_;
+    for (int nx = x0; nx <= x1; ++nx) {
+      if (row[nx] > after) mark(row[nx]);  // else none (-1), or replayed already
     }
   }
 }
+
+void FrontierClusters::mark_near(int cell, int after) { mark_near(cell % width_, cell / width_, after); }
 
 const std::vector<FrontierCluster>& FrontierClusters::clusters(const KnownMap& known,
                                                                const FrontierMap& frontiers,
@@ -315,6 +347,8 @@ const std::vector<FrontierCluster>& FrontierClusters::clusters(const KnownMap& k
   //    again.
   if (!everything_dirty_ && revealed_.empty() && exclusion_changed_.empty()) return clusters_;
   starts_.clear();
+  marked_ = 0;
+  lowest_marked_ = std::numeric_limits<int>::max();
   if (everything_dirty_) {
     starts_ = frontiers.cells();  // ascending: already a min-heap
     everything_dirty_ = false;
@@ -327,13 +361,15 @@ const std::vector<FrontierCluster>& FrontierClusters::clusters(const KnownMap& k
       dirty_cells_.push_back(cell);
     };
     // A walk reads its cells' neighbours: whether they may join (frontier, not excluded) and
-    // the known state of those beside a diagonal. States change only at revealed cells; whether
-    // a cell may join only at a revealed cell's 8-neighbours (and itself) or where the
-    // exclusion changed, and such a cell may join now or was in a piece before.
+    // the known state of those beside a diagonal, which are orthogonal neighbours of its cells.
+    // States change only at revealed cells; whether a cell may join only at a revealed cell's
+    // 8-neighbours (and itself) or where the exclusion changed. A cell could join at the last
+    // call exactly when it was in a piece then (every such cell is, and no other), so those
+    // whose status changed are found by their owner mark.
     for (const int r : revealed_) {
-      mark_near(r, -1);
       const int rx = r % w;
       const int ry = r / w;
+      mark_near(rx, ry, -1);
       for (int y = std::max(ry - 1, 0); y <= std::min(ry + 1, h - 1); ++y) {
         for (int x = std::max(rx - 1, 0); x <= std::min(rx + 1, w - 1); ++x) dirty(y * w + x);
       }
@@ -342,7 +378,8 @@ const std::vector<FrontierCluster>& FrontierClusters::clusters(const KnownMap& k
     for (const int d : dirty_cells_) {
       flags_[static_cast<std::size_t>(d)] &= static_cast<std::uint8_t>(~kChanged);
       const bool open = walk.open(d);
-      if (open || owner_[static_cast<std::size_t>(d)] >= 0) mark_near(d, -1);
+      if (open == (owner_[static_cast<std::size_t>(d)] >= 0)) continue;  // unchanged
+      mark_near(d, -1);
       if (open) starts_.push_back(d);
     }
     std::make_heap(starts_.begin(), starts_.end(), std::greater<>{});
@@ -353,40 +390,63 @@ const std::vector<FrontierCluster>& FrontierClusters::clusters(const KnownMap& k
   // 2. The loop of FrontierMap::clusters, replayed in increasing order of start cell over the
   //    last call's pieces and the cells in starts_. owner_ of a cell holds its piece's start:
   //    <= the current start once placed by this call, > it while still in a piece not yet
-  //    replayed.
+  //    replayed. Pieces before the first marked piece and the first cell in starts_ stay as
+  //    they are, and so do those after the last piece that changes: the replay starts at the
+  //    former and stops once no cell is left in starts_ and no marked piece lies ahead
+  //    (marked_ counts those; every mark goes to a piece not yet replayed).
+  const int lowest =
+      std::min(lowest_marked_, starts_.empty() ? std::numeric_limits<int>::max() : starts_.front());
+  const std::size_t first = static_cast<std::size_t>(
+      std::partition_point(clusters_.begin(), clusters_.end(),
+                           [lowest](const FrontierCluster& c) { return c.cells.front() < lowest; }) -
+      clusters_.begin());
   next_.clear();
-  next_.reserve(clusters_.size() + starts_.size() / 2);
-  std::vector<Node> piece;
-  // Grows the piece of `start` (not yet placed by this call, open) into next_. A piece not
-  // replayed yet that loses a cell to it must be walked again (the callers mark what is near
-  // the cells taken). True when it equals `old`.
-  const auto grow = [&](int start, const FrontierCluster* old) {
-    piece.clear();
+  // What must be walked again besides the pieces near changed cells: a piece's walk reads a
+  // neighbour's owner mark only as "placed by an earlier piece" or not, and the walk is the
+  // same as last time unless a cell it read as placed is not placed now. (A cell it read as
+  // not placed and did not take, it met only once the piece was full, or not at all: reading it
+  // as placed now changes nothing.) So a piece that loses a cell to an earlier one is walked
+  // again (grow() marks it), and so are the pieces near the cells a piece walked again leaves
+  // free (step 2 below); a cell taken by another piece needs nothing more.
+  // Grows the piece of `start` (not yet placed by this call, open) into next_. True when it
+  // equals `old`, which is then moved into next_ as it is; otherwise piece_ holds the new
+  // piece's cells (ascending, with coordinates).
+  const auto grow = [&](int start, FrontierCluster* old) {
+    piece_.clear();
     owner_[static_cast<std::size_t>(start)] = start;
-    piece.push_back(Node{start, start % w, start / w});
+    piece_.push_back(Node{start, start % w, start / w});
     const auto free_now = [start](int mark) { return mark < 0 || mark > start; };
-    for (std::size_t head = 0; head < piece.size() && piece.size() < cap; ++head) {
-      walk.for_each_link(piece[head], free_now, [&](const Node& n) {
-        if (piece.size() == cap) return;
+    for (std::size_t head = 0; head < piece_.size() && piece_.size() < cap; ++head) {
+      walk.for_each_link(piece_[head], free_now, [&](const Node& n) {
+        if (piece_.size() == cap) return;
         const int taken_from = owner_[static_cast<std::size_t>(n.i)];
         if (taken_from > start) mark(taken_from);
         owner_[static_cast<std::size_t>(n.i)] = start;
-        piece.push_back(n);
+        piece_.push_back(n);
       });
     }
-    next_.push_back(make_cluster(piece, w, h, known.resolution_m()));
-    return old != nullptr && old->cells == next_.back().cells;
+    std::sort(piece_.begin(), piece_.end(), [](const Node& a, const Node& b) { return a.i < b.i; });
+    if (old != nullptr && std::equal(piece_.begin(), piece_.end(), old->cells.begin(), old->cells.end(),
+                                     [](const Node& a, int b) { return a.i == b; })) {
+      next_.push_back(std::move(*old));
+      return true;
+    }
+    std::vector<int> storage;
+    if (!spare_.empty()) {
+      storage = std::move(spare_.back());
+      spare_.pop_back();
+    }
+    next_.push_back(make_cluster(piece_, w, h, known.resolution_m(), std::move(storage)));
+    return false;
   };
-  // Starts a walk from `cell` when it is open and not yet placed; its piece differs from the
-  // last call's (there was none at `cell`): what is near it must be walked again.
+  // Starts a walk from `cell` when it is open and not yet placed (there was no piece at `cell`).
   const auto walk_from = [&](int cell) {
     const int mark = owner_[static_cast<std::size_t>(cell)];
     if ((mark >= 0 && mark <= cell) || !walk.open(cell)) return;
     grow(cell, nullptr);
-    for (const int c : next_.back().cells) mark_near(c, cell);
   };
-  std::size_t k = 0;  // next piece of the last call
-  while (k < clusters_.size() || !starts_.empty()) {
+  std::size_t k = first;  // next piece of the last call
+  while ((k < clusters_.size() && marked_ > 0) || !starts_.empty()) {
     if (!starts_.empty() && (k == clusters_.size() || starts_.front() < clusters_[k].cells.front())) {
       const int cell = starts_.front();
       std::pop_heap(starts_.begin(), starts_.end(), std::greater<>{});
@@ -400,45 +460,41 @@ const std::vector<FrontierCluster>& FrontierClusters::clusters(const KnownMap& k
     const int s = old.cells.front();
     std::uint8_t& flag = flags_[static_cast<std::size_t>(s)];
     const bool intact = (flag & kWalkAgain) == 0;
-    flag &= static_cast<std::uint8_t>(~kWalkAgain);
     ++k;
     if (intact) {
       next_.push_back(std::move(old));
       continue;
     }
-    // Walk again from s (when it is still open and free). A later piece reads what this one
-    // holds only through the cells placed differently from the last call: those in one of the
-    // old and new pieces but not in both (every old cell when there is no new piece). The old
-    // cells left over are walked from in turn.
+    flag &= static_cast<std::uint8_t>(~kWalkAgain);
+    --marked_;
+    // Walk again from s (when it is still open and free). The old cells it leaves free may
+    // change what any later piece reads (those near them are marked), and are walked from in
+    // turn.
     for (const int c : old.cells) {
       if (owner_[static_cast<std::size_t>(c)] == s) owner_[static_cast<std::size_t>(c)] = kNone;
     }
-    if (owner_[static_cast<std::size_t>(s)] == kNone && walk.open(s)) {
-      if (grow(s, &old)) continue;  // the same piece
-      const std::vector<int>& now = next_.back().cells;
-      auto a = old.cells.begin();
-      auto b = now.begin();
-      while (a != old.cells.end() || b != now.end()) {
-        if (b == now.end() || (a != old.cells.end() && *a < *b)) {
-          mark_near(*a++, s);
-        } else if (a == old.cells.end() || *b < *a) {
-          mark_near(*b++, s);
-        } else {
-          ++a;
-          ++b;
-        }
-      }
-    } else {
-      for (const int c : old.cells) mark_near(c, s);
-    }
+    if (owner_[static_cast<std::size_t>(s)] == kNone && walk.open(s) && grow(s, &old)) continue;  // the same
     for (const int c : old.cells) {
-      if (owner_[static_cast<std::size_t>(c)] == kNone && c != s) {
+      if (owner_[static_cast<std::size_t>(c)] != kNone) continue;
+      mark_near(c, s);
+      if (c != s) {
         starts_.push_back(c);
         std::push_heap(starts_.begin(), starts_.end(), std::greater<>{});
       }
     }
+    spare_.push_back(std::move(old.cells));
   }
-  std::swap(clusters_, next_);
+  // 3. The replayed pieces take the place of the last call's pieces [first, k).
+  const auto at = [this](std::size_t i) { return clusters_.begin() + static_cast<std::ptrdiff_t>(i); };
+  const std::size_t replaced = k - first;
+  const std::size_t common = std::min(replaced, next_.size());
+  std::move(next_.begin(), next_.begin() + static_cast<std::ptrdiff_t>(common), at(first));
+  if (replaced > common) {
+    clusters_.erase(at(first + common), at(k));
+  } else {
+    clusters_.insert(at(k), std::make_move_iterator(next_.begin() + static_cast<std::ptrdiff_t>(common)),
+                     std::make_move_iterator(next_.end()));
+  }
   return clusters_;
 }
 

@@ -112,15 +112,25 @@ class FrontierMap {
 /// neighbours' frontier and exclusion flags, whether an earlier piece holds them, and the known
 /// state of the cells beside a diagonal). clusters() replays that loop in the same order over
 /// the pieces of the last call and the cells that changed: a piece is kept as it is unless a
-/// changed cell (a revealed cell or one of its 8-neighbours, or a cell whose exclusion changed)
-/// lies within one cell of it, or a piece built earlier in this call, different from the last
-/// call's, does; otherwise its walk would read what it read last time. Every other piece is
-/// walked again, and the cells it no longer holds are walked from in turn. The pieces built
+/// changed cell (a revealed cell, or one whose status changed: one of its 8-neighbours, or a
+/// cell whose exclusion changed) lies within one cell of it, or it lost a cell to a piece built
+/// earlier in this call, or a piece walked again earlier in this call left a cell free within
+/// one cell of it; otherwise its walk would read what it read last time, or differ only in
+/// cells it never took (frontiers.cpp says why). Every other piece is walked again, and the
+/// cells it no longer holds are walked from in turn. The pieces built
 /// again are those near the robot's new scans, plus those a different piece pushes along
-/// (pieces of a long frontier can shift one after another). Memory: 5 bytes per map cell plus
-/// the clusters. Copyable value type (a copy forks it).
+/// (pieces of a long frontier can shift one after another); the replay starts at the first of
+/// them and stops after the last, leaving the pieces before and after in place. Memory: 5
+/// bytes per map cell plus the clusters. Copyable value type (a copy forks it).
 class FrontierClusters {
  public:
+  /// A cell of a piece being grown, with its coordinates (carried along to avoid divisions).
+  struct PieceCell {
+    int i;
+    int x;
+    int y;
+  };
+
   FrontierClusters() = default;
   /// Empty, for maps of `known`'s size; the first clusters() call builds every cluster.
   FrontierClusters(const KnownMap& known, double max_length_m, bool allow_corner_cutting);
@@ -140,8 +150,9 @@ class FrontierClusters {
   /// Marks the last call's piece starting at `key` as changed: it must be walked again.
   void mark(int key);
   /// Marks as changed the pieces of the last call that hold a cell within one cell of `cell`
-  /// and start after `after` (pieces not yet replayed).
+  /// (or of cell (x, y)) and start after `after` (pieces not yet replayed).
   void mark_near(int cell, int after);
+  void mark_near(int x, int y, int after);
 
   double max_length_m_ = 0.0;
   bool allow_corner_cutting_ = false;
@@ -161,10 +172,17 @@ class FrontierClusters {
   std::vector<int> exclusion_changed_;
   /// The clusters, ordered by lowest member.
   std::vector<FrontierCluster> clusters_;
-  /// Scratch of clusters(): changed cells, cells to walk from (a min-heap), the next clusters.
+  /// Scratch of clusters(): changed cells, cells to walk from (a min-heap), the replayed
+  /// clusters, the piece being grown (cells with coordinates), cell lists of dropped pieces
+  /// (their allocations serve new pieces), and the pieces marked but not yet replayed (how
+  /// many, and the lowest start marked before the replay).
   std::vector<int> dirty_cells_;
   std::vector<int> starts_;
   std::vector<FrontierCluster> next_;
+  std::vector<PieceCell> piece_;
+  std::vector<std::vector<int>> spare_;
+  int marked_ = 0;
+  int lowest_marked_ = 0;
 };
 
 }  // namespace world

@@ -475,7 +475,32 @@ std::span<const int> Sensor::scan(const WorldMap& truth, KnownMap& known, Cell a
   // 0. Nothing to reveal when every cell in range on the map is known (a robot standing in
   //    explored space): a byte search along the rows of the disc costs less than the sweep.
   if (all_known(known, at)) return revealed_;
-  // 1. The visible targets that are still unknown, as bits by rank.
+  const Offset* const order = tables_->order.data();
+  const int width = truth.width();
+  const int at_index = at.y * width + at.x;
+  // 1. A small disc without obstacles on the true map: every target in it is visible (a ray
+  //    between the centres of two cells in range enters, or touches at a corner, only cells of
+  //    the bounding box of those two, all in range and on the map, so nothing blocks it). The
+  //    targets are then those in range, on the map and in the field of view, revealed in
+  //    offset-table order as below, with the same noise draws, and the sweep is not needed.
+  if (tables_->r <= kOpenDiscMaxCells && open_disc(truth, at)) {
+    const bool limit_fov = params_.fov_deg < 360.0;
+    const double half_fov = params_.fov_deg * (M_PI / 360.0) + kAngleSlack;
+    const auto rank_count = static_cast<std::uint32_t>(tables_->order.size());
+    for (std::uint32_t rank = 0; rank < rank_count; ++rank) {
+      const int x = at.x + order[rank].dx;
+      const int y = at.y + order[rank].dy;
+      if (x < 0 || y < 0 || x >= width || y >= truth.height()) continue;
+      const int index = y * width + x;
+      if (known_state[index] != CellState::Unknown) continue;
+      if (limit_fov && rank != 0 && angle_distance(tables_->angles[rank], heading_rad) > half_fov) continue;
+      if (noisy && rank != 0 && uniform01(rng) < params_.miss_probability) continue;
+      known.reveal(index, false);
+      revealed_.push_back(index);
+    }
+    return revealed_;
+  }
+  // 2. The visible targets that are still unknown, as bits by rank.
   std::uint64_t* const bits = seen_bits_.data();
   std::size_t first_word = seen_bits_.size();
   std::size_t last_word = 0;
@@ -490,10 +515,7 @@ std::span<const int> Sensor::scan(const WorldMap& truth, KnownMap& known, Cell a
         first_word = std::min(first_word, w);
         last_word = std::max(last_word, w);
       });
-  // 2. Reveal them in offset-table order (clearing the bits for the next scan).
-  const Offset* const order = tables_->order.data();
-  const int width = truth.width();
-  const int at_index = at.y * width + at.x;
+  // 3. Reveal them in offset-table order (clearing the bits for the next scan).
   for (std::size_t w = first_word; w <= last_word && w < seen_bits_.size(); ++w) {
     std::uint64_t word = bits[w];
     bits[w] = 0;
@@ -501,7 +523,7 @@ std::span<const int> Sensor::scan(const WorldMap& truth, KnownMap& known, Cell a
       const auto rank = static_cast<std::uint32_t>(w * 64 + static_cast<std::size_t>(std::countr_zero(word)));
       word &= word - 1;
       const int index = at_index + order[rank].dy * width + order[rank].dx;
-      // 3. Seeded miss: one draw per visible unknown cell, in table order; the robot's own
+      // 4. Seeded miss: one draw per visible unknown cell, in table order; the robot's own
       //    cell is never missed.
       if (noisy && rank != 0 && uniform01(rng) < params_.miss_probability) continue;
       known.reveal(index, occ[index] != 0);
@@ -511,22 +533,46 @@ std::span<const int> Sensor::scan(const WorldMap& truth, KnownMap& known, Cell a
   return revealed_;
 }
 
-bool Sensor::all_known(const KnownMap& known, Cell at) const {
-  static_assert(static_cast<int>(CellState::Unknown) == 0 && sizeof(CellState) == 1);
-  const Tables& t = *tables_;
-  const CellState* const state = known.cells().data().data();
-  for (int dy = -t.r; dy <= t.r; ++dy) {
+namespace {
+
+/// True when `test(first, count)` holds for every row of the disc of offsets in range around
+/// `at`, clipped to a width x height grid: the row's `count` cells from index `first` on.
+/// extent[u]: the largest v with (u, v) in range (Sensor::Tables).
+template <typename RowTest>
+bool every_disc_row(const std::vector<int>& extent, int width, int height, Cell at, RowTest&& test) {
+  const int r = static_cast<int>(extent.size()) - 1;
+  for (int dy = -r; dy <= r; ++dy) {
     const int y = at.y + dy;
-    if (y < 0 || y >= known.height()) continue;
-    const int reach = t.extent[static_cast<std::size_t>(std::abs(dy))];
+    if (y < 0 || y >= height) continue;
+    const int reach = extent[static_cast<std::size_t>(std::abs(dy))];
     const int x0 = std::max(0, at.x - reach);
-    const int x1 = std::min(known.width() - 1, at.x + reach);
-    if (x0 <= x1 && std::memchr(state + static_cast<std::ptrdiff_t>(y) * known.width() + x0, 0,
-                                static_cast<std::size_t>(x1 - x0) + 1) != nullptr) {
+    const int x1 = std::min(width - 1, at.x + reach);
+    if (x0 <= x1 &&
+        !test(static_cast<std::ptrdiff_t>(y) * width + x0, static_cast<std::size_t>(x1 - x0) + 1)) {
       return false;
     }
   }
   return true;
+}
+
+}  // namespace
+
+bool Sensor::open_disc(const WorldMap& truth, Cell at) const {
+  const std::uint8_t* const occ = truth.occupied.data().data();
+  return every_disc_row(tables_->extent, truth.width(), truth.height(), at,
+                        [occ](std::ptrdiff_t first, std::size_t count) {
+                          return std::all_of(occ + first, occ + first + static_cast<std::ptrdiff_t>(count),
+                                             [](std::uint8_t o) { return o == 0; });
+                        });
+}
+
+bool Sensor::all_known(const KnownMap& known, Cell at) const {
+  static_assert(static_cast<int>(CellState::Unknown) == 0 && sizeof(CellState) == 1);
+  const CellState* const state = known.cells().data().data();
+  return every_disc_row(tables_->extent, known.width(), known.height(), at,
+                        [state](std::ptrdiff_t first, std::size_t count) {
+                          return std::memchr(state + first, 0, count) == nullptr;
+                        });
 }
 
 ScanCounts Sensor::gain(const KnownMap& known, Cell at, double heading_rad) const {

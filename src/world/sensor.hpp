@@ -127,6 +127,11 @@ class Sensor {
   /// cells, 215 MB with a limited field of view). RunSetup refuses longer ranges.
   static constexpr int kMaxRangeCells = 2000;
 
+  /// Largest range (cells, rounded down) at which scan() first checks for a disc without
+  /// obstacles, where every target is visible and no sweep is needed: beyond it that O(r^2)
+  /// check could cost more than a sweep among walls, which follows the cells it sees.
+  static constexpr int kOpenDiscMaxCells = 8;
+
   Sensor() = default;
   Sensor(const SensorParams& params, double resolution_m);
 
@@ -176,6 +181,8 @@ class Sensor {
 
   /// True when every cell within range of `at` on the map is known (scan() has nothing to do).
   [[nodiscard]] bool all_known(const KnownMap& known, Cell at) const;
+  /// True when no cell within range of `at` on `truth` is occupied (kOpenDiscMaxCells).
+  [[nodiscard]] bool open_disc(const WorldMap& truth, Cell at) const;
 
   SensorParams params_;
   double range_cells_ = 0.0;

@@ -6,6 +6,8 @@
 #include <nlohmann/json.hpp>
 
 #include "core/config_error.hpp"
+#include "core/random.hpp"
+#include "search/distance_field.hpp"
 #include "strategies/energy_aware.hpp"
 #include "strategies/registry.hpp"
 
@@ -180,6 +182,52 @@ TEST(EnergyAware, ParamsValidateEveryProblemWithPath) {
   } catch (const ConfigError& e) {
     EXPECT_NE(std::string(e.what()).find("closest_frontier, energy_aware"), std::string::npos);
   }
+}
+
+TEST(EnergyAware, OctilePathKnownFreeOnlyWhereTheOctileLengthIsTheSearchedLength) {
+  // Where octile_path_known_free() holds, decide() takes the octile length for d_g without a
+  // search: on seeded random maps (known free, occupied and unknown cells) it must equal the
+  // searched length bit for bit under both corner rules. It must hold often, and never in a
+  // case where the searched length is longer.
+  Rng rng = make_rng(11, "octile-path-test");
+  int held = 0;
+  int longer = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    const int width = 2 + static_cast<int>(uniform_below(rng, 20));
+    const int height = 2 + static_cast<int>(uniform_below(rng, 20));
+    const double occupied = 0.3 * uniform01(rng);
+    const double unknown = 0.2 * uniform01(rng);
+    KnownMap known(width, height, 0.5);
+    for (int i = 0; i < known.size(); ++i) {
+      const double u = uniform01(rng);
+      if (u >= unknown) known.reveal(i, u < unknown + occupied);
+    }
+    const auto cell = [&] {
+      return Cell{static_cast<int>(uniform_below(rng, static_cast<std::uint64_t>(width))),
+                  static_cast<int>(uniform_below(rng, static_cast<std::uint64_t>(height)))};
+    };
+    for (int pair = 0; pair < 10; ++pair) {
+      const Cell from = cell();
+      const Cell to = cell();
+      const bool clear = octile_path_known_free(known, from, to);
+      for (const bool cut : {false, true}) {
+        DistanceQuery q;
+        q.allow_corner_cutting = cut;
+        DistanceField field;
+        field.compute(known, from, q);
+        const double searched = field.distance_m(known.index(to));
+        const double octile = octile_distance(from, to) * known.resolution_m();
+        if (clear) {
+          ASSERT_EQ(searched, octile) << "trial " << trial << " from " << from.x << "," << from.y << " to "
+                                      << to.x << "," << to.y << " cut " << cut;
+        }
+        longer += searched > octile ? 1 : 0;
+      }
+      held += clear ? 1 : 0;
+    }
+  }
+  EXPECT_GT(held, 500);
+  EXPECT_GT(longer, 500);
 }
 
 TEST(ArgminLinear, TiesBreakToLowestIndex) {

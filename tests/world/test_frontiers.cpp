@@ -39,6 +39,48 @@ TEST(Frontiers, FrontierIsKnownFreeCellWithUnknownNeighbour) {
   EXPECT_EQ(FrontierMap(known).count(), 5);
 }
 
+TEST(Frontiers, FrontierTestMatchesTheDefinitionOnRandomMaps) {
+  // The definition in frontiers.hpp, spelled out, against is_frontier_cell() at every cell of
+  // seeded random maps (edges, corners and interior cells; sealed diagonals are common with
+  // many occupied cells).
+  Rng rng = make_rng(7, "frontier-definition");
+  int frontier_cells = 0;
+  int sealed_only = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    const int width = 1 + static_cast<int>(uniform_below(rng, 12));
+    const int height = 1 + static_cast<int>(uniform_below(rng, 12));
+    KnownMap known(width, height, 1.0);
+    for (int i = 0; i < known.size(); ++i) {
+      const double u = uniform01(rng);
+      if (u < 0.4) known.reveal(i, false);
+      if (u >= 0.4 && u < 0.75) known.reveal(i, true);
+    }
+    for (int i = 0; i < known.size(); ++i) {
+      const Cell c = known.cell(i);
+      bool want = false;
+      bool sealed = false;
+      if (known.is_free(c)) {
+        for (const Cell d : kDirections) {
+          const Cell n{c.x + d.x, c.y + d.y};
+          if (!known.in_bounds(n) || known.state(n) != CellState::Unknown) continue;
+          const bool diagonal = d.x != 0 && d.y != 0;
+          if (diagonal && known.state(Cell{n.x, c.y}) == CellState::Occupied &&
+              known.state(Cell{c.x, n.y}) == CellState::Occupied) {
+            sealed = true;
+          } else {
+            want = true;
+          }
+        }
+      }
+      ASSERT_EQ(is_frontier_cell(known, i), want) << "trial " << trial << " cell " << c.x << "," << c.y;
+      frontier_cells += want ? 1 : 0;
+      sealed_only += sealed && !want ? 1 : 0;
+    }
+  }
+  EXPECT_GT(frontier_cells, 1000);
+  EXPECT_GT(sealed_only, 20);
+}
+
 TEST(Frontiers, SealedDiagonalIsNotFrontier) {
   const KnownMap sealed = ascii_known({
       ".#?",
@@ -593,8 +635,12 @@ TEST(Frontiers, TrackedClustersMatchFromScratch) {
   // scans and exclusion changes (both ways) it must equal the reference, for every setting.
   std::uint64_t seed = 300;
   int checks = 0;
+  // Besides the exploration maps, open space: long frontiers cut into short pieces, which shift
+  // one after another as the frontier grows.
+  std::vector<WorldMap> maps = exploration_maps();
+  maps.push_back(random_world(40, 40, 0.02, 3));
   for (const SensorParams& params : exploration_sensors()) {
-    for (const WorldMap& map : exploration_maps()) {
+    for (const WorldMap& map : maps) {
       SCOPED_TRACE("map " + std::to_string(map.width()) + "x" + std::to_string(map.height()) + " range " +
                    std::to_string(params.range_m));
       Sensor sensor(params, map.resolution_m);
@@ -607,7 +653,7 @@ TEST(Frontiers, TrackedClustersMatchFromScratch) {
       };
       std::vector<Tracked> tracked;
       for (const bool cut : {false, true}) {
-        for (const double length : {0.0, 2.0, 7.5})
+        for (const double length : {0.0, 2.0, 3.0, 7.5})
           tracked.push_back({cut, length, FrontierClusters(known, length, cut)});
       }
       std::vector<std::uint8_t> excluded(static_cast<std::size_t>(known.size()), 0);
@@ -651,6 +697,48 @@ TEST(Frontiers, TrackedClustersMatchFromScratch) {
     }
   }
   EXPECT_GT(checks, 300);
+}
+
+TEST(Frontiers, TrackedClustersSeeADiagonalOpenedByARevealedCell) {
+  // Frontier cells c (1, 1), s (1, 2) and n (2, 2) stay frontier cells while r (2, 1), beside
+  // the diagonal c-n, is revealed free without becoming a frontier cell itself (its neighbours
+  // are all known): no cell changes whether it may join a cluster, only r's known state, which
+  // opens the diagonal c-n (without corner cutting). The pieces near r must be walked again
+  // all the same.
+  const KnownMap before = ascii_known({
+      "?###",
+      "?.?#",
+      "?..#",
+      "????",
+  });
+  const int r = before.index(Cell{2, 1});
+  int changed = 0;
+  for (const bool cut : {false, true}) {
+    for (const double length : {0.0, 1.0, 2.0, 3.0, 4.0, 5.0}) {
+      KnownMap known = before;
+      FrontierMap frontiers(known);
+      FrontierClusters tracked(known, length, cut);
+      const std::vector<FrontierCluster> first = tracked.clusters(known, frontiers, {});
+      known.reveal(r, false);
+      const std::vector<int> revealed{r};
+      frontiers.update(known, revealed);
+      tracked.revealed(revealed);
+      ASSERT_FALSE(frontiers.is_frontier(r));
+      ASSERT_EQ(frontiers.cells(), (std::vector<int>{known.index(Cell{1, 1}), known.index(Cell{1, 2}),
+                                                     known.index(Cell{2, 2})}));
+      const auto& got = tracked.clusters(known, frontiers, {});
+      const auto want = reference_clusters(known, length, cut, {});
+      ASSERT_EQ(got.size(), want.size()) << "cut " << cut << " length " << length;
+      for (std::size_t k = 0; k < got.size(); ++k) {
+        ASSERT_EQ(got[k].cells, want[k].cells) << "cut " << cut << " length " << length << " cluster " << k;
+        ASSERT_EQ(got[k].representative, want[k].representative);
+      }
+      bool same = first.size() == want.size();
+      for (std::size_t k = 0; same && k < want.size(); ++k) same = first[k].cells == want[k].cells;
+      changed += same ? 0 : 1;
+    }
+  }
+  EXPECT_GT(changed, 0);  // some pieces do change
 }
 
 TEST(Frontiers, TrackedClustersRefuseAMapOfAnotherSize) {

@@ -891,6 +891,76 @@ TEST(SensorSweep, OneUnknownCellInAKnownDiscIsFound) {
   }
 }
 
+TEST(SensorSweep, OpenDiscEqualsTheRule) {
+  // scan() skips the sweep when no cell in range is occupied (up to Sensor::kOpenDiscMaxCells).
+  // Seeded cases where that is common: nearly open maps (a few obstacles, often at or just
+  // inside the range's rim), ranges up to and past that limit, robot near edges, field of view,
+  // noise, partly known maps. Each scan must reveal what the rule says, in order, with the same
+  // draws.
+  const std::vector<double> ranges_cells = {0.5, 1.0, 1.5, 2.0, 3.0, 4.5, 5.0, 8.0, 8.9, 9.0};
+  const std::vector<double> fovs = {360.0, 270.0, 180.0, 90.0, 45.0};
+  Rng rng = make_rng(2025, "sensor-open-disc-test");
+  const auto below = [&](int n) {
+    return static_cast<int>(uniform_below(rng, static_cast<std::uint64_t>(n)));
+  };
+  int open_scans = 0;
+  int blocked_scans = 0;
+  for (int trial = 0; trial < 800; ++trial) {
+    const int width = 1 + below(24);
+    const int height = 1 + below(24);
+    WorldMap truth = open_world(width, height);
+    const double range_cells =
+        ranges_cells[static_cast<std::size_t>(below(static_cast<int>(ranges_cells.size())))];
+    SensorParams p = range(range_cells);
+    p.fov_deg = below(2) == 0 ? 360.0 : fovs[static_cast<std::size_t>(below(static_cast<int>(fovs.size())))];
+    p.miss_probability = below(3) == 0 ? 0.3 : 0.0;
+    Cell at{below(width), below(height)};
+    if (below(3) == 0) at.x = below(2) == 0 ? 0 : width - 1;
+    // Obstacles: none, or a few anywhere, or one on the rim of the range (blocks the fast path
+    // although it hides nothing but itself).
+    const int kind = below(3);
+    if (kind == 1) {
+      for (int k = below(4); k >= 0; --k) truth.occupied[below(truth.occupied.size())] = 1;
+    } else if (kind == 2) {
+      const auto r = static_cast<int>(std::floor(range_cells));
+      const Cell rim{at.x + (below(2) == 0 ? r : -r), at.y};
+      if (truth.occupied.in_bounds(rim)) truth.occupied.at(rim) = 1;
+    }
+    truth.occupied.at(at) = 0;
+    bool open = true;
+    for (int i = 0; i < truth.occupied.size(); ++i) {
+      const Cell c = truth.occupied.cell(i);
+      const double d2 = (c.x - at.x) * (c.x - at.x) + (c.y - at.y) * (c.y - at.y);
+      if (truth.occupied[i] != 0 && d2 <= range_cells * range_cells) open = false;
+    }
+    ++(open && range_cells < Sensor::kOpenDiscMaxCells + 1 ? open_scans : blocked_scans);
+    const double heading = below(2) == 0 ? heading_angle(below(8)) : (2.0 * uniform01(rng) - 1.0) * M_PI;
+    KnownMap known(width, height, 1.0);
+    if (below(2) == 0) {
+      for (int i = 0; i < known.size(); ++i) {
+        if (uniform01(rng) < 0.3) known.reveal(i, !truth.is_free(i));
+      }
+    }
+    Sensor sensor(p, 1.0);
+    KnownMap expected_known = known;
+    Rng scan_rng = make_rng(static_cast<std::uint64_t>(trial), "sensor");
+    Rng expected_rng = scan_rng;
+    const auto got = sensor.scan(truth, known, at, heading, scan_rng);
+    const std::vector<int> expected =
+        reference_scan(sensor, truth, expected_known, at, heading, expected_rng);
+    const std::string where = "trial " + std::to_string(trial) + ": " + std::to_string(width) + "x" +
+                              std::to_string(height) + " at " + std::to_string(at.x) + "," +
+                              std::to_string(at.y) + " range " + std::to_string(range_cells) + " fov " +
+                              std::to_string(p.fov_deg) + " heading " + std::to_string(heading);
+    ASSERT_EQ(std::vector<int>(got.begin(), got.end()), expected) << where;
+    ASSERT_EQ(known, expected_known) << where;
+    ASSERT_EQ(scan_rng, expected_rng) << where;
+  }
+  // Both paths are exercised.
+  EXPECT_GT(open_scans, 300);
+  EXPECT_GT(blocked_scans, 150);
+}
+
 TEST(SensorSweep, RangeAtTheSupportedMaximum) {
   // 2000 cells is the documented maximum (sensor.hpp); more is refused.
   EXPECT_THROW(Sensor(range(2001.0), 1.0), std::invalid_argument);
