@@ -435,9 +435,13 @@ SearchOutcome BestFirstSearchT<Cost, P>::expand(Env& env, const SearchLimits& li
     }
 
     // 4. Relax the successors.
+    // The scalars by value: captured by reference they are reloaded after every store the
+    // relaxation makes (the compiler cannot tell that the stores leave them alone).
     const Cost g_top = node.g;
-    env.for_each_successor(top.state, [&](int next, Cost cost) {
-      Node& n = nodes_[idx(next)];
+    const int from = top.state;
+    Node* const nodes = nodes_.data();
+    env.for_each_successor(from, [this, &env, nodes, g_top, from, g_limit, run, pass](int next, Cost cost) {
+      Node& n = nodes[idx(next)];
       if constexpr (!kDijkstra) {
         if (n.pass == pass) return;
       }
@@ -446,7 +450,7 @@ SearchOutcome BestFirstSearchT<Cost, P>::expand(Env& env, const SearchLimits& li
       if (g_next_value > g_limit) return;
       const bool reached = n.run == run;
       if (reached && cost_value(n.g) <= g_next_value) return;
-      n = make_node(g_next, top.state, run);
+      n = make_node(g_next, from, run);
       open(env, next, g_next, reached);
     });
   }
