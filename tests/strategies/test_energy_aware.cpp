@@ -10,6 +10,7 @@
 #include "search/distance_field.hpp"
 #include "strategies/energy_aware.hpp"
 #include "strategies/registry.hpp"
+#include "world/ascii_world.hpp"
 
 namespace fsweep {
 namespace {
@@ -197,11 +198,8 @@ TEST(EnergyAware, OctilePathKnownFreeOnlyWhereTheOctileLengthIsTheSearchedLength
     const int height = 2 + static_cast<int>(uniform_below(rng, 20));
     const double occupied = 0.3 * uniform01(rng);
     const double unknown = 0.2 * uniform01(rng);
-    KnownMap known(width, height, 0.5);
-    for (int i = 0; i < known.size(); ++i) {
-      const double u = uniform01(rng);
-      if (u >= unknown) known.reveal(i, u < unknown + occupied);
-    }
+    const KnownMap known =
+        test::random_partly_known(width, height, 1.0 - unknown - occupied, occupied, rng, 0.5);
     const auto cell = [&] {
       return Cell{static_cast<int>(uniform_below(rng, static_cast<std::uint64_t>(width))),
                   static_cast<int>(uniform_below(rng, static_cast<std::uint64_t>(height)))};

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/random.hpp"
 #include "world/known_map.hpp"
 #include "world/world_map.hpp"
 
@@ -60,6 +61,18 @@ inline KnownMap ascii_known(const std::vector<std::string>& rows, double resolut
       if (c != '.' && c != '#') throw std::invalid_argument("ascii_known: bad character");
       known.reveal(known.index(Cell{x, y}), c == '#');
     }
+  }
+  return known;
+}
+
+/// A `width` x `height` known map drawn cell by cell (row-major, one uniform01 draw each) from
+/// `rng`: free with probability `p_free`, occupied with `p_occupied`, unknown otherwise.
+inline KnownMap random_partly_known(int width, int height, double p_free, double p_occupied, Rng& rng,
+                                    double resolution_m = 1.0) {
+  KnownMap known(width, height, resolution_m);
+  for (int i = 0; i < known.size(); ++i) {
+    const double u = uniform01(rng);
+    if (u < p_free + p_occupied) known.reveal(i, u >= p_free);
   }
   return known;
 }

@@ -49,12 +49,7 @@ TEST(Frontiers, FrontierTestMatchesTheDefinitionOnRandomMaps) {
   for (int trial = 0; trial < 200; ++trial) {
     const int width = 1 + static_cast<int>(uniform_below(rng, 12));
     const int height = 1 + static_cast<int>(uniform_below(rng, 12));
-    KnownMap known(width, height, 1.0);
-    for (int i = 0; i < known.size(); ++i) {
-      const double u = uniform01(rng);
-      if (u < 0.4) known.reveal(i, false);
-      if (u >= 0.4 && u < 0.75) known.reveal(i, true);
-    }
+    const KnownMap known = test::random_partly_known(width, height, 0.4, 0.35, rng);
     for (int i = 0; i < known.size(); ++i) {
       const Cell c = known.cell(i);
       bool want = false;
