@@ -26,6 +26,9 @@
 ///   `BM_ScenarioQuery`; it must find MovingAI's optimal length, and `astar`'s length and
 ///   expansions, on every query (checked before timing). Compare
 ///   `--benchmark_filter='ScenarioQuery/astar|TextbookAstar'` with interleaved repetitions.
+/// - `BM_ScenarioSearch/astar/<map>`: `astar`'s search alone on the same queries (no
+///   Planner::plan() around it): the same work as `BM_TextbookAstar`, so the two compare the
+///   search loops, and `BM_ScenarioQuery/astar` minus this is the planner interface per query.
 /// - `BM_AStarDen312d`, `BM_DijkstraDen312d`, `BM_DistanceFieldBounded/max_m:<m>`: the grid
 ///   searches on 512 seeded random reachable pairs of den312d; one iteration is one query.
 /// - `BM_<planner>512/<map>`: issue 4's query times on 512x512 maps (no 512x512 MovingAI map
@@ -55,6 +58,8 @@
 #include "planners/planner.hpp"
 #include "planners/registry.hpp"
 #include "search/distance_field.hpp"
+#include "search/grid_search.hpp"
+#include "search/octile_grid.hpp"
 #include "textbook_astar.hpp"
 #include "world/energy_model.hpp"
 #include "world/known_map.hpp"
@@ -374,6 +379,32 @@ void textbook_query(benchmark::State& state, std::size_t which) {
     return r.expansions;
   });
 }
+
+/// One iteration = every query of map `which` by `astar`'s search alone (OctileSearch over
+/// OctileGoalEnvironment, the path's cells counted): the work BM_TextbookAstar does, without
+/// Planner::plan()'s interface (endpoint checks, the clock reads of `time_s`, the path vector and
+/// its motion accounting). The gap between this and BM_ScenarioQuery/astar is that interface.
+void search_only_query(benchmark::State& state, std::size_t which) {
+  const ScenarioSet& s = scenario_set(which);
+  OctileSearch search;
+  const auto answer = [&](const PlanRequest& q) {
+    const OctileGoalEnvironment<true> env(s.known, q.goal, false);
+    const SearchOutcome outcome = search.run(env, s.known.index(q.start));
+    benchmark::DoNotOptimize(search.trace_back(outcome.goal, [](int /*state*/) {}));
+    return outcome.expansions;
+  };
+  for (const PlanRequest& q : s.queries) (void)answer(q);  // warm-up, untimed
+  time_answers(state, s, answer);
+}
+
+/// BM_ScenarioSearch/astar/<map> on every map of kScenarioMaps.
+const bool kSearchOnlyQueriesRegistered = [] {
+  for (std::size_t m = 0; m < kScenarioMaps.size(); ++m) {
+    const std::string label = std::string("BM_ScenarioSearch/astar/") + kScenarioMaps[m].label;
+    benchmark::RegisterBenchmark(label.c_str(), search_only_query, m)->Unit(benchmark::kMicrosecond);
+  }
+  return true;
+}();
 
 /// BM_TextbookAstar/<map> on every map of kScenarioMaps.
 const bool kTextbookQueriesRegistered = [] {

@@ -61,28 +61,42 @@ inline void for_each_octile_neighbour(const KnownMap& known, int index, bool all
   const int x = index % w;
   const int y = index / w;
   const CellState* cells = known.cells().data().data();
-  const auto free_at = [cells](int i) { return cells[i] == CellState::Free; };
+  const auto free_at = [cells](int i) { return static_cast<unsigned>(cells[i] == CellState::Free); };
 
-  const bool has_e = x + 1 < w;
-  const bool has_s = y + 1 < h;
-  const bool has_w = x > 0;
-  const bool has_n = y > 0;
-  const bool e = has_e && free_at(index + 1);
-  const bool s = has_s && free_at(index + w);
-  const bool wst = has_w && free_at(index - 1);
-  const bool n = has_n && free_at(index - w);
-  const bool cut = allow_corner_cutting;
-
+  const unsigned cut = allow_corner_cutting ? 1U : 0U;
   // Bit k: the move of heading k (E, SE, S, SW, W, NW, N, NE), odd headings diagonal.
-  const unsigned moves =
-      static_cast<unsigned>(e) |
-      static_cast<unsigned>(has_e && has_s && (cut || (e && s)) && free_at(index + w + 1)) << 1U |
-      static_cast<unsigned>(s) << 2U |
-      static_cast<unsigned>(has_w && has_s && (cut || (wst && s)) && free_at(index + w - 1)) << 3U |
-      static_cast<unsigned>(wst) << 4U |
-      static_cast<unsigned>(has_w && has_n && (cut || (wst && n)) && free_at(index - w - 1)) << 5U |
-      static_cast<unsigned>(n) << 6U |
-      static_cast<unsigned>(has_e && has_n && (cut || (e && n)) && free_at(index - w + 1)) << 7U;
+  unsigned moves = 0;
+  if (static_cast<unsigned>(x - 1) < static_cast<unsigned>(w - 2) &&
+      static_cast<unsigned>(y - 1) < static_cast<unsigned>(h - 2)) {
+    // Not on the border: all eight neighbours are in the grid, so every cell is read and the
+    // mask is formed without a branch.
+    const unsigned e = free_at(index + 1);
+    const unsigned s = free_at(index + w);
+    const unsigned wst = free_at(index - 1);
+    const unsigned n = free_at(index - w);
+    moves = e | (free_at(index + w + 1) & (cut | (e & s))) << 1U | s << 2U |
+            (free_at(index + w - 1) & (cut | (wst & s))) << 3U | wst << 4U |
+            (free_at(index - w - 1) & (cut | (wst & n))) << 5U | n << 6U |
+            (free_at(index - w + 1) & (cut | (e & n))) << 7U;
+  } else {
+    const bool has_e = x + 1 < w;
+    const bool has_s = y + 1 < h;
+    const bool has_w = x > 0;
+    const bool has_n = y > 0;
+    const bool e = has_e && free_at(index + 1);
+    const bool s = has_s && free_at(index + w);
+    const bool wst = has_w && free_at(index - 1);
+    const bool n = has_n && free_at(index - w);
+    moves =
+        static_cast<unsigned>(e) |
+        static_cast<unsigned>(has_e && has_s && (cut != 0 || (e && s)) && free_at(index + w + 1)) << 1U |
+        static_cast<unsigned>(s) << 2U |
+        static_cast<unsigned>(has_w && has_s && (cut != 0 || (wst && s)) && free_at(index + w - 1)) << 3U |
+        static_cast<unsigned>(wst) << 4U |
+        static_cast<unsigned>(has_w && has_n && (cut != 0 || (wst && n)) && free_at(index - w - 1)) << 5U |
+        static_cast<unsigned>(n) << 6U |
+        static_cast<unsigned>(has_e && has_n && (cut != 0 || (e && n)) && free_at(index - w + 1)) << 7U;
+  }
   const std::array<int, 8> offset{1, w + 1, w, w - 1, -1, -w - 1, -w, -w + 1};
   for (unsigned m = moves; m != 0; m &= m - 1) {
     const int k = std::countr_zero(m);
