@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -132,6 +133,51 @@ bool Simulation::stop_cell_known_free() const {
 }
 
 bool Simulation::step() {
+  return step_with([this](const Observation& obs, int /*call*/) { return strategy_->decide(obs); });
+}
+
+const Candidates* Simulation::choice() {
+  pending_.reset();
+  auto* linear = dynamic_cast<LinearScoredStrategy*>(strategy_.get());
+  if (linear == nullptr || recorder_.ended() || recorder_.metrics().steps >= setup_->max_steps)
+    return nullptr;
+  PendingChoice found;
+  bool chose = false;
+  // The decision as the strategy's own decide() makes it (LinearScoredStrategy::decide), noting the
+  // candidates of the call whose choice it is.
+  (void)decide(
+      [&](const Observation& obs, int call) {
+        Candidates c = linear->candidates(obs);
+        chose = !c.cells.empty();
+        if (!chose) return linear->on_no_candidate(obs);
+        found = PendingChoice{std::move(c), call};
+        return Decision::go_to(found.candidates.cells.front());
+      },
+      false);
+  if (!chose || found.candidates.cells.size() < 2) return nullptr;
+  pending_ = std::move(found);
+  return &pending_->candidates;
+}
+
+bool Simulation::step_choosing(int candidate) {
+  if (!pending_ || candidate < 0 ||
+      static_cast<std::size_t>(candidate) >= pending_->candidates.cells.size()) {
+    throw std::logic_error("Simulation::step_choosing: no candidate " + std::to_string(candidate) +
+                           " of a choice() on this state");
+  }
+  const PendingChoice pending = std::move(*pending_);
+  pending_.reset();
+  auto& linear = dynamic_cast<LinearScoredStrategy&>(*strategy_);
+  return step_with([&](const Observation& obs, int call) {
+    // The call before the pending one found no candidate (choice() saw it so).
+    if (call != pending.call) return linear.on_no_candidate(obs);
+    return Decision::go_to(pending.candidates.cells[static_cast<std::size_t>(candidate)]);
+  });
+}
+
+template <typename Ask>
+bool Simulation::step_with(Ask&& ask) {
+  pending_.reset();
   if (recorder_.ended()) return false;
   const auto t_start = Clock::now();
   const RunSetup& setup = *setup_;
@@ -141,7 +187,7 @@ bool Simulation::step() {
     return false;
   }
   // 1. Observe and decide.
-  const std::optional<Decision> decision = decide();
+  const std::optional<Decision> decision = decide(ask, true);
   if (decision && decision->kind == Decision::Kind::Finish) {
     if (decision->outcome == Decision::Outcome::TargetReached) {
       recorder_.reach_target(decision->detail);
@@ -172,13 +218,14 @@ bool Simulation::step() {
   return !recorder_.ended();
 }
 
-std::optional<Decision> Simulation::decide() {
+template <typename Ask>
+std::optional<Decision> Simulation::decide(Ask&& ask, bool commit) {
   const RunSetup& setup = *setup_;
   RunMetrics& m = recorder_.metrics();
   const std::vector<FrontierCluster>& clusters = belief_.clusters();
   const SegmentRestriction segment =
       heuristics_.restrict_to_segment(belief_.known(), robot_.position, clusters);
-  m.segmentation_time_s += segment.segmentation_time_s;
+  if (commit) m.segmentation_time_s += segment.segmentation_time_s;
   GridDistanceOracle oracle = belief_.distance_oracle(setup, robot_.position, robot_.dock, scratch_);
   const auto observation = [&](const SegmentRestriction& restriction) {
     return Observation{belief_.known(),
@@ -201,19 +248,19 @@ std::optional<Decision> Simulation::decide() {
   if (stop_cell_known_free()) {
     const Cell stop_cell = *setup.stop_cell;
     if (robot_.position == stop_cell) {
-      recorder_.reach_target("stop cell " + cell_text(stop_cell) + " reached");
+      if (commit) recorder_.reach_target("stop cell " + cell_text(stop_cell) + " reached");
       return std::nullopt;
     }
     const std::vector<int> stop{belief_.known().index(stop_cell)};
     to_stop_cell = std::isfinite(oracle.from_robot(stop, std::numeric_limits<double>::infinity()).front());
   }
-  Decision decision =
-      to_stop_cell ? Decision::go_to(*setup.stop_cell) : strategy_->decide(observation(segment));
+  Decision decision = to_stop_cell ? Decision::go_to(*setup.stop_cell) : ask(observation(segment), 0);
   if (segment.mask != nullptr && decision.kind == Decision::Kind::Finish) {
     // Every candidate of the robot's room failed the strategy's own tests (e.g. unreachable):
     // the segment restriction holds only while the room offers a usable candidate.
-    decision = strategy_->decide(observation(SegmentRestriction{}));
+    decision = ask(observation(SegmentRestriction{}), 1);
   }
+  if (!commit) return decision;
   m.decision_time_s += seconds_since(t_decide);
   m.planner_expansions += oracle.expansions();
   ++m.decisions;

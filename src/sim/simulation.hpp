@@ -78,6 +78,20 @@ class Simulation {
   /// Steps until the end and returns the result.
   [[nodiscard]] RunResult run();
 
+  /// The exact weight search's hooks (sweep/exact_search.hpp). When the run's strategy is
+  /// linear-scored (LinearScoredStrategy) and the next step() would choose by its weights among two
+  /// or more candidates, the candidates of that choice (the ones the strategy's argmin runs over,
+  /// segment restriction included); null when the next step's decision does not depend on the
+  /// weights (the run ended or is at its step cap, the stop cell, fewer than two candidates, another
+  /// kind of strategy). Changes nothing the run's result reports but effort metrics (its searches
+  /// warm the distance caches). The candidates stay valid until the next call of a non-const member.
+  [[nodiscard]] const Candidates* choice();
+  /// step(), with the strategy's choice replaced by candidate `candidate` of the candidates the last
+  /// choice() returned (on this simulation or on the one it was copied from since): the step a run
+  /// whose weights make argmin_linear() choose that candidate takes. Throws std::logic_error
+  /// without such candidates.
+  bool step_choosing(int candidate);
+
   [[nodiscard]] bool ended() const { return recorder_.ended(); }
   /// The result so far (final once ended()).
   [[nodiscard]] RunResult result() const&;
@@ -92,8 +106,22 @@ class Simulation {
   /// One decision's journey toward its goal (step()).
   struct Journey;
 
-  /// Decides (step 1 of step()); empty when the run ended instead (the stop cell reached).
-  std::optional<Decision> decide();
+  /// The candidates choice() found, and which of the decision's strategy calls they came from (0:
+  /// the first; 1: the second, without the segment restriction).
+  struct PendingChoice {
+    Candidates candidates;
+    int call = 0;
+  };
+
+  /// step() with the strategy's decision made by `ask(observation, call)` (call: 0 for the first
+  /// strategy call of the decision, 1 for the second, see decide()).
+  template <typename Ask>
+  bool step_with(Ask&& ask);
+  /// Decides (step 1 of step()) by `ask` as step_with() says; empty when the run ended instead
+  /// (the stop cell reached). `commit`: count the decision in the metrics and end the run at the
+  /// stop cell; without it (choice()) nothing but caches changes.
+  template <typename Ask>
+  std::optional<Decision> decide(Ask&& ask, bool commit);
   /// `recorded` (the recorder's result) completed with what depends on the map: areas, coverage,
   /// the final map and frontiers (result()).
   [[nodiscard]] RunResult completed(RunResult recorded) const;
@@ -119,6 +147,8 @@ class Simulation {
   HeuristicsPolicy heuristics_;
   /// The distance oracle's search arrays (scratch: a fork starts with empty ones).
   DistanceScratch scratch_;
+  /// What the last choice() found, until the next step.
+  std::optional<PendingChoice> pending_;
 };
 
 /// Runs `spec` to the end: a pure function of the spec (and its seed).

@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "sim/effort_free.hpp"
 #include "sim/heuristics.hpp"
 #include "sim/simulation.hpp"
 #include "strategies/registry.hpp"
@@ -37,14 +38,7 @@ RunSpec fork_spec(const std::string& strategy, json heuristics) {
   return s;
 }
 
-/// `r` with its wall-clock timings (the only fields a repeated run may change) zeroed.
-RunResult without_timing(RunResult r) {
-  r.metrics.planner_time_s = 0.0;
-  r.metrics.decision_time_s = 0.0;
-  r.metrics.wall_time_s = 0.0;
-  r.metrics.segmentation_time_s = 0.0;
-  return r;
-}
+using test::without_timing;
 
 /// Every field of the two results equal (RunResult's operator==), timings aside; the parts
 /// are checked one by one so that a failure says which.

@@ -1,0 +1,299 @@
+#include "strategies/weight_grid.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace fsweep {
+inline namespace strategies {
+namespace {
+
+constexpr std::size_t kWeights = WeightGrid::kMaxWeights;
+
+bool test_bit(const BlockBits& bits, int bit) {
+  return ((bits[static_cast<std::size_t>(bit) / 64] >> (static_cast<unsigned>(bit) % 64)) & 1U) != 0;
+}
+void set_bit(BlockBits& bits, int bit) {
+  bits[static_cast<std::size_t>(bit) / 64] |= std::uint64_t{1} << (static_cast<unsigned>(bit) % 64);
+}
+
+/// argmin_linear() over the candidates listed in `among` (ascending), at weights `w`: the same
+/// costs (linear_cost) and the same rule (strict '<', so the lowest index wins a tie).
+int argmin_among(const Candidates& c, std::span<const int> among, std::span<const double> w) {
+  const auto k = static_cast<std::size_t>(c.feature_count);
+  int best = -1;
+  double best_cost = 0.0;
+  for (const int i : among) {
+    const double cost = linear_cost(w, std::span(c.features).subspan(static_cast<std::size_t>(i) * k, k));
+    if (best < 0 || cost < best_cost) {
+      best = i;
+      best_cost = cost;
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+WeightGrid::WeightGrid(std::vector<std::vector<double>> values) : values_(std::move(values)) {
+  if (values_.empty() || values_.size() > kWeights) {
+    throw std::invalid_argument("a weight grid has 1 to 4 weights, not " + std::to_string(values_.size()));
+  }
+  for (std::size_t k = 0; k < values_.size(); ++k) {
+    const std::vector<double>& v = values_[k];
+    if (v.empty()) throw std::invalid_argument("weight " + std::to_string(k + 1) + " has no value");
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      if (!std::isfinite(v[i]) || v[i] < 0.0 || (i > 0 && !(v[i - 1] < v[i]))) {
+        throw std::invalid_argument("the values of weight " + std::to_string(k + 1) +
+                                    " must be finite, >= 0 and strictly ascending");
+      }
+    }
+    blocks_[k] = static_cast<std::uint32_t>((v.size() + kBlockEdge - 1) / kBlockEdge);
+    size_ *= v.size();
+  }
+  std::uint64_t blocks = 1;
+  for (const std::uint32_t b : blocks_) blocks *= b;
+  if (blocks > std::uint64_t{1} << 31) throw std::invalid_argument("a weight grid of more than 2^31 blocks");
+  block_count_ = static_cast<std::uint32_t>(blocks);
+}
+
+WeightGrid::BlockSpan WeightGrid::span_of(std::uint32_t block) const {
+  BlockSpan span;
+  span.extent.fill(1);
+  for (std::size_t k = kWeights; k-- > 0;) {
+    const std::uint32_t coordinate = block % blocks_[k];
+    block /= blocks_[k];
+    if (k >= values_.size()) continue;
+    span.first[k] = static_cast<int>(coordinate) * kBlockEdge;
+    span.extent[k] = std::min(kBlockEdge, static_cast<int>(values_[k].size()) - span.first[k]);
+  }
+  return span;
+}
+
+std::uint32_t WeightGrid::block_of(const std::array<int, kMaxWeights>& at) const {
+  std::uint32_t block = 0;
+  for (std::size_t k = 0; k < kWeights; ++k) {
+    block = block * blocks_[k] + static_cast<std::uint32_t>(k < values_.size() ? at[k] / kBlockEdge : 0);
+  }
+  return block;
+}
+
+int WeightGrid::bit_of(const std::array<int, kMaxWeights>& local) {
+  return ((local[0] * kBlockEdge + local[1]) * kBlockEdge + local[2]) * kBlockEdge + local[3];
+}
+
+BlockBits WeightGrid::all_bits(const BlockSpan& span) const {
+  BlockBits bits{};
+  for_each_in_block(span,
+                    [&bits](int bit, const std::array<int, kMaxWeights>& /*at*/) { set_bit(bits, bit); });
+  return bits;
+}
+
+std::vector<double> WeightGrid::weights_at(const std::array<int, kMaxWeights>& at) const {
+  std::vector<double> w(values_.size());
+  for (std::size_t k = 0; k < values_.size(); ++k) w[k] = values_[k][static_cast<std::size_t>(at[k])];
+  return w;
+}
+
+WeightRegion WeightGrid::everything() const {
+  WeightRegion region;
+  region.whole.resize(block_count_);
+  for (std::uint32_t b = 0; b < block_count_; ++b) region.whole[b] = b;
+  return region;
+}
+
+std::uint64_t WeightGrid::count(const WeightRegion& region) const {
+  std::uint64_t n = 0;
+  for (const std::uint32_t block : region.whole) {
+    const BlockSpan span = span_of(block);
+    std::uint64_t points = 1;
+    for (const int e : span.extent) points *= static_cast<std::uint64_t>(e);
+    n += points;
+  }
+  for (const WeightRegion::Part& part : region.parts) {
+    for (const std::uint64_t word : part.bits) n += static_cast<std::uint64_t>(std::popcount(word));
+  }
+  return n;
+}
+
+std::array<int, WeightGrid::kMaxWeights> WeightGrid::lexmin(const WeightRegion& region) const {
+  if (region.empty()) throw std::invalid_argument("lexmin of an empty weight region");
+  std::array<int, kMaxWeights> best{};
+  bool found = false;
+  // Within a block the first point in bit order is its smallest; across blocks compare them.
+  const auto offer = [&](const std::array<int, kMaxWeights>& at) {
+    if (!found || at < best) best = at;
+    found = true;
+  };
+  for (const std::uint32_t block : region.whole) offer(span_of(block).first);
+  for (const WeightRegion::Part& part : region.parts) {
+    bool done = false;
+    for_each_in_block(span_of(part.block), [&](int bit, const std::array<int, kMaxWeights>& at) {
+      if (!done && test_bit(part.bits, bit)) {
+        offer(at);
+        done = true;
+      }
+    });
+  }
+  return best;
+}
+
+std::array<std::array<int, 2>, WeightGrid::kMaxWeights> WeightGrid::bounds(const WeightRegion& region) const {
+  if (region.empty()) throw std::invalid_argument("bounds of an empty weight region");
+  std::array<std::array<int, 2>, kMaxWeights> box{};
+  bool found = false;
+  const auto offer = [&](const std::array<int, kMaxWeights>& lo, const std::array<int, kMaxWeights>& hi) {
+    for (std::size_t k = 0; k < kWeights; ++k) {
+      box[k][0] = found ? std::min(box[k][0], lo[k]) : lo[k];
+      box[k][1] = found ? std::max(box[k][1], hi[k]) : hi[k];
+    }
+    found = true;
+  };
+  for (const std::uint32_t block : region.whole) {
+    const BlockSpan span = span_of(block);
+    std::array<int, kMaxWeights> hi{};
+    for (std::size_t k = 0; k < kWeights; ++k) hi[k] = span.first[k] + span.extent[k] - 1;
+    offer(span.first, hi);
+  }
+  for (const WeightRegion::Part& part : region.parts) {
+    for_each_in_block(span_of(part.block), [&](int bit, const std::array<int, kMaxWeights>& at) {
+      if (test_bit(part.bits, bit)) offer(at, at);
+    });
+  }
+  return box;
+}
+
+bool WeightGrid::contains(const WeightRegion& region, const std::array<int, kMaxWeights>& at) const {
+  for (std::size_t k = 0; k < kWeights; ++k) {
+    const int size = k < values_.size() ? static_cast<int>(values_[k].size()) : 1;
+    if (at[k] < 0 || at[k] >= size) return false;
+  }
+  const std::uint32_t block = block_of(at);
+  if (std::binary_search(region.whole.begin(), region.whole.end(), block)) return true;
+  const auto part =
+      std::lower_bound(region.parts.begin(), region.parts.end(), block,
+                       [](const WeightRegion::Part& p, std::uint32_t b) { return p.block < b; });
+  if (part == region.parts.end() || part->block != block) return false;
+  std::array<int, kMaxWeights> local{};
+  for (std::size_t k = 0; k < kWeights; ++k) local[k] = at[k] % kBlockEdge;
+  return test_bit(part->bits, bit_of(local));
+}
+
+std::vector<WeightGrid::Share> WeightGrid::split(const WeightRegion& region,
+                                                 const Candidates& candidates) const {
+  const auto n = static_cast<int>(candidates.cells.size());
+  const auto k = static_cast<std::size_t>(candidates.feature_count);
+  if (n == 0 || candidates.feature_count != weights() ||
+      candidates.features.size() != static_cast<std::size_t>(n) * k) {
+    throw std::invalid_argument("weight grid split: candidates do not match the grid's weights");
+  }
+  const std::span<const double> features(candidates.features);
+  const bool bounded =
+      std::all_of(features.begin(), features.end(), [](double f) { return std::isfinite(f); });
+
+  // Per candidate, the region it wins (blocks in ascending order, as `region`'s).
+  std::vector<WeightRegion> won(static_cast<std::size_t>(n));
+  std::vector<double> lo_cost(static_cast<std::size_t>(n));
+  std::vector<double> hi_cost(static_cast<std::size_t>(n));
+  std::vector<double> w_lo(k);
+  std::vector<double> w_hi(k);
+  std::vector<double> w(k);
+  std::vector<int> among;
+  std::vector<BlockBits> shares(static_cast<std::size_t>(n));
+  std::vector<std::uint8_t> touched(static_cast<std::size_t>(n));
+
+  // Block `block` (its member points `member`, all when null): whole to one candidate if one
+  // wins everywhere in it, else point by point.
+  const auto decide_block = [&](std::uint32_t block, const BlockBits* member) {
+    const BlockSpan span = span_of(block);
+    among.clear();
+    if (bounded) {
+      int first = 0;
+      for (int i = 0; i < n; ++i) {
+        const std::span<const double> f = features.subspan(static_cast<std::size_t>(i) * k, k);
+        for (std::size_t j = 0; j < k; ++j) {
+          const double lo = values_[j][static_cast<std::size_t>(span.first[j])];
+          const double hi = values_[j][static_cast<std::size_t>(span.first[j] + span.extent[j] - 1)];
+          w_lo[j] = f[j] >= 0.0 ? lo : hi;
+          w_hi[j] = f[j] >= 0.0 ? hi : lo;
+        }
+        lo_cost[static_cast<std::size_t>(i)] = linear_cost(w_lo, f);
+        hi_cost[static_cast<std::size_t>(i)] = linear_cost(w_hi, f);
+        if (hi_cost[static_cast<std::size_t>(i)] < hi_cost[static_cast<std::size_t>(first)]) first = i;
+      }
+      // Only the candidate of the smallest highest cost (lowest index on a tie) can win the
+      // whole block; it does when every other candidate's lowest cost is above its highest, or
+      // equal to it and the other comes later (the tie rule).
+      const double ceiling = hi_cost[static_cast<std::size_t>(first)];
+      bool whole = true;
+      for (int i = 0; i < n; ++i) {
+        if (i == first) continue;
+        const double other = lo_cost[static_cast<std::size_t>(i)];
+        if (other < ceiling || (other == ceiling && i < first)) whole = false;
+        // A candidate whose lowest cost is above the ceiling loses at every point of the block.
+        if (other <= ceiling) among.push_back(i);
+      }
+      if (whole) {
+        WeightRegion& to = won[static_cast<std::size_t>(first)];
+        if (member == nullptr) {
+          to.whole.push_back(block);
+        } else {
+          to.parts.push_back({block, *member});
+        }
+        return;
+      }
+      among.push_back(first);
+      std::sort(among.begin(), among.end());
+    } else {
+      for (int i = 0; i < n; ++i) among.push_back(i);
+    }
+    // Point by point, by argmin_linear's own rule over the candidates that can win here.
+    for (const int i : among) {
+      shares[static_cast<std::size_t>(i)] = BlockBits{};
+      touched[static_cast<std::size_t>(i)] = 0;
+    }
+    for_each_in_block(span, [&](int bit, const std::array<int, kMaxWeights>& at) {
+      if (member != nullptr && !test_bit(*member, bit)) return;
+      for (std::size_t j = 0; j < k; ++j) w[j] = values_[j][static_cast<std::size_t>(at[j])];
+      const int best = argmin_among(candidates, among, w);
+      set_bit(shares[static_cast<std::size_t>(best)], bit);
+      touched[static_cast<std::size_t>(best)] = 1;
+    });
+    const BlockBits full = member == nullptr ? all_bits(span) : *member;
+    for (const int i : among) {
+      if (touched[static_cast<std::size_t>(i)] == 0) continue;
+      WeightRegion& to = won[static_cast<std::size_t>(i)];
+      if (shares[static_cast<std::size_t>(i)] == full && member == nullptr) {
+        to.whole.push_back(block);
+      } else {
+        to.parts.push_back({block, shares[static_cast<std::size_t>(i)]});
+      }
+    }
+  };
+
+  for (const std::uint32_t block : region.whole) decide_block(block, nullptr);
+  std::vector<std::size_t> parts_from_whole(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i)
+    parts_from_whole[static_cast<std::size_t>(i)] = won[static_cast<std::size_t>(i)].parts.size();
+  for (const WeightRegion::Part& part : region.parts) decide_block(part.block, &part.bits);
+
+  std::vector<Share> result;
+  for (int i = 0; i < n; ++i) {
+    WeightRegion& r = won[static_cast<std::size_t>(i)];
+    if (r.empty()) continue;
+    // The parts came in two ascending runs (from the region's whole blocks, then from its parts).
+    const auto middle =
+        r.parts.begin() + static_cast<std::ptrdiff_t>(parts_from_whole[static_cast<std::size_t>(i)]);
+    std::inplace_merge(
+        r.parts.begin(), middle, r.parts.end(),
+        [](const WeightRegion::Part& a, const WeightRegion::Part& b) { return a.block < b.block; });
+    result.push_back({i, std::move(r)});
+  }
+  return result;
+}
+
+}  // namespace strategies
+}  // namespace fsweep

@@ -1,0 +1,152 @@
+#pragma once
+/// @file weight_grid.hpp
+/// Sets of weight vectors for the exact weight search (docs/architecture.md, "The exact weight
+/// search"): a WeightGrid is the product of one sorted list of values per weight (e.g. the
+/// integers 0..250 four times), a WeightRegion any subset of its points, and
+/// WeightGrid::split() divides a region by which candidate argmin_linear() chooses at each of
+/// its points.
+///
+/// Exact by construction: a point goes to the candidate that argmin_linear() itself chooses for
+/// those weights, the same function on the same doubles as a run with those weights alone.
+/// Points are stored in blocks of 8 values per weight (8^4 = 4,096 points for four weights);
+/// a block is decided whole, without looking at its points, when one candidate provably wins at
+/// all of them: with finite features, each product w_k * F_k rounds monotonically in w_k
+/// (increasing for F_k >= 0, decreasing for F_k < 0) and so does each sum, so linear_cost() over a
+/// block lies between its values at two corners of the block (chosen per feature by its sign),
+/// bit for bit. A block that no candidate wins whole is decided point by point.
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "strategies/strategy.hpp"
+
+namespace fsweep {
+inline namespace strategies {
+
+/// Points of one block of a WeightGrid, as bits (bit = local index, see WeightGrid).
+using BlockBits = std::array<std::uint64_t, 64>;
+
+/// A set of points of a WeightGrid: blocks it holds whole (every grid point of the block) and
+/// blocks it holds in part, each in ascending block order.
+struct WeightRegion {
+  struct Part {
+    std::uint32_t block = 0;
+    BlockBits bits{};
+  };
+  std::vector<std::uint32_t> whole;
+  std::vector<Part> parts;
+  [[nodiscard]] bool empty() const { return whole.empty() && parts.empty(); }
+};
+
+/// The product of sorted value lists, one per weight (1 to 4 weights).
+class WeightGrid {
+ public:
+  static constexpr int kMaxWeights = 4;
+  /// Values per weight along one edge of a block.
+  static constexpr int kBlockEdge = 8;
+
+  /// `values[k]`: the values of weight k, strictly ascending, finite and >= 0, at least one.
+  /// Throws std::invalid_argument otherwise.
+  explicit WeightGrid(std::vector<std::vector<double>> values);
+
+  [[nodiscard]] int weights() const { return static_cast<int>(values_.size()); }
+  [[nodiscard]] std::span<const double> values(int k) const { return values_[static_cast<std::size_t>(k)]; }
+  /// Points of the grid (the product of the list sizes).
+  [[nodiscard]] std::uint64_t size() const { return size_; }
+
+  /// The region of every point.
+  [[nodiscard]] WeightRegion everything() const;
+  /// Points in `region`.
+  [[nodiscard]] std::uint64_t count(const WeightRegion& region) const;
+  /// The lexicographically smallest point of a non-empty region (by weight 0, then 1, ...), as
+  /// indices into the value lists.
+  [[nodiscard]] std::array<int, kMaxWeights> lexmin(const WeightRegion& region) const;
+  /// Per weight, the smallest and largest index of the region's points (non-empty region).
+  [[nodiscard]] std::array<std::array<int, 2>, kMaxWeights> bounds(const WeightRegion& region) const;
+  /// True when the point of indices `at` is in `region`.
+  [[nodiscard]] bool contains(const WeightRegion& region, const std::array<int, kMaxWeights>& at) const;
+  /// Calls `f(indices)` for every point of `region`, in ascending block order and, within a
+  /// block, lexicographically.
+  template <typename F>
+  void for_each_point(const WeightRegion& region, F&& f) const;
+  /// The weight vector of the point of indices `at`.
+  [[nodiscard]] std::vector<double> weights_at(const std::array<int, kMaxWeights>& at) const;
+
+  /// One part of a split: the points where candidate `candidate` is argmin_linear's choice.
+  struct Share {
+    int candidate = 0;
+    WeightRegion region;
+  };
+  /// `region` divided by argmin_linear(candidates, w) at each of its points w: the non-empty
+  /// shares in ascending candidate order. `candidates` must have at least one candidate and
+  /// weights() features.
+  [[nodiscard]] std::vector<Share> split(const WeightRegion& region, const Candidates& candidates) const;
+
+ private:
+  /// The first grid index of block `block` along each weight, and the number of grid values it
+  /// spans there (kBlockEdge, or fewer at the grid's end).
+  struct BlockSpan {
+    std::array<int, kMaxWeights> first{};
+    std::array<int, kMaxWeights> extent{};
+  };
+  [[nodiscard]] BlockSpan span_of(std::uint32_t block) const;
+  [[nodiscard]] std::uint32_t block_of(const std::array<int, kMaxWeights>& at) const;
+  /// The bit of local coordinates `local` (each below kBlockEdge) within a block.
+  [[nodiscard]] static int bit_of(const std::array<int, kMaxWeights>& local);
+  /// Calls `f(bit, indices)` for every grid point of block `span`, lexicographically.
+  template <typename F>
+  void for_each_in_block(const BlockSpan& span, F&& f) const;
+  /// The bits of every grid point of a block.
+  [[nodiscard]] BlockBits all_bits(const BlockSpan& span) const;
+
+  std::vector<std::vector<double>> values_;
+  std::array<std::uint32_t, kMaxWeights> blocks_{1, 1, 1, 1};
+  std::uint32_t block_count_ = 1;
+  std::uint64_t size_ = 1;
+};
+
+template <typename F>
+void WeightGrid::for_each_in_block(const BlockSpan& span, F&& f) const {
+  std::array<int, kMaxWeights> local{};
+  std::array<int, kMaxWeights> at{};
+  const int n = weights();
+  for (local[0] = 0; local[0] < span.extent[0]; ++local[0]) {
+    for (local[1] = 0; local[1] < span.extent[1]; ++local[1]) {
+      for (local[2] = 0; local[2] < span.extent[2]; ++local[2]) {
+        for (local[3] = 0; local[3] < span.extent[3]; ++local[3]) {
+          for (int k = 0; k < n; ++k)
+            at[static_cast<std::size_t>(k)] =
+                span.first[static_cast<std::size_t>(k)] + local[static_cast<std::size_t>(k)];
+          f(bit_of(local), at);
+        }
+      }
+    }
+  }
+}
+
+template <typename F>
+void WeightGrid::for_each_point(const WeightRegion& region, F&& f) const {
+  auto part = region.parts.begin();
+  auto whole = region.whole.begin();
+  while (part != region.parts.end() || whole != region.whole.end()) {
+    const bool take_whole =
+        part == region.parts.end() || (whole != region.whole.end() && *whole < part->block);
+    if (take_whole) {
+      for_each_in_block(span_of(*whole), [&](int /*bit*/, const std::array<int, kMaxWeights>& at) { f(at); });
+      ++whole;
+    } else {
+      const BlockBits& bits = part->bits;
+      for_each_in_block(span_of(part->block), [&](int bit, const std::array<int, kMaxWeights>& at) {
+        if (((bits[static_cast<std::size_t>(bit) / 64] >> (static_cast<unsigned>(bit) % 64)) & 1U) != 0)
+          f(at);
+      });
+      ++part;
+    }
+  }
+}
+
+}  // namespace strategies
+}  // namespace fsweep

@@ -1,0 +1,115 @@
+#include "sweep/exact_search.hpp"
+
+#include <oneapi/tbb/global_control.h>
+#include <oneapi/tbb/task_arena.h>
+#include <oneapi/tbb/task_group.h>
+
+#include <atomic>
+#include <mutex>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "sim/simulation.hpp"
+
+namespace fsweep {
+inline namespace sweep {
+namespace {
+
+/// One node of the region tree being explored: a simulation and the weight vectors it stands for.
+struct Branch {
+  Simulation sim;
+  WeightRegion region;
+  std::vector<int> choices;
+};
+
+class Explorer {
+ public:
+  Explorer(const WeightGrid& grid, tbb::task_group& tasks,
+           const std::function<void(Behaviour&&)>& on_behaviour)
+      : grid_(grid), tasks_(tasks), on_behaviour_(on_behaviour) {}
+
+  /// Follows `b` to the end of its run, forking a task for every share but the last at each
+  /// split (the last goes on in this one).
+  void explore(Branch b) {
+    for (;;) {
+      if (b.sim.ended()) return finish(std::move(b));
+      const Candidates* candidates = b.sim.choice();
+      if (candidates == nullptr) {
+        (void)b.sim.step();
+        continue;
+      }
+      std::vector<WeightGrid::Share> shares = grid_.split(b.region, *candidates);
+      if (shares.size() > 1) {
+        splits_.fetch_add(1, std::memory_order_relaxed);
+        forks_.fetch_add(shares.size() - 1, std::memory_order_relaxed);
+      }
+      for (std::size_t s = 0; s + 1 < shares.size(); ++s) {
+        auto fork = std::make_shared<Branch>(Branch{b.sim, std::move(shares[s].region), b.choices});
+        fork->choices.push_back(shares[s].candidate);
+        const int candidate = shares[s].candidate;
+        tasks_.run([this, fork, candidate] {
+          (void)fork->sim.step_choosing(candidate);
+          explore(std::move(*fork));
+        });
+      }
+      WeightGrid::Share& last = shares.back();
+      if (shares.size() > 1) b.choices.push_back(last.candidate);
+      b.region = std::move(last.region);
+      (void)b.sim.step_choosing(last.candidate);
+    }
+  }
+
+  [[nodiscard]] ExactSearchStats stats() const { return {behaviours_.load(), splits_.load(), forks_.load()}; }
+
+ private:
+  void finish(Branch b) {
+    Behaviour out;
+    out.vectors = grid_.count(b.region);
+    out.representative = grid_.lexmin(b.region);
+    out.bounds = grid_.bounds(b.region);
+    out.choices = std::move(b.choices);
+    out.region = std::move(b.region);
+    out.result = std::move(b.sim).result();
+    behaviours_.fetch_add(1, std::memory_order_relaxed);
+    const std::lock_guard<std::mutex> lock(mutex_);
+    on_behaviour_(std::move(out));
+  }
+
+  const WeightGrid& grid_;
+  tbb::task_group& tasks_;
+  const std::function<void(Behaviour&&)>& on_behaviour_;
+  std::mutex mutex_;
+  std::atomic<std::uint64_t> behaviours_{0};
+  std::atomic<std::uint64_t> splits_{0};
+  std::atomic<std::uint64_t> forks_{0};
+};
+
+}  // namespace
+
+ExactSearchStats exact_search(const RunSpec& spec, const WeightGrid& grid, int threads,
+                              const std::function<void(Behaviour&&)>& on_behaviour) {
+  if (threads < 1) throw std::invalid_argument("exact_search: threads must be >= 1");
+  Simulation root(spec);
+  if (dynamic_cast<const LinearScoredStrategy*>(spec.strategy.make(spec.seed).get()) == nullptr) {
+    throw std::invalid_argument("exact_search: strategy " + spec.strategy.name + " is not linear-scored");
+  }
+  ExactSearchStats stats;
+  // Up to `threads` workers: the global limit as well, since task_group tasks may otherwise
+  // run on the default arena's workers (as sweep_runner.cpp does).
+  const tbb::global_control allow(tbb::global_control::max_allowed_parallelism,
+                                  static_cast<std::size_t>(threads));
+  tbb::task_arena arena(threads);
+  arena.execute([&] {
+    tbb::task_group tasks;
+    Explorer explorer(grid, tasks, on_behaviour);
+    tasks.run([&] { explorer.explore(Branch{std::move(root), grid.everything(), {}}); });
+    tasks.wait();
+    stats = explorer.stats();
+  });
+  return stats;
+}
+
+}  // namespace sweep
+}  // namespace fsweep

@@ -1,0 +1,59 @@
+#pragma once
+/// @file exact_search.hpp
+/// The exact weight search (docs/architecture.md, "The exact weight search"): every distinct
+/// behaviour of a linear-scored strategy over a whole grid of weight vectors, by decision
+/// sharing. One simulation starts with the region of every weight vector; at each decision
+/// whose choice depends on the weights (Simulation::choice()), the region is split by which
+/// candidate argmin_linear() chooses at each of its points (WeightGrid::split()), the
+/// simulation is forked once per non-empty share, and each fork goes on with its share. Each
+/// finished simulation is one behaviour, produced by exactly the weight vectors of its region:
+/// for each of them, a run with those weights alone makes the same choices, so it ends the same
+/// way with the same quality metrics (effort metrics, the `*_time_s` and `*_expansions`
+/// columns, measure the shared search instead).
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "sim/run_result.hpp"
+#include "sim/run_spec.hpp"
+#include "strategies/weight_grid.hpp"
+
+namespace fsweep {
+inline namespace sweep {
+
+/// One behaviour: the weight vectors that produce it and its run.
+struct Behaviour {
+  /// The candidate chosen at each decision that split its region (the path in the region tree).
+  std::vector<int> choices;
+  /// Its weight vectors.
+  WeightRegion region;
+  /// How many.
+  std::uint64_t vectors = 0;
+  /// The lexicographically smallest of them and, per weight, the smallest and largest index
+  /// among them (indices into the grid's value lists).
+  std::array<int, WeightGrid::kMaxWeights> representative{};
+  std::array<std::array<int, 2>, WeightGrid::kMaxWeights> bounds{};
+  RunResult result;
+};
+
+/// What an exact search did.
+struct ExactSearchStats {
+  /// Behaviours found, decisions that split a region, simulations forked.
+  std::uint64_t behaviours = 0;
+  std::uint64_t splits = 0;
+  std::uint64_t forks = 0;
+};
+
+/// Searches `grid` for `spec`, whose strategy must be linear-scored with grid.weights()
+/// features (its own weights do not matter). Calls `on_behaviour` once per behaviour, from any
+/// thread but never two at once, in an order that depends on the threads (sort by
+/// `choices` or `representative` for a fixed order). `threads` >= 1 (oneTBB tasks over the
+/// region tree). Throws ConfigError for a bad spec, std::invalid_argument for a strategy that is
+/// not linear-scored or does not match the grid.
+ExactSearchStats exact_search(const RunSpec& spec, const WeightGrid& grid, int threads,
+                              const std::function<void(Behaviour&&)>& on_behaviour);
+
+}  // namespace sweep
+}  // namespace fsweep

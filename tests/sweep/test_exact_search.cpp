@@ -1,0 +1,151 @@
+// The exact weight search against brute force: for every weight vector of small grids, the
+// behaviour the search attributes to it is the run simulate() gives for that vector alone (end
+// reason and every field of the result but the effort metrics), the behaviours' vector counts
+// add up to the grid, and the result is the same for any thread count.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "sim/effort_free.hpp"
+#include "sim/heuristics.hpp"
+#include "sim/simulation.hpp"
+#include "strategies/registry.hpp"
+#include "sweep/exact_search.hpp"
+#include "world/map_spec.hpp"
+
+namespace fsweep {
+namespace {
+
+using nlohmann::json;
+using Point = std::array<int, WeightGrid::kMaxWeights>;
+
+/// An energy-aware run on `map` whose choices depend on all four weights: a battery (d_gbe
+/// changes sign at half charge, eq. 9) and a short sensor (many decisions).
+RunSpec spec_on(const std::string& map, double battery, const json& heuristics = json::array()) {
+  RunSpec s;
+  s.map = std::make_shared<const WorldMap>(load_map_spec(map));
+  s.strategy = configure_strategy("energy_aware", nullptr);
+  s.heuristics = heuristics_from_json(heuristics, "heuristics");
+  s.robot.sensor.range_m = 3.0;
+  s.robot.battery_capacity = battery;
+  s.seed = 5;
+  return s;
+}
+
+using test::without_effort;
+
+/// The behaviours of `spec` over `grid`, in order of their choices.
+std::vector<Behaviour> behaviours_of(const RunSpec& spec, const WeightGrid& grid, int threads,
+                                     ExactSearchStats* stats = nullptr) {
+  std::vector<Behaviour> found;
+  const ExactSearchStats s =
+      exact_search(spec, grid, threads, [&](Behaviour&& b) { found.push_back(std::move(b)); });
+  if (stats != nullptr) *stats = s;
+  std::sort(found.begin(), found.end(),
+            [](const Behaviour& a, const Behaviour& b) { return a.choices < b.choices; });
+  return found;
+}
+
+/// `spec` with the energy-aware weights `w`.
+RunSpec with_weights(RunSpec spec, const std::vector<double>& w) {
+  spec.strategy =
+      configure_strategy("energy_aware", json{{"w1", w[0]}, {"w2", w[1]}, {"w3", w[2]}, {"w4", w[3]}});
+  return spec;
+}
+
+/// Every point of `grid` is in exactly one behaviour, whose result is the brute-force run's.
+void expect_agrees_with_brute_force(const RunSpec& spec, const WeightGrid& grid, const std::string& what) {
+  const std::vector<Behaviour> behaviours = behaviours_of(spec, grid, 2);
+  // Weights that never change a choice would test nothing.
+  ASSERT_GE(behaviours.size(), 5U) << what;
+  std::cout << what << ": " << behaviours.size() << " behaviours of " << grid.size() << " vectors\n";
+  std::uint64_t total = 0;
+  for (const Behaviour& b : behaviours) {
+    total += b.vectors;
+    EXPECT_EQ(b.vectors, grid.count(b.region)) << what;
+    EXPECT_TRUE(grid.contains(b.region, b.representative)) << what;
+  }
+  EXPECT_EQ(total, grid.size()) << what;
+  std::map<Point, std::size_t> owner;
+  for (std::size_t i = 0; i < behaviours.size(); ++i) {
+    grid.for_each_point(behaviours[i].region, [&](const Point& at) {
+      EXPECT_TRUE(owner.emplace(at, i).second) << what << ": a point in two behaviours";
+    });
+  }
+  ASSERT_EQ(owner.size(), grid.size()) << what;
+  for (const auto& [at, i] : owner) {
+    const Behaviour& b = behaviours[i];
+    // The representative is the smallest point, and the bounds hold every point.
+    EXPECT_LE(b.representative, at) << what;
+    for (std::size_t k = 0; k < WeightGrid::kMaxWeights; ++k) {
+      EXPECT_LE(b.bounds[k][0], at[k]) << what;
+      EXPECT_GE(b.bounds[k][1], at[k]) << what;
+    }
+    const std::vector<double> w = grid.weights_at(at);
+    const RunResult alone = without_effort(simulate(with_weights(spec, w)));
+    const RunResult shared = without_effort(b.result);
+    ASSERT_EQ(alone.end, shared.end) << what << " at (" << w[0] << ", " << w[1] << ", " << w[2] << ", "
+                                     << w[3] << ")";
+    ASSERT_TRUE(alone == shared) << what << " at (" << w[0] << ", " << w[1] << ", " << w[2] << ", " << w[3]
+                                 << "): distance " << alone.metrics.distance_m << " alone, "
+                                 << shared.metrics.distance_m << " shared";
+  }
+}
+
+std::vector<double> integers(int from, int to, int step = 1) {
+  std::vector<double> v;
+  for (int i = from; i <= to; i += step) v.push_back(i);
+  return v;
+}
+
+TEST(ExactSearch, EveryVectorOfASmallBoxBehavesAsItsRunAlone) {
+  const RunSpec spec = spec_on("office:w=32,h=32,seed=3", 120.0);
+  const WeightGrid grid({integers(0, 6), integers(0, 6), integers(0, 6), integers(0, 6)});
+  expect_agrees_with_brute_force(spec, grid, "office [0,6]^4");
+}
+
+TEST(ExactSearch, ScaledCopiesBoundariesAndTheZeroVectorBehaveAsTheirRunsAlone) {
+  // Steps and offsets that put points on the boundaries of decisions between candidates
+  // (scaled copies of one direction, e.g. (10, 0, 9, 20) and (20, 0, 18, 40)), the zero vector
+  // (every cost 0: the lowest candidate), and blocks cut at the grid's end (sizes not
+  // multiples of 8).
+  const RunSpec spec = spec_on("rooms:w=22,h=22,seed=4", 90.0, json({"rr"}));
+  const WeightGrid grid({{0, 10, 20, 30}, {0, 1}, {0, 9, 18, 27}, integers(0, 40, 4)});
+  expect_agrees_with_brute_force(spec, grid, "rooms scaled");
+}
+
+TEST(ExactSearch, IsTheSameForAnyThreadCount) {
+  const RunSpec spec = spec_on("office:w=32,h=32,seed=3", 120.0);
+  const WeightGrid grid({integers(0, 20, 2), integers(0, 20, 5), integers(0, 20, 2), integers(0, 20, 4)});
+  ExactSearchStats one_stats;
+  ExactSearchStats two_stats;
+  const std::vector<Behaviour> one = behaviours_of(spec, grid, 1, &one_stats);
+  const std::vector<Behaviour> two = behaviours_of(spec, grid, 2, &two_stats);
+  ASSERT_EQ(one.size(), two.size());
+  EXPECT_GT(one.size(), 1U) << "weights that never matter test nothing";
+  for (std::size_t i = 0; i < one.size(); ++i) {
+    EXPECT_EQ(one[i].choices, two[i].choices);
+    EXPECT_EQ(one[i].vectors, two[i].vectors);
+    EXPECT_EQ(one[i].representative, two[i].representative);
+    EXPECT_TRUE(without_effort(one[i].result) == without_effort(two[i].result));
+  }
+  EXPECT_EQ(one_stats.splits, two_stats.splits);
+  EXPECT_EQ(one_stats.forks + 1, one.size());
+}
+
+TEST(ExactSearch, RefusesAStrategyThatIsNotLinearScored) {
+  RunSpec spec = spec_on("office:w=32,h=32,seed=3", 120.0);
+  spec.strategy = configure_strategy("random_frontier", nullptr);
+  const WeightGrid grid({integers(0, 2), integers(0, 2), integers(0, 2), integers(0, 2)});
+  EXPECT_THROW((void)behaviours_of(spec, grid, 1), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace fsweep
