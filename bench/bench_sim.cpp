@@ -17,6 +17,11 @@
 /// - `BM_ExploreRooms800/<strategy>`: the same on rooms:w=800,h=800 (seed 1, door 1 as the
 ///   generator's default), closest_frontier and energy_aware (10,0,9,20), unlimited battery:
 ///   the size at which energy-aware decisions used to cost 95x closest frontier's (issue 14).
+/// - `BM_ExactWeightSearch/step:<s>` and `BM_BruteWeightSearch/step:<s>`: Rappaport 2016's
+///   free-space weight search (sweeps/paper/rappaport2016_weights_free.json's setting on an
+///   unclipped 69x69 map: 10 m cells, sensor 30 m, `distance` energy, range 600 m) over the
+///   grid {0, s, 2s, ..., 250}^4, on one thread: the exact search (sweep/exact_search.hpp) and one
+///   simulate() per vector. `behaviours` counts the distinct behaviours, `vectors` the grid.
 /// - `BM_RappaportFree/r:<m>/<strategy>`: Rappaport 2016's free space (10 m cells, sensor 30 m,
 ///   `distance` energy, battery range r, dock at the centre) on an unclipped square, half-width
 ///   r/2 + r_s + 1 cell, as sweeps/paper/ sizes it, at r = 1800, 3600 and the paper's 9000 m;
@@ -33,8 +38,11 @@
 #include <nlohmann/json.hpp>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "sim/simulation.hpp"
+#include "strategies/weight_grid.hpp"
+#include "sweep/exact_search.hpp"
 #include "sweep/sweep_plan.hpp"
 #include "sweep/sweep_table.hpp"
 #include "world/map_spec.hpp"
@@ -221,6 +229,59 @@ RunSpec rappaport_free_spec(const Item& strategy, double range_m) {
   s.robot.battery_capacity = range_m;
   return s;
 }
+
+/// The free-space weight search's run (see the file comment) with energy-aware weights `w`.
+RunSpec weight_search_spec(const std::vector<double>& w) {
+  static const auto kMap = std::make_shared<const WorldMap>(load_map_spec("free:w=69,h=69,res=10"));
+  RunSpec s;
+  s.map = kMap;
+  s.strategy = configure_strategy("energy_aware", {{"w1", w[0]}, {"w2", w[1]}, {"w3", w[2]}, {"w4", w[3]}});
+  s.robot.sensor.range_m = 30.0;
+  s.robot.energy = energy_preset("distance");
+  s.robot.battery_capacity = 600.0;
+  s.sim.progress_step_m = 200.0;
+  s.seed = 2016;
+  return s;
+}
+
+/// {0, step, 2 step, ...} up to 250, four times.
+WeightGrid weight_search_grid(int step) {
+  std::vector<double> values;
+  for (int v = 0; v <= 250; v += step) values.push_back(v);
+  return WeightGrid({values, values, values, values});
+}
+
+void BM_ExactWeightSearch(benchmark::State& state) {
+  const WeightGrid grid = weight_search_grid(static_cast<int>(state.range(0)));
+  const RunSpec spec = weight_search_spec({10, 0, 9, 20});
+  std::uint64_t behaviours = 0;
+  for (auto _ : state) {
+    behaviours =
+        exact_search(spec, grid, 1, [](Behaviour&& b) { benchmark::DoNotOptimize(b.vectors); }).behaviours;
+  }
+  state.counters["behaviours"] = static_cast<double>(behaviours);
+  state.counters["vectors"] = static_cast<double>(grid.size());
+}
+
+void BM_BruteWeightSearch(benchmark::State& state) {
+  const WeightGrid grid = weight_search_grid(static_cast<int>(state.range(0)));
+  for (auto _ : state) {
+    grid.for_each_point(grid.everything(), [&](const std::array<int, WeightGrid::kMaxWeights>& at) {
+      const RunResult r = simulate(weight_search_spec(grid.weights_at(at)));
+      benchmark::DoNotOptimize(r.metrics.distance_m);
+    });
+  }
+  state.counters["vectors"] = static_cast<double>(grid.size());
+}
+// NOLINTBEGIN(readability-identifier-naming): Google Benchmark's BM_ names
+BENCHMARK(BM_ExactWeightSearch)
+    ->ArgName("step")
+    ->Arg(50)
+    ->Arg(25)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
+BENCHMARK(BM_BruteWeightSearch)->ArgName("step")->Arg(50)->Unit(benchmark::kMillisecond)->Iterations(1);
+// NOLINTEND(readability-identifier-naming)
 
 const bool kLargeRunsRegistered = [] {
   for (const Item& strategy : large_run_strategies()) {

@@ -159,6 +159,13 @@ const Candidates* Simulation::choice() {
   return &pending_->candidates;
 }
 
+void Simulation::set_weights(std::span<const double> weights) {
+  auto* linear = dynamic_cast<LinearScoredStrategy*>(strategy_.get());
+  if (linear == nullptr) throw std::logic_error("Simulation::set_weights: the strategy is not linear-scored");
+  pending_.reset();
+  linear->set_weights(weights);
+}
+
 bool Simulation::step_choosing(int candidate) {
   if (!pending_ || candidate < 0 ||
       static_cast<std::size_t>(candidate) >= pending_->candidates.cells.size()) {

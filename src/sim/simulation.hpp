@@ -5,6 +5,7 @@
 
 #include <memory>
 #include <optional>
+#include <span>
 
 #include "planners/planner.hpp"
 #include "sim/belief.hpp"
@@ -91,6 +92,10 @@ class Simulation {
   /// whose weights make argmin_linear() choose that candidate takes. Throws std::logic_error
   /// without such candidates.
   bool step_choosing(int candidate);
+
+  /// Makes the run's linear-scored strategy score by `weights` from now on
+  /// (LinearScoredStrategy::set_weights). Throws std::logic_error for another kind of strategy.
+  void set_weights(std::span<const double> weights);
 
   [[nodiscard]] bool ended() const { return recorder_.ended(); }
   /// The result so far (final once ended()).

@@ -7,6 +7,8 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "core/config_error.hpp"
@@ -125,6 +127,18 @@ EnergyAware::Terms EnergyAware::terms(const Observation& obs) const {
   t.width = obs.known.width();
   t.theta_.assign(t.reps.size(), std::numeric_limits<double>::quiet_NaN());
   return t;
+}
+
+void EnergyAware::set_weights(std::span<const double> weights) {
+  if (weights.size() != weights_.size()) {
+    throw std::invalid_argument(name_ + ": set_weights needs " + std::to_string(weights_.size()) +
+                                " weights");
+  }
+  std::copy(weights.begin(), weights.end(), weights_.begin());
+  params_.w1 = weights_[0];
+  params_.w2 = weights_[1];
+  params_.w3 = weights_[2];
+  params_.w4 = weights_[3];
 }
 
 Candidates EnergyAware::candidates(const Observation& obs) {

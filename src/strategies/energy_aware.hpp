@@ -70,6 +70,7 @@ class EnergyAware final : public LinearScoredStrategy {
   [[nodiscard]] Decision decide(const Observation& obs) override;
   [[nodiscard]] Candidates candidates(const Observation& obs) override;
   [[nodiscard]] std::span<const double> weights() const override { return weights_; }
+  void set_weights(std::span<const double> weights) override;
   [[nodiscard]] Decision on_no_candidate(const Observation& obs) override;
   [[nodiscard]] std::unique_ptr<Strategy> clone() const override {
     return std::make_unique<EnergyAware>(*this);

@@ -175,6 +175,10 @@ class LinearScoredStrategy : public Strategy {
   /// The candidates of this decision, after any feasibility filter.
   [[nodiscard]] virtual Candidates candidates(const Observation& obs) = 0;
   [[nodiscard]] virtual std::span<const double> weights() const = 0;
+  /// Makes the strategy score by `weights` (as many as weights() has, each in its allowed range)
+  /// from now on: the exact weight search (sweep/exact_search.hpp) lets a simulation whose region
+  /// has one weight vector left go on as a run with those weights.
+  virtual void set_weights(std::span<const double> weights) = 0;
   /// What to do when no candidate survives.
   [[nodiscard]] virtual Decision on_no_candidate(const Observation& obs) = 0;
 

@@ -35,6 +35,13 @@ class Explorer {
   void explore(Branch b) {
     for (;;) {
       if (b.sim.ended()) return finish(std::move(b));
+      if (grid_.count(b.region) == 1) {
+        // One vector left: the rest is its run alone, by the strategy's own (cheaper) decisions.
+        b.sim.set_weights(grid_.weights_at(grid_.lexmin(b.region)));
+        while (b.sim.step()) {
+        }
+        return finish(std::move(b));
+      }
       const Candidates* candidates = b.sim.choice();
       if (candidates == nullptr) {
         (void)b.sim.step();
