@@ -36,7 +36,7 @@
 ///   2006 section V-B, 1 = `rooms`). Every benchmark runs the same 32 seeded reachable queries
 ///   exactly once (random start headings, `mei2006` energy); the reported time is the mean per
 ///   query and `median_ms` the median query time. These take about 25 s per repetition and
-///   are left out of the nightly set (`--benchmark_filter=-512`).
+///   are left out of the nightly set (`--benchmark_filter='-512|Slow'`).
 ///
 /// Every benchmark plans one query (`BM_PlannerQuery`: its whole set) before timing, so the
 /// planners' search arrays are allocated outside the timed loop.

@@ -22,6 +22,8 @@
 ///   unclipped 69x69 map: 10 m cells, sensor 30 m, `distance` energy, range 600 m) over the
 ///   grid {0, s, 2s, ..., 250}^4, on one thread: the exact search (sweep/exact_search.hpp) and one
 ///   simulate() per vector. `behaviours` counts the distinct behaviours, `vectors` the grid.
+///   `BM_ExactWeightSearchBox16` and `BM_BruteWeightSearchBox16Slow` (about 3 minutes, left out
+///   of the nightly set): the same at step 1 over a 16^4 box (box16_grid()).
 /// - `BM_RappaportFree/r:<m>/<strategy>`: Rappaport 2016's free space (10 m cells, sensor 30 m,
 ///   `distance` energy, battery range r, dock at the centre) on an unclipped square, half-width
 ///   r/2 + r_s + 1 cell, as sweeps/paper/ sizes it, at r = 1800, 3600 and the paper's 9000 m;
@@ -251,8 +253,8 @@ WeightGrid weight_search_grid(int step) {
   return WeightGrid({values, values, values, values});
 }
 
-void BM_ExactWeightSearch(benchmark::State& state) {
-  const WeightGrid grid = weight_search_grid(static_cast<int>(state.range(0)));
+/// The exact search over `grid` on one thread.
+void exact_weight_search(benchmark::State& state, const WeightGrid& grid) {
   const RunSpec spec = weight_search_spec({10, 0, 9, 20});
   std::uint64_t behaviours = 0;
   for (auto _ : state) {
@@ -263,8 +265,25 @@ void BM_ExactWeightSearch(benchmark::State& state) {
   state.counters["vectors"] = static_cast<double>(grid.size());
 }
 
-void BM_BruteWeightSearch(benchmark::State& state) {
-  const WeightGrid grid = weight_search_grid(static_cast<int>(state.range(0)));
+void BM_ExactWeightSearch(benchmark::State& state) {
+  exact_weight_search(state, weight_search_grid(static_cast<int>(state.range(0))));
+}
+
+/// Every integer vector of a 16^4 box at step 1 around the step-25 search's best, (100, 25, 75,
+/// 0): w1 in 96..111, w2 in 16..31, w3 in 64..79, w4 in 0..15.
+WeightGrid box16_grid() {
+  const auto from = [](int first) {
+    std::vector<double> v;
+    for (int i = first; i < first + 16; ++i) v.push_back(i);
+    return v;
+  };
+  return WeightGrid({from(96), from(16), from(64), from(0)});
+}
+
+void BM_ExactWeightSearchBox16(benchmark::State& state) { exact_weight_search(state, box16_grid()); }
+
+/// One simulate() per vector of `grid`.
+void brute_weight_search(benchmark::State& state, const WeightGrid& grid) {
   for (auto _ : state) {
     grid.for_each_point(grid.everything(), [&](const std::array<int, WeightGrid::kMaxWeights>& at) {
       const RunResult r = simulate(weight_search_spec(grid.weights_at(at)));
@@ -273,6 +292,11 @@ void BM_BruteWeightSearch(benchmark::State& state) {
   }
   state.counters["vectors"] = static_cast<double>(grid.size());
 }
+void BM_BruteWeightSearch(benchmark::State& state) {
+  brute_weight_search(state, weight_search_grid(static_cast<int>(state.range(0))));
+}
+/// About 3 minutes: left out of the nightly set by its name.
+void BM_BruteWeightSearchBox16Slow(benchmark::State& state) { brute_weight_search(state, box16_grid()); }
 // NOLINTBEGIN(readability-identifier-naming): Google Benchmark's BM_ names
 BENCHMARK(BM_ExactWeightSearch)
     ->ArgName("step")
@@ -280,6 +304,8 @@ BENCHMARK(BM_ExactWeightSearch)
     ->Arg(25)
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
+BENCHMARK(BM_ExactWeightSearchBox16)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_BruteWeightSearchBox16Slow)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_BruteWeightSearch)->ArgName("step")->Arg(50)->Unit(benchmark::kMillisecond)->Iterations(1);
 // NOLINTEND(readability-identifier-naming)
 

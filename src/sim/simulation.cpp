@@ -136,7 +136,7 @@ bool Simulation::step() {
   return step_with([this](const Observation& obs, int /*call*/) { return strategy_->decide(obs); });
 }
 
-const Candidates* Simulation::choice() {
+const Candidates* Simulation::choice(std::span<const double> w_lo, std::span<const double> w_hi) {
   pending_.reset();
   auto* linear = dynamic_cast<LinearScoredStrategy*>(strategy_.get());
   if (linear == nullptr || recorder_.ended() || recorder_.metrics().steps >= setup_->max_steps)
@@ -147,14 +147,14 @@ const Candidates* Simulation::choice() {
   // candidates of the call whose choice it is.
   (void)decide(
       [&](const Observation& obs, int call) {
-        Candidates c = linear->candidates(obs);
+        Candidates c = linear->candidates_within(obs, w_lo, w_hi);
         chose = !c.cells.empty();
         if (!chose) return linear->on_no_candidate(obs);
         found = PendingChoice{std::move(c), call};
         return Decision::go_to(found.candidates.cells.front());
       },
       false);
-  if (!chose || found.candidates.cells.size() < 2) return nullptr;
+  if (!chose) return nullptr;
   pending_ = std::move(found);
   return &pending_->candidates;
 }

@@ -80,13 +80,15 @@ class Simulation {
   [[nodiscard]] RunResult run();
 
   /// The exact weight search's hooks (sweep/exact_search.hpp). When the run's strategy is
-  /// linear-scored (LinearScoredStrategy) and the next step() would choose by its weights among two
-  /// or more candidates, the candidates of that choice (the ones the strategy's argmin runs over,
-  /// segment restriction included); null when the next step's decision does not depend on the
-  /// weights (the run ended or is at its step cap, the stop cell, fewer than two candidates, another
-  /// kind of strategy). Changes nothing the run's result reports but effort metrics (its searches
-  /// warm the distance caches). The candidates stay valid until the next call of a non-const member.
-  [[nodiscard]] const Candidates* choice();
+  /// linear-scored (LinearScoredStrategy) and the next step() would choose by its weights among
+  /// candidates, the candidates of that choice (the ones the strategy's argmin runs over, segment
+  /// restriction included, as candidates_within() the weight bounds: possibly just one); null when
+  /// the next step's decision does not depend on the weights (the run ended or is at its step cap,
+  /// the stop cell, no candidate, another kind of strategy). Changes nothing the run's result reports but
+  /// effort metrics (its searches warm the distance caches). The candidates stay valid until the next call of
+  /// a non-const member. `w_lo`, `w_hi`: bounds of the weight vectors the caller asks for (each weight); the
+  /// candidates are LinearScoredStrategy::candidates_within() them.
+  [[nodiscard]] const Candidates* choice(std::span<const double> w_lo, std::span<const double> w_hi);
   /// step(), with the strategy's choice replaced by candidate `candidate` of the candidates the last
   /// choice() returned (on this simulation or on the one it was copied from since): the step a run
   /// whose weights make argmin_linear() choose that candidate takes. Throws std::logic_error

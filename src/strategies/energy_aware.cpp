@@ -167,30 +167,48 @@ Candidates EnergyAware::candidates(const Observation& obs) {
 
 namespace {
 
+/// What the watchers of a decision's search from the robot keep: the decision's terms, each
+/// representative's lower bound of d_g, and which representatives are still open (not reached,
+/// and not rejected).
+class RepresentativeWatch : public SettleWatcher {
+ public:
+  /// True while representative i is not reached and passes eq. 7 at its lower bound.
+  [[nodiscard]] bool open(std::size_t i) const { return open_[i] != 0; }
+
+ protected:
+  RepresentativeWatch(const EnergyAware::Terms& terms, std::vector<double> lower_bound_m)
+      : terms_(terms), lower_bound_m_(std::move(lower_bound_m)), open_(terms.reps.size(), 1) {
+    for (std::size_t i = 0; i < open_.size(); ++i) {
+      if (!terms_.feasible(i, lower_bound_m_[i])) open_[i] = 0;
+    }
+  }
+  /// Representative i is reached at `d_g`: closes it, and returns true when it was open and
+  /// passes eq. 7 there (from_robot() reads a length beyond its bound d_l as unreachable).
+  bool reach(std::size_t i, double d_g) {
+    if (open_[i] == 0) return false;
+    open_[i] = 0;
+    return d_g <= terms_.d_l && terms_.feasible(i, d_g);
+  }
+
+  const EnergyAware::Terms& terms_;
+  std::vector<double> lower_bound_m_;
+  std::vector<std::uint8_t> open_;  // 1: not yet reached, and might still win
+};
+
 /// The energy-aware choice made while the search from the robot grows (SettleWatcher): the
 /// same argmin as argmin_linear over candidates() (ties to the lowest representative), with the
 /// search stopped as soon as no representative not yet reached can beat or tie the best one.
 /// A representative not yet reached is at least max(radius, its static lower bound) away, and
 /// its cost at that distance (linear_cost, which never decreases as d_g grows) bounds its real
 /// cost; eq. 7 rejects by the same bound. Only exact lengths make a representative the best.
-class WatchedChoice final : public SettleWatcher {
+class WatchedChoice final : public RepresentativeWatch {
  public:
   WatchedChoice(const EnergyAware::Terms& terms, std::span<const double> weights,
                 std::vector<double> lower_bound_m)
-      : terms_(terms),
-        weights_(weights),
-        lower_bound_m_(std::move(lower_bound_m)),
-        open_(terms.reps.size(), 1) {
-    for (std::size_t i = 0; i < open_.size(); ++i) {
-      if (!terms_.feasible(i, lower_bound_m_[i])) open_[i] = 0;
-    }
-  }
+      : RepresentativeWatch(terms, std::move(lower_bound_m)), weights_(weights) {}
 
   void settled(std::size_t i, double d_g) override {
-    if (open_[i] == 0) return;
-    open_[i] = 0;
-    // from_robot() reads a length beyond its bound d_l as unreachable.
-    if (!(d_g <= terms_.d_l) || !terms_.feasible(i, d_g)) return;
+    if (!reach(i, d_g)) return;
     const double cost = cost_at(i, d_g);
     if (best_ < 0 || cost < best_cost_ || (cost == best_cost_ && i < static_cast<std::size_t>(best_))) {
       best_ = static_cast<int>(i);
@@ -222,8 +240,6 @@ class WatchedChoice final : public SettleWatcher {
   /// Representative i's cost at its lower bound with theta_rel at 0 (a lower bound of its
   /// cost that needs no theta_rel).
   [[nodiscard]] double bound_cost(std::size_t i) const { return cost_without_theta(i, lower_bound_m_[i]); }
-  /// True while representative i is not reached and passes eq. 7 at its lower bound.
-  [[nodiscard]] bool open(std::size_t i) const { return open_[i] != 0; }
   /// True when representative i, by bound_cost(), can no longer beat or tie the best to win.
   [[nodiscard]] bool beaten(std::size_t i) const { return loses(i, bound_cost(i)); }
   /// True when representative i, by its cost at its lower bound, can no longer win.
@@ -254,15 +270,115 @@ class WatchedChoice final : public SettleWatcher {
     return r;
   }
 
-  const EnergyAware::Terms& terms_;
   std::span<const double> weights_;
-  std::vector<double> lower_bound_m_;
-  std::vector<std::uint8_t> open_;  // 1: not yet reached, and might still win
   int best_ = -1;
   double best_cost_ = 0.0;
 };
 
 }  // namespace
+
+namespace {
+
+/// The representatives that may win somewhere in a box of weight vectors, found while the search
+/// from the robot grows (SettleWatcher): WatchedChoice for a box. A reached representative that
+/// passes eq. 7 is kept with its exact length; one not yet reached closes once its lowest cost in
+/// the box (at max(radius, its lower bound), theta_rel at 0) is above the highest cost in the
+/// box of a kept one (or equal, and it comes later), since it then loses at every vector of the
+/// box. The costs at the box's corners bound the costs inside (linear_cost rounds monotonically
+/// in each weight, by the sign of its feature).
+class BoxWatch final : public RepresentativeWatch {
+ public:
+  BoxWatch(const EnergyAware::Terms& terms, std::span<const double> w_lo, std::span<const double> w_hi,
+           std::vector<double> lower_bound_m)
+      : RepresentativeWatch(terms, std::move(lower_bound_m)),
+        w_lo_(w_lo),
+        w_hi_(w_hi),
+        d_g_(terms.reps.size(), std::numeric_limits<double>::infinity()) {}
+
+  void settled(std::size_t i, double d_g) override {
+    if (!reach(i, d_g)) return;
+    d_g_[i] = d_g;
+    const double ceiling = corner_cost(terms_.features(i, d_g), true);
+    if (best_ < 0 || ceiling < ceiling_ || (ceiling == ceiling_ && i < static_cast<std::size_t>(best_))) {
+      best_ = static_cast<int>(i);
+      ceiling_ = ceiling;
+      next_ = -std::numeric_limits<double>::infinity();  // the representatives may close sooner now
+    }
+  }
+
+  double go_on_until(double radius_m) override {
+    // Asked after every settled representative: look again only where one may close.
+    if (radius_m < next_) return next_;
+    bool any_open = false;
+    double next = std::numeric_limits<double>::infinity();
+    const double w1 = w_lo_[0];
+    for (std::size_t i = 0; i < open_.size(); ++i) {
+      if (open_[i] == 0) continue;
+      const double d_g = std::max(radius_m, lower_bound_m_[i]);
+      const double lowest = corner_cost(terms_.features_without_theta(i, d_g), false);
+      if (!terms_.feasible(i, d_g) || loses(i, lowest)) {
+        open_[i] = 0;
+        continue;
+      }
+      any_open = true;
+      // About where it closes (eq. 7, or its lowest cost passing the ceiling): an estimate, as
+      // go_on_until decides on the exact bounds when asked there.
+      double r = terms_.d_l - terms_.d_gb[i];
+      if (best_ >= 0 && w1 > 0.0) r = std::min(r, d_g + (ceiling_ - lowest) / w1);
+      next = std::min(next, r);
+    }
+    if (!any_open) return -std::numeric_limits<double>::infinity();
+    next_ = std::max(next, radius_m);
+    return next_;
+  }
+
+  /// The exact length of representative i if it was reached and passes eq. 7, else +infinity.
+  [[nodiscard]] double d_g(std::size_t i) const { return d_g_[i]; }
+
+ private:
+  /// linear_cost of `row` at the box's corner where it is highest (`highest`) or lowest.
+  [[nodiscard]] double corner_cost(const std::array<double, EnergyAware::kFeatures>& row,
+                                   bool highest) const {
+    std::array<double, EnergyAware::kFeatures> w{};
+    for (std::size_t k = 0; k < w.size(); ++k) w[k] = (row[k] >= 0.0) == highest ? w_hi_[k] : w_lo_[k];
+    return linear_cost(w, row);
+  }
+  [[nodiscard]] bool loses(std::size_t i, double lowest) const {
+    return best_ >= 0 && (lowest > ceiling_ || (lowest == ceiling_ && i > static_cast<std::size_t>(best_)));
+  }
+
+  std::span<const double> w_lo_;
+  std::span<const double> w_hi_;
+  std::vector<double> d_g_;
+  int best_ = -1;
+  double ceiling_ = 0.0;
+  /// The radius below which no representative closes (until the ceiling drops).
+  double next_ = -std::numeric_limits<double>::infinity();
+};
+
+}  // namespace
+
+Candidates EnergyAware::candidates_within(const Observation& obs, std::span<const double> w_lo,
+                                          std::span<const double> w_hi) {
+  if (params_.distance != "path" || obs.clusters.empty()) return candidates(obs);
+  if (w_lo.size() != kFeatures || w_hi.size() != kFeatures) {
+    throw std::invalid_argument(name_ + ": candidates_within needs " + std::to_string(kFeatures) +
+                                " weights");
+  }
+  const Terms t = terms(obs);
+  BoxWatch watch(t, w_lo, w_hi, obs.distances.lower_bounds_from_robot(t.reps));
+  obs.distances.watch_from_robot(t.reps, t.d_l, watch);
+  Candidates out;
+  out.feature_count = kFeatures;
+  for (std::size_t i = 0; i < t.reps.size(); ++i) {
+    const double d_g = watch.d_g(i);
+    if (!std::isfinite(d_g)) continue;
+    out.cells.push_back(obs.known.cell(t.reps[i]));
+    const auto row = t.features(i, d_g);
+    out.features.insert(out.features.end(), row.begin(), row.end());
+  }
+  return out;
+}
 
 bool octile_path_known_free(const KnownMap& known, Cell from, Cell to) {
   const int sx = to.x > from.x ? 1 : (to.x < from.x ? -1 : 0);

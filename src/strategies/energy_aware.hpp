@@ -69,6 +69,11 @@ class EnergyAware final : public LinearScoredStrategy {
   [[nodiscard]] std::string name() const override { return name_; }
   [[nodiscard]] Decision decide(const Observation& obs) override;
   [[nodiscard]] Candidates candidates(const Observation& obs) override;
+  /// With path distances, the search from the robot stops once no representative it has not
+  /// reached can win anywhere in the weight box (its lowest cost there, at its distance bound,
+  /// above the highest cost there of one it reached), as decide() does for one weight vector.
+  [[nodiscard]] Candidates candidates_within(const Observation& obs, std::span<const double> w_lo,
+                                             std::span<const double> w_hi) override;
   [[nodiscard]] std::span<const double> weights() const override { return weights_; }
   void set_weights(std::span<const double> weights) override;
   [[nodiscard]] Decision on_no_candidate(const Observation& obs) override;

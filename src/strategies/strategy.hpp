@@ -174,6 +174,18 @@ class LinearScoredStrategy : public Strategy {
  public:
   /// The candidates of this decision, after any feasibility filter.
   [[nodiscard]] virtual Candidates candidates(const Observation& obs) = 0;
+  /// The candidates of this decision that argmin_linear() may choose for some weight vector w
+  /// with w_lo <= w <= w_hi (each weight), in the order of candidates(), with the same features:
+  /// candidates() with some of those left out that lose at every such w (cost above another's,
+  /// or equal and later), so that argmin_linear() over them chooses the same cell as over
+  /// candidates() at every such w. The exact weight search asks this with its region's bounds;
+  /// a strategy may compute less for it. The default is candidates().
+  [[nodiscard]] virtual Candidates candidates_within(const Observation& obs, std::span<const double> w_lo,
+                                                     std::span<const double> w_hi) {
+    (void)w_lo;
+    (void)w_hi;
+    return candidates(obs);
+  }
   [[nodiscard]] virtual std::span<const double> weights() const = 0;
   /// Makes the strategy score by `weights` (as many as weights() has, each in its allowed range)
   /// from now on: the exact weight search (sweep/exact_search.hpp) lets a simulation whose region

@@ -4,6 +4,7 @@
 #include <oneapi/tbb/task_arena.h>
 #include <oneapi/tbb/task_group.h>
 
+#include <array>
 #include <atomic>
 #include <mutex>
 #include <optional>
@@ -22,6 +23,8 @@ struct Branch {
   Simulation sim;
   WeightRegion region;
   std::vector<int> choices;
+  /// The region's bounds (WeightGrid::bounds), once computed: they change only at a split.
+  std::optional<std::array<std::array<int, 2>, WeightGrid::kMaxWeights>> box;
 };
 
 class Explorer {
@@ -33,6 +36,8 @@ class Explorer {
   /// Follows `b` to the end of its run, forking a task for every share but the last at each
   /// split (the last goes on in this one).
   void explore(Branch b) {
+    std::vector<double> w_lo(static_cast<std::size_t>(grid_.weights()));
+    std::vector<double> w_hi(w_lo.size());
     for (;;) {
       if (b.sim.ended()) return finish(std::move(b));
       if (grid_.count(b.region) == 1) {
@@ -42,9 +47,20 @@ class Explorer {
         }
         return finish(std::move(b));
       }
-      const Candidates* candidates = b.sim.choice();
-      if (candidates == nullptr) {
+      if (!b.box) b.box = grid_.bounds(b.region);
+      const auto& box = *b.box;
+      for (int k = 0; k < grid_.weights(); ++k) {
+        const auto at = static_cast<std::size_t>(k);
+        w_lo[at] = grid_.values(k)[static_cast<std::size_t>(box[at][0])];
+        w_hi[at] = grid_.values(k)[static_cast<std::size_t>(box[at][1])];
+      }
+      const Candidates* candidates = b.sim.choice(w_lo, w_hi);
+      if (candidates == nullptr) {  // a decision no weight changes
         (void)b.sim.step();
+        continue;
+      }
+      if (candidates->cells.size() == 1) {  // the only candidate any weight vector here may choose
+        (void)b.sim.step_choosing(0);
         continue;
       }
       std::vector<WeightGrid::Share> shares = grid_.split(b.region, *candidates);
@@ -53,7 +69,8 @@ class Explorer {
         forks_.fetch_add(shares.size() - 1, std::memory_order_relaxed);
       }
       for (std::size_t s = 0; s + 1 < shares.size(); ++s) {
-        auto fork = std::make_shared<Branch>(Branch{b.sim, std::move(shares[s].region), b.choices});
+        auto fork =
+            std::make_shared<Branch>(Branch{b.sim, std::move(shares[s].region), b.choices, std::nullopt});
         fork->choices.push_back(shares[s].candidate);
         const int candidate = shares[s].candidate;
         tasks_.run([this, fork, candidate] {
@@ -64,6 +81,7 @@ class Explorer {
       WeightGrid::Share& last = shares.back();
       if (shares.size() > 1) b.choices.push_back(last.candidate);
       b.region = std::move(last.region);
+      if (shares.size() > 1) b.box.reset();
       (void)b.sim.step_choosing(last.candidate);
     }
   }
@@ -111,7 +129,7 @@ ExactSearchStats exact_search(const RunSpec& spec, const WeightGrid& grid, int t
   arena.execute([&] {
     tbb::task_group tasks;
     Explorer explorer(grid, tasks, on_behaviour);
-    tasks.run([&] { explorer.explore(Branch{std::move(root), grid.everything(), {}}); });
+    tasks.run([&] { explorer.explore(Branch{std::move(root), grid.everything(), {}, std::nullopt}); });
     tasks.wait();
     stats = explorer.stats();
   });

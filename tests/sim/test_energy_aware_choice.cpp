@@ -78,6 +78,12 @@ struct RandomDecision {
       if (known.is_free(i)) return known.cell(i);
     }
   }
+
+  /// The decision's observation, with distances from `oracle`.
+  [[nodiscard]] Observation observe(DistanceOracle& oracle) const {
+    return Observation{known, frontiers, clusters,     oracle, sensor,  robot,
+                       0,     previous,  std::nullopt, dock,   battery, 1};
+  }
 };
 
 /// Integer weights in [0, 30] (ties happen often), some of them zero, and the special vectors.
@@ -112,18 +118,14 @@ TEST(EnergyAwareChoice, BoundedSearchChoosesExactlyTheFullArgmin) {
       const std::array<double, 4> w = random_weights(rng, round);
       EnergyAware ea = energy_aware(w);
       DistanceScratch scratch;
-      const auto observe = [&](DistanceOracle& oracle) {
-        return Observation{d.known, d.frontiers, d.clusters,   oracle, d.sensor,  d.robot,
-                           0,       d.previous,  std::nullopt, d.dock, d.battery, 1};
-      };
       // The full computation, on its own dock field copy (a DockField is a value).
       DockField full_dock = d.dock_field;
       GridDistanceOracle full_oracle(d.known, d.robot, d.dock, d.corner_cutting, &full_dock, scratch);
-      const Candidates c = ea.candidates(observe(full_oracle));
+      const Candidates c = ea.candidates(d.observe(full_oracle));
       const int best = argmin_linear(c, ea.weights());
       DockField dock = d.dock_field;
       GridDistanceOracle oracle(d.known, d.robot, d.dock, d.corner_cutting, &dock, scratch);
-      const Decision decision = ea.decide(observe(oracle));
+      const Decision decision = ea.decide(d.observe(oracle));
       ++decisions;
       if (best < 0) {
         EXPECT_NE(decision.kind, Decision::Kind::GoTo) << "seed " << seed << " round " << round;
@@ -140,6 +142,68 @@ TEST(EnergyAwareChoice, BoundedSearchChoosesExactlyTheFullArgmin) {
   EXPECT_EQ(decisions, 320);
   EXPECT_GT(goto_decisions, 200);  // most situations have a candidate: the test compares choices
   EXPECT_LT(bounded_work, full_work / 2);
+}
+
+TEST(EnergyAwareChoice, CandidatesWithinABoxChooseAsAllCandidatesAtEveryVectorOfIt) {
+  // candidates_within(lo, hi) may leave candidates out, but at every weight vector of the box
+  // argmin_linear over what it keeps chooses the cell argmin_linear over candidates() chooses
+  // (the exact weight search relies on it), and it does less work on narrow boxes.
+  int compared = 0;
+  int left_out = 0;
+  long within_work = 0;
+  long full_work = 0;
+  for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+    RandomDecision d(seed, seed % 3 == 0 ? 0.05 : 1.0);
+    Rng rng = make_rng(seed, "boxes");
+    for (int round = 0; round < 10; ++round) {
+      // Boxes of every width, some touching w = 0 (where d_g may not matter at all).
+      std::array<double, 4> lo{};
+      std::array<double, 4> hi{};
+      for (std::size_t k = 0; k < 4; ++k) {
+        lo[k] = static_cast<double>(uniform_below(rng, 25));
+        hi[k] = lo[k] + static_cast<double>(uniform_below(rng, round < 6 ? 6 : 30));
+        if (uniform_below(rng, 4) == 0) lo[k] = 0.0;
+      }
+      EnergyAware ea = energy_aware({10, 0, 9, 20});
+      DistanceScratch scratch;
+      DockField full_dock = d.dock_field;
+      GridDistanceOracle full_oracle(d.known, d.robot, d.dock, d.corner_cutting, &full_dock, scratch);
+      const Candidates all = ea.candidates(d.observe(full_oracle));
+      DockField dock = d.dock_field;
+      GridDistanceOracle oracle(d.known, d.robot, d.dock, d.corner_cutting, &dock, scratch);
+      const Candidates kept = ea.candidates_within(d.observe(oracle), lo, hi);
+      ASSERT_EQ(all.cells.empty(), kept.cells.empty()) << "seed " << seed << " round " << round;
+      left_out += static_cast<int>(all.cells.size() - kept.cells.size());
+      within_work += oracle.expansions();
+      full_work += full_oracle.expansions();
+      if (all.cells.empty()) continue;
+      // Every integer vector of a box of at most 4,096, else its corners and 400 samples.
+      std::uint64_t size = 1;
+      for (std::size_t k = 0; k < 4; ++k) size *= static_cast<std::uint64_t>(hi[k] - lo[k]) + 1;
+      const bool every = size <= 4096;
+      for (std::uint64_t sample = 0; sample < (every ? size : 416); ++sample) {
+        std::array<double, 4> w{};
+        std::uint64_t rest = sample;
+        for (std::size_t k = 0; k < 4; ++k) {
+          const auto span = static_cast<std::uint64_t>(hi[k] - lo[k]) + 1;
+          std::uint64_t offset = rest % span;
+          if (!every) offset = sample < 16 ? ((sample >> k) & 1) * (span - 1) : uniform_below(rng, span);
+          rest /= span;
+          w[k] = lo[k] + static_cast<double>(offset);
+        }
+        const int a = argmin_linear(all, w);
+        const int b = argmin_linear(kept, w);
+        ASSERT_GE(b, 0);
+        ASSERT_EQ(all.cells[static_cast<std::size_t>(a)], kept.cells[static_cast<std::size_t>(b)])
+            << "seed " << seed << " round " << round << " w (" << w[0] << ", " << w[1] << ", " << w[2] << ", "
+            << w[3] << ")";
+        ++compared;
+      }
+    }
+  }
+  EXPECT_GT(compared, 100000);
+  EXPECT_GT(left_out, 100);  // narrow boxes do leave candidates out
+  EXPECT_LT(within_work, full_work);
 }
 
 TEST(EnergyAwareChoice, LowerBoundsNeverExceedTheSearchedDistances) {
