@@ -23,8 +23,10 @@ struct Branch {
   Simulation sim;
   WeightRegion region;
   std::vector<int> choices;
-  /// The region's bounds (WeightGrid::bounds), once computed: they change only at a split.
+  /// The region's bounds (WeightGrid::bounds) and size, once computed: they change only at a
+  /// split.
   std::optional<std::array<std::array<int, 2>, WeightGrid::kMaxWeights>> box;
+  std::optional<std::uint64_t> vectors;
 };
 
 class Explorer {
@@ -40,7 +42,8 @@ class Explorer {
     std::vector<double> w_hi(w_lo.size());
     for (;;) {
       if (b.sim.ended()) return finish(std::move(b));
-      if (grid_.count(b.region) == 1) {
+      if (!b.vectors) b.vectors = grid_.count(b.region);
+      if (*b.vectors == 1) {
         // One vector left: the rest is its run alone, by the strategy's own (cheaper) decisions.
         b.sim.set_weights(grid_.weights_at(grid_.lexmin(b.region)));
         while (b.sim.step()) {
@@ -69,8 +72,8 @@ class Explorer {
         forks_.fetch_add(shares.size() - 1, std::memory_order_relaxed);
       }
       for (std::size_t s = 0; s + 1 < shares.size(); ++s) {
-        auto fork =
-            std::make_shared<Branch>(Branch{b.sim, std::move(shares[s].region), b.choices, std::nullopt});
+        auto fork = std::make_shared<Branch>(
+            Branch{b.sim, std::move(shares[s].region), b.choices, std::nullopt, std::nullopt});
         fork->choices.push_back(shares[s].candidate);
         const int candidate = shares[s].candidate;
         tasks_.run([this, fork, candidate] {
@@ -81,7 +84,10 @@ class Explorer {
       WeightGrid::Share& last = shares.back();
       if (shares.size() > 1) b.choices.push_back(last.candidate);
       b.region = std::move(last.region);
-      if (shares.size() > 1) b.box.reset();
+      if (shares.size() > 1) {
+        b.box.reset();
+        b.vectors.reset();
+      }
       (void)b.sim.step_choosing(last.candidate);
     }
   }
@@ -91,7 +97,7 @@ class Explorer {
  private:
   void finish(Branch b) {
     Behaviour out;
-    out.vectors = grid_.count(b.region);
+    out.vectors = b.vectors ? *b.vectors : grid_.count(b.region);
     out.representative = grid_.lexmin(b.region);
     out.bounds = grid_.bounds(b.region);
     out.choices = std::move(b.choices);
@@ -129,7 +135,9 @@ ExactSearchStats exact_search(const RunSpec& spec, const WeightGrid& grid, int t
   arena.execute([&] {
     tbb::task_group tasks;
     Explorer explorer(grid, tasks, on_behaviour);
-    tasks.run([&] { explorer.explore(Branch{std::move(root), grid.everything(), {}, std::nullopt}); });
+    tasks.run([&] {
+      explorer.explore(Branch{std::move(root), grid.everything(), {}, std::nullopt, std::nullopt});
+    });
     tasks.wait();
     stats = explorer.stats();
   });
