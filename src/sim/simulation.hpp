@@ -79,15 +79,16 @@ class Simulation {
   /// Steps until the end and returns the result.
   [[nodiscard]] RunResult run();
 
-  /// The exact weight search's hooks (sweep/exact_search.hpp). When the run's strategy is
-  /// linear-scored (LinearScoredStrategy) and the next step() would choose by its weights among
-  /// candidates, the candidates of that choice (the ones the strategy's argmin runs over, segment
-  /// restriction included, as candidates_within() the weight bounds: possibly just one); null when
-  /// the next step's decision does not depend on the weights (the run ended or is at its step cap,
-  /// the stop cell, no candidate, another kind of strategy). Changes nothing the run's result reports but
-  /// effort metrics (its searches warm the distance caches). The candidates stay valid until the next call of
-  /// a non-const member. `w_lo`, `w_hi`: bounds of the weight vectors the caller asks for (each weight); the
-  /// candidates are LinearScoredStrategy::candidates_within() them.
+  /// The exact weight search's hooks (sweep/exact_search.hpp).
+  ///
+  /// choice(): when the run's strategy is linear-scored (LinearScoredStrategy) and the next step()
+  /// chooses by its weights, the candidates of that choice, as
+  /// LinearScoredStrategy::candidates_within(w_lo, w_hi) gives them for the weight vectors the
+  /// caller asks about (segment restriction included; possibly just one). Null when the next
+  /// step's decision does not depend on the weights: the run ended or is at its step cap, the stop
+  /// cell, no candidate, another kind of strategy. Changes nothing in the run's result (its
+  /// searches warm the distance caches). The candidates stay valid until the next call of a
+  /// non-const member.
   [[nodiscard]] const Candidates* choice(std::span<const double> w_lo, std::span<const double> w_hi);
   /// step(), with the strategy's choice replaced by candidate `candidate` of the candidates the last
   /// choice() returned (on this simulation or on the one it was copied from since): the step a run
@@ -96,7 +97,8 @@ class Simulation {
   bool step_choosing(int candidate);
 
   /// Makes the run's linear-scored strategy score by `weights` from now on
-  /// (LinearScoredStrategy::set_weights). Throws std::logic_error for another kind of strategy.
+  /// (LinearScoredStrategy::set_weights). Throws std::logic_error for another kind of strategy and
+  /// std::invalid_argument for weights the strategy does not allow.
   void set_weights(std::span<const double> weights);
 
   [[nodiscard]] bool ended() const { return recorder_.ended(); }

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/config_error.hpp"
+#include "core/csv_format.hpp"
 
 namespace fsweep {
 inline namespace strategies {
@@ -103,7 +104,11 @@ struct EnergyAware::Terms {
   mutable std::vector<double> theta_;
 };
 
-EnergyAware::Terms EnergyAware::terms(const Observation& obs) const {
+EnergyAware::Terms EnergyAware::own_terms(const Observation& obs) const {
+  return terms(obs, weights_[1] != 0.0 || weights_[2] != 0.0);
+}
+
+EnergyAware::Terms EnergyAware::terms(const Observation& obs, bool dock_weighted) const {
   Terms t;
   t.reps.reserve(obs.clusters.size());
   for (const auto& c : obs.clusters) t.reps.push_back(c.representative);
@@ -116,7 +121,7 @@ EnergyAware::Terms EnergyAware::terms(const Observation& obs) const {
     // "Plugins and their parameters"). With an unlimited battery d_gb matters only through its
     // weights: skip that search if both are zero (the features then read 0, which those weights
     // ignore).
-    const bool need_dock = !obs.battery.unlimited() || weights_[1] != 0.0 || weights_[2] != 0.0;
+    const bool need_dock = !obs.battery.unlimited() || dock_weighted;
     t.d_gb = need_dock ? obs.distances.from_dock(t.reps, t.d_l) : std::vector<double>(t.reps.size(), 0.0);
   } else {
     const auto metric = params_.distance == "euclidean" ? &euclidean_distance : &octile_distance;
@@ -134,6 +139,12 @@ void EnergyAware::set_weights(std::span<const double> weights) {
     throw std::invalid_argument(name_ + ": set_weights needs " + std::to_string(weights_.size()) +
                                 " weights");
   }
+  for (std::size_t k = 0; k < weights.size(); ++k) {
+    if (!(weights[k] >= 0.0 && weights[k] <= EnergyAwareParams::kMaxWeight)) {
+      throw std::invalid_argument(name_ + ": w" + std::to_string(k + 1) + " = " + format_number(weights[k]) +
+                                  " is out of range; allowed: 0..250");
+    }
+  }
   std::copy(weights.begin(), weights.end(), weights_.begin());
   params_.w1 = weights_[0];
   params_.w2 = weights_[1];
@@ -145,7 +156,7 @@ Candidates EnergyAware::candidates(const Observation& obs) {
   Candidates out;
   out.feature_count = kFeatures;
   if (obs.clusters.empty()) return out;
-  const Terms t = terms(obs);
+  const Terms t = own_terms(obs);
   std::vector<double> d_g;
   if (params_.distance == "path") {
     // The leg to the frontier must be shorter than d_l too.
@@ -365,7 +376,8 @@ Candidates EnergyAware::candidates_within(const Observation& obs, std::span<cons
     throw std::invalid_argument(name_ + ": candidates_within needs " + std::to_string(kFeatures) +
                                 " weights");
   }
-  const Terms t = terms(obs);
+  // The dock terms count if any vector of the box weighs them.
+  const Terms t = terms(obs, w_hi[1] != 0.0 || w_hi[2] != 0.0);
   BoxWatch watch(t, w_lo, w_hi, obs.distances.lower_bounds_from_robot(t.reps));
   obs.distances.watch_from_robot(t.reps, t.d_l, watch);
   Candidates out;
@@ -484,7 +496,7 @@ Decision EnergyAware::decide(const Observation& obs) {
   // The argmin of candidates(), computing d_g only as far as it can matter: first by point
   // searches for the best bounds, then, if they do not settle it, by a search from the robot
   // that stops once no representative it has not reached can win.
-  const Terms t = terms(obs);
+  const Terms t = own_terms(obs);
   WatchedChoice choice(t, weights_, obs.distances.lower_bounds_from_robot(t.reps));
   if (!choose_by_probes(obs, t, choice)) obs.distances.watch_from_robot(t.reps, t.d_l, choice);
   if (choice.best() < 0) return on_no_candidate(obs);

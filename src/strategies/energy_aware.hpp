@@ -90,7 +90,11 @@ class EnergyAware final : public LinearScoredStrategy {
 
  private:
   /// The terms of the decision `obs` (dock distances searched as the distance mode says).
-  [[nodiscard]] Terms terms(const Observation& obs) const;
+  /// `dock_weighted`: some weight vector asked about weighs d_gb or d_gbe (w2 or w3 > 0); without
+  /// it and without a battery limit, path dock distances are not searched and read 0.
+  [[nodiscard]] Terms terms(const Observation& obs, bool dock_weighted) const;
+  /// terms() for this strategy's own weights.
+  [[nodiscard]] Terms own_terms(const Observation& obs) const;
 
   std::string name_;
   EnergyAwareParams params_;

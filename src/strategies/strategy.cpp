@@ -23,11 +23,16 @@ std::optional<double> DistanceOracle::probe_from_robot(int cell, double bound_m,
   return from_robot(one, bound_m).front();
 }
 
-int argmin_linear(const Candidates& c, std::span<const double> weights) {
+namespace {
+
+/// The argmin over the candidates `index(0..n-1)` (ascending indices): argmin_linear()'s rule.
+template <typename Index>
+int argmin_over(const Candidates& c, std::span<const double> weights, std::size_t n, Index index) {
   const auto k = static_cast<std::size_t>(c.feature_count);
   int best = -1;
   double best_cost = 0.0;
-  for (std::size_t i = 0; i < c.cells.size(); ++i) {
+  for (std::size_t j = 0; j < n; ++j) {
+    const auto i = static_cast<std::size_t>(index(j));
     const double cost = linear_cost(weights, std::span(c.features).subspan(i * k, k));
     // Strict '<': on equal cost the lowest candidate index wins (documented tie rule).
     if (best < 0 || cost < best_cost) {
@@ -36,6 +41,16 @@ int argmin_linear(const Candidates& c, std::span<const double> weights) {
     }
   }
   return best;
+}
+
+}  // namespace
+
+int argmin_linear(const Candidates& c, std::span<const double> weights) {
+  return argmin_over(c, weights, c.cells.size(), [](std::size_t j) { return j; });
+}
+
+int argmin_linear_among(const Candidates& c, std::span<const double> weights, std::span<const int> among) {
+  return argmin_over(c, weights, among.size(), [among](std::size_t j) { return among[j]; });
 }
 
 }  // namespace strategies

@@ -153,6 +153,10 @@ struct Candidates {
 
 /// Index of argmin_i weights . features_i; ties break to the lowest i. -1 when empty.
 [[nodiscard]] int argmin_linear(const Candidates& c, std::span<const double> weights);
+/// The same over the candidates listed in `among` (ascending indices; the others left out): the
+/// choice of argmin_linear() whenever every one left out loses to one listed. -1 when empty.
+[[nodiscard]] int argmin_linear_among(const Candidates& c, std::span<const double> weights,
+                                      std::span<const int> among);
 
 /// A frontier-selection strategy. Instances may keep state between decisions (a seeded
 /// generator, the previous goal); clone() copies that state exactly.
@@ -189,7 +193,8 @@ class LinearScoredStrategy : public Strategy {
   [[nodiscard]] virtual std::span<const double> weights() const = 0;
   /// Makes the strategy score by `weights` (as many as weights() has, each in its allowed range)
   /// from now on: the exact weight search (sweep/exact_search.hpp) lets a simulation whose region
-  /// has one weight vector left go on as a run with those weights.
+  /// has one weight vector left go on as a run with those weights. Throws std::invalid_argument
+  /// for another number of weights or a weight out of its range.
   virtual void set_weights(std::span<const double> weights) = 0;
   /// What to do when no candidate survives.
   [[nodiscard]] virtual Decision on_no_candidate(const Observation& obs) = 0;

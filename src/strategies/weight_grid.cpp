@@ -13,27 +13,8 @@ namespace {
 
 constexpr std::size_t kWeights = WeightGrid::kMaxWeights;
 
-bool test_bit(const BlockBits& bits, int bit) {
-  return ((bits[static_cast<std::size_t>(bit) / 64] >> (static_cast<unsigned>(bit) % 64)) & 1U) != 0;
-}
 void set_bit(BlockBits& bits, int bit) {
   bits[static_cast<std::size_t>(bit) / 64] |= std::uint64_t{1} << (static_cast<unsigned>(bit) % 64);
-}
-
-/// argmin_linear() over the candidates listed in `among` (ascending), at weights `w`: the same
-/// costs (linear_cost) and the same rule (strict '<', so the lowest index wins a tie).
-int argmin_among(const Candidates& c, std::span<const int> among, std::span<const double> w) {
-  const auto k = static_cast<std::size_t>(c.feature_count);
-  int best = -1;
-  double best_cost = 0.0;
-  for (const int i : among) {
-    const double cost = linear_cost(w, std::span(c.features).subspan(static_cast<std::size_t>(i) * k, k));
-    if (best < 0 || cost < best_cost) {
-      best = i;
-      best_cost = cost;
-    }
-  }
-  return best;
 }
 
 }  // namespace
@@ -132,7 +113,7 @@ std::array<int, WeightGrid::kMaxWeights> WeightGrid::lexmin(const WeightRegion& 
   for (const WeightRegion::Part& part : region.parts) {
     bool done = false;
     for_each_in_block(span_of(part.block), [&](int bit, const std::array<int, kMaxWeights>& at) {
-      if (!done && test_bit(part.bits, bit)) {
+      if (!done && has_point(part.bits, bit)) {
         offer(at);
         done = true;
       }
@@ -160,7 +141,7 @@ std::array<std::array<int, 2>, WeightGrid::kMaxWeights> WeightGrid::bounds(const
   }
   for (const WeightRegion::Part& part : region.parts) {
     for_each_in_block(span_of(part.block), [&](int bit, const std::array<int, kMaxWeights>& at) {
-      if (test_bit(part.bits, bit)) offer(at, at);
+      if (has_point(part.bits, bit)) offer(at, at);
     });
   }
   return box;
@@ -179,7 +160,7 @@ bool WeightGrid::contains(const WeightRegion& region, const std::array<int, kMax
   if (part == region.parts.end() || part->block != block) return false;
   std::array<int, kMaxWeights> local{};
   for (std::size_t k = 0; k < kWeights; ++k) local[k] = at[k] % kBlockEdge;
-  return test_bit(part->bits, bit_of(local));
+  return has_point(part->bits, bit_of(local));
 }
 
 std::vector<WeightGrid::Share> WeightGrid::split(const WeightRegion& region,
@@ -256,9 +237,9 @@ std::vector<WeightGrid::Share> WeightGrid::split(const WeightRegion& region,
       touched[static_cast<std::size_t>(i)] = 0;
     }
     for_each_in_block(span, [&](int bit, const std::array<int, kMaxWeights>& at) {
-      if (member != nullptr && !test_bit(*member, bit)) return;
+      if (member != nullptr && !has_point(*member, bit)) return;
       for (std::size_t j = 0; j < k; ++j) w[j] = values_[j][static_cast<std::size_t>(at[j])];
-      const int best = argmin_among(candidates, among, w);
+      const int best = argmin_linear_among(candidates, w, among);
       set_bit(shares[static_cast<std::size_t>(best)], bit);
       touched[static_cast<std::size_t>(best)] = 1;
     });

@@ -29,6 +29,11 @@ inline namespace strategies {
 /// Points of one block of a WeightGrid, as bits (bit = local index, see WeightGrid).
 using BlockBits = std::array<std::uint64_t, 64>;
 
+/// True when point `bit` of a block is in `bits`.
+[[nodiscard]] inline bool has_point(const BlockBits& bits, int bit) {
+  return ((bits[static_cast<std::size_t>(bit) / 64] >> (static_cast<unsigned>(bit) % 64)) & 1U) != 0;
+}
+
 /// A set of points of a WeightGrid: blocks it holds whole (every grid point of the block) and
 /// blocks it holds in part, each in ascending block order.
 struct WeightRegion {
@@ -140,8 +145,7 @@ void WeightGrid::for_each_point(const WeightRegion& region, F&& f) const {
     } else {
       const BlockBits& bits = part->bits;
       for_each_in_block(span_of(part->block), [&](int bit, const std::array<int, kMaxWeights>& at) {
-        if (((bits[static_cast<std::size_t>(bit) / 64] >> (static_cast<unsigned>(bit) % 64)) & 1U) != 0)
-          f(at);
+        if (has_point(bits, bit)) f(at);
       });
       ++part;
     }

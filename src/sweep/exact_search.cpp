@@ -6,6 +6,7 @@
 
 #include <array>
 #include <atomic>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <stdexcept>
@@ -123,9 +124,25 @@ ExactSearchStats exact_search(const RunSpec& spec, const WeightGrid& grid, int t
                               const std::function<void(Behaviour&&)>& on_behaviour) {
   if (threads < 1) throw std::invalid_argument("exact_search: threads must be >= 1");
   Simulation root(spec);
-  if (dynamic_cast<const LinearScoredStrategy*>(spec.strategy.make(spec.seed).get()) == nullptr) {
+  // The strategy must score the grid's weights, each of the grid's values allowed.
+  const std::unique_ptr<Strategy> probe = spec.strategy.make(spec.seed);
+  auto* linear = dynamic_cast<LinearScoredStrategy*>(probe.get());
+  if (linear == nullptr) {
     throw std::invalid_argument("exact_search: strategy " + spec.strategy.name + " is not linear-scored");
   }
+  if (linear->weights().size() != static_cast<std::size_t>(grid.weights())) {
+    throw std::invalid_argument("exact_search: strategy " + spec.strategy.name + " has " +
+                                std::to_string(linear->weights().size()) + " weights, the grid " +
+                                std::to_string(grid.weights()));
+  }
+  std::vector<double> lowest;
+  std::vector<double> highest;
+  for (int k = 0; k < grid.weights(); ++k) {
+    lowest.push_back(grid.values(k).front());
+    highest.push_back(grid.values(k).back());
+  }
+  linear->set_weights(lowest);  // throws std::invalid_argument naming a weight out of range
+  linear->set_weights(highest);
   ExactSearchStats stats;
   // Up to `threads` workers: the global limit as well, since task_group tasks may otherwise
   // run on the default arena's workers (as sweep_runner.cpp does).

@@ -51,7 +51,8 @@ struct ExactSearchStats {
 /// thread but never two at once, in an order that depends on the threads (sort by
 /// `choices` or `representative` for a fixed order). `threads` >= 1 (oneTBB tasks over the
 /// region tree). Throws ConfigError for a bad spec, std::invalid_argument for a strategy that is
-/// not linear-scored or does not match the grid.
+/// not linear-scored, has another number of weights than the grid, or does not allow one of the
+/// grid's values (LinearScoredStrategy::set_weights).
 ExactSearchStats exact_search(const RunSpec& spec, const WeightGrid& grid, int threads,
                               const std::function<void(Behaviour&&)>& on_behaviour);
 

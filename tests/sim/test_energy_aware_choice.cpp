@@ -164,11 +164,16 @@ TEST(EnergyAwareChoice, CandidatesWithinABoxChooseAsAllCandidatesAtEveryVectorOf
         hi[k] = lo[k] + static_cast<double>(uniform_below(rng, round < 6 ? 6 : 30));
         if (uniform_below(rng, 4) == 0) lo[k] = 0.0;
       }
-      EnergyAware ea = energy_aware({10, 0, 9, 20});
+      // The strategy's own weights must not matter: with (1, 0, 0, 0) and no battery limit its
+      // own decisions need no dock distances, but the box's vectors may weigh them. The
+      // reference's own weights weigh every term, so its candidates() have every feature.
+      EnergyAware ea = energy_aware(round % 2 == 0 ? std::array<double, 4>{10, 0, 9, 20}
+                                                   : std::array<double, 4>{1, 0, 0, 0});
+      EnergyAware reference = energy_aware({1, 1, 1, 1});
       DistanceScratch scratch;
       DockField full_dock = d.dock_field;
       GridDistanceOracle full_oracle(d.known, d.robot, d.dock, d.corner_cutting, &full_dock, scratch);
-      const Candidates all = ea.candidates(d.observe(full_oracle));
+      const Candidates all = reference.candidates(d.observe(full_oracle));
       DockField dock = d.dock_field;
       GridDistanceOracle oracle(d.known, d.robot, d.dock, d.corner_cutting, &dock, scratch);
       const Candidates kept = ea.candidates_within(d.observe(oracle), lo, hi);

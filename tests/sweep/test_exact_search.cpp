@@ -5,10 +5,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -122,6 +125,15 @@ TEST(ExactSearch, ScaledCopiesBoundariesAndTheZeroVectorBehaveAsTheirRunsAlone) 
   expect_agrees_with_brute_force(spec, grid, "rooms scaled");
 }
 
+TEST(ExactSearch, TheSpecsOwnWeightsDoNotMatterEvenWithoutABattery) {
+  // With an unlimited battery the strategy skips the dock distances when its own w2 and w3 are
+  // 0; the search must still give the vectors with w2 or w3 > 0 their real d_gb.
+  RunSpec spec = spec_on("office:w=32,h=32,seed=3", std::numeric_limits<double>::infinity());
+  spec.strategy = configure_strategy("energy_aware", json{{"w1", 1}, {"w2", 0}, {"w3", 0}, {"w4", 0}});
+  const WeightGrid grid({{1, 2}, {0, 3, 7}, {0, 5}, {0, 4, 9}});
+  expect_agrees_with_brute_force(spec, grid, "office, unlimited battery");
+}
+
 TEST(ExactSearch, IsTheSameForAnyThreadCount) {
   const RunSpec spec = spec_on("office:w=32,h=32,seed=3", 120.0);
   const WeightGrid grid({integers(0, 20, 4), integers(0, 20, 5), integers(0, 20, 4), integers(0, 20, 5)});
@@ -141,11 +153,46 @@ TEST(ExactSearch, IsTheSameForAnyThreadCount) {
   EXPECT_EQ(one_stats.forks + 1, one.size());
 }
 
-TEST(ExactSearch, RefusesAStrategyThatIsNotLinearScored) {
+/// The message of the std::invalid_argument that exact_search throws for `spec` over `grid`.
+std::string refusal(const RunSpec& spec, const WeightGrid& grid) {
+  try {
+    (void)behaviours_of(spec, grid, 1);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "(accepted)";
+}
+
+TEST(ExactSearch, RefusesStrategiesAndGridsThatDoNotFit) {
   RunSpec spec = spec_on("office:w=32,h=32,seed=3", 120.0);
+  const WeightGrid four({integers(0, 2), integers(0, 2), integers(0, 2), integers(0, 2)});
+  EXPECT_EQ(refusal(spec, WeightGrid({integers(0, 2), integers(0, 2), integers(0, 2)})),
+            "exact_search: strategy energy_aware has 4 weights, the grid 3");
+  EXPECT_EQ(refusal(spec, WeightGrid({integers(0, 2), integers(0, 2), {0, 251}, integers(0, 2)})),
+            "energy_aware: w3 = 251 is out of range; allowed: 0..250");
   spec.strategy = configure_strategy("random_frontier", nullptr);
-  const WeightGrid grid({integers(0, 2), integers(0, 2), integers(0, 2), integers(0, 2)});
-  EXPECT_THROW((void)behaviours_of(spec, grid, 1), std::invalid_argument);
+  EXPECT_EQ(refusal(spec, four), "exact_search: strategy random_frontier is not linear-scored");
+  EXPECT_THROW((void)exact_search(spec_on("office:w=32,h=32,seed=3", 120.0), four, 0, [](Behaviour&&) {}),
+               std::invalid_argument);
+}
+
+TEST(SimulationChoice, MisusesAreRefused) {
+  // step_choosing without a choice(), or with a candidate it did not offer; the hooks on a
+  // strategy that is not linear-scored.
+  Simulation sim(spec_on("office:w=32,h=32,seed=3", 120.0));
+  EXPECT_THROW((void)sim.step_choosing(0), std::logic_error);
+  const std::array<double, 4> lo{0, 0, 0, 0};
+  const std::array<double, 4> hi{250, 250, 250, 250};
+  const Candidates* c = sim.choice(lo, hi);
+  ASSERT_NE(c, nullptr);
+  EXPECT_THROW((void)sim.step_choosing(static_cast<int>(c->cells.size())), std::logic_error);
+  EXPECT_THROW(sim.set_weights(std::array<double, 4>{1, 2, 3, 300}), std::invalid_argument);
+  EXPECT_THROW(sim.set_weights(std::array<double, 3>{1, 2, 3}), std::invalid_argument);
+  RunSpec other = spec_on("office:w=32,h=32,seed=3", 120.0);
+  other.strategy = configure_strategy("random_frontier", nullptr);
+  Simulation random(other);
+  EXPECT_EQ(random.choice(lo, hi), nullptr);
+  EXPECT_THROW(random.set_weights(std::array<double, 4>{1, 0, 0, 0}), std::logic_error);
 }
 
 }  // namespace

@@ -1,0 +1,156 @@
+// WeightGrid and WeightRegion against plain enumeration: split() gives every point to the
+// candidate argmin_linear() chooses there (blocks decided whole by their corners or point by
+// point, regions holding whole and partial blocks, features of both signs, ties, non-finite
+// features), and count, lexmin, bounds, contains and for_each_point agree with the points.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "core/random.hpp"
+#include "strategies/weight_grid.hpp"
+
+namespace fsweep {
+namespace {
+
+using Point = std::array<int, WeightGrid::kMaxWeights>;
+
+/// Every point of `region`, by for_each_point.
+std::vector<Point> points_of(const WeightGrid& grid, const WeightRegion& region) {
+  std::vector<Point> out;
+  grid.for_each_point(region, [&out](const Point& at) { out.push_back(at); });
+  return out;
+}
+
+/// Checks count, lexmin, bounds and contains of a non-empty `region` against its points.
+void expect_consistent(const WeightGrid& grid, const WeightRegion& region, const std::string& what) {
+  const std::vector<Point> points = points_of(grid, region);
+  ASSERT_FALSE(points.empty()) << what;
+  EXPECT_EQ(grid.count(region), points.size()) << what;
+  EXPECT_EQ(grid.lexmin(region), *std::min_element(points.begin(), points.end())) << what;
+  const auto box = grid.bounds(region);
+  for (std::size_t k = 0; k < WeightGrid::kMaxWeights; ++k) {
+    int lo = points.front()[k];
+    int hi = lo;
+    for (const Point& p : points) {
+      lo = std::min(lo, p[k]);
+      hi = std::max(hi, p[k]);
+    }
+    EXPECT_EQ(box[k][0], lo) << what << " weight " << k;
+    EXPECT_EQ(box[k][1], hi) << what << " weight " << k;
+  }
+  for (const Point& p : points) EXPECT_TRUE(grid.contains(region, p)) << what;
+}
+
+/// Random candidates over `weights` features: small integers of both signs (so costs tie often)
+/// and, when `infinite`, one feature +infinity.
+Candidates random_candidates(Rng& rng, int weights, bool infinite) {
+  Candidates c;
+  c.feature_count = weights;
+  const auto n = 2 + static_cast<int>(uniform_below(rng, 6));
+  for (int i = 0; i < n; ++i) {
+    c.cells.push_back(Cell{i, 0});
+    for (int k = 0; k < weights; ++k) c.features.push_back(static_cast<double>(uniform_below(rng, 9)) - 3.0);
+  }
+  if (uniform_below(rng, 4) == 0) {  // a duplicate row: an exact tie everywhere
+    c.cells.push_back(Cell{n, 0});
+    const std::vector<double> row(c.features.begin(), c.features.begin() + weights);
+    c.features.insert(c.features.end(), row.begin(), row.end());
+  }
+  if (infinite)
+    c.features[static_cast<std::size_t>(uniform_below(rng, c.features.size()))] =
+        std::numeric_limits<double>::infinity();
+  return c;
+}
+
+/// split(region, c) against argmin_linear at every point of `region`; returns the shares.
+std::vector<WeightGrid::Share> expect_split_is_argmin(const WeightGrid& grid, const WeightRegion& region,
+                                                      const Candidates& c, const std::string& what) {
+  std::vector<WeightGrid::Share> shares = grid.split(region, c);
+  std::map<Point, int> owner;
+  for (std::size_t s = 0; s < shares.size(); ++s) {
+    if (s > 0) {
+      EXPECT_LT(shares[s - 1].candidate, shares[s].candidate) << what;
+    }
+    expect_consistent(grid, shares[s].region, what);
+    for (const Point& p : points_of(grid, shares[s].region)) {
+      EXPECT_TRUE(owner.emplace(p, shares[s].candidate).second) << what << ": a point in two shares";
+    }
+  }
+  const std::vector<Point> all = points_of(grid, region);
+  EXPECT_EQ(owner.size(), all.size()) << what;
+  for (const Point& p : all) {
+    const auto it = owner.find(p);
+    EXPECT_TRUE(it != owner.end() && it->second == argmin_linear(c, grid.weights_at(p))) << what;
+  }
+  return shares;
+}
+
+TEST(WeightGrid, SplitGivesEveryPointArgminLinearsChoice) {
+  Rng rng = make_rng(3, "weight_grid");
+  // Grids of 1 to 4 weights whose sizes are and are not multiples of the block edge.
+  const std::vector<std::vector<int>> shapes{{20}, {9, 17}, {8, 3, 11}, {5, 9, 4, 10}, {16, 1, 8, 9}};
+  int shares_seen = 0;
+  for (const std::vector<int>& shape : shapes) {
+    std::vector<std::vector<double>> values;
+    for (const int n : shape) {
+      std::vector<double> v;
+      for (int i = 0; i < n; ++i) v.push_back(i * 1.5 + (i > 2 ? 1.0 : 0.0));  // uneven steps
+      values.push_back(v);
+    }
+    const WeightGrid grid(values);
+    const int weights = static_cast<int>(shape.size());
+    for (int trial = 0; trial < 12; ++trial) {
+      const std::string what = std::to_string(weights) + " weights, trial " + std::to_string(trial);
+      const Candidates first = random_candidates(rng, weights, trial % 4 == 3);
+      const std::vector<WeightGrid::Share> shares =
+          expect_split_is_argmin(grid, grid.everything(), first, what);
+      shares_seen += static_cast<int>(shares.size());
+      // Split each share again: regions of partial blocks.
+      for (const WeightGrid::Share& share : shares) {
+        (void)expect_split_is_argmin(grid, share.region, random_candidates(rng, weights, trial % 4 == 1),
+                                     what + " again");
+      }
+    }
+  }
+  EXPECT_GT(shares_seen, 100);  // the candidates do divide the grids
+}
+
+TEST(WeightGrid, EverythingHoldsEveryPoint) {
+  const WeightGrid grid({{0, 1, 2}, {5, 6, 7, 8, 9, 10, 11, 12, 13}});
+  expect_consistent(grid, grid.everything(), "everything");
+  EXPECT_EQ(grid.size(), 27U);
+  EXPECT_FALSE(grid.contains(grid.everything(), Point{3, 0, 0, 0}));
+  EXPECT_EQ(grid.weights_at(Point{2, 8, 0, 0}), (std::vector<double>{2, 13}));
+}
+
+TEST(WeightGrid, RefusesBadValueLists) {
+  const auto refusal = [](std::vector<std::vector<double>> values) {
+    try {
+      const WeightGrid grid(std::move(values));
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("(accepted)");
+  };
+  EXPECT_EQ(refusal({}), "a weight grid has 1 to 4 weights, not 0");
+  EXPECT_EQ(refusal({{0}, {0}, {0}, {0}, {0}}), "a weight grid has 1 to 4 weights, not 5");
+  EXPECT_EQ(refusal({{0}, {}}), "weight 2 has no value");
+  const std::string order = "the values of weight 1 must be finite, >= 0 and strictly ascending";
+  EXPECT_EQ(refusal({{1, 1}}), order);
+  EXPECT_EQ(refusal({{2, 1}}), order);
+  EXPECT_EQ(refusal({{-1, 1}}), order);
+  EXPECT_EQ(refusal({{0, std::numeric_limits<double>::infinity()}}), order);
+  EXPECT_EQ(refusal({{0, std::numeric_limits<double>::quiet_NaN()}}), order);
+  EXPECT_THROW((void)WeightGrid({{0, 1}}).split(WeightGrid({{0, 1}}).everything(), Candidates{}),
+               std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace fsweep
