@@ -258,8 +258,9 @@ void exact_weight_search(benchmark::State& state, const WeightGrid& grid) {
   const RunSpec spec = weight_search_spec({10, 0, 9, 20});
   std::uint64_t behaviours = 0;
   for (auto _ : state) {
-    behaviours =
-        exact_search(spec, grid, 1, [](Behaviour&& b) { benchmark::DoNotOptimize(b.vectors); }).behaviours;
+    behaviours = exact_search(std::span<const RunSpec>(&spec, 1), grid, 1, [](Behaviour&& b) {
+                   benchmark::DoNotOptimize(b.vectors);
+                 }).behaviours;
   }
   state.counters["behaviours"] = static_cast<double>(behaviours);
   state.counters["vectors"] = static_cast<double>(grid.size());

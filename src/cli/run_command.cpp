@@ -76,10 +76,24 @@ int run_command(const RunCommandOptions& o) {
             << " already done, " << r.failed << " failed (end_reason error), " << r.total - r.ran - r.skipped
             << " left; " << one_decimal(r.wall_s) << " s, " << one_decimal(r.runs_per_s) << " runs/s on "
             << r.threads << " threads\n";
-  std::cout << "results in " << r.out_dir << "/ (runs.csv, progress.csv, manifest.json"
-            << (!r.interrupted && options.shard_count == 1 ? ", summary.csv, progress_summary.csv, best.csv"
-                                                           : "")
-            << ")\n";
+  if (r.searches.searches > 0) {
+    std::cout << "exact weight search: " << r.searches.searches
+              << (r.searches.searches == 1 ? " search, " : " searches, ") << r.searches.vectors
+              << " weight vectors, " << r.searches.behaviours << " distinct behaviours; "
+              << one_decimal(r.searches.wall_s) << " s\n";
+  } else if (r.searches_done_before) {
+    std::cout << "exact weight search: already done (searches.json; --fresh redoes it)\n";
+  } else if (!plan.search_units().empty() && options.shard_count > 1) {
+    std::cout << "exact weight search: not run in a shard; run the sweep unsharded for it\n";
+  }
+  std::cout
+      << "results in " << r.out_dir << "/ (runs.csv, progress.csv, manifest.json"
+      << (!r.interrupted && options.shard_count == 1 ? ", summary.csv, progress_summary.csv, best.csv" : "")
+      << (r.searches.searches > 0 || r.searches_done_before
+              ? ", searches.json, behaviours.csv, search_summary.csv, search_best.csv, search_ranks.csv, "
+                "search_heatmaps.csv"
+              : "")
+      << ")\n";
   if (r.interrupted) {
     std::cout << "rerun the same command to resume\n";
     return 130;

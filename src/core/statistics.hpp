@@ -2,6 +2,7 @@
 /// @file statistics.hpp
 /// Sample statistics shared by the result tables (summary.csv, compare, plan benchmarks).
 
+#include <cstdint>
 #include <vector>
 
 namespace fsweep {
@@ -13,6 +14,18 @@ inline namespace core {
 /// infinite rather than becoming NaN). q in [0, 1] and values not empty, else
 /// std::invalid_argument.
 [[nodiscard]] double quantile_sorted(const std::vector<double>& sorted, double q);
+
+/// A value that occurs `count` times.
+struct CountedValue {
+  double value = 0.0;
+  std::uint64_t count = 0;
+};
+
+/// quantile_sorted() of the multiset in which each value occurs `count` times, without
+/// expanding it (the exact weight search weighs each behaviour by its number of weight
+/// vectors): `sorted` ascending by value, counts > 0, total count below 2^53. q in [0, 1] and
+/// values not empty, else std::invalid_argument.
+[[nodiscard]] double counted_quantile_sorted(const std::vector<CountedValue>& sorted, double q);
 
 }  // namespace core
 }  // namespace fsweep

@@ -75,6 +75,7 @@ class EnergyAware final : public LinearScoredStrategy {
   [[nodiscard]] Candidates candidates_within(const Observation& obs, std::span<const double> w_lo,
                                              std::span<const double> w_hi) override;
   [[nodiscard]] std::span<const double> weights() const override { return weights_; }
+  [[nodiscard]] std::vector<std::string> weight_names() const override { return {"w1", "w2", "w3", "w4"}; }
   void set_weights(std::span<const double> weights) override;
   [[nodiscard]] Decision on_no_candidate(const Observation& obs) override;
   [[nodiscard]] std::unique_ptr<Strategy> clone() const override {

@@ -191,6 +191,9 @@ class LinearScoredStrategy : public Strategy {
     return candidates(obs);
   }
   [[nodiscard]] virtual std::span<const double> weights() const = 0;
+  /// The parameter name of each weight, in the order of weights() (e.g. "w1".."w4"): a sweep's
+  /// exact weight search (sweep_plan.hpp) sweeps these parameters.
+  [[nodiscard]] virtual std::vector<std::string> weight_names() const = 0;
   /// Makes the strategy score by `weights` (as many as weights() has, each in its allowed range)
   /// from now on: the exact weight search (sweep/exact_search.hpp) lets a simulation whose region
   /// has one weight vector left go on as a run with those weights. Throws std::invalid_argument

@@ -77,6 +77,11 @@ class WeightGrid {
   /// block, lexicographically.
   template <typename F>
   void for_each_point(const WeightRegion& region, F&& f) const;
+  /// Calls `f(index_a, index_b)` for the indices of weights a and b of every point of `region`
+  /// (a pair may come more than once): a whole block as the rectangle of its span, without
+  /// visiting its points (heat maps over weight pairs of the full box).
+  template <typename F>
+  void for_each_projection(const WeightRegion& region, int a, int b, F&& f) const;
   /// The weight vector of the point of indices `at`.
   [[nodiscard]] std::vector<double> weights_at(const std::array<int, kMaxWeights>& at) const;
 
@@ -149,6 +154,23 @@ void WeightGrid::for_each_point(const WeightRegion& region, F&& f) const {
       });
       ++part;
     }
+  }
+}
+
+template <typename F>
+void WeightGrid::for_each_projection(const WeightRegion& region, int a, int b, F&& f) const {
+  const auto ua = static_cast<std::size_t>(a);
+  const auto ub = static_cast<std::size_t>(b);
+  for (const std::uint32_t block : region.whole) {
+    const BlockSpan span = span_of(block);
+    for (int i = 0; i < span.extent[ua]; ++i) {
+      for (int j = 0; j < span.extent[ub]; ++j) f(span.first[ua] + i, span.first[ub] + j);
+    }
+  }
+  for (const WeightRegion::Part& part : region.parts) {
+    for_each_in_block(span_of(part.block), [&](int bit, const std::array<int, kMaxWeights>& at) {
+      if (has_point(part.bits, bit)) f(at[ua], at[ub]);
+    });
   }
 }
 

@@ -4,6 +4,7 @@
 #include <oneapi/tbb/task_arena.h>
 #include <oneapi/tbb/task_group.h>
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <memory>
@@ -19,9 +20,10 @@ namespace fsweep {
 inline namespace sweep {
 namespace {
 
-/// One node of the region tree being explored: a simulation and the weight vectors it stands for.
+/// One node of the region tree being explored: one simulation per instance and the weight
+/// vectors they stand for.
 struct Branch {
-  Simulation sim;
+  std::vector<Simulation> sims;
   WeightRegion region;
   std::vector<int> choices;
   /// The region's bounds (WeightGrid::bounds) and size, once computed: they change only at a
@@ -36,18 +38,26 @@ class Explorer {
            const std::function<void(Behaviour&&)>& on_behaviour)
       : grid_(grid), tasks_(tasks), on_behaviour_(on_behaviour) {}
 
-  /// Follows `b` to the end of its run, forking a task for every share but the last at each
-  /// split (the last goes on in this one).
+  /// Follows `b` to the end of its runs, forking a task for every share but the last at each
+  /// split (the last goes on in this one). The instances advance one at a time: the first
+  /// that has not ended runs until its next choice that depends on the weights.
   void explore(Branch b) {
     std::vector<double> w_lo(static_cast<std::size_t>(grid_.weights()));
     std::vector<double> w_hi(w_lo.size());
     for (;;) {
-      if (b.sim.ended()) return finish(std::move(b));
+      const auto open =
+          std::find_if(b.sims.begin(), b.sims.end(), [](const Simulation& s) { return !s.ended(); });
+      if (open == b.sims.end()) return finish(std::move(b));
+      Simulation& sim = *open;
+      const auto instance = static_cast<std::size_t>(open - b.sims.begin());
       if (!b.vectors) b.vectors = grid_.count(b.region);
       if (*b.vectors == 1) {
-        // One vector left: the rest is its run alone, by the strategy's own (cheaper) decisions.
-        b.sim.set_weights(grid_.weights_at(grid_.lexmin(b.region)));
-        while (b.sim.step()) {
+        // One vector left: the rest is its runs alone, by the strategy's own (cheaper) decisions.
+        const std::vector<double> weights = grid_.weights_at(grid_.lexmin(b.region));
+        for (Simulation& s : b.sims) {
+          s.set_weights(weights);
+          while (s.step()) {
+          }
         }
         return finish(std::move(b));
       }
@@ -58,13 +68,13 @@ class Explorer {
         w_lo[at] = grid_.values(k)[static_cast<std::size_t>(box[at][0])];
         w_hi[at] = grid_.values(k)[static_cast<std::size_t>(box[at][1])];
       }
-      const Candidates* candidates = b.sim.choice(w_lo, w_hi);
+      const Candidates* candidates = sim.choice(w_lo, w_hi);
       if (candidates == nullptr) {  // a decision no weight changes
-        (void)b.sim.step();
+        (void)sim.step();
         continue;
       }
       if (candidates->cells.size() == 1) {  // the only candidate any weight vector here may choose
-        (void)b.sim.step_choosing(0);
+        (void)sim.step_choosing(0);
         continue;
       }
       std::vector<WeightGrid::Share> shares = grid_.split(b.region, *candidates);
@@ -74,11 +84,11 @@ class Explorer {
       }
       for (std::size_t s = 0; s + 1 < shares.size(); ++s) {
         auto fork = std::make_shared<Branch>(
-            Branch{b.sim, std::move(shares[s].region), b.choices, std::nullopt, std::nullopt});
+            Branch{b.sims, std::move(shares[s].region), b.choices, std::nullopt, std::nullopt});
         fork->choices.push_back(shares[s].candidate);
         const int candidate = shares[s].candidate;
-        tasks_.run([this, fork, candidate] {
-          (void)fork->sim.step_choosing(candidate);
+        tasks_.run([this, fork, candidate, instance] {
+          (void)fork->sims[instance].step_choosing(candidate);
           explore(std::move(*fork));
         });
       }
@@ -89,7 +99,7 @@ class Explorer {
         b.box.reset();
         b.vectors.reset();
       }
-      (void)b.sim.step_choosing(last.candidate);
+      (void)sim.step_choosing(last.candidate);
     }
   }
 
@@ -103,7 +113,8 @@ class Explorer {
     out.bounds = grid_.bounds(b.region);
     out.choices = std::move(b.choices);
     out.region = std::move(b.region);
-    out.result = std::move(b.sim).result();
+    out.results.reserve(b.sims.size());
+    for (Simulation& sim : b.sims) out.results.push_back(std::move(sim).result());
     behaviours_.fetch_add(1, std::memory_order_relaxed);
     const std::lock_guard<std::mutex> lock(mutex_);
     on_behaviour_(std::move(out));
@@ -120,29 +131,34 @@ class Explorer {
 
 }  // namespace
 
-ExactSearchStats exact_search(const RunSpec& spec, const WeightGrid& grid, int threads,
+ExactSearchStats exact_search(std::span<const RunSpec> instances, const WeightGrid& grid, int threads,
                               const std::function<void(Behaviour&&)>& on_behaviour) {
   if (threads < 1) throw std::invalid_argument("exact_search: threads must be >= 1");
-  Simulation root(spec);
-  // The strategy must score the grid's weights, each of the grid's values allowed.
-  const std::unique_ptr<Strategy> probe = spec.strategy.make(spec.seed);
-  auto* linear = dynamic_cast<LinearScoredStrategy*>(probe.get());
-  if (linear == nullptr) {
-    throw std::invalid_argument("exact_search: strategy " + spec.strategy.name + " is not linear-scored");
+  if (instances.empty()) throw std::invalid_argument("exact_search: no instance to search");
+  std::vector<Simulation> roots;
+  roots.reserve(instances.size());
+  for (const RunSpec& spec : instances) {
+    roots.emplace_back(spec);
+    // The strategy must score the grid's weights, each of the grid's values allowed.
+    const std::unique_ptr<Strategy> probe = spec.strategy.make(spec.seed);
+    auto* linear = dynamic_cast<LinearScoredStrategy*>(probe.get());
+    if (linear == nullptr) {
+      throw std::invalid_argument("exact_search: strategy " + spec.strategy.name + " is not linear-scored");
+    }
+    if (linear->weights().size() != static_cast<std::size_t>(grid.weights())) {
+      throw std::invalid_argument("exact_search: strategy " + spec.strategy.name + " has " +
+                                  std::to_string(linear->weights().size()) + " weights, the grid " +
+                                  std::to_string(grid.weights()));
+    }
+    std::vector<double> lowest;
+    std::vector<double> highest;
+    for (int k = 0; k < grid.weights(); ++k) {
+      lowest.push_back(grid.values(k).front());
+      highest.push_back(grid.values(k).back());
+    }
+    linear->set_weights(lowest);  // throws std::invalid_argument naming a weight out of range
+    linear->set_weights(highest);
   }
-  if (linear->weights().size() != static_cast<std::size_t>(grid.weights())) {
-    throw std::invalid_argument("exact_search: strategy " + spec.strategy.name + " has " +
-                                std::to_string(linear->weights().size()) + " weights, the grid " +
-                                std::to_string(grid.weights()));
-  }
-  std::vector<double> lowest;
-  std::vector<double> highest;
-  for (int k = 0; k < grid.weights(); ++k) {
-    lowest.push_back(grid.values(k).front());
-    highest.push_back(grid.values(k).back());
-  }
-  linear->set_weights(lowest);  // throws std::invalid_argument naming a weight out of range
-  linear->set_weights(highest);
   ExactSearchStats stats;
   // Up to `threads` workers: the global limit as well, since task_group tasks may otherwise
   // run on the default arena's workers (as sweep_runner.cpp does).
@@ -153,7 +169,7 @@ ExactSearchStats exact_search(const RunSpec& spec, const WeightGrid& grid, int t
     tbb::task_group tasks;
     Explorer explorer(grid, tasks, on_behaviour);
     tasks.run([&] {
-      explorer.explore(Branch{std::move(root), grid.everything(), {}, std::nullopt, std::nullopt});
+      explorer.explore(Branch{std::move(roots), grid.everything(), {}, std::nullopt, std::nullopt});
     });
     tasks.wait();
     stats = explorer.stats();

@@ -10,10 +10,15 @@
 /// for each of them, a run with those weights alone makes the same choices, so it ends the same
 /// way with the same quality metrics (effort metrics, the `*_time_s` and `*_expansions`
 /// columns, measure the shared search instead).
+///
+/// A class of instances (several maps, seeds or repetitions) is searched jointly: a region
+/// carries one simulation per instance and splits wherever any of them splits, so a behaviour
+/// is one run per instance, all produced by the same weight vectors.
 
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <vector>
 
 #include "sim/run_result.hpp"
@@ -35,7 +40,8 @@ struct Behaviour {
   /// among them (indices into the grid's value lists).
   std::array<int, WeightGrid::kMaxWeights> representative{};
   std::array<std::array<int, 2>, WeightGrid::kMaxWeights> bounds{};
-  RunResult result;
+  /// The run of each instance, in the order of exact_search()'s `instances`.
+  std::vector<RunResult> results;
 };
 
 /// What an exact search did.
@@ -46,14 +52,14 @@ struct ExactSearchStats {
   std::uint64_t forks = 0;
 };
 
-/// Searches `grid` for `spec`, whose strategy must be linear-scored with grid.weights()
-/// features (its own weights do not matter). Calls `on_behaviour` once per behaviour, from any
-/// thread but never two at once, in an order that depends on the threads (sort by
+/// Searches `grid` for the class `instances` (at least one), whose strategies must be
+/// linear-scored with grid.weights() features (their own weights do not matter). Calls `on_behaviour` once
+/// per behaviour, from any thread but never two at once, in an order that depends on the threads (sort by
 /// `choices` or `representative` for a fixed order). `threads` >= 1 (oneTBB tasks over the
 /// region tree). Throws ConfigError for a bad spec, std::invalid_argument for a strategy that is
 /// not linear-scored, has another number of weights than the grid, or does not allow one of the
 /// grid's values (LinearScoredStrategy::set_weights).
-ExactSearchStats exact_search(const RunSpec& spec, const WeightGrid& grid, int threads,
+ExactSearchStats exact_search(std::span<const RunSpec> instances, const WeightGrid& grid, int threads,
                               const std::function<void(Behaviour&&)>& on_behaviour);
 
 }  // namespace sweep

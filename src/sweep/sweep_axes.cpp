@@ -4,8 +4,10 @@
 #include "sweep/sweep_axes.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 #include <set>
 
@@ -14,6 +16,7 @@
 #include "sim/heuristics.hpp"
 #include "sim/run_spec.hpp"
 #include "strategies/registry.hpp"
+#include "strategies/strategy.hpp"
 
 namespace fsweep {
 inline namespace sweep {
@@ -137,6 +140,154 @@ std::string robot_label(const std::vector<Axis>& axes, const std::vector<std::si
   return label.empty() ? "-" : label;
 }
 
+/// The registered strategies that score candidates linearly (LinearScoredStrategy), with their
+/// defaults.
+std::vector<std::string> linear_scored_names() {
+  std::vector<std::string> out;
+  for (const std::string& name : strategy_names()) {
+    try {
+      const std::unique_ptr<Strategy> s = configure_strategy(name, nullptr).make(0);
+      if (dynamic_cast<const LinearScoredStrategy*>(s.get()) != nullptr) out.push_back(name);
+    } catch (const std::exception&) {  // a strategy without usable defaults is not searchable
+    }
+  }
+  return out;
+}
+
+/// Makes `entry` (validated, its groups built) a search entry by its "search" object: the weight
+/// groups become the search's box (integers, every declared value when a weight is not given),
+/// every other group must have one value. `specs`: the strategy's declarations.
+void make_search_entry(const json& search, const std::string& where, const ParamSpecs& specs,
+                       StrategyEntry& entry, std::vector<std::string>& problems) {
+  const std::string at = where + "/search";
+  try {
+    if (!search.is_object())
+      throw ConfigError(at, "expected an object {\"method\": \"exact\", \"mode\": ...}");
+    require_known_keys(search, {"method", "mode", "write_vectors", "rank"}, at);
+  } catch (const ConfigError& e) {
+    problems.push_back(at + ": " + strip_path(e.what(), at));
+    return;
+  }
+  WeightSearch ws;
+  const json method = search.value("method", json("exact"));
+  if (method != json("exact")) {
+    problems.push_back(at + "/method: value " + value_text(method) + "; allowed: \"exact\"");
+  }
+  const json mode = search.value("mode", json("all"));
+  if (mode == json("all")) {
+    ws.mode = WeightSearch::Mode::All;
+  } else if (mode == json("best")) {
+    ws.mode = WeightSearch::Mode::Best;
+  } else {
+    problems.push_back(at + "/mode: value " + value_text(mode) + "; allowed: \"all\", \"best\"");
+  }
+  const json write_vectors = search.value("write_vectors", json(false));
+  if (!write_vectors.is_boolean()) {
+    problems.push_back(at + "/write_vectors: value " + value_text(write_vectors) + "; allowed: true, false");
+  } else {
+    ws.write_vectors = write_vectors.get<bool>();
+  }
+  // The strategy's weights.
+  std::unique_ptr<Strategy> probe;
+  try {
+    probe = configure_strategy(entry.name, entry.params_at(0), where).make(0);
+  } catch (const std::exception& e) {
+    problems.push_back(where + "/params: " + e.what());
+    return;
+  }
+  const auto* linear = dynamic_cast<const LinearScoredStrategy*>(probe.get());
+  if (linear == nullptr) {
+    problems.push_back(
+        at + ": strategy '" + entry.name +
+        "' does not score its candidates linearly, so its weights cannot be searched; allowed: " +
+        join_names(linear_scored_names()));
+    return;
+  }
+  ws.weights = linear->weight_names();
+  std::vector<StrategyEntry::Group> others;
+  for (auto& group : entry.groups) {
+    const auto weight =
+        std::find_first_of(group.names.begin(), group.names.end(), ws.weights.begin(), ws.weights.end());
+    if (weight == group.names.end()) {
+      if (group.combos.size() != 1) {
+        problems.push_back(
+            concat({where, "/params/", group.names.front(), ": a search entry sweeps only its weights (",
+                    join_names(ws.weights), "); this parameter has ", std::to_string(group.combos.size()),
+                    " values; allowed: one"}));
+      }
+      others.push_back(std::move(group));
+    } else if (group.names.size() > 1) {
+      problems.push_back(
+          concat({where, "/zip: weight '", *weight,
+                  "' is zipped; a search covers the whole box of its weights, allowed: no zip groups "
+                  "with weights"}));
+    }
+  }
+  for (const std::string& w : ws.weights) {
+    std::vector<double> values;
+    const auto group = std::find_if(entry.groups.begin(), entry.groups.end(),
+                                    [&](const StrategyEntry::Group& g) { return g.names == std::vector{w}; });
+    if (group != entry.groups.end()) {
+      for (const auto& combo : group->combos) {
+        const json& v = combo.front();
+        if (!v.is_number_integer()) {
+          const std::string allowed =
+              "; the exact search takes integer weights; allowed: integers, lists or integer ranges";
+          problems.push_back(concat({where, "/params/", w, ": value ", value_text(v), allowed}));
+          break;
+        }
+        values.push_back(v.get<double>());
+      }
+      std::sort(values.begin(), values.end());
+    } else {  // every integer the declaration allows
+      const auto spec =
+          std::find_if(specs.begin(), specs.end(), [&](const ParamSpec& p) { return p.name == w; });
+      if (spec == specs.end()) {  // a weight the strategy fixes (closest_frontier: (1, 0, 0, 0))
+        values.push_back(linear->weights()[static_cast<std::size_t>(&w - ws.weights.data())]);
+      } else if (!spec->min || !spec->max || spec->max_open || spec->min_open) {
+        problems.push_back(
+            concat({where, "/params/", w, ": missing; a search needs the values of every weight"}));
+        continue;
+      } else {
+        for (double v = std::ceil(*spec->min); v <= *spec->max; v += 1.0) values.push_back(v);
+      }
+    }
+    ws.values.push_back(std::move(values));
+  }
+  if (ws.values.size() != ws.weights.size()) return;
+  entry.groups = std::move(others);
+  if (ws.write_vectors && ws.vectors() > kMaxListedVectors) {
+    problems.push_back(at + "/write_vectors: the box has " + with_thousands(ws.vectors()) +
+                       " vectors; allowed: true only for boxes of at most " +
+                       with_thousands(kMaxListedVectors));
+  }
+  // Vectors to rank.
+  const json rank = search.value("rank", json::array());
+  if (!rank.is_array()) {
+    problems.push_back(at + "/rank: expected a list of weight vectors, e.g. [[10, 0, 9, 20]], got " +
+                       value_text(rank));
+  }
+  for (std::size_t i = 0; rank.is_array() && i < rank.size(); ++i) {
+    const std::string rat = at + "/rank/" + std::to_string(i);
+    const json& v = rank[i];
+    bool ok = v.is_array() && v.size() == ws.weights.size();
+    std::vector<double> vector;
+    for (std::size_t k = 0; ok && k < v.size(); ++k) {
+      const auto& box = ws.values[k];
+      ok = v[k].is_number() && std::binary_search(box.begin(), box.end(), v[k].get<double>());
+      if (ok) vector.push_back(v[k].get<double>());
+    }
+    if (!ok) {
+      problems.push_back(rat + ": value " + value_text(v) + "; allowed: a list of " +
+                         std::to_string(ws.weights.size()) + " weights (" + join_names(ws.weights) +
+                         "), each one of the search's values");
+    } else {
+      ws.rank.push_back(std::move(vector));
+    }
+  }
+  entry.search = std::move(ws);
+}
+
 }  // namespace
 
 std::vector<StrategyEntry> parse_strategies(const json& strategies, std::vector<std::string>& problems) {
@@ -152,7 +303,7 @@ std::vector<StrategyEntry> parse_strategies(const json& strategies, std::vector<
     const json& item = strategies[i];
     const std::size_t before = problems.size();
     try {
-      require_known_keys(item, {"name", "label", "params", "heuristics", "zip"}, where);
+      require_known_keys(item, {"name", "label", "params", "heuristics", "zip", "search"}, where);
     } catch (const ConfigError& e) {
       problems.emplace_back(e.what());
       continue;
@@ -299,6 +450,9 @@ std::vector<StrategyEntry> parse_strategies(const json& strategies, std::vector<
           if (auto problem = spec->check(axis.values[k])) bad.emplace_back(k, std::move(*problem));
         }
         report_axis(axis, bad, problems);
+      }
+      if (item.contains("search") && problems.size() == before) {
+        make_search_entry(item["search"], where, specs, entry, problems);
       }
     }
     out.push_back(std::move(entry));

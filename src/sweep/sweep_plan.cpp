@@ -387,6 +387,60 @@ json SweepPlan::run_key_json(std::uint64_t index) const { return run(index).key_
 
 std::string SweepPlan::run_key(std::uint64_t index) const { return run(index).key; }
 
+std::vector<SearchUnit> SweepPlan::search_units() const {
+  std::vector<std::string> classes;
+  for (const SweepMap& m : maps_) {
+    if (std::find(classes.begin(), classes.end(), m.map_class) == classes.end())
+      classes.push_back(m.map_class);
+  }
+  std::vector<SearchUnit> out;
+  for (std::size_t e = 0; e < strategies_.size(); ++e) {
+    if (!strategies_[e].search) continue;
+    for (const std::string& c : classes) {
+      SearchUnit u;
+      u.entry = e;
+      u.map_class = c;
+      for (std::size_t m = 0; m < maps_.size(); ++m) {
+        if (maps_[m].map_class == c) u.maps.push_back(m);
+      }
+      for (u.planner = 0; u.planner < planners_.size(); ++u.planner) {
+        for (u.robot = 0; u.robot < robots_.size(); ++u.robot) out.push_back(u);
+      }
+    }
+  }
+  return out;
+}
+
+namespace {
+
+RunCoordinates instance_coordinates(const SearchUnit& unit, std::size_t instance, int repetitions) {
+  RunCoordinates c;
+  c.map = unit.maps.at(instance / static_cast<std::size_t>(repetitions));
+  c.strategy_entry = unit.entry;
+  c.planner = unit.planner;
+  c.robot = unit.robot;
+  c.repetition = static_cast<int>(instance % static_cast<std::size_t>(repetitions));
+  return c;
+}
+
+}  // namespace
+
+RunSpec SweepPlan::search_instance(const SearchUnit& unit, std::size_t instance) const {
+  return spec_at(instance_coordinates(unit, instance, repetitions_));
+}
+
+json SweepPlan::search_instance_json(const SearchUnit& unit, std::size_t instance) const {
+  const RunCoordinates c = instance_coordinates(unit, instance, repetitions_);
+  json out = key_json_of(c, spec_at(c));
+  const WeightSearch& search = *strategies_.at(unit.entry).search;
+  for (std::size_t k = 0; k < search.weights.size(); ++k) {
+    const std::vector<double>& v = search.values[k];
+    out["strategy_params"][search.weights[k]] =
+        v.size() == 1 ? json(v.front()) : json{{"from", v.front()}, {"to", v.back()}, {"values", v.size()}};
+  }
+  return out;
+}
+
 std::vector<std::pair<std::string, std::uint64_t>> SweepPlan::axes() const {
   return {{"maps", maps_.size()},
           {"strategy configurations", strategy_offsets_.back()},

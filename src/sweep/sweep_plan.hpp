@@ -84,6 +84,7 @@
 #include <cstdint>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -128,6 +129,26 @@ struct SweepMap {
   bool free_space = false;
 };
 
+/// The exact weight search of a strategy entry ("search" in the file; format above): every
+/// integer weight vector of a box, searched by decision sharing (exact_search.hpp).
+struct WeightSearch {
+  enum class Mode { All, Best };
+  Mode mode = Mode::All;
+  /// Also write vectors.csv (boxes of at most kMaxListedVectors vectors).
+  bool write_vectors = false;
+  /// The strategy's weight parameters (LinearScoredStrategy::weight_names()), in its order.
+  std::vector<std::string> weights;
+  /// Per weight, its values: ascending integers.
+  std::vector<std::vector<double>> values;
+  /// Weight vectors (one value per weight, each a value of the box) whose exact rank is reported.
+  std::vector<std::vector<double>> rank;
+  /// Vectors in the box (the product of the value counts).
+  [[nodiscard]] std::uint64_t vectors() const;
+};
+
+/// Most vectors a search's vectors.csv may list.
+inline constexpr std::uint64_t kMaxListedVectors = 10'000'000;
+
 /// A strategy entry: a name and parameter axes. Axes in a "zip" group vary together.
 struct StrategyEntry {
   std::string name;
@@ -136,9 +157,14 @@ struct StrategyEntry {
     std::vector<std::string> names;                   ///< parameter names of the group
     std::vector<std::vector<nlohmann::json>> combos;  ///< combos[k][i]: value of names[i]
   };
-  /// Ordered by each group's alphabetically smallest name; a group's names in zip order.
+  /// Ordered by each group's alphabetically smallest name; a group's names in zip order. In a
+  /// search entry, the weights are not among them (they are the search's box) and every other
+  /// group has one value.
   std::vector<Group> groups;
-  /// Number of parameter combinations (product of the groups' sizes; 1 without params).
+  /// The entry's exact weight search, if it has one: then it has no runs of its own.
+  std::optional<WeightSearch> search;
+  /// Number of parameter combinations (product of the groups' sizes; 1 without params), each a
+  /// configuration of the sweep's runs; 0 for a search entry.
   [[nodiscard]] std::uint64_t count() const;
   /// Parameters of combination k (0 <= k < count()), last group fastest, as the strategy's
   /// params object; null when the entry has no parameters (the strategy's defaults).
@@ -171,6 +197,18 @@ struct RunCoordinates {
   std::size_t planner = 0;
   std::size_t robot = 0;
   int repetition = 0;
+};
+
+/// One exact weight search of a sweep: a search entry on one map class with one planner and
+/// one robot variant. Its instances, searched jointly, are the class's maps times the
+/// repetitions (map-major).
+struct SearchUnit {
+  std::size_t entry = 0;
+  std::string map_class;
+  /// The class's maps, in file order.
+  std::vector<std::size_t> maps;
+  std::size_t planner = 0;
+  std::size_t robot = 0;
 };
 
 /// One run of a sweep, resolved once: its place on every axis, its RunSpec (plugins
@@ -224,6 +262,15 @@ class SweepPlan {
   [[nodiscard]] std::string run_key(std::uint64_t index) const;
   /// The canonical JSON the run key hashes.
   [[nodiscard]] nlohmann::json run_key_json(std::uint64_t index) const;
+  /// The exact weight searches, in order: search entries in file order, then map classes by
+  /// first appearance, planners, robot variants (last fastest).
+  [[nodiscard]] std::vector<SearchUnit> search_units() const;
+  /// Instance `instance` of `unit` (< maps x repetitions; map-major): the RunSpec a run of the
+  /// entry on that map and repetition would have, its strategy with its default weights.
+  [[nodiscard]] RunSpec search_instance(const SearchUnit& unit, std::size_t instance) const;
+  /// The canonical JSON of that instance (as run keys hash it, with the search's box in place
+  /// of the weights): every resolved parameter.
+  [[nodiscard]] nlohmann::json search_instance_json(const SearchUnit& unit, std::size_t instance) const;
   /// Axis sizes, for `fsweep expand`: maps, strategy configurations, planners, robots, reps.
   [[nodiscard]] std::vector<std::pair<std::string, std::uint64_t>> axes() const;
 

@@ -23,6 +23,7 @@
 #include "sweep/manifest.hpp"
 #include "sweep/progress_meter.hpp"
 #include "sweep/sweep_table.hpp"
+#include "sweep/weight_search_runner.hpp"
 
 namespace fsweep {
 inline namespace sweep {
@@ -34,8 +35,11 @@ using Clock = std::chrono::steady_clock;
 /// Runs in flight or waiting for the in-order writer, per thread.
 constexpr std::size_t kTokensPerThread = 16;
 
-constexpr const char* kOutputFiles[] = {"runs.csv",    "progress.csv", "manifest.json",
-                                        "summary.csv", "best.csv",     "progress_summary.csv"};
+constexpr const char* kOutputFiles[] = {"runs.csv",        "progress.csv",     "manifest.json",
+                                        "summary.csv",     "best.csv",         "progress_summary.csv",
+                                        "searches.json",   "behaviours.csv",   "search_summary.csv",
+                                        "search_best.csv", "search_ranks.csv", "search_heatmaps.csv",
+                                        "vectors.csv"};
 
 /// Set by SIGINT/SIGTERM while run_sweep runs (a signal handler can only reach a global).
 std::atomic<bool> stop_requested{false};  // NOLINT(cppcoreguidelines-avoid-non-const-global-variables)
@@ -298,6 +302,21 @@ RunnerReport run_sweep(const SweepPlan& plan, const RunnerOptions& options) {
   info.wall_s = report.wall_s;
   info.runs_per_s = report.runs_per_s;
   info.status = report.interrupted ? "interrupted" : "complete";
+  if (!report.interrupted && options.shard_count == 1 && !plan.search_units().empty()) {
+    // 4. The exact weight searches (weight_search_runner.hpp): searches.json is written last, so
+    //    its presence means every search file is complete.
+    if (fs::exists(dir + "/searches.json")) {
+      report.searches_done_before = true;
+    } else {
+      info.status = "running";
+      write_manifest(manifest_path, manifest_json(plan, info));
+      report.searches = run_weight_searches(plan, dir, threads, options.progress);
+      info.status = "complete";
+      info.end_utc = utc_now_iso8601();
+      report.wall_s = std::chrono::duration<double>(Clock::now() - wall_start).count();
+      info.wall_s = report.wall_s;
+    }
+  }
   write_manifest(manifest_path, manifest_json(plan, info));
 
   if (!report.interrupted && options.shard_count == 1) aggregate(dir, {});

@@ -26,6 +26,11 @@
 ///   Written at the start and at the end, each time through a temp file and rename.
 /// - `summary.csv`, `progress_summary.csv`, `best.csv`: written by aggregate.hpp after a
 ///   complete, unsharded run.
+/// - The exact weight searches' files (weight_search_runner.hpp: searches.json,
+///   behaviours.csv, search_summary.csv, search_best.csv, search_ranks.csv,
+///   search_heatmaps.csv, vectors.csv), after the runs of a complete, unsharded run; skipped
+///   when searches.json is already there (a finished search is not redone; --fresh redoes it).
+///   Sharded runs do not run searches.
 /// - `.fsweep.lock`: an flock held while running; a second runner on the same directory is
 ///   refused (the kernel drops the lock when the process dies, even by SIGKILL). Temp files a
 ///   killed runner left (`runs.csv.tmp.<pid>`, ...) are deleted on start.
@@ -68,6 +73,7 @@
 #include <string>
 
 #include "sweep/sweep_plan.hpp"
+#include "sweep/weight_search_runner.hpp"
 
 namespace fsweep {
 inline namespace sweep {
@@ -101,6 +107,10 @@ struct RunnerReport {
   double wall_s = 0.0;
   double runs_per_s = 0.0;  ///< ran / wall_s
   std::string out_dir;      ///< where the files are (with the shard subdirectory)
+  /// The sweep's exact weight searches, run after its runs (unsharded, not interrupted).
+  SearchRunReport searches;
+  /// Their files were already there (searches.json), so they were not run again.
+  bool searches_done_before = false;
 };
 
 /// Runs the plan. Throws ConfigError for unusable outputs (unwritable directory, another runner

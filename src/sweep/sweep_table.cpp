@@ -12,16 +12,11 @@
 
 namespace fsweep {
 inline namespace sweep {
-namespace {
 
-/// The star-pattern optimum d* (competitive.hpp) for a run, or NaN where it does not apply:
-/// free space, a finite battery, an energy model that charges travel only (no stop or turn
-/// costs), and the whole disc of radius r/2 around the dock inside the free part of the map
-/// (the free generator's interior is a rectangle, so its four extreme cells decide);
-/// r = capacity / energy per metre of straight travel, r_s = sensor range.
-double optimal_distance_m(const SweepPlan& plan, std::uint64_t index, const RunSpec& spec) {
-  const std::size_t map = plan.coordinates(index).map;
-  if (!plan.maps().at(map).free_space || !std::isfinite(spec.robot.battery_capacity)) return std::nan("");
+// The free generator's interior is a rectangle, so its four extreme cells decide whether the
+// disc of radius r/2 lies inside it.
+double optimal_distance_m(const SweepMap& map, const RunSpec& spec) {
+  if (!map.free_space || !std::isfinite(spec.robot.battery_capacity)) return std::nan("");
   const EnergyModel& e = spec.robot.energy;
   const double per_metre = e.per_metre + e.per_cell / spec.map->resolution_m;
   if (!(per_metre > 0.0) || !(spec.robot.sensor.range_m > 0.0)) return std::nan("");
@@ -40,8 +35,6 @@ double optimal_distance_m(const SweepPlan& plan, std::uint64_t index, const RunS
   }
   return star_pattern_optimum_m(range_m, spec.robot.sensor.range_m);
 }
-
-}  // namespace
 
 std::uint64_t representative_run(const SweepPlan& plan, std::size_t strategy_entry, std::size_t planner,
                                  std::size_t robot) {
@@ -68,6 +61,7 @@ SweepTable::SweepTable(const SweepPlan& plan) {
   const auto axes = plan.axes();
   if (plan.run_count() > 0) {
     for (std::size_t e = 0; e < plan.strategies().size(); ++e) {
+      if (plan.strategies()[e].search) continue;  // no runs: its results are the search's files
       for (std::size_t p = 0; p < axes.at(2).second; ++p) {
         for (std::size_t r = 0; r < axes.at(3).second; ++r) {
           std::size_t cursor = 0;  // insertion point
@@ -131,7 +125,7 @@ RunRows SweepTable::run(const SweepPlan& plan, const SweepRun& run) const {
     for (auto& [name, value] : config_columns(spec)) set(name, std::move(value));
     const RunResult result = simulate(spec);
     for (auto& [name, value] : metric_columns(result)) set(name, std::move(value));
-    const double optimum = optimal_distance_m(plan, index, spec);
+    const double optimum = optimal_distance_m(plan.maps().at(at.map), spec);
     if (!std::isnan(optimum)) {
       set(kSweepMetricColumns[0], format_number(optimum));
       set(kSweepMetricColumns[1], format_number(result.metrics.distance_m / optimum));

@@ -62,6 +62,12 @@ class SweepTable {
   std::unordered_map<std::string, std::size_t> position_;
 };
 
+/// The star-pattern optimum d* (sim/competitive.hpp) of a run of `spec` on `map`, or NaN where
+/// it does not apply: free space, a finite battery, an energy model that charges travel only
+/// (no stop or turn costs), and the whole disc of radius r/2 around the dock inside the free
+/// part of the map; r = capacity / energy per metre of straight travel, r_s = sensor range.
+[[nodiscard]] double optimal_distance_m(const SweepMap& map, const RunSpec& spec);
+
 /// Index of the run at the given axis positions (repetition 0): the inverse of
 /// SweepPlan::coordinates() for the header's representatives. Throws std::logic_error when the
 /// plan's run order is not the documented one.

@@ -186,7 +186,14 @@ std::vector<json> expand_values(const json& v, const std::string& where, std::ve
   return std::vector<json>(v.begin(), v.end());
 }
 
+std::uint64_t WeightSearch::vectors() const {
+  std::uint64_t n = 1;
+  for (const auto& v : values) n *= v.size();
+  return n;
+}
+
 std::uint64_t StrategyEntry::count() const {
+  if (search) return 0;
   std::uint64_t n = 1;
   for (const auto& g : groups) n *= g.combos.size();
   return n;

@@ -63,5 +63,19 @@ TEST(Quantile, InfiniteValuesStayInfinite) {
   EXPECT_EQ(quantile_sorted({-kInf, 1.0, 2.0}, 0.5), 1.0);
 }
 
+// Counted values give the quantiles of their expansion, for every q on a fine grid.
+TEST(Quantile, CountedValuesAreTheirExpansion) {
+  const std::vector<CountedValue> counted{{-3.0, 2}, {1.5, 1}, {2.0, 5}, {7.25, 3}, {kInf, 1}};
+  std::vector<double> expanded;
+  for (const CountedValue& v : counted) expanded.insert(expanded.end(), v.count, v.value);
+  for (int i = 0; i <= 1000; ++i) {
+    const double q = i / 1000.0;
+    EXPECT_EQ(counted_quantile_sorted(counted, q), quantile_sorted(expanded, q)) << "q = " << q;
+  }
+  EXPECT_EQ(counted_quantile_sorted({{4.0, 1'000'000'000'000}}, 0.3), 4.0);
+  EXPECT_THROW((void)counted_quantile_sorted({}, 0.5), std::invalid_argument);
+  EXPECT_THROW((void)counted_quantile_sorted({{1.0, 2}}, 2.0), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace fsweep

@@ -11,6 +11,8 @@
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <set>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -48,8 +50,8 @@ using test::without_effort;
 std::vector<Behaviour> behaviours_of(const RunSpec& spec, const WeightGrid& grid, int threads,
                                      ExactSearchStats* stats = nullptr) {
   std::vector<Behaviour> found;
-  const ExactSearchStats s =
-      exact_search(spec, grid, threads, [&](Behaviour&& b) { found.push_back(std::move(b)); });
+  const ExactSearchStats s = exact_search(std::span<const RunSpec>(&spec, 1), grid, threads,
+                                          [&](Behaviour&& b) { found.push_back(std::move(b)); });
   if (stats != nullptr) *stats = s;
   std::sort(found.begin(), found.end(),
             [](const Behaviour& a, const Behaviour& b) { return a.choices < b.choices; });
@@ -93,7 +95,7 @@ void expect_agrees_with_brute_force(const RunSpec& spec, const WeightGrid& grid,
     }
     const std::vector<double> w = grid.weights_at(at);
     const RunResult alone = without_effort(simulate(with_weights(spec, w)));
-    const RunResult shared = without_effort(b.result);
+    const RunResult shared = without_effort(b.results.at(0));
     ASSERT_EQ(alone.end, shared.end) << what << " at (" << w[0] << ", " << w[1] << ", " << w[2] << ", "
                                      << w[3] << ")";
     ASSERT_TRUE(alone == shared) << what << " at (" << w[0] << ", " << w[1] << ", " << w[2] << ", " << w[3]
@@ -147,10 +149,48 @@ TEST(ExactSearch, IsTheSameForAnyThreadCount) {
     EXPECT_EQ(one[i].choices, two[i].choices);
     EXPECT_EQ(one[i].vectors, two[i].vectors);
     EXPECT_EQ(one[i].representative, two[i].representative);
-    EXPECT_TRUE(without_effort(one[i].result) == without_effort(two[i].result));
+    EXPECT_TRUE(without_effort(one[i].results.at(0)) == without_effort(two[i].results.at(0)));
   }
   EXPECT_EQ(one_stats.splits, two_stats.splits);
   EXPECT_EQ(one_stats.forks + 1, one.size());
+}
+
+TEST(ExactSearch, AClassIsSearchedJointlyAsTheCommonRefinementOfItsInstances) {
+  // Two maps searched together: two vectors share a joint behaviour exactly when they share a
+  // behaviour on each map alone, and the joint behaviour's run on each map is that behaviour's.
+  const std::vector<RunSpec> instances{spec_on("office:w=32,h=32,seed=3", 120.0),
+                                       spec_on("rooms:w=28,h=24,seed=7", 90.0)};
+  const WeightGrid grid({integers(0, 3), integers(0, 3), integers(0, 3), integers(0, 3)});
+  std::vector<std::map<Point, std::size_t>> alone_owner(instances.size());
+  std::vector<std::vector<Behaviour>> alone(instances.size());
+  for (std::size_t i = 0; i < instances.size(); ++i) {
+    alone[i] = behaviours_of(instances[i], grid, 1);
+    for (std::size_t b = 0; b < alone[i].size(); ++b) {
+      grid.for_each_point(alone[i][b].region, [&](const Point& at) { alone_owner[i][at] = b; });
+    }
+  }
+  std::vector<Behaviour> joint;
+  (void)exact_search(instances, grid, 2, [&](Behaviour&& b) { joint.push_back(std::move(b)); });
+  // Every pair of per-map behaviours that some vector combines is one joint behaviour.
+  std::map<std::pair<std::size_t, std::size_t>, int> combos;
+  for (const auto& [at, b0] : alone_owner[0]) ++combos[{b0, alone_owner[1].at(at)}];
+  ASSERT_GT(alone[0].size() + alone[1].size(), 6U) << "weights that change nothing test nothing";
+  ASSERT_EQ(joint.size(), combos.size());
+  std::uint64_t total = 0;
+  for (const Behaviour& b : joint) {
+    total += b.vectors;
+    ASSERT_EQ(b.results.size(), 2U);
+    std::set<std::pair<std::size_t, std::size_t>> owners;
+    grid.for_each_point(b.region, [&](const Point& at) {
+      owners.insert({alone_owner[0].at(at), alone_owner[1].at(at)});
+    });
+    ASSERT_EQ(owners.size(), 1U) << "a joint behaviour mixes per-map behaviours";
+    const auto [b0, b1] = *owners.begin();
+    EXPECT_EQ(static_cast<int>(b.vectors), combos.at({b0, b1}));
+    EXPECT_TRUE(without_effort(b.results[0]) == without_effort(alone[0][b0].results.at(0)));
+    EXPECT_TRUE(without_effort(b.results[1]) == without_effort(alone[1][b1].results.at(0)));
+  }
+  EXPECT_EQ(total, grid.size());
 }
 
 /// The message of the std::invalid_argument that exact_search throws for `spec` over `grid`.
@@ -172,7 +212,10 @@ TEST(ExactSearch, RefusesStrategiesAndGridsThatDoNotFit) {
             "energy_aware: w3 = 251 is out of range; allowed: 0..250");
   spec.strategy = configure_strategy("random_frontier", nullptr);
   EXPECT_EQ(refusal(spec, four), "exact_search: strategy random_frontier is not linear-scored");
-  EXPECT_THROW((void)exact_search(spec_on("office:w=32,h=32,seed=3", 120.0), four, 0, [](Behaviour&&) {}),
+  const RunSpec office = spec_on("office:w=32,h=32,seed=3", 120.0);
+  EXPECT_THROW((void)exact_search(std::span<const RunSpec>(&office, 1), four, 0, [](Behaviour&&) {}),
+               std::invalid_argument);
+  EXPECT_THROW((void)exact_search(std::span<const RunSpec>(), four, 1, [](Behaviour&&) {}),
                std::invalid_argument);
 }
 

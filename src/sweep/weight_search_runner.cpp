@@ -1,0 +1,512 @@
+#include "sweep/weight_search_runner.hpp"
+
+#include <oneapi/tbb/info.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <limits>
+#include <map>
+#include <mutex>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+#include "core/config_error.hpp"
+#include "core/csv_format.hpp"
+#include "core/files.hpp"
+#include "core/statistics.hpp"
+#include "report/runs_schema.hpp"
+#include "sim/heuristics.hpp"
+#include "strategies/weight_grid.hpp"
+#include "sweep/exact_search.hpp"
+#include "sweep/progress_meter.hpp"
+#include "sweep/sweep_table.hpp"
+
+namespace fsweep {
+inline namespace sweep {
+namespace {
+
+using nlohmann::json;
+using Point = std::array<int, WeightGrid::kMaxWeights>;
+
+constexpr double kNoValue = std::numeric_limits<double>::quiet_NaN();
+
+/// One behaviour, formatted: its metric cells per instance and the numbers they hold.
+struct Found {
+  Behaviour behaviour;
+  /// Per instance, the metric columns (runs.csv's, plus optimal_distance_m and
+  /// competitive_ratio; effort metrics empty).
+  std::vector<Columns> cells;
+  /// Per instance and metric column, the value (NaN: none).
+  std::vector<std::vector<double>> values;
+  double objective = kNoValue;
+};
+
+double number_of(const std::string& cell) {
+  if (cell.empty()) return kNoValue;
+  char* end = nullptr;
+  const double v = std::strtod(cell.c_str(), &end);
+  return end == cell.c_str() + cell.size() ? v : kNoValue;
+}
+
+/// Formats one instance's run of a behaviour.
+Columns instance_cells(const RunResult& result, const SweepMap& map, const RunSpec& spec) {
+  Columns cells = metric_columns(result);
+  for (auto& [name, value] : cells) {
+    if (is_effort_column(name)) value.clear();
+  }
+  const double optimum = optimal_distance_m(map, spec);
+  cells.emplace_back(kSweepMetricColumns[0], number_cell(optimum));
+  cells.emplace_back(kSweepMetricColumns[1], std::isnan(optimum)
+                                                 ? std::string()
+                                                 : format_number(result.metrics.distance_m / optimum));
+  return cells;
+}
+
+/// Better objective first; no value last.
+bool better(double a, double b, Direction direction) {
+  if (std::isnan(a) || std::isnan(b)) return !std::isnan(a) && std::isnan(b);
+  return direction == Direction::Minimize ? a < b : a > b;
+}
+
+/// The label of a robot variant for tables.
+std::string planner_label(const SweepPlanner& p) {
+  return p.params.is_null() ? p.name : p.name + " " + p.params.dump();
+}
+
+/// Everything one search writes, as text rows (each with its newline).
+// NOLINTNEXTLINE(bugprone-exception-escape): false positive inside nlohmann::json's noexcept move
+struct SearchRows {
+  std::string behaviours;
+  std::string summary;
+  std::string best;
+  std::string ranks;
+  std::string heatmaps;
+  std::string vectors;
+  json record;
+};
+
+class SearchWriter {
+ public:
+  SearchWriter(const SweepPlan& plan, const SearchUnit& unit, std::size_t id, const Objective& objective)
+      : plan_(plan),
+        unit_(unit),
+        id_(std::to_string(id)),
+        search_(*plan.strategies().at(unit.entry).search),
+        grid_(search_.values),
+        objective_(objective) {}
+
+  /// Searches and formats. `on_vectors(n)`: n more vectors resolved.
+  SearchRows run(int threads, const std::function<void(std::uint64_t)>& on_vectors) {
+    const std::size_t n = unit_.maps.size() * static_cast<std::size_t>(plan_.repetitions());
+    std::vector<RunSpec> specs;
+    for (std::size_t i = 0; i < n; ++i) specs.push_back(plan_.search_instance(unit_, i));
+    const auto start = std::chrono::steady_clock::now();
+    std::vector<Found> found;
+    const ExactSearchStats stats = exact_search(specs, grid_, threads, [&](Behaviour&& b) {
+      on_vectors(b.vectors);
+      Found f;
+      f.behaviour = std::move(b);
+      found.push_back(std::move(f));
+    });
+    const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::sort(found.begin(), found.end(), [](const Found& a, const Found& b) {
+      return a.behaviour.representative < b.behaviour.representative;
+    });
+    // Metric cells and values, the class-mean objective.
+    for (Found& f : found) {
+      double sum = 0.0;
+      for (std::size_t i = 0; i < n; ++i) {
+        const SweepMap& map = plan_.maps().at(unit_.maps[i / static_cast<std::size_t>(plan_.repetitions())]);
+        f.cells.push_back(instance_cells(f.behaviour.results[i], map, specs[i]));
+        std::vector<double> values;
+        for (const auto& [name, cell] : f.cells.back()) {
+          values.push_back(number_of(cell));
+          if (name == objective_.column) sum += values.back();
+        }
+        f.values.push_back(std::move(values));
+      }
+      f.objective = sum / static_cast<double>(n);
+      f.behaviour.results.clear();  // formatted; the runs' trajectories are not kept
+    }
+    SearchRows rows;
+    write_behaviours(found, specs, rows);
+    write_summary(found, n, rows);
+    write_best_and_ranks(found, rows);
+    if (search_.mode == WeightSearch::Mode::All) write_heatmaps(found, rows);
+    if (search_.write_vectors) write_vectors(found, rows);
+    rows.record = record(specs.size(), found, stats, wall_s);
+    return rows;
+  }
+
+  /// Header lines (no newline) of the files.
+  static std::string behaviours_header(const WeightSearch& s) {
+    std::vector<std::string> h{"search_id", "behaviour_id", "vectors"};
+    for (const auto& w : s.weights) h.push_back(w);
+    for (const auto& w : s.weights) {
+      h.push_back(w + ".min");
+      h.push_back(w + ".max");
+    }
+    for (const char* c : {"objective", "instance", "map", "seed"}) h.emplace_back(c);
+    for (const auto& [name, value] : metric_columns(RunResult{})) h.push_back(name);
+    for (const char* c : kSweepMetricColumns) h.emplace_back(c);
+    return csv_record(h);
+  }
+
+ private:
+  [[nodiscard]] std::string value_at(int k, int index) const {
+    return format_number(grid_.values(k)[static_cast<std::size_t>(index)]);
+  }
+
+  void write_behaviours(const std::vector<Found>& found, const std::vector<RunSpec>& specs,
+                        SearchRows& rows) const {
+    const int w = grid_.weights();
+    for (std::size_t b = 0; b < found.size(); ++b) {
+      const Behaviour& be = found[b].behaviour;
+      std::vector<std::string> head{id_, std::to_string(b), std::to_string(be.vectors)};
+      for (int k = 0; k < w; ++k) head.push_back(value_at(k, be.representative[static_cast<std::size_t>(k)]));
+      for (int k = 0; k < w; ++k) {
+        head.push_back(value_at(k, be.bounds[static_cast<std::size_t>(k)][0]));
+        head.push_back(value_at(k, be.bounds[static_cast<std::size_t>(k)][1]));
+      }
+      head.push_back(number_cell(found[b].objective));
+      for (std::size_t i = 0; i < found[b].cells.size(); ++i) {
+        std::vector<std::string> row = head;
+        const std::size_t map = unit_.maps[i / static_cast<std::size_t>(plan_.repetitions())];
+        row.push_back(std::to_string(i));
+        row.push_back(plan_.maps().at(map).label);
+        row.push_back(std::to_string(specs[i].seed));
+        for (const auto& [name, cell] : found[b].cells[i]) row.push_back(cell);
+        rows.behaviours += csv_record(row) + '\n';
+      }
+    }
+  }
+
+  void write_summary(const std::vector<Found>& found, std::size_t instances, SearchRows& rows) {
+    const StrategyEntry& entry = plan_.strategies().at(unit_.entry);
+    std::vector<std::string> row{id_,
+                                 entry.label,
+                                 unit_.map_class,
+                                 planner_label(plan_.planners().at(unit_.planner)),
+                                 plan_.robots().at(unit_.robot).label,
+                                 std::to_string(instances),
+                                 std::to_string(grid_.size()),
+                                 std::to_string(found.size())};
+    // End reasons, weighted.
+    for (int r = static_cast<int>(EndReason::Complete); r <= static_cast<int>(EndReason::Error); ++r) {
+      const std::string reason(to_string(static_cast<EndReason>(r)));
+      std::uint64_t count = 0;
+      for (const Found& f : found) {
+        for (const Columns& c : f.cells) count += c.front().second == reason ? f.behaviour.vectors : 0;
+      }
+      row.push_back(std::to_string(count));
+    }
+    // Metrics: counted values over vectors x instances.
+    const Columns& names = found.front().cells.front();
+    for (std::size_t m = 0; m < names.size(); ++m) {
+      if (names[m].first == kEndReasonColumn || names[m].first == kEndDetailColumn ||
+          is_effort_column(names[m].first)) {
+        continue;
+      }
+      std::vector<CountedValue> values;
+      for (const Found& f : found) {
+        for (const auto& v : f.values) {
+          if (!std::isnan(v[m])) values.push_back({v[m], f.behaviour.vectors});
+        }
+      }
+      std::sort(values.begin(), values.end(),
+                [](const CountedValue& a, const CountedValue& b) { return a.value < b.value; });
+      if (values.empty()) {
+        row.insert(row.end(), 9, std::string());
+        continue;
+      }
+      double n = 0.0;
+      double mean = 0.0;
+      double m2 = 0.0;  // weighted Welford
+      for (const CountedValue& v : values) {
+        const auto c = static_cast<double>(v.count);
+        n += c;
+        const double delta = v.value - mean;
+        mean += delta * c / n;
+        m2 += c * delta * (v.value - mean);
+      }
+      row.push_back(format_number(mean));
+      row.push_back(format_number(n > 1.0 ? std::sqrt(m2 / (n - 1.0)) : 0.0));
+      row.push_back(format_number(values.front().value));
+      for (const double q : {0.05, 0.25, 0.5, 0.75, 0.95})
+        row.push_back(format_number(counted_quantile_sorted(values, q)));
+      row.push_back(format_number(values.back().value));
+    }
+    rows.summary = csv_record(row) + '\n';
+  }
+
+ public:
+  static std::string summary_header() {
+    std::vector<std::string> h{"search_id", "strategy_label", "map_class", "planner",
+                               "robot",     "instances",      "vectors",   "behaviours"};
+    for (int r = static_cast<int>(EndReason::Complete); r <= static_cast<int>(EndReason::Error); ++r) {
+      h.push_back("end." + std::string(to_string(static_cast<EndReason>(r))));
+    }
+    Columns names = metric_columns(RunResult{});
+    for (const char* c : kSweepMetricColumns) names.emplace_back(c, "");
+    for (const auto& [name, cell] : names) {
+      if (name == kEndReasonColumn || name == kEndDetailColumn || is_effort_column(name)) continue;
+      for (const char* s : {"mean", "std", "min", "q05", "q25", "median", "q75", "q95", "max"}) {
+        h.push_back(name + "." + s);
+      }
+    }
+    return csv_record(h);
+  }
+  static std::string best_header(const WeightSearch& s) {
+    std::vector<std::string> h{"search_id", "rank", "behaviour_id", "vectors", "vectors_better", "objective"};
+    for (const auto& w : s.weights) h.push_back(w);
+    return csv_record(h);
+  }
+  static std::string ranks_header(const WeightSearch& s) {
+    std::vector<std::string> h{"search_id"};
+    for (const auto& w : s.weights) h.push_back(w);
+    for (const char* c :
+         {"behaviour_id", "objective", "rank", "vectors_better", "vectors_tied", "percentile"}) {
+      h.emplace_back(c);
+    }
+    return csv_record(h);
+  }
+  static std::string heatmaps_header() {
+    return csv_record(
+        {"search_id", "weight_a", "weight_b", "value_a", "value_b", "best_objective", "behaviour_id"});
+  }
+  static std::string vectors_header(const WeightSearch& s) {
+    std::vector<std::string> h{"search_id"};
+    for (const auto& w : s.weights) h.push_back(w);
+    h.emplace_back("behaviour_id");
+    return csv_record(h);
+  }
+
+ private:
+  /// Vectors strictly better than `objective` and those equal to it.
+  [[nodiscard]] std::pair<std::uint64_t, std::uint64_t> standing(const std::vector<Found>& found,
+                                                                 double objective) const {
+    std::uint64_t better_count = 0;
+    std::uint64_t tied = 0;
+    for (const Found& f : found) {
+      if (better(f.objective, objective, objective_.direction)) better_count += f.behaviour.vectors;
+      const bool equal = f.objective == objective || (std::isnan(f.objective) && std::isnan(objective));
+      if (equal) tied += f.behaviour.vectors;
+    }
+    return {better_count, tied};
+  }
+
+  void write_best_and_ranks(const std::vector<Found>& found, SearchRows& rows) const {
+    std::vector<std::size_t> order(found.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return better(found[a].objective, found[b].objective, objective_.direction);
+    });
+    std::uint64_t before = 0;        // vectors of the behaviours listed so far
+    std::uint64_t better_count = 0;  // vectors strictly better than this behaviour
+    for (std::size_t r = 0; r < order.size(); ++r) {
+      const Found& f = found[order[r]];
+      if (r == 0 || better(found[order[r - 1]].objective, f.objective, objective_.direction))
+        better_count = before;
+      if (search_.mode == WeightSearch::Mode::Best && better_count > 0) break;
+      std::vector<std::string> row{id_,
+                                   std::to_string(better_count + 1),
+                                   std::to_string(order[r]),
+                                   std::to_string(f.behaviour.vectors),
+                                   std::to_string(better_count),
+                                   number_cell(f.objective)};
+      for (int k = 0; k < grid_.weights(); ++k) {
+        row.push_back(value_at(k, f.behaviour.representative[static_cast<std::size_t>(k)]));
+      }
+      rows.best += csv_record(row) + '\n';
+      before += f.behaviour.vectors;
+    }
+    for (const std::vector<double>& vector : search_.rank) {
+      Point at{};
+      for (int k = 0; k < grid_.weights(); ++k) {
+        const auto values = grid_.values(k);
+        at[static_cast<std::size_t>(k)] = static_cast<int>(
+            std::lower_bound(values.begin(), values.end(), vector[static_cast<std::size_t>(k)]) -
+            values.begin());
+      }
+      const auto owner = std::find_if(found.begin(), found.end(),
+                                      [&](const Found& f) { return grid_.contains(f.behaviour.region, at); });
+      if (owner == found.end()) throw std::logic_error("exact search: a vector of the box in no behaviour");
+      const auto [better_count, tied] = standing(found, owner->objective);
+      std::vector<std::string> row{id_};
+      for (const double v : vector) row.push_back(format_number(v));
+      row.push_back(std::to_string(owner - found.begin()));
+      row.push_back(number_cell(owner->objective));
+      row.push_back(std::to_string(better_count + 1));
+      row.push_back(std::to_string(better_count));
+      row.push_back(std::to_string(tied));
+      row.push_back(
+          format_number(100.0 * static_cast<double>(better_count) / static_cast<double>(grid_.size())));
+      rows.ranks += csv_record(row) + '\n';
+    }
+  }
+
+  void write_heatmaps(const std::vector<Found>& found, SearchRows& rows) const {
+    const int w = grid_.weights();
+    for (int a = 0; a < w; ++a) {
+      for (int b = a + 1; b < w; ++b) {
+        const std::size_t nb = grid_.values(b).size();
+        std::vector<double> best(grid_.values(a).size() * nb, kNoValue);
+        std::vector<std::int64_t> owner(best.size(), -1);
+        for (std::size_t f = 0; f < found.size(); ++f) {
+          grid_.for_each_projection(found[f].behaviour.region, a, b, [&](int ia, int ib) {
+            const std::size_t cell = static_cast<std::size_t>(ia) * nb + static_cast<std::size_t>(ib);
+            if (owner[cell] < 0 || better(found[f].objective, best[cell], objective_.direction)) {
+              best[cell] = found[f].objective;
+              owner[cell] = static_cast<std::int64_t>(f);
+            }
+          });
+        }
+        for (std::size_t cell = 0; cell < best.size(); ++cell) {
+          rows.heatmaps +=
+              csv_record({id_, search_.weights[static_cast<std::size_t>(a)],
+                          search_.weights[static_cast<std::size_t>(b)],
+                          value_at(a, static_cast<int>(cell / nb)), value_at(b, static_cast<int>(cell % nb)),
+                          number_cell(best[cell]), std::to_string(owner[cell])}) +
+              '\n';
+        }
+      }
+    }
+  }
+
+  void write_vectors(const std::vector<Found>& found, SearchRows& rows) const {
+    // The owner of every vector, by its lexicographic position in the box.
+    const int w = grid_.weights();
+    std::vector<std::uint32_t> owner(grid_.size());
+    for (std::size_t f = 0; f < found.size(); ++f) {
+      grid_.for_each_point(found[f].behaviour.region, [&](const Point& at) {
+        std::uint64_t index = 0;
+        for (int k = 0; k < w; ++k)
+          index =
+              index * grid_.values(k).size() + static_cast<std::uint64_t>(at[static_cast<std::size_t>(k)]);
+        owner[index] = static_cast<std::uint32_t>(f);
+      });
+    }
+    Point at{};
+    for (std::uint64_t index = 0; index < owner.size(); ++index) {
+      std::uint64_t rest = index;
+      for (int k = w - 1; k >= 0; --k) {
+        const std::uint64_t size = grid_.values(k).size();
+        at[static_cast<std::size_t>(k)] = static_cast<int>(rest % size);
+        rest /= size;
+      }
+      rows.vectors += id_;
+      for (int k = 0; k < w; ++k) rows.vectors += ',' + value_at(k, at[static_cast<std::size_t>(k)]);
+      rows.vectors += ',' + std::to_string(owner[index]) + '\n';
+    }
+  }
+
+  [[nodiscard]] json record(std::size_t instances, const std::vector<Found>& found,
+                            const ExactSearchStats& stats, double wall_s) const {
+    json box = json::object();
+    for (std::size_t k = 0; k < search_.weights.size(); ++k) box[search_.weights[k]] = search_.values[k];
+    json specs = json::array();
+    for (std::size_t i = 0; i < instances; ++i) specs.push_back(plan_.search_instance_json(unit_, i));
+    std::vector<std::string> maps;
+    for (const std::size_t m : unit_.maps) maps.push_back(plan_.maps().at(m).label);
+    return json{{"search_id", std::stoi(id_)},
+                {"strategy_label", plan_.strategies().at(unit_.entry).label},
+                {"map_class", unit_.map_class},
+                {"maps", maps},
+                {"repetitions", plan_.repetitions()},
+                {"planner", planner_label(plan_.planners().at(unit_.planner))},
+                {"robot", plan_.robots().at(unit_.robot).label},
+                {"mode", search_.mode == WeightSearch::Mode::All ? "all" : "best"},
+                {"objective", std::string(objective_.name)},
+                {"box", box},
+                {"vectors", grid_.size()},
+                {"behaviours", found.size()},
+                {"splits", stats.splits},
+                {"forks", stats.forks},
+                {"wall_s", wall_s},
+                {"instances", specs}};
+  }
+
+  const SweepPlan& plan_;
+  const SearchUnit& unit_;
+  std::string id_;
+  const WeightSearch& search_;
+  WeightGrid grid_;
+  const Objective& objective_;
+};
+
+}  // namespace
+
+SearchRunReport run_weight_searches(const SweepPlan& plan, const std::string& out_dir, int threads,
+                                    bool progress) {
+  SearchRunReport report;
+  const std::vector<SearchUnit> units = plan.search_units();
+  if (units.empty()) return report;
+  if (threads < 1) throw std::invalid_argument("run_weight_searches: threads must be >= 1");
+  const Objective* objective = find_objective(plan.objective());
+  if (objective == nullptr)
+    throw ConfigError("output/objective", "unknown objective '" + plan.objective() + "'");
+  const auto start = std::chrono::steady_clock::now();
+  std::uint64_t total = 0;
+  for (const SearchUnit& u : units) total += plan.strategies().at(u.entry).search->vectors();
+  ProgressMeter meter(total, "weight vectors", progress);
+  std::uint64_t done = 0;
+  std::mutex mutex;
+  // Each file: the header of the first search's entry (searches of one sweep with different
+  // weight names are refused by the layout: every search entry's weights head its columns).
+  const WeightSearch& first = *plan.strategies().at(units.front().entry).search;
+  std::string behaviours = SearchWriter::behaviours_header(first) + '\n';
+  std::string summary = SearchWriter::summary_header() + '\n';
+  std::string best = SearchWriter::best_header(first) + '\n';
+  std::string ranks = SearchWriter::ranks_header(first) + '\n';
+  std::string heatmaps = SearchWriter::heatmaps_header() + '\n';
+  std::string vectors = SearchWriter::vectors_header(first) + '\n';
+  bool any_vectors = false;
+  for (const SearchUnit& u : units) {
+    const WeightSearch& s = *plan.strategies().at(u.entry).search;
+    if (s.weights != first.weights) {
+      throw ConfigError("/strategies/" + std::to_string(u.entry) + "/search",
+                        "every search entry of one sweep must search the same weights (" +
+                            join_names(first.weights) + "); got " + join_names(s.weights));
+    }
+  }
+  json searches = json::array();
+  for (std::size_t id = 0; id < units.size(); ++id) {
+    const WeightSearch& s = *plan.strategies().at(units[id].entry).search;
+    SearchWriter writer(plan, units[id], id, *objective);
+    SearchRows rows = writer.run(threads, [&](std::uint64_t n) {
+      const std::lock_guard<std::mutex> lock(mutex);
+      done += n;
+      meter.update(done, 0);
+    });
+    behaviours += rows.behaviours;
+    summary += rows.summary;
+    best += rows.best;
+    ranks += rows.ranks;
+    heatmaps += rows.heatmaps;
+    vectors += rows.vectors;
+    any_vectors = any_vectors || s.write_vectors;
+    report.behaviours += rows.record.at("behaviours").get<std::uint64_t>();
+    report.vectors += s.vectors();
+    searches.push_back(std::move(rows.record));
+  }
+  meter.finish(done, 0);
+  const std::filesystem::path dir(out_dir);
+  write_file_atomically((dir / "behaviours.csv").string(), behaviours);
+  write_file_atomically((dir / "search_summary.csv").string(), summary);
+  write_file_atomically((dir / "search_best.csv").string(), best);
+  write_file_atomically((dir / "search_ranks.csv").string(), ranks);
+  write_file_atomically((dir / "search_heatmaps.csv").string(), heatmaps);
+  if (any_vectors) write_file_atomically((dir / "vectors.csv").string(), vectors);
+  write_file_atomically((dir / "searches.json").string(), json{{"searches", searches}}.dump(2) + '\n');
+  report.searches = units.size();
+  report.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return report;
+}
+
+}  // namespace sweep
+}  // namespace fsweep

@@ -1,0 +1,60 @@
+#pragma once
+/// @file weight_search_runner.hpp
+/// Runs a sweep's exact weight searches (strategy entries with "search", sweep_plan.hpp) and
+/// writes their files (docs/architecture.md, "The exact weight search"; the README documents
+/// the columns). One search per SearchUnit (entry x map class x planner x robot variant), its
+/// instances (the class's maps x repetitions) searched jointly by exact_search(). A behaviour's
+/// objective is the mean of the objective over its instances (the class mean); every statistic
+/// weighs a behaviour by its number of weight vectors, so it is the statistic over all vectors.
+///
+/// Files, written after the search through temp files (a killed search leaves none of them
+/// half written; it is started over, see docs):
+/// - `searches.json`: per search, its id, entry label, map class, planner, robot, instances,
+///   the box, mode, counts (vectors, behaviours, splits, forks), wall seconds, and per instance
+///   every resolved parameter (SweepPlan::search_instance_json()).
+/// - `behaviours.csv`: `search_id, behaviour_id, vectors`, the representative (the
+///   lexicographically smallest vector, one column per weight), `<w>.min, <w>.max` per weight
+///   (the bounding box of its vectors), `objective` (the class mean), then one row per
+///   instance: `instance, map, seed` and the metric columns of runs.csv (effort metrics left
+///   empty: they measured the shared search), `optimal_distance_m, competitive_ratio`.
+///   Behaviours are numbered from 0 in the order of their representatives.
+/// - `search_summary.csv`: per search: `search_id, strategy_label, map_class, planner, robot,
+///   instances, vectors, behaviours`, `end.<reason>` (vectors x instances that ended so), then
+///   per metric M `M.mean, M.std, M.min, M.q05, M.q25, M.median, M.q75, M.q95, M.max` over all
+///   vectors x instances (type 7 quantiles of the counted values, core/statistics.hpp).
+/// - `search_best.csv`: per search, its behaviours ranked by the objective (ties by
+///   behaviour_id; no value last): `search_id, rank, behaviour_id, vectors, vectors_better,
+///   objective`, the representative. `rank` = 1 + vectors_better (vectors strictly better).
+///   In mode "best" only the optimal behaviours.
+/// - `search_ranks.csv`: per search and vector of its "rank" list: `search_id`, the vector,
+///   `behaviour_id, objective, rank, vectors_better, vectors_tied` (equal objective, itself
+///   included), `percentile` = 100 x vectors_better / vectors.
+/// - `search_heatmaps.csv` (mode "all"): per search and pair of weights (a, b), for every pair
+///   of their values, the best objective of any vector with those two values:
+///   `search_id, weight_a, weight_b, value_a, value_b, best_objective, behaviour_id`.
+/// - `vectors.csv` (write_vectors): `search_id`, one column per weight, `behaviour_id`, every
+///   vector of the box in lexicographic order.
+
+#include <cstdint>
+#include <string>
+
+#include "sweep/sweep_plan.hpp"
+
+namespace fsweep {
+inline namespace sweep {
+
+struct SearchRunReport {
+  std::size_t searches = 0;
+  std::uint64_t vectors = 0;
+  std::uint64_t behaviours = 0;
+  double wall_s = 0.0;
+};
+
+/// Runs every search of `plan` (none: returns at once, writing nothing) on `threads` worker
+/// threads (>= 1) and writes the files above into `out_dir`. `progress`: share of weight vectors
+/// resolved, with ETA, on stderr.
+SearchRunReport run_weight_searches(const SweepPlan& plan, const std::string& out_dir, int threads,
+                                    bool progress);
+
+}  // namespace sweep
+}  // namespace fsweep

@@ -1,0 +1,283 @@
+// A sweep's exact weight search against the brute-force sweep of the same box, in one sweep
+// file: every vector's behaviour (vectors.csv, behaviours.csv) is its run in runs.csv, metric
+// for metric; the ranking, ranks, heat maps and summary quantiles are the brute-force ones; a
+// map class is searched jointly by its mean; bad search entries are refused with their path.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "core/config_error.hpp"
+#include "core/csv_reader.hpp"
+#include "core/statistics.hpp"
+#include "report/runs_schema.hpp"
+#include "sweep/sweep_plan.hpp"
+#include "sweep/sweep_runner.hpp"
+#include "sweep/sweep_test_files.hpp"
+
+namespace fsweep {
+namespace test_weight_search_runner {  // not anonymous: unity builds
+
+using nlohmann::json;
+
+/// A whole CSV file.
+struct Table {
+  std::vector<std::string> header;
+  std::vector<std::vector<std::string>> rows;
+  [[nodiscard]] std::size_t col(const std::string& name) const {
+    const auto it = std::find(header.begin(), header.end(), name);
+    if (it == header.end()) throw std::out_of_range("no column " + name);
+    return static_cast<std::size_t>(it - header.begin());
+  }
+};
+
+Table read_table(const std::string& path) {
+  CsvReader in(path);
+  Table t{in.header(), {}};
+  while (in.next()) t.rows.push_back(in.fields());
+  return t;
+}
+
+/// A sweep with a search entry and a brute-force entry ("grid") over the same box.
+json search_and_grid(const json& maps, const json& box, const json& rank, int repetitions = 1) {
+  return json{{"schema_version", 1},
+              {"name", "search_test"},
+              {"maps", maps},
+              {"strategies",
+               {{{"name", "energy_aware"},
+                 {"label", "exact"},
+                 {"search", {{"method", "exact"}, {"mode", "all"}, {"write_vectors", true}, {"rank", rank}}},
+                 {"params", box}},
+                {{"name", "energy_aware"}, {"label", "grid"}, {"params", box}}}},
+              {"robot", {{"sensor", {{"range_m", 3}}}, {"battery", 120}}},
+              {"repetitions", repetitions},
+              {"seed", 5}};
+}
+
+/// Runs `sweep` into a fresh directory and returns it.
+std::string run(const json& sweep, const std::string& name) {
+  const std::string dir = testing::fresh_dir("search", name);
+  RunnerOptions o;
+  o.threads = 2;
+  o.out_dir = dir;
+  o.progress = false;
+  const RunnerReport r = run_sweep(SweepPlan::from_json(sweep, "search.json"), o);
+  EXPECT_EQ(r.searches.searches, 1U);
+  return dir;
+}
+
+using Vector = std::vector<std::string>;
+
+/// The weights of a runs.csv row, as written.
+Vector weights_of(const Table& runs, std::size_t row) {
+  Vector w;
+  for (const char* name : {"strategy.w1", "strategy.w2", "strategy.w3", "strategy.w4"}) {
+    w.push_back(runs.rows[row][runs.col(name)]);
+  }
+  return w;
+}
+
+/// vectors.csv: the behaviour of every vector.
+std::map<Vector, std::string> owners(const Table& vectors) {
+  std::map<Vector, std::string> out;
+  for (const auto& r : vectors.rows) {
+    out[{r[vectors.col("w1")], r[vectors.col("w2")], r[vectors.col("w3")], r[vectors.col("w4")]}] =
+        r[vectors.col("behaviour_id")];
+  }
+  return out;
+}
+
+double objective_of(const Table& runs, std::size_t row) {
+  return std::stod(runs.rows[row][runs.col("distance_to_final_coverage_m")]);
+}
+
+TEST(WeightSearchRunner, AgreesWithABruteForceSweepOfTheSameBoxForEveryVector) {
+  const json box = {{"w1", {{"range", {0, 3}}, {"step", 1}}},
+                    {"w2", {0, 2}},
+                    {"w3", {{"range", {0, 3}}, {"step", 1}}},
+                    {"w4", {0, 1, 3}}};
+  const std::string dir = run(
+      search_and_grid(json::array({"office:w=32,h=32,seed=3"}), box, {{1, 0, 0, 0}, {3, 2, 1, 3}}), "brute");
+  const Table runs = read_table(dir + "/runs.csv");
+  const Table vectors = read_table(dir + "/vectors.csv");
+  const Table behaviours = read_table(dir + "/behaviours.csv");
+  ASSERT_EQ(runs.rows.size(), 96U);
+  ASSERT_EQ(vectors.rows.size(), 96U);
+  ASSERT_GE(behaviours.rows.size(), 5U) << "weights that change nothing test nothing";
+  const std::map<Vector, std::string> owner = owners(vectors);
+  std::map<std::string, std::size_t> behaviour_row;
+  for (std::size_t i = 0; i < behaviours.rows.size(); ++i) {
+    behaviour_row[behaviours.rows[i][behaviours.col("behaviour_id")]] = i;
+  }
+  // 1. Every vector's behaviour is its run, metric for metric (effort metrics aside).
+  const std::size_t first_metric = behaviours.col(kEndReasonColumn);
+  std::map<std::string, int> counted;
+  for (std::size_t r = 0; r < runs.rows.size(); ++r) {
+    const Vector w = weights_of(runs, r);
+    const std::string id = owner.at(w);
+    ++counted[id];
+    const auto& b = behaviours.rows[behaviour_row.at(id)];
+    EXPECT_EQ(b[behaviours.col("seed")], runs.rows[r][runs.col("seed")]);
+    for (std::size_t c = first_metric; c < behaviours.header.size(); ++c) {
+      const std::string& name = behaviours.header[c];
+      if (is_effort_column(name)) continue;
+      EXPECT_EQ(b[c], runs.rows[r][runs.col(name)])
+          << name << " at (" << w[0] << ", " << w[1] << ", " << w[2] << ", " << w[3] << ")";
+    }
+  }
+  for (const auto& b : behaviours.rows) {
+    EXPECT_EQ(std::to_string(counted[b[behaviours.col("behaviour_id")]]), b[behaviours.col("vectors")]);
+  }
+  // 2. The ranking: rank = 1 + vectors strictly better, by brute force.
+  std::vector<double> objectives;
+  for (std::size_t r = 0; r < runs.rows.size(); ++r) objectives.push_back(objective_of(runs, r));
+  const auto better_than = [&](double v) {
+    return std::count_if(objectives.begin(), objectives.end(), [&](double o) { return o < v; });
+  };
+  const Table best = read_table(dir + "/search_best.csv");
+  ASSERT_EQ(best.rows.size(), behaviours.rows.size());
+  EXPECT_EQ(std::stod(best.rows[0][best.col("objective")]),
+            *std::min_element(objectives.begin(), objectives.end()));
+  for (const auto& row : best.rows) {
+    EXPECT_EQ(std::stol(row[best.col("rank")]), better_than(std::stod(row[best.col("objective")])) + 1);
+  }
+  const Table ranks = read_table(dir + "/search_ranks.csv");
+  ASSERT_EQ(ranks.rows.size(), 2U);
+  for (const auto& row : ranks.rows) {
+    const Vector w{row[ranks.col("w1")], row[ranks.col("w2")], row[ranks.col("w3")], row[ranks.col("w4")]};
+    std::size_t run_row = 0;
+    while (weights_of(runs, run_row) != w) ++run_row;
+    EXPECT_EQ(row[ranks.col("behaviour_id")], owner.at(w));
+    EXPECT_EQ(std::stol(row[ranks.col("rank")]), better_than(objective_of(runs, run_row)) + 1);
+    EXPECT_EQ(std::stol(row[ranks.col("vectors_tied")]),
+              std::count(objectives.begin(), objectives.end(), objective_of(runs, run_row)));
+  }
+  // 3. Heat maps: per pair of values, the best objective of the runs with them.
+  const Table heat = read_table(dir + "/search_heatmaps.csv");
+  ASSERT_EQ(heat.rows.size(), 4U * 2 + 4 * 4 + 4 * 3 + 2 * 4 + 2 * 3 + 4 * 3);
+  for (const auto& row : heat.rows) {
+    const std::string a = "strategy." + row[heat.col("weight_a")];
+    const std::string b = "strategy." + row[heat.col("weight_b")];
+    double expected = INFINITY;
+    for (std::size_t r = 0; r < runs.rows.size(); ++r) {
+      if (runs.rows[r][runs.col(a)] == row[heat.col("value_a")] &&
+          runs.rows[r][runs.col(b)] == row[heat.col("value_b")]) {
+        expected = std::min(expected, objective_of(runs, r));
+      }
+    }
+    EXPECT_EQ(std::stod(row[heat.col("best_objective")]), expected);
+  }
+  // 4. The summary's quantiles are those of the runs.
+  const Table summary = read_table(dir + "/search_summary.csv");
+  ASSERT_EQ(summary.rows.size(), 1U);
+  std::vector<double> distances;
+  for (std::size_t r = 0; r < runs.rows.size(); ++r)
+    distances.push_back(std::stod(runs.rows[r][runs.col("distance_m")]));
+  std::sort(distances.begin(), distances.end());
+  for (const auto& [column, q] : std::vector<std::pair<std::string, double>>{{"distance_m.min", 0.0},
+                                                                             {"distance_m.q05", 0.05},
+                                                                             {"distance_m.median", 0.5},
+                                                                             {"distance_m.q95", 0.95}}) {
+    EXPECT_EQ(std::stod(summary.rows[0][summary.col(column)]), quantile_sorted(distances, q)) << column;
+  }
+  EXPECT_EQ(summary.rows[0][summary.col("vectors")], "96");
+}
+
+TEST(WeightSearchRunner, AMapClassIsSearchedJointlyByItsMean) {
+  // Two generated maps of one class: each behaviour has a row per map, its objective is the mean
+  // of the two maps' runs, and the ranking is the brute-force ranking of the class means.
+  const json box = {{"w1", {0, 1, 2}}, {"w2", {0, 2}}, {"w3", {0, 1, 2}}, {"w4", {0, 2}}};
+  const json maps = json::array({{{"generator", "office"}, {"w", 32}, {"h", 32}, {"seeds", {3, 4}}}});
+  const std::string dir = run(search_and_grid(maps, box, json::array()), "class");
+  const Table runs = read_table(dir + "/runs.csv");
+  const Table vectors = read_table(dir + "/vectors.csv");
+  const Table behaviours = read_table(dir + "/behaviours.csv");
+  ASSERT_EQ(runs.rows.size(), 72U);
+  const std::map<Vector, std::string> owner = owners(vectors);
+  std::map<Vector, double> mean;
+  for (std::size_t r = 0; r < runs.rows.size(); ++r) mean[weights_of(runs, r)] += objective_of(runs, r) / 2.0;
+  std::map<std::string, double> objective;
+  std::map<std::string, int> instances;
+  for (const auto& b : behaviours.rows) {
+    objective[b[behaviours.col("behaviour_id")]] = std::stod(b[behaviours.col("objective")]);
+    ++instances[b[behaviours.col("behaviour_id")]];
+  }
+  for (const auto& [id, n] : instances) EXPECT_EQ(n, 2) << "behaviour " << id;
+  for (const auto& [w, m] : mean) EXPECT_DOUBLE_EQ(objective.at(owner.at(w)), m);
+  const Table best = read_table(dir + "/search_best.csv");
+  for (const auto& row : best.rows) {
+    const double o = std::stod(row[best.col("objective")]);
+    const auto better_count = std::count_if(
+        mean.begin(), mean.end(), [&](const auto& e) { return objective.at(owner.at(e.first)) < o; });
+    EXPECT_EQ(std::stol(row[best.col("rank")]), better_count + 1);
+  }
+  ASSERT_GE(best.rows.size(), 3U);
+}
+
+/// The message of the ConfigError for `sweep`.
+std::string refusal(const json& sweep) {
+  try {
+    (void)SweepPlan::from_json(sweep, "s.json");
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+  return "(accepted)";
+}
+
+TEST(WeightSearchRunner, BadSearchEntriesAreRefusedWithTheirPath) {
+  const json box = {{"w1", {0, 1}}, {"w2", 0}, {"w3", 0}, {"w4", 0}};
+  const json base = search_and_grid(json::array({"office:w=32,h=32,seed=3"}), box, json::array());
+  const auto with = [&](const std::string& pointer, const json& value) {
+    json s = base;
+    s[json::json_pointer(pointer)] = value;
+    return refusal(s);
+  };
+  EXPECT_NE(with("/strategies/0/search/mode", "fast")
+                .find("/strategies/0/search/mode: value \"fast\"; allowed: "
+                      "\"all\", \"best\""),
+            std::string::npos);
+  EXPECT_NE(with("/strategies/0/search/method", "random").find("/strategies/0/search/method"),
+            std::string::npos);
+  EXPECT_NE(with("/strategies/0/search/speed", 1).find("/strategies/0/search"), std::string::npos);
+  EXPECT_NE(with("/strategies/0/params/w1", json::array({0, 1.5})).find("integer weights"),
+            std::string::npos);
+  EXPECT_NE(with("/strategies/0/params/w2", json::array({0, 251})).find("/strategies/0/params/w2"),
+            std::string::npos);
+  EXPECT_NE(
+      with("/strategies/0/params/distance", json::array({"path", "octile"})).find("sweeps only its weights"),
+      std::string::npos);
+  EXPECT_NE(
+      with("/strategies/0/search/rank", json::array({{2, 0, 0, 0}})).find("/strategies/0/search/rank/0"),
+      std::string::npos);
+  json random = base;
+  random["/strategies/0/name"_json_pointer] = "random_frontier";
+  random["/strategies/0/params"_json_pointer] = json::object();
+  EXPECT_NE(
+      refusal(random).find("/strategies/0/search: strategy 'random_frontier' does not score its candidates "
+                           "linearly, so its weights cannot be searched; allowed: closest_frontier, "
+                           "energy_aware"),
+      std::string::npos)
+      << refusal(random);
+  // Closest frontier is energy-aware with the fixed weights (1, 0, 0, 0): a box of one vector.
+  json cf = random;
+  cf["/strategies/0/name"_json_pointer] = "closest_frontier";
+  const SweepPlan cf_plan = SweepPlan::from_json(cf, "s.json");
+  EXPECT_EQ(cf_plan.strategies()[0].search->values,
+            (std::vector<std::vector<double>>{{1.0}, {0.0}, {0.0}, {0.0}}));
+  // Every weight left out spans its whole declared range: 251^4 vectors, too many to list.
+  json full = base;
+  full["/strategies/0/params"_json_pointer] = json::object();
+  EXPECT_NE(refusal(full).find("the box has 3,969,126,001 vectors"), std::string::npos) << refusal(full);
+  full["/strategies/0/search/write_vectors"_json_pointer] = false;
+  const SweepPlan plan = SweepPlan::from_json(full, "s.json");
+  EXPECT_EQ(plan.strategies()[0].search->vectors(), 3'969'126'001U);
+  EXPECT_EQ(plan.strategies()[0].count(), 0U);
+  EXPECT_EQ(plan.run_count(), 2U) << "the grid entry's two runs; the search entry has none";
+}
+
+}  // namespace test_weight_search_runner
+}  // namespace fsweep
