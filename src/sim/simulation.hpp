@@ -102,6 +102,9 @@ class Simulation {
   void set_weights(std::span<const double> weights);
 
   [[nodiscard]] bool ended() const { return recorder_.ended(); }
+  /// The metrics counted so far, without the map-dependent ones result() completes (areas,
+  /// coverage): what the exact search's branch and bound reads.
+  [[nodiscard]] const RunMetrics& metrics_so_far() const { return recorder_.metrics(); }
   /// The result so far (final once ended()).
   [[nodiscard]] RunResult result() const&;
   /// The same, moving the trajectory and the progress curve out of a simulation that is done

@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <cmath>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -35,8 +37,8 @@ struct Branch {
 class Explorer {
  public:
   Explorer(const WeightGrid& grid, tbb::task_group& tasks,
-           const std::function<void(Behaviour&&)>& on_behaviour)
-      : grid_(grid), tasks_(tasks), on_behaviour_(on_behaviour) {}
+           const std::function<void(Behaviour&&)>& on_behaviour, const BranchAndBound* bnb)
+      : grid_(grid), tasks_(tasks), on_behaviour_(on_behaviour), bnb_(bnb) {}
 
   /// Follows `b` to the end of its runs, forking a task for every share but the last at each
   /// split (the last goes on in this one). The instances advance one at a time: the first
@@ -51,12 +53,14 @@ class Explorer {
       Simulation& sim = *open;
       const auto instance = static_cast<std::size_t>(open - b.sims.begin());
       if (!b.vectors) b.vectors = grid_.count(b.region);
+      if (pruned(b)) return;
       if (*b.vectors == 1) {
         // One vector left: the rest is its runs alone, by the strategy's own (cheaper) decisions.
         const std::vector<double> weights = grid_.weights_at(grid_.lexmin(b.region));
         for (Simulation& s : b.sims) {
           s.set_weights(weights);
           while (s.step()) {
+            if (pruned(b)) return;
           }
         }
         return finish(std::move(b));
@@ -103,9 +107,38 @@ class Explorer {
     }
   }
 
-  [[nodiscard]] ExactSearchStats stats() const { return {behaviours_.load(), splits_.load(), forks_.load()}; }
+  [[nodiscard]] ExactSearchStats stats() const {
+    ExactSearchStats s;
+    s.behaviours = behaviours_.load();
+    s.splits = splits_.load();
+    s.forks = forks_.load();
+    s.pruned_regions = pruned_regions_.load();
+    s.pruned_vectors = pruned_vectors_.load();
+    s.smallest_pruned_bound = smallest_pruned_bound_.load();
+    s.best = best_.load();
+    return s;
+  }
 
  private:
+  /// Branch and bound: true (and counted) when `b`'s lower bound exceeds the best objective found.
+  bool pruned(const Branch& b) {
+    if (bnb_ == nullptr) return false;
+    const double bound = bnb_->lower_bound(b.sims);
+    if (!(bound > best_.load())) return false;
+    pruned_regions_.fetch_add(1, std::memory_order_relaxed);
+    pruned_vectors_.fetch_add(*b.vectors, std::memory_order_relaxed);
+    lower_to(smallest_pruned_bound_, bound);
+    if (bnb_->on_pruned) bnb_->on_pruned(*b.vectors);
+    return true;
+  }
+
+  /// value = min(value, v), atomically.
+  static void lower_to(std::atomic<double>& value, double v) {
+    double seen = value.load();
+    while (v < seen && !value.compare_exchange_weak(seen, v)) {
+    }
+  }
+
   void finish(Branch b) {
     Behaviour out;
     out.vectors = b.vectors ? *b.vectors : grid_.count(b.region);
@@ -116,6 +149,12 @@ class Explorer {
     out.results.reserve(b.sims.size());
     for (Simulation& sim : b.sims) out.results.push_back(std::move(sim).result());
     behaviours_.fetch_add(1, std::memory_order_relaxed);
+    if (bnb_ != nullptr) {
+      const double objective = bnb_->objective(out.results);
+      if (std::isnan(objective)) return;
+      lower_to(best_, objective);
+      if (objective > best_.load()) return;  // a better behaviour is known: this one is not optimal
+    }
     const std::lock_guard<std::mutex> lock(mutex_);
     on_behaviour_(std::move(out));
   }
@@ -127,12 +166,18 @@ class Explorer {
   std::atomic<std::uint64_t> behaviours_{0};
   std::atomic<std::uint64_t> splits_{0};
   std::atomic<std::uint64_t> forks_{0};
+  const BranchAndBound* bnb_;
+  std::atomic<std::uint64_t> pruned_regions_{0};
+  std::atomic<std::uint64_t> pruned_vectors_{0};
+  std::atomic<double> smallest_pruned_bound_{std::numeric_limits<double>::infinity()};
+  std::atomic<double> best_{std::numeric_limits<double>::infinity()};
 };
 
 }  // namespace
 
 ExactSearchStats exact_search(std::span<const RunSpec> instances, const WeightGrid& grid, int threads,
-                              const std::function<void(Behaviour&&)>& on_behaviour) {
+                              const std::function<void(Behaviour&&)>& on_behaviour,
+                              const BranchAndBound* bnb) {
   if (threads < 1) throw std::invalid_argument("exact_search: threads must be >= 1");
   if (instances.empty()) throw std::invalid_argument("exact_search: no instance to search");
   std::vector<Simulation> roots;
@@ -167,7 +212,7 @@ ExactSearchStats exact_search(std::span<const RunSpec> instances, const WeightGr
   tbb::task_arena arena(threads);
   arena.execute([&] {
     tbb::task_group tasks;
-    Explorer explorer(grid, tasks, on_behaviour);
+    Explorer explorer(grid, tasks, on_behaviour, bnb);
     tasks.run([&] {
       explorer.explore(Branch{std::move(roots), grid.everything(), {}, std::nullopt, std::nullopt});
     });

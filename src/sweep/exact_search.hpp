@@ -18,11 +18,13 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <span>
 #include <vector>
 
 #include "sim/run_result.hpp"
 #include "sim/run_spec.hpp"
+#include "sim/simulation.hpp"
 #include "strategies/weight_grid.hpp"
 
 namespace fsweep {
@@ -44,12 +46,35 @@ struct Behaviour {
   std::vector<RunResult> results;
 };
 
+/// Branch and bound: the search for the behaviours that minimise an objective, leaving out
+/// regions that provably cannot hold one.
+struct BranchAndBound {
+  /// The objective of a finished behaviour (its runs, one per instance); NaN: no value (such a
+  /// behaviour is never optimal).
+  std::function<double(const std::vector<RunResult>&)> objective;
+  /// A lower bound of the objective of every behaviour whose runs go on from `sims` (one per
+  /// instance, some possibly ended): admissible, i.e. never above such a behaviour's
+  /// objective, so that pruning a region whose bound exceeds a finished behaviour's objective
+  /// never loses an optimal behaviour. -infinity when nothing is known.
+  std::function<double(std::span<const Simulation>)> lower_bound;
+  /// Called with the vector count of each pruned region (progress); may be empty.
+  std::function<void(std::uint64_t)> on_pruned;
+};
+
 /// What an exact search did.
 struct ExactSearchStats {
   /// Behaviours found, decisions that split a region, simulations forked.
   std::uint64_t behaviours = 0;
   std::uint64_t splits = 0;
   std::uint64_t forks = 0;
+  /// Branch and bound only: the certificate. Regions pruned, the vectors in them, and the
+  /// smallest lower bound among them (infinity when none was pruned): every pruned vector's
+  /// objective is at least that, above `best`, the optimum. These counts depend on the order
+  /// in which threads finish behaviours; the optimal behaviours do not.
+  std::uint64_t pruned_regions = 0;
+  std::uint64_t pruned_vectors = 0;
+  double smallest_pruned_bound = std::numeric_limits<double>::infinity();
+  double best = std::numeric_limits<double>::infinity();
 };
 
 /// Searches `grid` for the class `instances` (at least one), whose strategies must be
@@ -59,8 +84,14 @@ struct ExactSearchStats {
 /// region tree). Throws ConfigError for a bad spec, std::invalid_argument for a strategy that is
 /// not linear-scored, has another number of weights than the grid, or does not allow one of the
 /// grid's values (LinearScoredStrategy::set_weights).
+///
+/// With `bnb`, only the behaviours that minimise bnb->objective are sure to be reported:
+/// on_behaviour gets every finished behaviour whose objective is at most the best one found so
+/// far (the caller keeps those equal to the final ExactSearchStats::best; ties are all kept),
+/// and a region is pruned, without finishing its runs, when bnb->lower_bound exceeds that best.
 ExactSearchStats exact_search(std::span<const RunSpec> instances, const WeightGrid& grid, int threads,
-                              const std::function<void(Behaviour&&)>& on_behaviour);
+                              const std::function<void(Behaviour&&)>& on_behaviour,
+                              const BranchAndBound* bnb = nullptr);
 
 }  // namespace sweep
 }  // namespace fsweep

@@ -261,6 +261,16 @@ void make_search_entry(const json& search, const std::string& where, const Param
                        " vectors; allowed: true only for boxes of at most " +
                        with_thousands(kMaxListedVectors));
   }
+  if (ws.mode == WeightSearch::Mode::Best && ws.write_vectors) {
+    problems.push_back(at +
+                       "/write_vectors: mode \"best\" finds the optimal vectors only; allowed: "
+                       "write_vectors with mode \"all\"");
+  }
+  if (ws.mode == WeightSearch::Mode::Best && search.contains("rank")) {
+    problems.push_back(at +
+                       "/rank: mode \"best\" ranks no vector but the optimal ones; allowed: rank with "
+                       "mode \"all\"");
+  }
   // Vectors to rank.
   const json rank = search.value("rank", json::array());
   if (!rank.is_array()) {

@@ -67,6 +67,44 @@ Columns instance_cells(const RunResult& result, const SweepMap& map, const RunSp
   return cells;
 }
 
+/// The value of metric column `column` of a run (NaN: none).
+double metric_value(const RunResult& result, std::string_view column) {
+  for (const auto& [name, cell] : metric_columns(result)) {
+    if (name == column) return number_of(cell);
+  }
+  throw std::logic_error("no metric column " + std::string(column));
+}
+
+/// A behaviour's objective: the mean over its instances' runs, summed in instance order.
+double class_objective(const std::vector<RunResult>& results, const Objective& objective) {
+  double sum = 0.0;
+  for (const RunResult& r : results) sum += metric_value(r, objective.column);
+  return sum / static_cast<double>(results.size());
+}
+
+/// Branch and bound's admissible lower bound of class_objective() (signed: for a maximised
+/// objective, of its negation) over the behaviours that continue `sims`. Both minimised
+/// objectives only grow as a run goes on, so their values so far bound them, summed in the same
+/// order (rounding is monotone):
+/// - distance_to_final_coverage_m: the distance at the last reveal so far (the final coverage
+///   is reached at a reveal no earlier than it);
+/// - energy: the energy used so far (every step costs energy >= 0).
+/// Nothing is known of area_per_metre: -infinity (no pruning).
+double class_lower_bound(std::span<const Simulation> sims, const Objective& objective) {
+  double sum = 0.0;
+  for (const Simulation& s : sims) {
+    const RunMetrics& m = s.metrics_so_far();
+    if (objective.column == "distance_to_final_coverage_m") {
+      sum += m.distance_to_final_coverage_m;
+    } else if (objective.column == "energy") {
+      sum += m.energy;
+    } else {
+      return -std::numeric_limits<double>::infinity();
+    }
+  }
+  return sum / static_cast<double>(sims.size());
+}
+
 /// Better objective first; no value last.
 bool better(double a, double b, Direction direction) {
   if (std::isnan(a) || std::isnan(b)) return !std::isnan(a) && std::isnan(b);
@@ -107,37 +145,60 @@ class SearchWriter {
     for (std::size_t i = 0; i < n; ++i) specs.push_back(plan_.search_instance(unit_, i));
     const auto start = std::chrono::steady_clock::now();
     std::vector<Found> found;
-    const ExactSearchStats stats = exact_search(specs, grid_, threads, [&](Behaviour&& b) {
-      on_vectors(b.vectors);
+    const auto keep = [&](Behaviour&& b) {
       Found f;
+      f.objective = class_objective(b.results, objective_);
       f.behaviour = std::move(b);
       found.push_back(std::move(f));
-    });
+    };
+    ExactSearchStats stats;
+    if (search_.mode == WeightSearch::Mode::All) {
+      stats = exact_search(specs, grid_, threads, [&](Behaviour&& b) {
+        on_vectors(b.vectors);
+        keep(std::move(b));
+      });
+    } else {
+      const double sign = objective_.direction == Direction::Minimize ? 1.0 : -1.0;
+      BranchAndBound bnb;
+      bnb.objective = [&](const std::vector<RunResult>& results) {
+        return sign * class_objective(results, objective_);
+      };
+      bnb.lower_bound = [&](std::span<const Simulation> sims) { return class_lower_bound(sims, objective_); };
+      bnb.on_pruned = on_vectors;
+      stats = exact_search(
+          specs, grid_, threads,
+          [&](Behaviour&& b) {
+            on_vectors(b.vectors);
+            keep(std::move(b));
+          },
+          &bnb);
+      // Only the optimal behaviours (ties included): the others were reported before a better one
+      // was found.
+      std::erase_if(found, [&](const Found& f) { return !(sign * f.objective == stats.best); });
+      for (const Found& f : found) optimal_vectors_ += f.behaviour.vectors;
+    }
     const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::sort(found.begin(), found.end(), [](const Found& a, const Found& b) {
       return a.behaviour.representative < b.behaviour.representative;
     });
-    // Metric cells and values, the class-mean objective.
+    // Metric cells and values.
     for (Found& f : found) {
-      double sum = 0.0;
       for (std::size_t i = 0; i < n; ++i) {
         const SweepMap& map = plan_.maps().at(unit_.maps[i / static_cast<std::size_t>(plan_.repetitions())]);
         f.cells.push_back(instance_cells(f.behaviour.results[i], map, specs[i]));
         std::vector<double> values;
-        for (const auto& [name, cell] : f.cells.back()) {
-          values.push_back(number_of(cell));
-          if (name == objective_.column) sum += values.back();
-        }
+        for (const auto& [name, cell] : f.cells.back()) values.push_back(number_of(cell));
         f.values.push_back(std::move(values));
       }
-      f.objective = sum / static_cast<double>(n);
       f.behaviour.results.clear();  // formatted; the runs' trajectories are not kept
     }
     SearchRows rows;
     write_behaviours(found, specs, rows);
-    write_summary(found, n, rows);
     write_best_and_ranks(found, rows);
-    if (search_.mode == WeightSearch::Mode::All) write_heatmaps(found, rows);
+    if (search_.mode == WeightSearch::Mode::All) {
+      write_summary(found, n, rows);
+      write_heatmaps(found, rows);
+    }
     if (search_.write_vectors) write_vectors(found, rows);
     rows.record = record(specs.size(), found, stats, wall_s);
     return rows;
@@ -405,6 +466,23 @@ class SearchWriter {
     }
   }
 
+  /// Mode best: what was pruned (null in mode all).
+  [[nodiscard]] json certificate(const ExactSearchStats& stats) const {
+    if (search_.mode == WeightSearch::Mode::All) return nullptr;
+    const double sign = objective_.direction == Direction::Minimize ? 1.0 : -1.0;
+    return json{{"optimum", std::isfinite(stats.best) ? json(sign * stats.best) : json(nullptr)},
+                {"optimal_vectors", optimal_vectors_},
+                {"finished_behaviours", stats.behaviours},
+                {"pruned_regions", stats.pruned_regions},
+                {"pruned_vectors", stats.pruned_vectors},
+                {"smallest_pruned_bound", std::isfinite(stats.smallest_pruned_bound)
+                                              ? json(sign * stats.smallest_pruned_bound)
+                                              : json(nullptr)},
+                {"note",
+                 "every pruned vector's objective is at least smallest_pruned_bound, worse than the "
+                 "optimum; the counts depend on the order threads finished behaviours in"}};
+  }
+
   [[nodiscard]] json record(std::size_t instances, const std::vector<Found>& found,
                             const ExactSearchStats& stats, double wall_s) const {
     json box = json::object();
@@ -427,6 +505,7 @@ class SearchWriter {
                 {"behaviours", found.size()},
                 {"splits", stats.splits},
                 {"forks", stats.forks},
+                {"certificate", certificate(stats)},
                 {"wall_s", wall_s},
                 {"instances", specs}};
   }
@@ -437,6 +516,7 @@ class SearchWriter {
   const WeightSearch& search_;
   WeightGrid grid_;
   const Objective& objective_;
+  std::uint64_t optimal_vectors_ = 0;
 };
 
 }  // namespace

@@ -218,6 +218,39 @@ TEST(WeightSearchRunner, AMapClassIsSearchedJointlyByItsMean) {
   ASSERT_GE(best.rows.size(), 3U);
 }
 
+TEST(WeightSearchRunner, BestModeFindsTheBruteForceOptimumWithEveryTieAndPrunes) {
+  // A box with ties at the optimum (w2 and w4 that change nothing there), the objective the
+  // default (distance to the final coverage) and energy.
+  const json box = {{"w1", {{"range", {0, 3}}, {"step", 1}}},
+                    {"w2", {0, 2}},
+                    {"w3", {{"range", {0, 3}}, {"step", 1}}},
+                    {"w4", {0, 1, 3}}};
+  for (const std::string objective : {"distance_to_final_coverage_m", "energy"}) {
+    json sweep = search_and_grid(json::array({"office:w=32,h=32,seed=3"}), box, json::array());
+    sweep["strategies"][0]["search"] = {{"mode", "best"}};
+    sweep["output"] = {{"objective", objective}};
+    const std::string dir = run(sweep, "best_" + objective);
+    const Table runs = read_table(dir + "/runs.csv");
+    std::vector<double> values;
+    for (const auto& row : runs.rows) values.push_back(std::stod(row[runs.col(objective)]));
+    const double optimum = *std::min_element(values.begin(), values.end());
+    const Table best = read_table(dir + "/search_best.csv");
+    ASSERT_GE(best.rows.size(), 1U);
+    long vectors = 0;
+    for (const auto& row : best.rows) {
+      EXPECT_EQ(std::stod(row[best.col("objective")]), optimum) << objective;
+      EXPECT_EQ(row[best.col("rank")], "1");
+      vectors += std::stol(row[best.col("vectors")]);
+    }
+    EXPECT_EQ(vectors, std::count(values.begin(), values.end(), optimum)) << objective << ": every tie";
+    const json search = json::parse(testing::read_file(dir + "/searches.json"))["searches"][0];
+    const json& certificate = search["certificate"];
+    EXPECT_GT(certificate["pruned_regions"].get<int>(), 0) << objective << ": the bound has no teeth";
+    EXPECT_GT(certificate["smallest_pruned_bound"].get<double>(), optimum);
+    EXPECT_LE(certificate["pruned_vectors"].get<long>() + vectors, 96);
+  }
+}
+
 /// The message of the ConfigError for `sweep`.
 std::string refusal(const json& sweep) {
   try {
