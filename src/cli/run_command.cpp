@@ -79,21 +79,20 @@ int run_command(const RunCommandOptions& o) {
   if (r.searches.searches > 0) {
     std::cout << "exact weight search: " << r.searches.searches
               << (r.searches.searches == 1 ? " search, " : " searches, ") << r.searches.vectors
-              << " weight vectors, " << r.searches.behaviours << " distinct behaviours; "
+              << " weight vectors; "
+              << (r.searches.behaviours > 0 ? std::to_string(r.searches.behaviours) + " distinct behaviours; "
+                                            : "")
+              << (r.searches.optimal > 0 ? std::to_string(r.searches.optimal) + " optimal behaviours; " : "")
               << one_decimal(r.searches.wall_s) << " s\n";
   } else if (r.searches_done_before) {
     std::cout << "exact weight search: already done (searches.json; --fresh redoes it)\n";
   } else if (!plan.search_units().empty() && options.shard_count > 1) {
     std::cout << "exact weight search: not run in a shard; run the sweep unsharded for it\n";
   }
-  std::cout
-      << "results in " << r.out_dir << "/ (runs.csv, progress.csv, manifest.json"
-      << (!r.interrupted && options.shard_count == 1 ? ", summary.csv, progress_summary.csv, best.csv" : "")
-      << (r.searches.searches > 0 || r.searches_done_before
-              ? ", searches.json, behaviours.csv, search_summary.csv, search_best.csv, search_ranks.csv, "
-                "search_heatmaps.csv"
-              : "")
-      << ")\n";
+  std::cout << "results in " << r.out_dir << "/ (runs.csv, progress.csv, manifest.json"
+            << (!r.interrupted && options.shard_count == 1 ? ", summary.csv, progress_summary.csv, best.csv"
+                                                           : "")
+            << (r.searches.searches > 0 ? ", " + join_names(r.searches.files) : std::string()) << ")\n";
   if (r.interrupted) {
     std::cout << "rerun the same command to resume\n";
     return 130;

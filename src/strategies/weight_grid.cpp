@@ -54,6 +54,23 @@ WeightGrid::BlockSpan WeightGrid::span_of(std::uint32_t block) const {
   return span;
 }
 
+WeightGrid::BlockSpan WeightGrid::span_of(const WeightRegion::Box& box) const {
+  BlockSpan span;
+  span.extent.fill(1);
+  for (std::size_t k = 0; k < values_.size(); ++k) {
+    span.first[k] = static_cast<int>(box.lo[k]) * kBlockEdge;
+    span.extent[k] = std::min(static_cast<int>(box.hi[k]) * kBlockEdge, static_cast<int>(values_[k].size())) -
+                     span.first[k];
+  }
+  return span;
+}
+
+std::uint32_t WeightGrid::block_at(const std::array<std::uint32_t, kMaxWeights>& c) const {
+  std::uint32_t block = 0;
+  for (std::size_t k = 0; k < kWeights; ++k) block = block * blocks_[k] + c[k];
+  return block;
+}
+
 std::uint32_t WeightGrid::block_of(const std::array<int, kMaxWeights>& at) const {
   std::uint32_t block = 0;
   for (std::size_t k = 0; k < kWeights; ++k) {
@@ -81,15 +98,14 @@ std::vector<double> WeightGrid::weights_at(const std::array<int, kMaxWeights>& a
 
 WeightRegion WeightGrid::everything() const {
   WeightRegion region;
-  region.whole.resize(block_count_);
-  for (std::uint32_t b = 0; b < block_count_; ++b) region.whole[b] = b;
+  region.whole.push_back({{0, 0, 0, 0}, blocks_});
   return region;
 }
 
 std::uint64_t WeightGrid::count(const WeightRegion& region) const {
   std::uint64_t n = 0;
-  for (const std::uint32_t block : region.whole) {
-    const BlockSpan span = span_of(block);
+  for (const WeightRegion::Box& box : region.whole) {
+    const BlockSpan span = span_of(box);
     std::uint64_t points = 1;
     for (const int e : span.extent) points *= static_cast<std::uint64_t>(e);
     n += points;
@@ -109,7 +125,7 @@ std::array<int, WeightGrid::kMaxWeights> WeightGrid::lexmin(const WeightRegion& 
     if (!found || at < best) best = at;
     found = true;
   };
-  for (const std::uint32_t block : region.whole) offer(span_of(block).first);
+  for (const WeightRegion::Box& box : region.whole) offer(span_of(box).first);
   for (const WeightRegion::Part& part : region.parts) {
     bool done = false;
     for_each_in_block(span_of(part.block), [&](int bit, const std::array<int, kMaxWeights>& at) {
@@ -133,8 +149,8 @@ std::array<std::array<int, 2>, WeightGrid::kMaxWeights> WeightGrid::bounds(const
     }
     found = true;
   };
-  for (const std::uint32_t block : region.whole) {
-    const BlockSpan span = span_of(block);
+  for (const WeightRegion::Box& box : region.whole) {
+    const BlockSpan span = span_of(box);
     std::array<int, kMaxWeights> hi{};
     for (std::size_t k = 0; k < kWeights; ++k) hi[k] = span.first[k] + span.extent[k] - 1;
     offer(span.first, hi);
@@ -152,8 +168,15 @@ bool WeightGrid::contains(const WeightRegion& region, const std::array<int, kMax
     const int size = k < values_.size() ? static_cast<int>(values_[k].size()) : 1;
     if (at[k] < 0 || at[k] >= size) return false;
   }
+  for (const WeightRegion::Box& box : region.whole) {
+    bool inside = true;
+    for (std::size_t k = 0; k < kWeights; ++k) {
+      const auto c = static_cast<std::uint32_t>(k < values_.size() ? at[k] / kBlockEdge : 0);
+      inside = inside && box.lo[k] <= c && c < box.hi[k];
+    }
+    if (inside) return true;
+  }
   const std::uint32_t block = block_of(at);
-  if (std::binary_search(region.whole.begin(), region.whole.end(), block)) return true;
   const auto part =
       std::lower_bound(region.parts.begin(), region.parts.end(), block,
                        [](const WeightRegion::Part& p, std::uint32_t b) { return p.block < b; });
@@ -175,63 +198,62 @@ std::vector<WeightGrid::Share> WeightGrid::split(const WeightRegion& region,
   const bool bounded =
       std::all_of(features.begin(), features.end(), [](double f) { return std::isfinite(f); });
 
-  // Per candidate, the region it wins (blocks in ascending order, as `region`'s).
+  // Per candidate, the region it wins.
   std::vector<WeightRegion> won(static_cast<std::size_t>(n));
   std::vector<double> lo_cost(static_cast<std::size_t>(n));
   std::vector<double> hi_cost(static_cast<std::size_t>(n));
   std::vector<double> w_lo(k);
   std::vector<double> w_hi(k);
   std::vector<double> w(k);
-  std::vector<int> among;
   std::vector<BlockBits> shares(static_cast<std::size_t>(n));
   std::vector<std::uint8_t> touched(static_cast<std::size_t>(n));
 
-  // Block `block` (its member points `member`, all when null): whole to one candidate if one
-  // wins everywhere in it, else point by point.
-  const auto decide_block = [&](std::uint32_t block, const BlockBits* member) {
-    const BlockSpan span = span_of(block);
+  // The candidates of `pool` (ascending) that can win somewhere in `span`, into `among`
+  // (ascending); returns the one that wins at every point of it, or -1. Only the candidate of
+  // the smallest highest cost (lowest index on a tie) can win everywhere; it does when every
+  // other candidate's lowest cost is above its highest, or equal to it and the other comes
+  // later (the tie rule). A candidate whose lowest cost is above that highest cost loses at
+  // every point.
+  const auto corner_test = [&](const BlockSpan& span, const std::vector<int>& pool, std::vector<int>& among) {
     among.clear();
-    if (bounded) {
-      int first = 0;
-      for (int i = 0; i < n; ++i) {
-        const std::span<const double> f = features.subspan(static_cast<std::size_t>(i) * k, k);
-        for (std::size_t j = 0; j < k; ++j) {
-          const double lo = values_[j][static_cast<std::size_t>(span.first[j])];
-          const double hi = values_[j][static_cast<std::size_t>(span.first[j] + span.extent[j] - 1)];
-          w_lo[j] = f[j] >= 0.0 ? lo : hi;
-          w_hi[j] = f[j] >= 0.0 ? hi : lo;
-        }
-        lo_cost[static_cast<std::size_t>(i)] = linear_cost(w_lo, f);
-        hi_cost[static_cast<std::size_t>(i)] = linear_cost(w_hi, f);
-        if (hi_cost[static_cast<std::size_t>(i)] < hi_cost[static_cast<std::size_t>(first)]) first = i;
-      }
-      // Only the candidate of the smallest highest cost (lowest index on a tie) can win the
-      // whole block; it does when every other candidate's lowest cost is above its highest, or
-      // equal to it and the other comes later (the tie rule).
-      const double ceiling = hi_cost[static_cast<std::size_t>(first)];
-      bool whole = true;
-      for (int i = 0; i < n; ++i) {
-        if (i == first) continue;
-        const double other = lo_cost[static_cast<std::size_t>(i)];
-        if (other < ceiling || (other == ceiling && i < first)) whole = false;
-        // A candidate whose lowest cost is above the ceiling loses at every point of the block.
-        if (other <= ceiling) among.push_back(i);
-      }
-      if (whole) {
-        WeightRegion& to = won[static_cast<std::size_t>(first)];
-        if (member == nullptr) {
-          to.whole.push_back(block);
-        } else {
-          to.parts.push_back({block, *member});
-        }
-        return;
-      }
-      among.push_back(first);
-      std::sort(among.begin(), among.end());
-    } else {
-      for (int i = 0; i < n; ++i) among.push_back(i);
+    if (!bounded) {
+      among = pool;
+      return -1;
     }
-    // Point by point, by argmin_linear's own rule over the candidates that can win here.
+    int first = pool.front();
+    for (const int i : pool) {
+      const std::span<const double> f = features.subspan(static_cast<std::size_t>(i) * k, k);
+      for (std::size_t j = 0; j < k; ++j) {
+        const double lo = values_[j][static_cast<std::size_t>(span.first[j])];
+        const double hi = values_[j][static_cast<std::size_t>(span.first[j] + span.extent[j] - 1)];
+        w_lo[j] = f[j] >= 0.0 ? lo : hi;
+        w_hi[j] = f[j] >= 0.0 ? hi : lo;
+      }
+      lo_cost[static_cast<std::size_t>(i)] = linear_cost(w_lo, f);
+      hi_cost[static_cast<std::size_t>(i)] = linear_cost(w_hi, f);
+      if (hi_cost[static_cast<std::size_t>(i)] < hi_cost[static_cast<std::size_t>(first)]) first = i;
+    }
+    const double ceiling = hi_cost[static_cast<std::size_t>(first)];
+    bool whole = true;
+    for (const int i : pool) {
+      if (i == first) {
+        among.push_back(i);
+        continue;
+      }
+      const double other = lo_cost[static_cast<std::size_t>(i)];
+      if (other < ceiling || (other == ceiling && i < first)) whole = false;
+      if (other <= ceiling) among.push_back(i);
+    }
+    return whole ? first : -1;
+  };
+
+  // Block `block` (its member points `member`, all when null, and then `box` is the block as a
+  // box), point by point by argmin_linear's own rule over the candidates `among`. (Deciding its
+  // cubes of 4^4 and 2^4 points by corner tests first took twice as long on the free-space
+  // search: with many candidates a corner test costs more than the points it saves.)
+  const auto decide_points = [&](std::uint32_t block, const BlockBits* member, const WeightRegion::Box* box,
+                                 const std::vector<int>& among) {
+    const BlockSpan span = span_of(block);
     for (const int i : among) {
       shares[static_cast<std::size_t>(i)] = BlockBits{};
       touched[static_cast<std::size_t>(i)] = 0;
@@ -247,30 +269,58 @@ std::vector<WeightGrid::Share> WeightGrid::split(const WeightRegion& region,
     for (const int i : among) {
       if (touched[static_cast<std::size_t>(i)] == 0) continue;
       WeightRegion& to = won[static_cast<std::size_t>(i)];
-      if (shares[static_cast<std::size_t>(i)] == full && member == nullptr) {
-        to.whole.push_back(block);
+      if (shares[static_cast<std::size_t>(i)] == full && box != nullptr) {
+        to.whole.push_back(*box);
       } else {
         to.parts.push_back({block, shares[static_cast<std::size_t>(i)]});
       }
     }
   };
 
-  for (const std::uint32_t block : region.whole) decide_block(block, nullptr);
-  std::vector<std::size_t> parts_from_whole(static_cast<std::size_t>(n));
-  for (int i = 0; i < n; ++i)
-    parts_from_whole[static_cast<std::size_t>(i)] = won[static_cast<std::size_t>(i)].parts.size();
-  for (const WeightRegion::Part& part : region.parts) decide_block(part.block, &part.bits);
+  // A box of whole blocks: whole to one candidate if one wins everywhere in it, else its two
+  // halves (along its widest side), down to single blocks decided point by point. The
+  // candidates that cannot win in a box cannot win in its halves.
+  const auto decide_box = [&](const auto& self, const WeightRegion::Box& box,
+                              const std::vector<int>& pool) -> void {
+    std::vector<int> among;
+    const int winner = corner_test(span_of(box), pool, among);
+    if (winner >= 0) {
+      won[static_cast<std::size_t>(winner)].whole.push_back(box);
+      return;
+    }
+    std::size_t widest = 0;
+    for (std::size_t j = 1; j < kWeights; ++j) {
+      if (box.hi[j] - box.lo[j] > box.hi[widest] - box.lo[widest]) widest = j;
+    }
+    const std::uint32_t width = box.hi[widest] - box.lo[widest];
+    if (width == 1) return decide_points(block_at(box.lo), nullptr, &box, among);
+    WeightRegion::Box low = box;
+    WeightRegion::Box high = box;
+    low.hi[widest] = box.lo[widest] + width / 2;
+    high.lo[widest] = low.hi[widest];
+    self(self, low, among);
+    self(self, high, among);
+  };
+
+  std::vector<int> everyone(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) everyone[static_cast<std::size_t>(i)] = i;
+  for (const WeightRegion::Box& box : region.whole) decide_box(decide_box, box, everyone);
+  std::vector<int> among;
+  for (const WeightRegion::Part& part : region.parts) {
+    const int winner = corner_test(span_of(part.block), everyone, among);
+    if (winner >= 0) {
+      won[static_cast<std::size_t>(winner)].parts.push_back(part);
+    } else {
+      decide_points(part.block, &part.bits, nullptr, among);
+    }
+  }
 
   std::vector<Share> result;
   for (int i = 0; i < n; ++i) {
     WeightRegion& r = won[static_cast<std::size_t>(i)];
     if (r.empty()) continue;
-    // The parts came in two ascending runs (from the region's whole blocks, then from its parts).
-    const auto middle =
-        r.parts.begin() + static_cast<std::ptrdiff_t>(parts_from_whole[static_cast<std::size_t>(i)]);
-    std::inplace_merge(
-        r.parts.begin(), middle, r.parts.end(),
-        [](const WeightRegion::Part& a, const WeightRegion::Part& b) { return a.block < b.block; });
+    std::sort(r.parts.begin(), r.parts.end(),
+              [](const WeightRegion::Part& a, const WeightRegion::Part& b) { return a.block < b.block; });
     result.push_back({i, std::move(r)});
   }
   return result;

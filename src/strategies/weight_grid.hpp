@@ -34,14 +34,21 @@ using BlockBits = std::array<std::uint64_t, 64>;
   return ((bits[static_cast<std::size_t>(bit) / 64] >> (static_cast<unsigned>(bit) % 64)) & 1U) != 0;
 }
 
-/// A set of points of a WeightGrid: blocks it holds whole (every grid point of the block) and
-/// blocks it holds in part, each in ascending block order.
+/// A set of points of a WeightGrid: boxes of blocks it holds whole (every grid point of every
+/// block of the box) and blocks it holds in part, the latter in ascending block order. A box
+/// keeps a large uniform share (the whole [0, 250]^4 is one box of 32^4 blocks) in one entry,
+/// so a split costs what the boundaries between its shares cost, not the region's volume.
 struct WeightRegion {
+  /// Blocks with block coordinates lo[k] <= c < hi[k] along each weight (unused weights: 0, 1).
+  struct Box {
+    std::array<std::uint32_t, 4> lo{};
+    std::array<std::uint32_t, 4> hi{};
+  };
   struct Part {
     std::uint32_t block = 0;
     BlockBits bits{};
   };
-  std::vector<std::uint32_t> whole;
+  std::vector<Box> whole;
   std::vector<Part> parts;
   [[nodiscard]] bool empty() const { return whole.empty() && parts.empty(); }
 };
@@ -73,13 +80,13 @@ class WeightGrid {
   [[nodiscard]] std::array<std::array<int, 2>, kMaxWeights> bounds(const WeightRegion& region) const;
   /// True when the point of indices `at` is in `region`.
   [[nodiscard]] bool contains(const WeightRegion& region, const std::array<int, kMaxWeights>& at) const;
-  /// Calls `f(indices)` for every point of `region`, in ascending block order and, within a
-  /// block, lexicographically.
+  /// Calls `f(indices)` for every point of `region` once: the blocks of its boxes, then its
+  /// parts; within a block lexicographically.
   template <typename F>
   void for_each_point(const WeightRegion& region, F&& f) const;
   /// Calls `f(index_a, index_b)` for the indices of weights a and b of every point of `region`
-  /// (a pair may come more than once): a whole block as the rectangle of its span, without
-  /// visiting its points (heat maps over weight pairs of the full box).
+  /// (a pair may come more than once): a box of whole blocks as the rectangle of its span,
+  /// without visiting its points (heat maps over weight pairs of the full box).
   template <typename F>
   void for_each_projection(const WeightRegion& region, int a, int b, F&& f) const;
   /// The weight vector of the point of indices `at`.
@@ -96,13 +103,19 @@ class WeightGrid {
   [[nodiscard]] std::vector<Share> split(const WeightRegion& region, const Candidates& candidates) const;
 
  private:
-  /// The first grid index of block `block` along each weight, and the number of grid values it
-  /// spans there (kBlockEdge, or fewer at the grid's end).
+  /// The first grid index of a block or box along each weight, and the number of grid values it
+  /// spans there (kBlockEdge per block, fewer at the grid's end).
   struct BlockSpan {
     std::array<int, kMaxWeights> first{};
     std::array<int, kMaxWeights> extent{};
   };
   [[nodiscard]] BlockSpan span_of(std::uint32_t block) const;
+  [[nodiscard]] BlockSpan span_of(const WeightRegion::Box& box) const;
+  /// The block of block coordinates `c`.
+  [[nodiscard]] std::uint32_t block_at(const std::array<std::uint32_t, kMaxWeights>& c) const;
+  /// Calls `f(block)` for every block of `box`.
+  template <typename F>
+  void for_each_block(const WeightRegion::Box& box, F&& f) const;
   [[nodiscard]] std::uint32_t block_of(const std::array<int, kMaxWeights>& at) const;
   /// The bit of local coordinates `local` (each below kBlockEdge) within a block.
   [[nodiscard]] static int bit_of(const std::array<int, kMaxWeights>& local);
@@ -138,22 +151,29 @@ void WeightGrid::for_each_in_block(const BlockSpan& span, F&& f) const {
 }
 
 template <typename F>
-void WeightGrid::for_each_point(const WeightRegion& region, F&& f) const {
-  auto part = region.parts.begin();
-  auto whole = region.whole.begin();
-  while (part != region.parts.end() || whole != region.whole.end()) {
-    const bool take_whole =
-        part == region.parts.end() || (whole != region.whole.end() && *whole < part->block);
-    if (take_whole) {
-      for_each_in_block(span_of(*whole), [&](int /*bit*/, const std::array<int, kMaxWeights>& at) { f(at); });
-      ++whole;
-    } else {
-      const BlockBits& bits = part->bits;
-      for_each_in_block(span_of(part->block), [&](int bit, const std::array<int, kMaxWeights>& at) {
-        if (has_point(bits, bit)) f(at);
-      });
-      ++part;
+void WeightGrid::for_each_block(const WeightRegion::Box& box, F&& f) const {
+  std::array<std::uint32_t, kMaxWeights> c{};
+  for (c[0] = box.lo[0]; c[0] < box.hi[0]; ++c[0]) {
+    for (c[1] = box.lo[1]; c[1] < box.hi[1]; ++c[1]) {
+      for (c[2] = box.lo[2]; c[2] < box.hi[2]; ++c[2]) {
+        for (c[3] = box.lo[3]; c[3] < box.hi[3]; ++c[3]) f(block_at(c));
+      }
     }
+  }
+}
+
+template <typename F>
+void WeightGrid::for_each_point(const WeightRegion& region, F&& f) const {
+  for (const WeightRegion::Box& box : region.whole) {
+    for_each_block(box, [&](std::uint32_t block) {
+      for_each_in_block(span_of(block), [&](int /*bit*/, const std::array<int, kMaxWeights>& at) { f(at); });
+    });
+  }
+  for (const WeightRegion::Part& part : region.parts) {
+    const BlockBits& bits = part.bits;
+    for_each_in_block(span_of(part.block), [&](int bit, const std::array<int, kMaxWeights>& at) {
+      if (has_point(bits, bit)) f(at);
+    });
   }
 }
 
@@ -161,8 +181,8 @@ template <typename F>
 void WeightGrid::for_each_projection(const WeightRegion& region, int a, int b, F&& f) const {
   const auto ua = static_cast<std::size_t>(a);
   const auto ub = static_cast<std::size_t>(b);
-  for (const std::uint32_t block : region.whole) {
-    const BlockSpan span = span_of(block);
+  for (const WeightRegion::Box& box : region.whole) {
+    const BlockSpan span = span_of(box);
     for (int i = 0; i < span.extent[ua]; ++i) {
       for (int j = 0; j < span.extent[ub]; ++j) f(span.first[ua] + i, span.first[ub] + j);
     }

@@ -570,19 +570,31 @@ SearchRunReport run_weight_searches(const SweepPlan& plan, const std::string& ou
     heatmaps += rows.heatmaps;
     vectors += rows.vectors;
     any_vectors = any_vectors || s.write_vectors;
-    report.behaviours += rows.record.at("behaviours").get<std::uint64_t>();
+    (s.mode == WeightSearch::Mode::All ? report.behaviours : report.optimal) +=
+        rows.record.at("behaviours").get<std::uint64_t>();
     report.vectors += s.vectors();
     searches.push_back(std::move(rows.record));
   }
   meter.finish(done, 0);
   const std::filesystem::path dir(out_dir);
-  write_file_atomically((dir / "behaviours.csv").string(), behaviours);
-  write_file_atomically((dir / "search_summary.csv").string(), summary);
-  write_file_atomically((dir / "search_best.csv").string(), best);
-  write_file_atomically((dir / "search_ranks.csv").string(), ranks);
-  write_file_atomically((dir / "search_heatmaps.csv").string(), heatmaps);
-  if (any_vectors) write_file_atomically((dir / "vectors.csv").string(), vectors);
+  bool any_all = false;
+  for (const SearchUnit& u : units)
+    any_all = any_all || plan.strategies().at(u.entry).search->mode == WeightSearch::Mode::All;
+  std::vector<std::pair<std::string, const std::string*>> files{{"behaviours.csv", &behaviours},
+                                                                {"search_best.csv", &best}};
+  if (any_all) {
+    files.emplace_back("search_summary.csv", &summary);
+    files.emplace_back("search_ranks.csv", &ranks);
+    files.emplace_back("search_heatmaps.csv", &heatmaps);
+  }
+  if (any_vectors) files.emplace_back("vectors.csv", &vectors);
+  for (const auto& [name, text] : files) {
+    write_file_atomically((dir / name).string(), *text);
+    report.files.push_back(name);
+  }
+  // Last: its presence marks the search files as complete.
   write_file_atomically((dir / "searches.json").string(), json{{"searches", searches}}.dump(2) + '\n');
+  report.files.emplace_back("searches.json");
   report.searches = units.size();
   report.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return report;

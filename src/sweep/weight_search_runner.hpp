@@ -18,7 +18,8 @@
 ///   instance: `instance, map, seed` and the metric columns of runs.csv (effort metrics left
 ///   empty: they measured the shared search), `optimal_distance_m, competitive_ratio`.
 ///   Behaviours are numbered from 0 in the order of their representatives.
-/// - `search_summary.csv`: per search: `search_id, strategy_label, map_class, planner, robot,
+/// - `search_summary.csv` (searches of mode "all"): per search: `search_id, strategy_label, map_class,
+/// planner, robot,
 ///   instances, vectors, behaviours`, `end.<reason>` (vectors x instances that ended so), then
 ///   per metric M `M.mean, M.std, M.min, M.q05, M.q25, M.median, M.q75, M.q95, M.max` over all
 ///   vectors x instances (type 7 quantiles of the counted values, core/statistics.hpp).
@@ -26,7 +27,7 @@
 ///   behaviour_id; no value last): `search_id, rank, behaviour_id, vectors, vectors_better,
 ///   objective`, the representative. `rank` = 1 + vectors_better (vectors strictly better).
 ///   In mode "best" only the optimal behaviours.
-/// - `search_ranks.csv`: per search and vector of its "rank" list: `search_id`, the vector,
+/// - `search_ranks.csv` (mode "all"): per search and vector of its "rank" list: `search_id`, the vector,
 ///   `behaviour_id, objective, rank, vectors_better, vectors_tied` (equal objective, itself
 ///   included), `percentile` = 100 x vectors_better / vectors.
 /// - `search_heatmaps.csv` (mode "all"): per search and pair of weights (a, b), for every pair
@@ -37,6 +38,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "sweep/sweep_plan.hpp"
 
@@ -46,8 +48,12 @@ inline namespace sweep {
 struct SearchRunReport {
   std::size_t searches = 0;
   std::uint64_t vectors = 0;
+  /// Behaviours found by searches of mode "all", optimal ones found by those of mode "best".
   std::uint64_t behaviours = 0;
+  std::uint64_t optimal = 0;
   double wall_s = 0.0;
+  /// The files written, in the order above.
+  std::vector<std::string> files;
 };
 
 /// Runs every search of `plan` (none: returns at once, writing nothing) on `threads` worker

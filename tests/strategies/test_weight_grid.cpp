@@ -95,7 +95,9 @@ std::vector<WeightGrid::Share> expect_split_is_argmin(const WeightGrid& grid, co
 TEST(WeightGrid, SplitGivesEveryPointArgminLinearsChoice) {
   Rng rng = make_rng(3, "weight_grid");
   // Grids of 1 to 4 weights whose sizes are and are not multiples of the block edge.
-  const std::vector<std::vector<int>> shapes{{20}, {9, 17}, {8, 3, 11}, {5, 9, 4, 10}, {16, 1, 8, 9}};
+  // The last has 3 x 1 x 3 x 2 blocks: boxes of blocks halved down to single blocks.
+  const std::vector<std::vector<int>> shapes{{20},          {9, 17},       {8, 3, 11},
+                                             {5, 9, 4, 10}, {16, 1, 8, 9}, {24, 3, 17, 10}};
   int shares_seen = 0;
   for (const std::vector<int>& shape : shapes) {
     std::vector<std::vector<double>> values;
