@@ -11,6 +11,10 @@ Reads DIR/summary.csv, DIR/progress_summary.csv and DIR/best.csv (written by
   heatmap_<wi>_<wj>.png  weight searches (at least three values in each of at least two of
                          strategy.w1..w4): the objective's median over each pair of weights, the
                          best value over the other weights and columns
+  search<k>_<wa>_<wb>.png  exact weight searches (DIR/search_heatmaps.csv, written by `fsweep
+                         run` for a search of mode "all"): per search k and pair of weights with
+                         at least two values each, the best objective of any weight vector with
+                         those two values
 
 With many configurations, progress.png and metrics.png show the best ones by best.csv's ranking
 (at most --top). Needs Python 3 and matplotlib only; output is deterministic (no timestamps).
@@ -205,12 +209,7 @@ def plot_heatmaps(summary_header, summary_rows, best_header, best_rows, out):
         cmap = plt.get_cmap("viridis" if objective in MAXIMISED else "viridis_r").copy()
         cmap.set_bad("lightgrey")
         image = ax.imshow(grid, origin="lower", cmap=cmap, aspect="auto")
-        step_x = max(1, math.ceil(len(xs) / 15))
-        step_y = max(1, math.ceil(len(ys) / 15))
-        ax.set_xticks(range(0, len(xs), step_x))
-        ax.set_xticklabels([f"{xs[k]:g}" for k in range(0, len(xs), step_x)], fontsize=8)
-        ax.set_yticks(range(0, len(ys), step_y))
-        ax.set_yticklabels([f"{ys[k]:g}" for k in range(0, len(ys), step_y)], fontsize=8)
+        value_ticks(ax, xs, ys)
         ax.set_xlabel(short_name(wi), fontsize=11)
         ax.set_ylabel(short_name(wj), fontsize=11)
         # Values are printed only where the cells are wide enough for them.
@@ -224,12 +223,60 @@ def plot_heatmaps(summary_header, summary_rows, best_header, best_rows, out):
                                linewidth=2.5))
         ax.set_title(f"median {objective}\n({'max' if better is max else 'min'} over {others}; best framed)"
                      if others else f"median {objective} (best framed)", fontsize=10)
-        fig.colorbar(image, ax=ax, label=f"median {objective}")
-        fig.tight_layout()
-        name = f"heatmap_{short_name(wi)}_{short_name(wj)}.png"
-        fig.savefig(os.path.join(out, name), **SAVE)
-        plt.close(fig)
-        written.append(name)
+        written.append(save_heatmap(fig, ax, image, f"median {objective}", out,
+                                    f"heatmap_{short_name(wi)}_{short_name(wj)}.png"))
+    return written
+
+
+def value_ticks(ax, xs, ys):
+    """Tick labels of a heat map's cells: the values `xs`, `ys`, at most about 15 of each."""
+    step_x = max(1, math.ceil(len(xs) / 15))
+    step_y = max(1, math.ceil(len(ys) / 15))
+    ax.set_xticks(range(0, len(xs), step_x))
+    ax.set_xticklabels([f"{xs[k]:g}" for k in range(0, len(xs), step_x)], fontsize=8)
+    ax.set_yticks(range(0, len(ys), step_y))
+    ax.set_yticklabels([f"{ys[k]:g}" for k in range(0, len(ys), step_y)], fontsize=8)
+
+
+def save_heatmap(fig, ax, image, label, out, name):
+    """Colour bar, layout, the PNG `name` in `out`; returns `name`."""
+    fig.colorbar(image, ax=ax, label=label)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, name), **SAVE)
+    plt.close(fig)
+    return name
+
+
+def plot_search_heatmaps(path, out):
+    """search<k>_<wa>_<wb>.png from an exact search's search_heatmaps.csv; the files written."""
+    if not os.path.exists(path):
+        return []
+    _, rows = read_csv(path)
+    maps = {}
+    for r in rows:
+        key = (r["search_id"], r["weight_a"], r["weight_b"])
+        maps.setdefault(key, {})[(number(r["value_a"]), number(r["value_b"]))] = number(r["best_objective"])
+    written = []
+    for (search, wa, wb), cells in maps.items():
+        xs = sorted({x for x, _ in cells})
+        ys = sorted({y for _, y in cells})
+        if len(xs) < 2 or len(ys) < 2:
+            continue
+        grid = [[cells.get((x, y), math.nan) for x in xs] for y in ys]
+        fig, ax = plt.subplots(figsize=(7.0, 5.5))
+        cmap = plt.get_cmap("viridis_r").copy()
+        cmap.set_bad("lightgrey")
+        image = ax.imshow(grid, origin="lower", cmap=cmap, aspect="auto")
+        value_ticks(ax, xs, ys)
+        finite = {c: v for c, v in cells.items() if not math.isnan(v)}
+        if finite:  # the best cell (ties: smallest weights) framed in red
+            bx, by = min(finite, key=lambda c: (finite[c], c))
+            ax.add_patch(Rectangle((xs.index(bx) - 0.5, ys.index(by) - 0.5), 1, 1, fill=False, edgecolor="red",
+                                   linewidth=2))
+        ax.set_xlabel(wa, fontsize=11)
+        ax.set_ylabel(wb, fontsize=11)
+        ax.set_title(f"exact search {search}: best objective over the other weights (best framed)", fontsize=10)
+        written.append(save_heatmap(fig, ax, image, "best objective", out, f"search{search}_{wa}_{wb}.png"))
     return written
 
 
@@ -252,6 +299,7 @@ def main():
     plot_metrics(summary_header, summary_rows, ids, labels, note, out)
     written = ["progress.png", "metrics.png"]
     written += plot_heatmaps(summary_header, summary_rows, best_header, best_rows, out)
+    written += plot_search_heatmaps(os.path.join(args.dir, "search_heatmaps.csv"), out)
     print(f"wrote {', '.join(os.path.join(out, w) for w in written)}")
 
 

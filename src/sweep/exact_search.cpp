@@ -176,8 +176,8 @@ class Explorer {
 }  // namespace
 
 ExactSearchStats exact_search(std::span<const RunSpec> instances, const WeightGrid& grid, int threads,
-                              const std::function<void(Behaviour&&)>& on_behaviour,
-                              const BranchAndBound* bnb) {
+                              const std::function<void(Behaviour&&)>& on_behaviour, const BranchAndBound* bnb,
+                              const PointsByBlock* done) {
   if (threads < 1) throw std::invalid_argument("exact_search: threads must be >= 1");
   if (instances.empty()) throw std::invalid_argument("exact_search: no instance to search");
   std::vector<Simulation> roots;
@@ -213,9 +213,13 @@ ExactSearchStats exact_search(std::span<const RunSpec> instances, const WeightGr
   arena.execute([&] {
     tbb::task_group tasks;
     Explorer explorer(grid, tasks, on_behaviour, bnb);
-    tasks.run([&] {
-      explorer.explore(Branch{std::move(roots), grid.everything(), {}, std::nullopt, std::nullopt});
-    });
+    // Resuming: the root's region leaves out the vectors done, so every share does.
+    WeightRegion everything = done != nullptr ? grid.without(grid.everything(), *done) : grid.everything();
+    if (!everything.empty()) {
+      tasks.run([&] {
+        explorer.explore(Branch{std::move(roots), std::move(everything), {}, std::nullopt, std::nullopt});
+      });
+    }
     tasks.wait();
     stats = explorer.stats();
   });

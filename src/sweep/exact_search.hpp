@@ -89,9 +89,13 @@ struct ExactSearchStats {
 /// on_behaviour gets every finished behaviour whose objective is at most the best one found so
 /// far (the caller keeps those equal to the final ExactSearchStats::best; ties are all kept),
 /// and a region is pruned, without finishing its runs, when bnb->lower_bound exceeds that best.
+///
+/// With `done` (resuming a killed search), the vectors in it are left out: they must be the
+/// whole regions of behaviours a search of the same instances and grid finished before, so
+/// that the behaviours found now are exactly the others.
 ExactSearchStats exact_search(std::span<const RunSpec> instances, const WeightGrid& grid, int threads,
                               const std::function<void(Behaviour&&)>& on_behaviour,
-                              const BranchAndBound* bnb = nullptr);
+                              const BranchAndBound* bnb = nullptr, const PointsByBlock* done = nullptr);
 
 }  // namespace sweep
 }  // namespace fsweep

@@ -35,11 +35,11 @@ using Clock = std::chrono::steady_clock;
 /// Runs in flight or waiting for the in-order writer, per thread.
 constexpr std::size_t kTokensPerThread = 16;
 
-constexpr const char* kOutputFiles[] = {"runs.csv",        "progress.csv",     "manifest.json",
-                                        "summary.csv",     "best.csv",         "progress_summary.csv",
-                                        "searches.json",   "behaviours.csv",   "search_summary.csv",
-                                        "search_best.csv", "search_ranks.csv", "search_heatmaps.csv",
-                                        "vectors.csv"};
+constexpr const char* kOutputFiles[] = {
+    "runs.csv",           "progress.csv",         "manifest.json",    "summary.csv",
+    "best.csv",           "progress_summary.csv", "searches.json",    "behaviours.csv",
+    "search_summary.csv", "search_best.csv",      "search_ranks.csv", "search_heatmaps.csv",
+    "vectors.csv",        "search_journal.jsonl"};
 
 /// Set by SIGINT/SIGTERM while run_sweep runs (a signal handler can only reach a global).
 std::atomic<bool> stop_requested{false};  // NOLINT(cppcoreguidelines-avoid-non-const-global-variables)

@@ -5,8 +5,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <limits>
 #include <map>
 #include <mutex>
@@ -18,6 +20,7 @@
 #include "core/config_error.hpp"
 #include "core/csv_format.hpp"
 #include "core/files.hpp"
+#include "core/random.hpp"
 #include "core/statistics.hpp"
 #include "report/runs_schema.hpp"
 #include "sim/heuristics.hpp"
@@ -130,8 +133,10 @@ struct SearchRows {
 
 class SearchWriter {
  public:
-  SearchWriter(const SweepPlan& plan, const SearchUnit& unit, std::size_t id, const Objective& objective)
-      : plan_(plan),
+  SearchWriter(const SweepPlan& plan, const SearchUnit& unit, std::size_t id, const Objective& objective,
+               std::string out_dir)
+      : out_dir_(std::move(out_dir)),
+        plan_(plan),
         unit_(unit),
         id_(std::to_string(id)),
         search_(*plan.strategies().at(unit.entry).search),
@@ -145,18 +150,52 @@ class SearchWriter {
     for (std::size_t i = 0; i < n; ++i) specs.push_back(plan_.search_instance(unit_, i));
     const auto start = std::chrono::steady_clock::now();
     std::vector<Found> found;
+    // Formats a behaviour's runs (the cells of every instance) and its objective.
+    const auto format = [&](Found& f) {
+      for (std::size_t i = 0; i < n; ++i) {
+        const SweepMap& map = plan_.maps().at(unit_.maps[i / static_cast<std::size_t>(plan_.repetitions())]);
+        f.cells.push_back(instance_cells(f.behaviour.results[i], map, specs[i]));
+      }
+      f.behaviour.results.clear();  // formatted; the runs' trajectories are not kept
+    };
+    // Mode all resumes: the behaviours a killed search journaled are kept, their vectors left
+    // out of the search.
+    PointsByBlock done;
+    const std::string key = unit_key(specs.size());
+    if (search_.mode == WeightSearch::Mode::All) {
+      found = read_journal(key);
+      for (const Found& f : found) {
+        grid_.add_points(done, f.behaviour.region);
+        on_vectors(f.behaviour.vectors);
+      }
+    }
+    resumed_ = found.size();
+    std::ofstream journal;
+    if (search_.mode == WeightSearch::Mode::All) {
+      journal.open(journal_path(), std::ios::app | std::ios::binary);
+      if (!journal) throw ConfigError(journal_path(), "cannot open for appending");
+    }
     const auto keep = [&](Behaviour&& b) {
       Found f;
-      f.objective = class_objective(b.results, objective_);
       f.behaviour = std::move(b);
+      format(f);
+      f.objective = objective_of(f.cells);
+      if (journal.is_open()) {
+        journal << journal_line(key, f) << '\n';
+        journal.flush();
+        if (!journal) throw ConfigError(journal_path(), "write error");
+      }
       found.push_back(std::move(f));
     };
     ExactSearchStats stats;
     if (search_.mode == WeightSearch::Mode::All) {
-      stats = exact_search(specs, grid_, threads, [&](Behaviour&& b) {
-        on_vectors(b.vectors);
-        keep(std::move(b));
-      });
+      stats = exact_search(
+          specs, grid_, threads,
+          [&](Behaviour&& b) {
+            on_vectors(b.vectors);
+            keep(std::move(b));
+          },
+          nullptr, done.empty() ? nullptr : &done);
     } else {
       const double sign = objective_.direction == Direction::Minimize ? 1.0 : -1.0;
       BranchAndBound bnb;
@@ -181,16 +220,12 @@ class SearchWriter {
     std::sort(found.begin(), found.end(), [](const Found& a, const Found& b) {
       return a.behaviour.representative < b.behaviour.representative;
     });
-    // Metric cells and values.
     for (Found& f : found) {
-      for (std::size_t i = 0; i < n; ++i) {
-        const SweepMap& map = plan_.maps().at(unit_.maps[i / static_cast<std::size_t>(plan_.repetitions())]);
-        f.cells.push_back(instance_cells(f.behaviour.results[i], map, specs[i]));
+      for (const Columns& cells : f.cells) {
         std::vector<double> values;
-        for (const auto& [name, cell] : f.cells.back()) values.push_back(number_of(cell));
+        for (const auto& [name, cell] : cells) values.push_back(number_of(cell));
         f.values.push_back(std::move(values));
       }
-      f.behaviour.results.clear();  // formatted; the runs' trajectories are not kept
     }
     SearchRows rows;
     write_behaviours(found, specs, rows);
@@ -202,6 +237,130 @@ class SearchWriter {
     if (search_.write_vectors) write_vectors(found, rows);
     rows.record = record(specs.size(), found, stats, wall_s);
     return rows;
+  }
+
+  /// The journal of finished behaviours (mode all), shared by the sweep's searches.
+  [[nodiscard]] std::string journal_path() const { return out_dir_ + "/search_journal.jsonl"; }
+
+  /// What a journal line must match to be this search's: its instances (every resolved
+  /// parameter), box and objective.
+  [[nodiscard]] std::string unit_key(std::size_t instances) const {
+    json key = json::array();
+    for (std::size_t i = 0; i < instances; ++i) key.push_back(plan_.search_instance_json(unit_, i));
+    key.push_back(search_.values);
+    key.push_back(std::string(objective_.name));
+    char text[17];
+    std::snprintf(text, sizeof(text), "%016llx", static_cast<unsigned long long>(fnv1a(key.dump())));
+    return text;
+  }
+
+  /// The class mean of the objective's cells.
+  [[nodiscard]] double objective_of(const std::vector<Columns>& cells) const {
+    double sum = 0.0;
+    for (const Columns& c : cells) {
+      const auto it =
+          std::find_if(c.begin(), c.end(), [&](const auto& cell) { return cell.first == objective_.column; });
+      sum += it == c.end() ? kNoValue : number_of(it->second);
+    }
+    return sum / static_cast<double>(cells.size());
+  }
+
+  /// One journal line: the key, the behaviour's region and choices, its cells per instance.
+  [[nodiscard]] static std::string journal_line(const std::string& key, const Found& f) {
+    json boxes = json::array();
+    for (const WeightRegion::Box& b : f.behaviour.region.whole) {
+      boxes.push_back({b.lo[0], b.lo[1], b.lo[2], b.lo[3], b.hi[0], b.hi[1], b.hi[2], b.hi[3]});
+    }
+    json parts = json::array();
+    for (const WeightRegion::Part& p : f.behaviour.region.parts) {
+      std::string hex;
+      for (const std::uint64_t word : p.bits) {
+        char w[17];
+        std::snprintf(w, sizeof(w), "%016llx", static_cast<unsigned long long>(word));
+        hex += w;
+      }
+      parts.push_back({p.block, hex});
+    }
+    json cells = json::array();
+    for (const Columns& c : f.cells) {
+      json row = json::array();
+      for (const auto& [name, cell] : c) row.push_back(cell);
+      cells.push_back(std::move(row));
+    }
+    return json{
+        {"key", key}, {"boxes", boxes}, {"parts", parts}, {"choices", f.behaviour.choices}, {"cells", cells}}
+        .dump();
+  }
+
+  /// This search's behaviours in the journal. A line that does not parse (the torn last line of
+  /// a killed search) ends the reading; the file is then cut to the lines before it, so that
+  /// new lines follow complete ones.
+  [[nodiscard]] std::vector<Found> read_journal(const std::string& key) const {
+    std::vector<Found> out;
+    std::ifstream in(journal_path(), std::ios::binary);
+    if (!in) return out;
+    const Columns names =
+        instance_cells(RunResult{}, plan_.maps().at(unit_.maps.front()), plan_.search_instance(unit_, 0));
+    std::string line;
+    std::string kept;
+    std::size_t number = 0;
+    bool torn = false;
+    while (std::getline(in, line)) {
+      ++number;
+      json j;
+      try {
+        if (in.eof()) throw std::runtime_error("no newline");
+        j = json::parse(line);
+        if (j.at("key").get<std::string>() == key) {
+          Found f;
+          for (const json& b : j.at("boxes")) {
+            WeightRegion::Box box;
+            for (std::size_t k = 0; k < 4; ++k) {
+              box.lo[k] = b.at(k).get<std::uint32_t>();
+              box.hi[k] = b.at(k + 4).get<std::uint32_t>();
+            }
+            f.behaviour.region.whole.push_back(box);
+          }
+          for (const json& p : j.at("parts")) {
+            WeightRegion::Part part;
+            part.block = p.at(0).get<std::uint32_t>();
+            const std::string hex = p.at(1).get<std::string>();
+            if (hex.size() != part.bits.size() * 16) throw std::runtime_error("bad part");
+            for (std::size_t w = 0; w < part.bits.size(); ++w) {
+              part.bits[w] = std::stoull(hex.substr(w * 16, 16), nullptr, 16);
+            }
+            f.behaviour.region.parts.push_back(part);
+          }
+          f.behaviour.choices = j.at("choices").get<std::vector<int>>();
+          for (const json& row : j.at("cells")) {
+            if (row.size() != names.size()) throw std::runtime_error("another build's columns");
+            Columns c = names;
+            for (std::size_t m = 0; m < c.size(); ++m) c[m].second = row.at(m).get<std::string>();
+            f.cells.push_back(std::move(c));
+          }
+          if (f.behaviour.region.empty() ||
+              f.cells.size() != static_cast<std::size_t>(unit_.maps.size()) *
+                                    static_cast<std::size_t>(plan_.repetitions())) {
+            throw std::runtime_error("not a behaviour of this search");
+          }
+          f.behaviour.vectors = grid_.count(f.behaviour.region);
+          f.behaviour.representative = grid_.lexmin(f.behaviour.region);
+          f.behaviour.bounds = grid_.bounds(f.behaviour.region);
+          f.objective = objective_of(f.cells);
+          out.push_back(std::move(f));
+        }
+      } catch (const std::exception& e) {
+        std::fprintf(stderr,
+                     "fsweep: %s:%zu: %s; this line and the rest are dropped (the search redoes them)\n",
+                     journal_path().c_str(), number, e.what());
+        torn = true;
+        break;
+      }
+      kept += line + '\n';
+    }
+    in.close();
+    if (torn) write_file_atomically(journal_path(), kept);
+    return out;
   }
 
   /// Header lines (no newline) of the files.
@@ -503,6 +662,7 @@ class SearchWriter {
                 {"box", box},
                 {"vectors", grid_.size()},
                 {"behaviours", found.size()},
+                {"resumed_behaviours", resumed_},
                 {"splits", stats.splits},
                 {"forks", stats.forks},
                 {"certificate", certificate(stats)},
@@ -510,6 +670,7 @@ class SearchWriter {
                 {"instances", specs}};
   }
 
+  std::string out_dir_;
   const SweepPlan& plan_;
   const SearchUnit& unit_;
   std::string id_;
@@ -517,6 +678,7 @@ class SearchWriter {
   WeightGrid grid_;
   const Objective& objective_;
   std::uint64_t optimal_vectors_ = 0;
+  std::size_t resumed_ = 0;
 };
 
 }  // namespace
@@ -557,7 +719,7 @@ SearchRunReport run_weight_searches(const SweepPlan& plan, const std::string& ou
   json searches = json::array();
   for (std::size_t id = 0; id < units.size(); ++id) {
     const WeightSearch& s = *plan.strategies().at(units[id].entry).search;
-    SearchWriter writer(plan, units[id], id, *objective);
+    SearchWriter writer(plan, units[id], id, *objective, out_dir);
     SearchRows rows = writer.run(threads, [&](std::uint64_t n) {
       const std::lock_guard<std::mutex> lock(mutex);
       done += n;

@@ -7,8 +7,15 @@
 /// objective is the mean of the objective over its instances (the class mean); every statistic
 /// weighs a behaviour by its number of weight vectors, so it is the statistic over all vectors.
 ///
+/// Resume (mode "all"): every finished behaviour is appended to `search_journal.jsonl` as one
+/// JSON line (its search's key, region, choices and metric cells per instance), flushed at
+/// once. A rerun reads the lines of its search's key (instances, box and objective), keeps
+/// those behaviours and leaves their vectors out of the search (exact_search's `done`): the
+/// files are the same as an uninterrupted search's. A line that does not parse (torn by a
+/// kill) and every line after it are dropped (stderr says so) and the file is cut there.
+///
 /// Files, written after the search through temp files (a killed search leaves none of them
-/// half written; it is started over, see docs):
+/// half written):
 /// - `searches.json`: per search, its id, entry label, map class, planner, robot, instances,
 ///   the box, mode, counts (vectors, behaviours, splits, forks), wall seconds, and per instance
 ///   every resolved parameter (SweepPlan::search_instance_json()).

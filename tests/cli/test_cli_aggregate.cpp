@@ -130,4 +130,31 @@ TEST(CliPlot, HeatMapForTwoVaryingWeightsInOutDir) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(CliPlot, ExactSearchHeatMapsFromARunOfASearchEntry) {
+  if (!python_has_matplotlib()) GTEST_SKIP() << "/usr/bin/python3 has no matplotlib";
+  // A sweep of one search entry (no runs of its own) over w1 x w3 = {0, 1, 2}^2.
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("fsweep_cli_search_plot_" + std::to_string(getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  fsweep::testing::write_text(
+      dir / "sweep.json",
+      R"({"schema_version": 1, "name": "plot_search", "maps": ["office:w=32,h=32,seed=3"],
+          "strategies": [{"name": "energy_aware", "search": {"mode": "all", "rank": [[1, 0, 2, 0]]},
+                          "params": {"w1": [0, 1, 2], "w2": 0, "w3": [0, 1, 2], "w4": 0}}],
+          "robot": {"sensor": {"range_m": 3}, "battery": 120}, "seed": 5})");
+  const std::string out = (dir / "out").string();
+  const Outcome run = fsweep_cli("run " + (dir / "sweep.json").string() + " --out " + out + " --quiet");
+  ASSERT_EQ(run.code, 0) << run.output;
+  EXPECT_NE(run.output.find("exact weight search: 1 search, 9 weight vectors; "), std::string::npos)
+      << run.output;
+  EXPECT_NE(run.output.find("search_heatmaps.csv"), std::string::npos) << run.output;
+  const Outcome plot = fsweep_cli("plot " + out);
+  ASSERT_EQ(plot.code, 0) << plot.output;
+  // Only w1 and w3 have two values or more.
+  EXPECT_TRUE(std::filesystem::exists(out + "/plots/search0_w1_w3.png")) << plot.output;
+  EXPECT_FALSE(std::filesystem::exists(out + "/plots/search0_w1_w2.png"));
+  std::filesystem::remove_all(dir);
+}
+
 }  // namespace

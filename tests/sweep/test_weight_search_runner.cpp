@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -249,6 +250,52 @@ TEST(WeightSearchRunner, BestModeFindsTheBruteForceOptimumWithEveryTieAndPrunes)
     EXPECT_GT(certificate["smallest_pruned_bound"].get<double>(), optimum);
     EXPECT_LE(certificate["pruned_vectors"].get<long>() + vectors, 96);
   }
+}
+
+TEST(WeightSearchRunner, AKilledSearchResumesFromItsJournalWithTheSameFiles) {
+  // A whole search of a map class, then its journal cut to its first lines and a torn one (as
+  // a kill leaves it) and its files deleted: the rerun keeps the journaled behaviours, searches
+  // only the other vectors and writes the same files.
+  const json box = {{"w1", {0, 1, 2}}, {"w2", {0, 2}}, {"w3", {0, 1, 2}}, {"w4", {0, 2}}};
+  const json maps = json::array({{{"generator", "office"}, {"w", 32}, {"h", 32}, {"seeds", {3, 4}}}});
+  json sweep = search_and_grid(maps, box, {{1, 0, 2, 0}});
+  sweep["strategies"].erase(1);  // the search alone
+  const std::string dir = run(sweep, "resume");
+  const std::vector<std::string> files{"behaviours.csv",   "search_summary.csv",  "search_best.csv",
+                                       "search_ranks.csv", "search_heatmaps.csv", "vectors.csv"};
+  std::map<std::string, std::string> first;
+  for (const auto& f : files) first[f] = testing::read_file(dir + "/" + f);
+  const std::string journal = testing::read_file(dir + "/search_journal.jsonl");
+  std::vector<std::string> lines;
+  for (std::size_t at = 0; at < journal.size();) {
+    const std::size_t end = journal.find('\n', at);
+    lines.push_back(journal.substr(at, end - at + 1));
+    at = end + 1;
+  }
+  const json record = json::parse(testing::read_file(dir + "/searches.json"))["searches"][0];
+  ASSERT_EQ(lines.size(), record["behaviours"].get<std::size_t>());
+  ASSERT_GE(lines.size(), 6U);
+  const std::size_t kept = lines.size() / 2;
+  std::string cut;
+  for (std::size_t i = 0; i < kept; ++i) cut += lines[i];
+  cut += lines[kept].substr(0, lines[kept].size() / 2);  // torn
+  testing::write_file(dir + "/search_journal.jsonl", cut);
+  for (const auto& f : files) std::filesystem::remove(dir + "/" + f);
+  std::filesystem::remove(dir + "/searches.json");
+
+  RunnerOptions o;
+  o.threads = 2;
+  o.out_dir = dir;
+  o.progress = false;
+  const RunnerReport again = run_sweep(SweepPlan::from_json(sweep, "search.json"), o);
+  EXPECT_EQ(again.searches.behaviours, lines.size());
+  const json resumed = json::parse(testing::read_file(dir + "/searches.json"))["searches"][0];
+  EXPECT_EQ(resumed["resumed_behaviours"].get<std::size_t>(), kept);
+  EXPECT_LT(resumed["forks"].get<std::size_t>(), record["forks"].get<std::size_t>());
+  for (const auto& f : files) EXPECT_EQ(testing::read_file(dir + "/" + f), first[f]) << f;
+  // The journal holds every behaviour again, each once.
+  std::string rejournal = testing::read_file(dir + "/search_journal.jsonl");
+  EXPECT_EQ(static_cast<std::size_t>(std::count(rejournal.begin(), rejournal.end(), '\n')), lines.size());
 }
 
 /// The message of the ConfigError for `sweep`.
