@@ -11,6 +11,7 @@
 
 #include "cli/commands.hpp"
 #include "core/config_error.hpp"
+#include "core/csv_format.hpp"
 #include "sweep/sweep_plan.hpp"
 
 namespace fsweep::cli {
@@ -77,7 +78,8 @@ void print_axes(const SweepPlan& plan) {
         std::string groups;
         for (const auto& g : e.groups) groups += (groups.empty() ? "" : "; ") + group_text(g);
         items.push_back(e.label + (e.label != e.name ? " (" + e.name + ")" : "") + ": " +
-                        thousands(e.count()) + (groups.empty() ? "" : " [" + groups + "]"));
+                        thousands(e.count()) + (groups.empty() ? "" : " [" + groups + "]") +
+                        (e.search ? " (an exact weight search: see below)" : ""));
       }
     } else if (name == "planners") {
       for (const auto& p : plan.planners())
@@ -86,6 +88,31 @@ void print_axes(const SweepPlan& plan) {
       for (const auto& r : plan.robots()) items.push_back(r.label);
     }
     print_list(items);
+  }
+}
+
+/// The exact weight searches (after the runs): their boxes and instances.
+void print_searches(const SweepPlan& plan) {
+  const std::vector<SearchUnit> units = plan.search_units();
+  if (units.empty()) return;
+  std::cout << "exact weight searches (after the runs): " << units.size() << '\n';
+  for (std::size_t id = 0; id < units.size(); ++id) {
+    const SearchUnit& u = units[id];
+    const WeightSearch& s = *plan.strategies()[u.entry].search;
+    std::string box;
+    for (std::size_t k = 0; k < s.weights.size(); ++k) {
+      const std::vector<double>& v = s.values[k];
+      box += (k == 0 ? "" : " x ") + s.weights[k] + " " +
+             (v.size() == 1 ? format_number(v.front())
+                            : format_number(v.front()) + ".." + format_number(v.back()) + " (" +
+                                  thousands(v.size()) + " values)");
+    }
+    const SweepPlanner& planner = plan.planners()[u.planner];
+    std::cout << "  " << id << ": " << plan.strategies()[u.entry].label << ", mode "
+              << (s.mode == WeightSearch::Mode::All ? "all" : "best") << ", map class " << u.map_class << " ("
+              << thousands(u.maps.size() * static_cast<std::uint64_t>(plan.repetitions())) << " instances), "
+              << planner.name << ", robot " << plan.robots()[u.robot].label << ": " << box << " = "
+              << thousands(s.vectors()) << " vectors\n";
   }
 }
 
@@ -134,10 +161,11 @@ int run_expand(const ExpandOptions& o) {
             << thousands(static_cast<std::uint64_t>(plan.repetitions()))
             << (plan.repetitions() == 1 ? " repetition" : " repetitions") << ")\n";
   print_axes(plan);
+  print_searches(plan);
   std::cout << "sim: " << nlohmann::json(plan.sim()).dump() << '\n';
   std::cout << "seed: " << plan.seed() << " (run seed = derive_seed(seed, \"repetition/<r>\"))\n";
   std::cout << "output: " << plan.output_dir() << " (objective: " << plan.objective() << ")\n";
-  if (o.limit > 0) print_runs(plan, o.from, o.limit);
+  if (o.limit > 0 && plan.run_count() > 0) print_runs(plan, o.from, o.limit);
   std::cout << "nothing was run or written.\n";
   return 0;
 }

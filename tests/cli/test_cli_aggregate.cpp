@@ -130,7 +130,7 @@ TEST(CliPlot, HeatMapForTwoVaryingWeightsInOutDir) {
   std::filesystem::remove_all(dir);
 }
 
-TEST(CliPlot, ExactSearchHeatMapsFromARunOfASearchEntry) {
+TEST(CliPlot, ExactSearchExpandRunAndHeatMaps) {
   if (!python_has_matplotlib()) GTEST_SKIP() << "/usr/bin/python3 has no matplotlib";
   // A sweep of one search entry (no runs of its own) over w1 x w3 = {0, 1, 2}^2.
   const std::filesystem::path dir =
@@ -143,6 +143,15 @@ TEST(CliPlot, ExactSearchHeatMapsFromARunOfASearchEntry) {
           "strategies": [{"name": "energy_aware", "search": {"mode": "all", "rank": [[1, 0, 2, 0]]},
                           "params": {"w1": [0, 1, 2], "w2": 0, "w3": [0, 1, 2], "w4": 0}}],
           "robot": {"sensor": {"range_m": 3}, "battery": 120}, "seed": 5})");
+  const Outcome expand = fsweep_cli("expand " + (dir / "sweep.json").string());
+  ASSERT_EQ(expand.code, 0) << expand.output;
+  EXPECT_NE(
+      expand.output.find("exact weight searches (after the runs): 1\n  0: energy_aware, mode all, map class"),
+      std::string::npos)
+      << expand.output;
+  EXPECT_NE(expand.output.find("w1 0..2 (3 values) x w2 0 x w3 0..2 (3 values) x w4 0 = 9 vectors"),
+            std::string::npos)
+      << expand.output;
   const std::string out = (dir / "out").string();
   const Outcome run = fsweep_cli("run " + (dir / "sweep.json").string() + " --out " + out + " --quiet");
   ASSERT_EQ(run.code, 0) << run.output;
