@@ -114,7 +114,7 @@ bool better(double a, double b, Direction direction) {
   return direction == Direction::Minimize ? a < b : a > b;
 }
 
-/// The label of a robot variant for tables.
+/// A planner as tables show it: its name, and its parameters when given.
 std::string planner_label(const SweepPlanner& p) {
   return p.params.is_null() ? p.name : p.name + " " + p.params.dump();
 }
