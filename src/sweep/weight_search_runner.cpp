@@ -6,7 +6,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -19,13 +18,14 @@
 
 #include "core/config_error.hpp"
 #include "core/csv_format.hpp"
+#include "core/csv_reader.hpp"
 #include "core/files.hpp"
-#include "core/random.hpp"
 #include "core/statistics.hpp"
 #include "report/runs_schema.hpp"
 #include "sim/heuristics.hpp"
 #include "strategies/weight_grid.hpp"
 #include "sweep/exact_search.hpp"
+#include "sweep/manifest.hpp"
 #include "sweep/progress_meter.hpp"
 #include "sweep/sweep_table.hpp"
 
@@ -49,12 +49,8 @@ struct Found {
   double objective = kNoValue;
 };
 
-double number_of(const std::string& cell) {
-  if (cell.empty()) return kNoValue;
-  char* end = nullptr;
-  const double v = std::strtod(cell.c_str(), &end);
-  return end == cell.c_str() + cell.size() ? v : kNoValue;
-}
+/// A metric cell's number (NaN: empty, or not a number).
+double number_of(const std::string& cell) { return parse_number(cell).value_or(kNoValue); }
 
 /// Formats one instance's run of a behaviour.
 Columns instance_cells(const RunResult& result, const SweepMap& map, const RunSpec& spec) {
@@ -249,9 +245,7 @@ class SearchWriter {
     for (std::size_t i = 0; i < instances; ++i) key.push_back(plan_.search_instance_json(unit_, i));
     key.push_back(search_.values);
     key.push_back(std::string(objective_.name));
-    char text[17];
-    std::snprintf(text, sizeof(text), "%016llx", static_cast<unsigned long long>(fnv1a(key.dump())));
-    return text;
+    return sweep_hash(key);  // the FNV-1a 64 of its dump, as the manifest's hash of a sweep
   }
 
   /// The class mean of the objective's cells.
