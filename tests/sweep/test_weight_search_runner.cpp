@@ -320,6 +320,14 @@ TEST(WeightSearchRunner, BadSearchEntriesAreRefusedWithTheirPath) {
                 .find("/strategies/0/search/mode: value \"fast\"; allowed: "
                       "\"all\", \"best\""),
             std::string::npos);
+  json best = base;
+  best["/strategies/0/search/mode"_json_pointer] = "best";
+  best["/strategies/0/search/write_vectors"_json_pointer] = true;
+  best["/strategies/0/search/rank"_json_pointer] = json::array({{1, 0, 0, 0}});
+  const std::string best_refusal = refusal(best);
+  EXPECT_NE(best_refusal.find("/strategies/0/search/write_vectors: mode \"best\""), std::string::npos)
+      << best_refusal;
+  EXPECT_NE(best_refusal.find("/strategies/0/search/rank: mode \"best\""), std::string::npos) << best_refusal;
   EXPECT_NE(with("/strategies/0/search/method", "random").find("/strategies/0/search/method"),
             std::string::npos);
   EXPECT_NE(with("/strategies/0/search/speed", 1).find("/strategies/0/search"), std::string::npos);
