@@ -108,11 +108,12 @@ void print_searches(const SweepPlan& plan) {
                                   thousands(v.size()) + " values)");
     }
     const SweepPlanner& planner = plan.planners()[u.planner];
+    const std::uint64_t instances = u.maps.size() * static_cast<std::uint64_t>(plan.repetitions());
     std::cout << "  " << id << ": " << plan.strategies()[u.entry].label << ", mode "
               << (s.mode == WeightSearch::Mode::All ? "all" : "best") << ", map class " << u.map_class << " ("
-              << thousands(u.maps.size() * static_cast<std::uint64_t>(plan.repetitions())) << " instances), "
-              << planner.name << ", robot " << plan.robots()[u.robot].label << ": " << box << " = "
-              << thousands(s.vectors()) << " vectors\n";
+              << thousands(instances) << (instances == 1 ? " instance), " : " instances), ") << planner.name
+              << ", robot " << plan.robots()[u.robot].label << ": " << box << " = " << thousands(s.vectors())
+              << " vectors\n";
   }
 }
 

@@ -36,6 +36,10 @@ int run_merge(const MergeCommandOptions& o) {
   }
   std::cout << "merged " << r.shard_count << " shards (" << r.total << " runs) into " << o.dir
             << "/runs.csv, progress.csv, manifest.json; wrote summary.csv, progress_summary.csv, best.csv\n";
+  if (r.searches > 0) {
+    std::cout << "merged " << r.searches << " exact weight search" << (r.searches == 1 ? "" : "es")
+              << " into behaviours.csv, search_best.csv, ..., searches.json\n";
+  }
   return 0;
 }
 

@@ -2,12 +2,14 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "core/random.hpp"
 #include "planners/registry.hpp"
 #include "strategies/registry.hpp"
 
@@ -147,6 +149,8 @@ const Candidates* Simulation::choice(std::span<const double> w_lo, std::span<con
   // candidates of the call whose choice it is.
   (void)decide(
       [&](const Observation& obs, int call) {
+        chose = false;
+        if (std::optional<Decision> fixed = linear->fixed_decision(obs)) return std::move(*fixed);
         Candidates c = linear->candidates_within(obs, w_lo, w_hi);
         chose = !c.cells.empty();
         if (!chose) return linear->on_no_candidate(obs);
@@ -176,9 +180,13 @@ bool Simulation::step_choosing(int candidate) {
   pending_.reset();
   auto& linear = dynamic_cast<LinearScoredStrategy&>(*strategy_);
   return step_with([&](const Observation& obs, int call) {
-    // The call before the pending one found no candidate (choice() saw it so).
-    if (call != pending.call) return linear.on_no_candidate(obs);
-    return Decision::go_to(pending.candidates.cells[static_cast<std::size_t>(candidate)]);
+    // The call before the pending one decided without the weights or found no candidate
+    // (choice() saw it so).
+    if (call != pending.call) {
+      if (std::optional<Decision> fixed = linear.fixed_decision(obs)) return std::move(*fixed);
+      return linear.on_no_candidate(obs);
+    }
+    return linear.choose(obs, pending.candidates.cells[static_cast<std::size_t>(candidate)]);
   });
 }
 
@@ -271,6 +279,12 @@ std::optional<Decision> Simulation::decide(Ask&& ask, bool commit) {
   m.decision_time_s += seconds_since(t_decide);
   m.planner_expansions += oracle.expansions();
   ++m.decisions;
+  for (const std::uint64_t field :
+       {static_cast<std::uint64_t>(decision.kind), static_cast<std::uint64_t>(decision.goal.x),
+        static_cast<std::uint64_t>(decision.goal.y), static_cast<std::uint64_t>(decision.max_steps),
+        static_cast<std::uint64_t>(decision.outcome)}) {
+    trace_ = mix64(trace_ ^ field);
+  }
   return decision;
 }
 

@@ -3,6 +3,7 @@
 /// The exploration loop (docs/architecture.md, "The simulation loop and metrics"): sense, update frontiers,
 /// ask the strategy, plan, move cell by cell sensing after every step, repeat until an end reason applies.
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <span>
@@ -86,7 +87,8 @@ class Simulation {
   /// LinearScoredStrategy::candidates_within(w_lo, w_hi) gives them for the weight vectors the
   /// caller asks about (segment restriction included; possibly just one). Null when the next
   /// step's decision does not depend on the weights: the run ended or is at its step cap, the stop
-  /// cell, no candidate, another kind of strategy. Changes nothing in the run's result (its
+  /// cell, a decision the strategy makes without its weights (fixed_decision()), no candidate, another
+  /// kind of strategy. Changes nothing in the run's result (its
   /// searches warm the distance caches). The candidates stay valid until the next call of a
   /// non-const member.
   [[nodiscard]] const Candidates* choice(std::span<const double> w_lo, std::span<const double> w_hi);
@@ -100,6 +102,11 @@ class Simulation {
   /// (LinearScoredStrategy::set_weights). Throws std::logic_error for another kind of strategy and
   /// std::invalid_argument for weights the strategy does not allow.
   void set_weights(std::span<const double> weights);
+
+  /// A hash of every decision made so far (kind, goal, step limit, outcome, in order): runs with
+  /// equal traces decided alike (but for a 64-bit collision). The exact search identifies
+  /// behaviours by it (Behaviour::trace).
+  [[nodiscard]] std::uint64_t decision_trace() const { return trace_; }
 
   [[nodiscard]] bool ended() const { return recorder_.ended(); }
   /// The metrics counted so far, without the map-dependent ones result() completes (areas,
@@ -161,6 +168,8 @@ class Simulation {
   DistanceScratch scratch_;
   /// What the last choice() found, until the next step.
   std::optional<PendingChoice> pending_;
+  /// decision_trace().
+  std::uint64_t trace_ = 0;
 };
 
 /// Runs `spec` to the end: a pure function of the spec (and its seed).

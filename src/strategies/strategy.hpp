@@ -201,12 +201,28 @@ class LinearScoredStrategy : public Strategy {
   virtual void set_weights(std::span<const double> weights) = 0;
   /// What to do when no candidate survives.
   [[nodiscard]] virtual Decision on_no_candidate(const Observation& obs) = 0;
+  /// The decision of `obs` when it does not depend on the weights, so that no candidates are
+  /// scored (target_seeking on its target, or with the target in reach); nullopt (the default):
+  /// decide among candidates().
+  [[nodiscard]] virtual std::optional<Decision> fixed_decision(const Observation& obs) {
+    (void)obs;
+    return std::nullopt;
+  }
+  /// The decision once candidate `cell` (one of candidates().cells) won: by default the whole way
+  /// to it; a strategy may travel part of the way (Decision::go_toward).
+  [[nodiscard]] virtual Decision choose(const Observation& obs, Cell cell) {
+    (void)obs;
+    return Decision::go_to(cell);
+  }
 
+  /// fixed_decision(), else choose() for argmin_linear() over candidates(), else
+  /// on_no_candidate(): the exact weight search (Simulation::choice()) splits at the same place.
   [[nodiscard]] Decision decide(const Observation& obs) override {
+    if (std::optional<Decision> fixed = fixed_decision(obs)) return std::move(*fixed);
     const Candidates c = candidates(obs);
     const int best = argmin_linear(c, weights());
     if (best < 0) return on_no_candidate(obs);
-    return Decision::go_to(c.cells[static_cast<std::size_t>(best)]);
+    return choose(obs, c.cells[static_cast<std::size_t>(best)]);
   }
 };
 

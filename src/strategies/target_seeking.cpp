@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <stdexcept>
 
 #include "core/config_error.hpp"
 #include "strategies/geodesic.hpp"
@@ -17,6 +18,70 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 std::string cell_text(Cell c) { return "(" + std::to_string(c.x) + ", " + std::to_string(c.y) + ")"; }
+
+/// Steps 1-3 of choose_target_frontier(): the eligible frontiers with their features and goals,
+/// none chosen.
+FrontierChoice eligible_frontiers(const Observation& obs, const std::optional<Cell>& target_cell) {
+  const KnownMap& known = obs.known;
+  FrontierChoice choice;
+  if (target_cell && !known.in_bounds(*target_cell)) return choice;
+  const int target = target_cell ? known.index(*target_cell) : -1;
+
+  // 1. Whole frontiers from the clusters' cells.
+  std::vector<int> cells;
+  for (const auto& c : obs.clusters) cells.insert(cells.end(), c.cells.begin(), c.cells.end());
+  std::sort(cells.begin(), cells.end());
+  cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+  if (cells.empty()) return choice;
+  const auto groups = frontier_groups(known, cells);
+
+  // 2. Geodesic distances from the target through its region (all 0 without a target).
+  std::vector<double>& from_target = choice.from_target_m;
+  from_target.assign(static_cast<std::size_t>(known.size()), 0.0);
+  if (target >= 0) {
+    Grid<std::uint8_t> region = unknown_region(known, obs.frontiers);
+    if (known.is_free(target)) {
+      for (int i = 0; i < known.size(); ++i) region[i] = known.state(i) != CellState::Occupied ? 1 : 0;
+    }
+    const std::vector<int> source{target};
+    from_target = geodesic_distances(region, source, known.resolution_m());
+  }
+  const std::vector<double> from_robot = obs.distances.from_robot(cells, kInf);
+  const auto robot_distance = [&](int q) {
+    const auto at = std::lower_bound(cells.begin(), cells.end(), q) - cells.begin();
+    return from_robot[static_cast<std::size_t>(at)];
+  };
+
+  // 3. The eligible frontiers, their features and goals.
+  for (const auto& g : groups) {
+    ScoredFrontier f;
+    f.cells = g;
+    f.length_m = static_cast<double>(g.size()) * known.resolution_m();
+    f.hg_target_m = geodesic_hausdorff(from_target, g);
+    f.hg_robot_m = kInf;
+    for (const int q : g) f.hg_robot_m = std::min(f.hg_robot_m, robot_distance(q));
+    if (!std::isfinite(f.hg_target_m) || !std::isfinite(f.hg_robot_m)) continue;
+    f.features = {1.0 / f.length_m, target >= 0 ? f.hg_target_m : 0.0, f.hg_robot_m};
+    double best_route = kInf;
+    for (const int q : g) {  // the route robot -> q -> target
+      const double route = robot_distance(q) + from_target[static_cast<std::size_t>(q)];
+      if (route < best_route) {  // members ascend: ties keep the lowest index
+        best_route = route;
+        f.goal = q;
+      }
+    }
+    choice.frontiers.push_back(std::move(f));
+  }
+  return choice;
+}
+
+void require_resolved(const TargetSeekingParams& params) {
+  if (params.random_target) {
+    throw ConfigError(
+        "strategy/params/target",
+        "\"random\" must be resolved to a cell by the simulation (resolve_random_target) first");
+  }
+}
 
 }  // namespace
 
@@ -39,65 +104,19 @@ ParamDecl<TargetSeekingParams> target_seeking_params() {
 }
 
 FrontierChoice choose_target_frontier(const Observation& obs, const TargetSeekingParams& params) {
-  const KnownMap& known = obs.known;
-  FrontierChoice choice;
-  if (params.target && !known.in_bounds(*params.target)) return choice;
-  const int target = params.target ? known.index(*params.target) : -1;
-
-  // 1. Whole frontiers from the clusters' cells.
-  std::vector<int> cells;
-  for (const auto& c : obs.clusters) cells.insert(cells.end(), c.cells.begin(), c.cells.end());
-  std::sort(cells.begin(), cells.end());
-  cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
-  if (cells.empty()) return choice;
-  const auto groups = frontier_groups(known, cells);
-
-  // 2. Geodesic distances from the target through its region (all 0 without a target).
-  std::vector<double>& from_target = choice.from_target_m;
-  from_target.assign(static_cast<std::size_t>(known.size()), 0.0);
-  if (target >= 0) {
-    Grid<std::uint8_t> region = unknown_region(known, obs.frontiers);
-    if (known.is_free(target)) {
-      for (int i = 0; i < known.size(); ++i) region[i] = known.state(i) != CellState::Occupied ? 1 : 0;
-    }
-    const std::vector<int> source{target};
-    from_target = geodesic_distances(region, source, known.resolution_m());
-  }
-  const double w2 = target >= 0 ? params.w2 : 0.0;
-  const std::vector<double> from_robot = obs.distances.from_robot(cells, kInf);
-
-  // 3. Score the eligible frontiers (equation 12).
+  FrontierChoice choice = eligible_frontiers(obs, params.target);
+  // 4. Equation 12.
+  const std::array<double, 3> weights{params.w1, params.w2, params.w3};
   double best = kInf;
-  for (const auto& g : groups) {
-    ScoredFrontier f;
-    f.cells = g;
-    f.length_m = static_cast<double>(g.size()) * known.resolution_m();
-    f.hg_target_m = geodesic_hausdorff(from_target, g);
-    f.hg_robot_m = kInf;
-    for (const int q : g) {
-      const auto at = std::lower_bound(cells.begin(), cells.end(), q) - cells.begin();
-      f.hg_robot_m = std::min(f.hg_robot_m, from_robot[static_cast<std::size_t>(at)]);
-    }
-    if (!std::isfinite(f.hg_target_m) || !std::isfinite(f.hg_robot_m)) continue;
-    f.score = params.w1 / f.length_m + w2 * f.hg_target_m + params.w3 * f.hg_robot_m;
-    if (f.score < best) {  // strict: ties keep the earlier frontier
+  for (std::size_t i = 0; i < choice.frontiers.size(); ++i) {
+    ScoredFrontier& f = choice.frontiers[i];
+    f.score = linear_cost(weights, f.features);
+    if (f.score < best) {  // strict: ties keep the earlier frontier, as argmin_linear()
       best = f.score;
-      choice.chosen = static_cast<int>(choice.frontiers.size());
-    }
-    choice.frontiers.push_back(std::move(f));
-  }
-  if (choice.chosen < 0) return choice;
-
-  // The goal: the member on the shortest estimated route robot -> q -> target.
-  double best_route = kInf;
-  for (const int q : choice.frontiers[static_cast<std::size_t>(choice.chosen)].cells) {
-    const auto at = std::lower_bound(cells.begin(), cells.end(), q) - cells.begin();
-    const double route = from_robot[static_cast<std::size_t>(at)] + from_target[static_cast<std::size_t>(q)];
-    if (route < best_route) {  // cells ascend: ties keep the lowest index
-      best_route = route;
-      choice.goal = q;
+      choice.chosen = static_cast<int>(i);
     }
   }
+  if (choice.chosen >= 0) choice.goal = choice.frontiers[static_cast<std::size_t>(choice.chosen)].goal;
   return choice;
 }
 
@@ -166,18 +185,10 @@ std::optional<Cell> gradient_step(const KnownMap& known, const Sensor& sensor, C
   return step;
 }
 
-Decision TargetSeeking::decide(const Observation& obs) {
+std::optional<Decision> TargetSeeking::fixed_decision(const Observation& obs) {
+  require_resolved(params_);
+  if (!params_.target) return std::nullopt;  // 0: choose among the frontiers
   const KnownMap& known = obs.known;
-  if (params_.random_target) {
-    throw ConfigError(
-        "strategy/params/target",
-        "\"random\" must be resolved to a cell by the simulation (resolve_random_target) first");
-  }
-  if (!params_.target) {  // 0
-    const FrontierChoice choice = choose_target_frontier(obs, params_);
-    if (choice.goal < 0) return Decision::finish();
-    return Decision::go_to(known.cell(choice.goal));
-  }
   const Cell t = *params_.target;
   if (!known.in_bounds(t)) {  // 1
     return Decision::finish_with(Decision::Outcome::TargetUnreachable,
@@ -196,20 +207,63 @@ Decision TargetSeeking::decide(const Observation& obs) {
     const std::vector<int> target{known.index(t)};
     if (std::isfinite(obs.distances.from_robot(target, kInf).front())) return Decision::go_to(t);
   }
-  const FrontierChoice choice = choose_target_frontier(obs, params_);  // 4
-  if (choice.goal < 0) {
-    return Decision::finish_with(
-        Decision::Outcome::TargetUnreachable,
-        "no reachable frontier borders the unknown region of target " + cell_text(t));
+  return std::nullopt;  // 4: choose among the frontiers
+}
+
+Candidates TargetSeeking::candidates(const Observation& obs) {
+  require_resolved(params_);
+  const FrontierChoice eligible = eligible_frontiers(obs, params_.target);
+  Candidates c;
+  c.feature_count = 3;
+  for (const ScoredFrontier& f : eligible.frontiers) {
+    c.cells.push_back(obs.known.cell(f.goal));
+    c.features.insert(c.features.end(), f.features.begin(), f.features.end());
   }
-  if (params_.motion == TargetMotion::Gradient) {
-    const auto& chosen = choice.frontiers[static_cast<std::size_t>(choice.chosen)].cells;
-    const Sensor sensor(obs.sensor, known.resolution_m());
-    const auto step =
-        gradient_step(known, sensor, obs.robot, exploration_field(known, chosen, choice.from_target_m));
-    if (step) return Decision::go_toward(*step, 1);
+  return c;
+}
+
+Decision TargetSeeking::choose(const Observation& obs, Cell cell) {
+  require_resolved(params_);
+  if (!params_.target) return Decision::go_to(cell);  // 0
+  const KnownMap& known = obs.known;
+  if (params_.motion == TargetMotion::Gradient) {  // 4, gradient: the field of the frontier of `cell`
+    const FrontierChoice eligible = eligible_frontiers(obs, params_.target);
+    const int goal = known.index(cell);
+    const auto frontier = std::find_if(eligible.frontiers.begin(), eligible.frontiers.end(),
+                                       [&](const ScoredFrontier& f) { return f.goal == goal; });
+    if (frontier != eligible.frontiers.end()) {
+      const Sensor sensor(obs.sensor, known.resolution_m());
+      const auto step = gradient_step(known, sensor, obs.robot,
+                                      exploration_field(known, frontier->cells, eligible.from_target_m));
+      if (step) return Decision::go_toward(*step, 1);
+    }
   }
-  return Decision::go_toward(known.cell(choice.goal), 1);
+  return Decision::go_toward(cell, 1);  // 4
+}
+
+Decision TargetSeeking::on_no_candidate(const Observation& /*obs*/) {
+  require_resolved(params_);
+  if (!params_.target) return Decision::finish();  // 0
+  return Decision::finish_with(
+      Decision::Outcome::TargetUnreachable,  // 4
+      "no reachable frontier borders the unknown region of target " + cell_text(*params_.target));
+}
+
+void TargetSeeking::set_weights(std::span<const double> weights) {
+  if (weights.size() != weights_.size()) {
+    throw std::invalid_argument("target_seeking: " + std::to_string(weights.size()) +
+                                " weights given; it has 3 (w1, w2, w3)");
+  }
+  for (std::size_t k = 0; k < weights.size(); ++k) {
+    if (!(weights[k] >= 0.0 && weights[k] <= 1.0)) {
+      throw std::invalid_argument("target_seeking: w" + std::to_string(k + 1) + " = " +
+                                  std::to_string(weights[k]) + "; allowed: [0, 1]");
+    }
+  }
+  std::copy(weights.begin(), weights.end(), weights_.begin());
+  params_.w1 = weights_[0];
+  params_.w2 = weights_[1];
+  params_.w3 = weights_[2];
 }
 
 }  // namespace strategies

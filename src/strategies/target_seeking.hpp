@@ -8,10 +8,14 @@
 ///   w1 / L[frontier] + w2 * Hg(target, frontier) + w3 * Hg(robot, frontier),
 /// every term a cost >= 0: a long frontier (large L) lowers the first term, a frontier near
 /// the target or near the robot lowers the other two. Distances and lengths are in metres.
+/// The cost is linear in (w1, w2, w3) with features (1 / L, Hg(target), Hg(robot)), and is
+/// computed so, as linear_cost() (w1 * (1 / L), not w1 / L, which may differ in the last bit):
+/// the strategy is linear-scored, so the exact weight search covers it.
 /// The choice is re-evaluated after every cell step ("evaluated constantly in conjunction
 /// with the control law"). Once the target cell is known free the robot follows the shortest
 /// path to it (equation 3, section III-A end).
 
+#include <array>
 #include <memory>
 #include <nlohmann/json_fwd.hpp>
 #include <optional>
@@ -69,7 +73,13 @@ struct ScoredFrontier {
   double hg_target_m = 0.0;
   /// Hg(robot, frontier) through known free space (metres, from the DistanceOracle).
   double hg_robot_m = 0.0;
-  /// w1 / L + w2 * hg_target_m + w3 * hg_robot_m.
+  /// Equation 12's features: 1 / L, hg_target_m (0 without a target), hg_robot_m.
+  std::array<double, 3> features{};
+  /// The goal cell index inside the frontier: the member q with the smallest
+  /// d_robot(q) + d_target(q), the estimated length of a route to the target through q (ties:
+  /// lowest index; without a target the member nearest the robot).
+  int goal = -1;
+  /// linear_cost((w1, w2, w3), features): w1 / L + w2 * hg_target_m + w3 * hg_robot_m.
   double score = 0.0;
 };
 
@@ -79,9 +89,7 @@ struct FrontierChoice {
   std::vector<ScoredFrontier> frontiers;
   /// Position in `frontiers` of the minimum score (ties: the lowest position); -1 when none.
   int chosen = -1;
-  /// The goal cell index inside the chosen frontier: the member q with the smallest
-  /// d_robot(q) + d_target(q), the estimated length of a route to the target through q
-  /// (ties: lowest index); -1 when none.
+  /// The goal of the chosen frontier (ScoredFrontier::goal); -1 when none.
   int goal = -1;
   /// Geodesic distance (metres) from the target to every cell through the region of step 2
   /// (all 0 without a target; empty when the target is off the map or no frontier exists).
@@ -100,6 +108,8 @@ struct FrontierChoice {
 ///    target through it (geodesic_distances()).
 /// 3. Eligible: frontiers that border the region containing the target (some member has a
 ///    finite distance from the target) and that the robot can reach (finite oracle distance).
+/// 4. Scored by equation 12 with params' weights; the chosen one is the minimum (ties: the
+///    earliest).
 [[nodiscard]] FrontierChoice choose_target_frontier(const Observation& obs,
                                                     const TargetSeekingParams& params);
 
@@ -162,21 +172,35 @@ struct ExplorationField {
 ///    with shortest_path.
 /// Stateless apart from its parameters. Works with any planner, but with a target the engine
 /// plans once per cell step: use a grid planner (astar, dijkstra) for navigation runs.
-class TargetSeeking final : public Strategy {
+///
+/// As a LinearScoredStrategy: steps 1-3 are fixed_decision(); the candidates of step 0 and 4 are
+/// the eligible frontiers, each by its goal cell with equation 12's features; choose() turns
+/// the winner into the motion of step 0 or 4; on_no_candidate() is the Finish of step 0 or 4.
+/// Every member throws ConfigError ("strategy/params/target") when params.random_target is
+/// set: a random target must be resolved to a cell by the simulation first.
+class TargetSeeking final : public LinearScoredStrategy {
  public:
-  explicit TargetSeeking(const TargetSeekingParams& params) : params_(params) {}
+  explicit TargetSeeking(const TargetSeekingParams& params)
+      : params_(params), weights_{params.w1, params.w2, params.w3} {}
   [[nodiscard]] std::string name() const override { return "target_seeking"; }
-  /// Throws ConfigError ("strategy/params/target") when params.random_target is set: a random
-  /// target must be resolved to a cell by the simulation first.
-  [[nodiscard]] Decision decide(const Observation& obs) override;
   [[nodiscard]] std::unique_ptr<Strategy> clone() const override {
     return std::make_unique<TargetSeeking>(*this);
   }
   [[nodiscard]] const TargetSeekingParams& params() const { return params_; }
   [[nodiscard]] std::optional<Cell> target() const override { return params_.target; }
 
+  [[nodiscard]] std::optional<Decision> fixed_decision(const Observation& obs) override;
+  [[nodiscard]] Candidates candidates(const Observation& obs) override;
+  [[nodiscard]] Decision choose(const Observation& obs, Cell cell) override;
+  [[nodiscard]] Decision on_no_candidate(const Observation& obs) override;
+  [[nodiscard]] std::span<const double> weights() const override { return weights_; }
+  [[nodiscard]] std::vector<std::string> weight_names() const override { return {"w1", "w2", "w3"}; }
+  /// w1, w2, w3, each in [0, 1].
+  void set_weights(std::span<const double> weights) override;
+
  private:
   TargetSeekingParams params_;
+  std::array<double, 3> weights_;
 };
 
 }  // namespace strategies

@@ -196,6 +196,53 @@ void WeightGrid::add_points(PointsByBlock& points, const WeightRegion& region) c
   }
 }
 
+WeightRegion WeightGrid::shard(std::uint64_t index, std::uint64_t count) const {
+  if (count == 0 || index >= count) {
+    throw std::invalid_argument("WeightGrid::shard: shard " + std::to_string(index) + " of " +
+                                std::to_string(count));
+  }
+  const std::uint64_t blocks = block_count_;
+  std::uint64_t at = index * blocks / count;
+  const std::uint64_t end = (index + 1) * blocks / count;
+  // Block numbers are mixed-radix digits (weight 0 most significant): from `at`, take the
+  // longest run of whole sub-boxes that fits, along the most significant weight whose less
+  // significant digits are all 0 at `at`.
+  std::array<std::uint64_t, kWeights> stride{};
+  std::uint64_t s = 1;
+  for (std::size_t k = kWeights; k-- > 0;) {
+    stride[k] = s;
+    s *= blocks_[k];
+  }
+  WeightRegion out;
+  while (at < end) {
+    std::size_t level = kWeights - 1;
+    while (level > 0 && at % stride[level - 1] == 0 && at + stride[level - 1] <= end) --level;
+    WeightRegion::Box box;
+    std::uint64_t rest = at;
+    for (std::size_t k = 0; k < kWeights; ++k) {
+      const auto digit = static_cast<std::uint32_t>((rest / stride[k]) % blocks_[k]);
+      box.lo[k] = k <= level ? digit : 0;
+      box.hi[k] = k < level ? digit + 1 : blocks_[k];
+    }
+    const std::uint64_t run =
+        std::min<std::uint64_t>(blocks_[level] - box.lo[level], (end - at) / stride[level]);
+    box.hi[level] = box.lo[level] + static_cast<std::uint32_t>(run);
+    out.whole.push_back(box);
+    at += run * stride[level];
+  }
+  return out;
+}
+
+WeightRegion WeightGrid::united(const WeightRegion& a, const WeightRegion& b) {
+  WeightRegion out = a;
+  out.whole.insert(out.whole.end(), b.whole.begin(), b.whole.end());
+  out.parts.insert(out.parts.end(), b.parts.begin(), b.parts.end());
+  std::inplace_merge(
+      out.parts.begin(), out.parts.begin() + static_cast<std::ptrdiff_t>(a.parts.size()), out.parts.end(),
+      [](const WeightRegion::Part& x, const WeightRegion::Part& y) { return x.block < y.block; });
+  return out;
+}
+
 WeightRegion WeightGrid::without(const WeightRegion& region, const PointsByBlock& points) const {
   WeightRegion out;
   const auto coordinates = [&](std::uint32_t block) {

@@ -94,6 +94,15 @@ class WeightGrid {
   /// without visiting its points (heat maps over weight pairs of the full box).
   template <typename F>
   void for_each_projection(const WeightRegion& region, int a, int b, F&& f) const;
+  /// Shard `index` of `count` (0 <= index < count): the blocks whose block number (weight 0's
+  /// block coordinate most significant) lies in [index * B / count, (index + 1) * B / count), B
+  /// the grid's block count, as a few boxes. The shards of one count are disjoint block by block
+  /// and together are everything(); a shard may be empty when count > B. Throws
+  /// std::invalid_argument for an index outside [0, count).
+  [[nodiscard]] WeightRegion shard(std::uint64_t index, std::uint64_t count) const;
+  /// The union of regions that share no block (e.g. of different shards); their boxes, then
+  /// their parts in block order.
+  [[nodiscard]] static WeightRegion united(const WeightRegion& a, const WeightRegion& b);
   /// Adds the points of `region` to `points`.
   void add_points(PointsByBlock& points, const WeightRegion& region) const;
   /// The points of `region` that are not in `points`.

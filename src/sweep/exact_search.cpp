@@ -16,6 +16,7 @@
 #include <string>
 #include <utility>
 
+#include "core/random.hpp"
 #include "sim/simulation.hpp"
 
 namespace fsweep {
@@ -38,7 +39,9 @@ class Explorer {
  public:
   Explorer(const WeightGrid& grid, tbb::task_group& tasks,
            const std::function<void(Behaviour&&)>& on_behaviour, const BranchAndBound* bnb)
-      : grid_(grid), tasks_(tasks), on_behaviour_(on_behaviour), bnb_(bnb) {}
+      : grid_(grid), tasks_(tasks), on_behaviour_(on_behaviour), bnb_(bnb) {
+    if (bnb_ != nullptr) best_.store(bnb_->incumbent);
+  }
 
   /// Follows `b` to the end of its runs, forking a task for every share but the last at each
   /// split (the last goes on in this one). The instances advance one at a time: the first
@@ -147,7 +150,10 @@ class Explorer {
     out.choices = std::move(b.choices);
     out.region = std::move(b.region);
     out.results.reserve(b.sims.size());
-    for (Simulation& sim : b.sims) out.results.push_back(std::move(sim).result());
+    for (Simulation& sim : b.sims) {
+      out.trace = mix64(out.trace ^ sim.decision_trace());
+      out.results.push_back(std::move(sim).result());
+    }
     behaviours_.fetch_add(1, std::memory_order_relaxed);
     if (bnb_ != nullptr) {
       const double objective = bnb_->objective(out.results);
@@ -177,7 +183,7 @@ class Explorer {
 
 ExactSearchStats exact_search(std::span<const RunSpec> instances, const WeightGrid& grid, int threads,
                               const std::function<void(Behaviour&&)>& on_behaviour, const BranchAndBound* bnb,
-                              const PointsByBlock* done) {
+                              const WeightRegion* within) {
   if (threads < 1) throw std::invalid_argument("exact_search: threads must be >= 1");
   if (instances.empty()) throw std::invalid_argument("exact_search: no instance to search");
   std::vector<Simulation> roots;
@@ -213,8 +219,8 @@ ExactSearchStats exact_search(std::span<const RunSpec> instances, const WeightGr
   arena.execute([&] {
     tbb::task_group tasks;
     Explorer explorer(grid, tasks, on_behaviour, bnb);
-    // Resuming: the root's region leaves out the vectors done, so every share does.
-    WeightRegion everything = done != nullptr ? grid.without(grid.everything(), *done) : grid.everything();
+    // A shard or a resumed search: the root's region is a part of the grid, and so every share.
+    WeightRegion everything = within != nullptr ? *within : grid.everything();
     if (!everything.empty()) {
       tasks.run([&] {
         explorer.explore(Branch{std::move(roots), std::move(everything), {}, std::nullopt, std::nullopt});

@@ -34,6 +34,11 @@ inline namespace sweep {
 struct Behaviour {
   /// The candidate chosen at each decision that split its region (the path in the region tree).
   std::vector<int> choices;
+  /// A hash of every decision of its runs (Simulation::decision_trace(), instance by instance):
+  /// the behaviour's identity. Two searches of parts of one grid (shards) find one behaviour
+  /// of the whole grid's search as behaviours with the same trace, since the whole search
+  /// separates two vectors exactly when some decision differs.
+  std::uint64_t trace = 0;
   /// Its weight vectors.
   WeightRegion region;
   /// How many.
@@ -59,6 +64,9 @@ struct BranchAndBound {
   std::function<double(std::span<const Simulation>)> lower_bound;
   /// Called with the vector count of each pruned region (progress); may be empty.
   std::function<void(std::uint64_t)> on_pruned;
+  /// The objective of a behaviour known before the search (e.g. found by a killed search that
+  /// is resumed): regions whose bound exceeds it are pruned from the start. +infinity: none.
+  double incumbent = std::numeric_limits<double>::infinity();
 };
 
 /// What an exact search did.
@@ -90,12 +98,13 @@ struct ExactSearchStats {
 /// far (the caller keeps those equal to the final ExactSearchStats::best; ties are all kept),
 /// and a region is pruned, without finishing its runs, when bnb->lower_bound exceeds that best.
 ///
-/// With `done` (resuming a killed search), the vectors in it are left out: they must be the
-/// whole regions of behaviours a search of the same instances and grid finished before, so
-/// that the behaviours found now are exactly the others.
+/// With `within`, only its vectors are searched (a shard, WeightGrid::shard(); or, resuming a
+/// killed search, the vectors not in the regions of the behaviours it finished): a behaviour
+/// found then has the part of the whole search's behaviour that lies in `within` (the same
+/// runs and trace).
 ExactSearchStats exact_search(std::span<const RunSpec> instances, const WeightGrid& grid, int threads,
                               const std::function<void(Behaviour&&)>& on_behaviour,
-                              const BranchAndBound* bnb = nullptr, const PointsByBlock* done = nullptr);
+                              const BranchAndBound* bnb = nullptr, const WeightRegion* within = nullptr);
 
 }  // namespace sweep
 }  // namespace fsweep

@@ -18,6 +18,7 @@
 #include "sweep/done_runs.hpp"
 #include "sweep/manifest.hpp"
 #include "sweep/sweep_plan.hpp"
+#include "sweep/weight_search_runner.hpp"
 
 namespace fsweep {
 inline namespace sweep {
@@ -205,6 +206,23 @@ MergeReport merge_shards(const std::string& dir, const std::string& objective) {
   manifest["runs_per_s"] = wall > 0.0 ? static_cast<double>(ran) / wall : 0.0;
   manifest["end_utc"] = utc_now_iso8601();
 
+  // The weight searches' parts (weight_search_runner.hpp): joined first, so that a shard whose
+  // searches did not finish stops the merge before anything is written.
+  if (!plan) {
+    for (const Shard& s : shards) {
+      if (fs::exists(s.dir + "/searches.json")) {
+        throw ConfigError(s.dir + "/searches.json",
+                          "the sweep's plan cannot be rebuilt from the manifest (is a map file not reachable "
+                          "from the current directory?), so its weight searches cannot be merged; run the "
+                          "merge where the sweep ran");
+      }
+    }
+  } else if (!plan->search_units().empty()) {
+    std::vector<std::string> dirs;
+    dirs.reserve(shards.size());
+    for (const Shard& s : shards) dirs.push_back(s.dir);
+    report.searches = merge_weight_searches(*plan, dir, dirs).searches;
+  }
   write_file_atomically(dir + "/runs.csv", runs_text);
   write_file_atomically(dir + "/progress.csv", progress_text);
   write_manifest(dir + "/manifest.json", manifest);

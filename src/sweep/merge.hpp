@@ -21,6 +21,8 @@ struct MergeReport {
   /// Empty on success.
   std::vector<std::string> problems;
   bool written = false;  ///< merged files and aggregates written (problems is empty)
+  /// Exact weight searches merged (merge_weight_searches(), weight_search_runner.hpp).
+  std::size_t searches = 0;
 };
 
 /// Merges the shards under `dir`. Every shard directory (name `shard-<i>-of-<n>`) must have the
@@ -34,7 +36,9 @@ struct MergeReport {
 /// one row are listed in `problems`; then nothing is written. Otherwise writes DIR/runs.csv and
 /// DIR/progress.csv (rows ordered by run_index, a run's progress rows in their shard's order),
 /// DIR/manifest.json (the first shard's, with shard {index 0, count 1}, runs summed, status
-/// "complete") atomically, and runs aggregate(dir, {objective}).
+/// "complete") atomically, and runs aggregate(dir, {objective}). A sweep with exact weight
+/// searches has them merged first (merge_weight_searches(): every shard needs its
+/// searches.json, else ConfigError and nothing is written).
 [[nodiscard]] MergeReport merge_shards(const std::string& dir, const std::string& objective = {});
 
 }  // namespace sweep

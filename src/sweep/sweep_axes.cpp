@@ -155,7 +155,8 @@ std::vector<std::string> linear_scored_names() {
 }
 
 /// Makes `entry` (validated, its groups built) a search entry by its "search" object: the weight
-/// groups become the search's box (integers, every declared value when a weight is not given),
+/// groups become the search's box (the values a regular sweep would run; every integer of the
+/// declared range when a weight is not given),
 /// every other group must have one value. `specs`: the strategy's declarations.
 void make_search_entry(const json& search, const std::string& where, const ParamSpecs& specs,
                        StrategyEntry& entry, std::vector<std::string>& problems) {
@@ -230,9 +231,8 @@ void make_search_entry(const json& search, const std::string& where, const Param
     if (group != entry.groups.end()) {
       for (const auto& combo : group->combos) {
         const json& v = combo.front();
-        if (!v.is_number_integer()) {
-          const std::string allowed =
-              "; the exact search takes integer weights; allowed: integers, lists or integer ranges";
+        if (!v.is_number()) {
+          const std::string allowed = "; allowed: numbers, lists or ranges of numbers";
           problems.push_back(concat({where, "/params/", w, ": value ", value_text(v), allowed}));
           break;
         }

@@ -130,7 +130,7 @@ struct SweepMap {
 };
 
 /// The exact weight search of a strategy entry ("search" in the file; format above): every
-/// integer weight vector of a box, searched by decision sharing (exact_search.hpp).
+/// weight vector of a box, searched by decision sharing (exact_search.hpp).
 struct WeightSearch {
   enum class Mode { All, Best };
   Mode mode = Mode::All;
@@ -138,7 +138,7 @@ struct WeightSearch {
   bool write_vectors = false;
   /// The strategy's weight parameters (LinearScoredStrategy::weight_names()), in its order.
   std::vector<std::string> weights;
-  /// Per weight, its values: ascending integers.
+  /// Per weight, its values, ascending (integers unless the file gives others).
   std::vector<std::vector<double>> values;
   /// Weight vectors (one value per weight, each a value of the box) whose exact rank is reported.
   std::vector<std::vector<double>> rank;

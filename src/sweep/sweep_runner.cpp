@@ -302,7 +302,7 @@ RunnerReport run_sweep(const SweepPlan& plan, const RunnerOptions& options) {
   info.wall_s = report.wall_s;
   info.runs_per_s = report.runs_per_s;
   info.status = report.interrupted ? "interrupted" : "complete";
-  if (!report.interrupted && options.shard_count == 1 && !plan.search_units().empty()) {
+  if (!report.interrupted && !plan.search_units().empty()) {
     // 4. The exact weight searches (weight_search_runner.hpp): searches.json is written last, so
     //    its presence means every search file is complete.
     if (fs::exists(dir + "/searches.json")) {
@@ -310,7 +310,8 @@ RunnerReport run_sweep(const SweepPlan& plan, const RunnerOptions& options) {
     } else {
       info.status = "running";
       write_manifest(manifest_path, manifest_json(plan, info));
-      report.searches = run_weight_searches(plan, dir, threads, options.progress);
+      report.searches =
+          run_weight_searches(plan, dir, threads, options.progress, options.shard_index, options.shard_count);
       info.status = "complete";
       info.end_utc = utc_now_iso8601();
       report.wall_s = std::chrono::duration<double>(Clock::now() - wall_start).count();

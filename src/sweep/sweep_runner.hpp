@@ -28,9 +28,10 @@
 ///   complete, unsharded run.
 /// - The exact weight searches' files (weight_search_runner.hpp: searches.json,
 ///   behaviours.csv, search_summary.csv, search_best.csv, search_ranks.csv,
-///   search_heatmaps.csv, vectors.csv), after the runs of a complete, unsharded run; skipped
-///   when searches.json is already there (a finished search is not redone; --fresh redoes it).
-///   Sharded runs do not run searches.
+///   search_heatmaps.csv, vectors.csv), after the runs of a complete run; skipped when
+///   searches.json is already there (a finished search is not redone; --fresh redoes it). A
+///   shard searches its part of each box and writes its journal and searches.json only; the
+///   merge writes the files (merge.hpp).
 /// - `.fsweep.lock`: an flock held while running; a second runner on the same directory is
 ///   refused (the kernel drops the lock when the process dies, even by SIGKILL). Temp files a
 ///   killed runner left (`runs.csv.tmp.<pid>`, ...) are deleted on start.

@@ -115,6 +115,15 @@ std::string planner_label(const SweepPlanner& p) {
   return p.params.is_null() ? p.name : p.name + " " + p.params.dump();
 }
 
+/// What one search (or one shard's, or the shards' merged) found.
+struct Searched {
+  std::vector<Found> found;
+  /// Of them, read from the journal of a killed search.
+  std::size_t resumed = 0;
+  ExactSearchStats stats;
+  double wall_s = 0.0;
+};
+
 /// Everything one search writes, as text rows (each with its newline).
 // NOLINTNEXTLINE(bugprone-exception-escape): false positive inside nlohmann::json's noexcept move
 struct SearchRows {
@@ -139,80 +148,78 @@ class SearchWriter {
         grid_(search_.values),
         objective_(objective) {}
 
-  /// Searches and formats. `on_vectors(n)`: n more vectors resolved.
-  SearchRows run(int threads, const std::function<void(std::uint64_t)>& on_vectors) {
-    const std::size_t n = unit_.maps.size() * static_cast<std::size_t>(plan_.repetitions());
-    std::vector<RunSpec> specs;
-    for (std::size_t i = 0; i < n; ++i) specs.push_back(plan_.search_instance(unit_, i));
+  /// Searches `root` (everything, or a shard: WeightGrid::shard()) and formats what it finds.
+  /// `on_vectors(n)`: n more vectors resolved. Every behaviour found goes to the journal at once;
+  /// those a killed search of the same key journaled are kept and their vectors left out (mode
+  /// best: the best of them is the incumbent to beat).
+  Searched search(int threads, const std::function<void(std::uint64_t)>& on_vectors,
+                  const WeightRegion& root) {
+    const std::vector<RunSpec> specs = instance_specs();
     const auto start = std::chrono::steady_clock::now();
-    std::vector<Found> found;
-    // Formats a behaviour's runs (the cells of every instance) and its objective.
-    const auto format = [&](Found& f) {
-      for (std::size_t i = 0; i < n; ++i) {
-        const SweepMap& map = plan_.maps().at(unit_.maps[i / static_cast<std::size_t>(plan_.repetitions())]);
-        f.cells.push_back(instance_cells(f.behaviour.results[i], map, specs[i]));
-      }
-      f.behaviour.results.clear();  // formatted; the runs' trajectories are not kept
-    };
-    // Mode all resumes: the behaviours a killed search journaled are kept, their vectors left
-    // out of the search.
-    PointsByBlock done;
+    Searched out;
+    std::vector<Found>& found = out.found;
     const std::string key = unit_key(specs.size());
-    if (search_.mode == WeightSearch::Mode::All) {
-      found = read_journal(key);
-      for (const Found& f : found) {
-        grid_.add_points(done, f.behaviour.region);
-        on_vectors(f.behaviour.vectors);
-      }
+    found = read_journal(key, out_dir_);
+    PointsByBlock done;
+    const double sign = objective_.direction == Direction::Minimize ? 1.0 : -1.0;
+    double incumbent = std::numeric_limits<double>::infinity();
+    for (const Found& f : found) {
+      grid_.add_points(done, f.behaviour.region);
+      on_vectors(f.behaviour.vectors);
+      if (!std::isnan(f.objective)) incumbent = std::min(incumbent, sign * f.objective);
     }
-    resumed_ = found.size();
-    std::ofstream journal;
-    if (search_.mode == WeightSearch::Mode::All) {
-      journal.open(journal_path(), std::ios::app | std::ios::binary);
-      if (!journal) throw ConfigError(journal_path(), "cannot open for appending");
-    }
+    out.resumed = found.size();
+    const WeightRegion within = done.empty() ? root : grid_.without(root, done);
+    std::ofstream journal(journal_path(out_dir_), std::ios::app | std::ios::binary);
+    if (!journal) throw ConfigError(journal_path(out_dir_), "cannot open for appending");
     const auto keep = [&](Behaviour&& b) {
+      on_vectors(b.vectors);
       Found f;
       f.behaviour = std::move(b);
-      format(f);
-      f.objective = objective_of(f.cells);
-      if (journal.is_open()) {
-        journal << journal_line(key, f) << '\n';
-        journal.flush();
-        if (!journal) throw ConfigError(journal_path(), "write error");
+      for (std::size_t i = 0; i < specs.size(); ++i) {
+        f.cells.push_back(instance_cells(f.behaviour.results[i], instance_map(i), specs[i]));
       }
+      f.behaviour.results.clear();  // formatted; the runs' trajectories are not kept
+      f.objective = objective_of(f.cells);
+      journal << journal_line(key, f) << '\n';
+      journal.flush();
+      if (!journal) throw ConfigError(journal_path(out_dir_), "write error");
       found.push_back(std::move(f));
     };
-    ExactSearchStats stats;
-    if (search_.mode == WeightSearch::Mode::All) {
-      stats = exact_search(
-          specs, grid_, threads,
-          [&](Behaviour&& b) {
-            on_vectors(b.vectors);
-            keep(std::move(b));
-          },
-          nullptr, done.empty() ? nullptr : &done);
+    if (within.empty()) {
+      out.stats.best = incumbent;
+    } else if (search_.mode == WeightSearch::Mode::All) {
+      out.stats = exact_search(specs, grid_, threads, keep, nullptr, &within);
     } else {
-      const double sign = objective_.direction == Direction::Minimize ? 1.0 : -1.0;
       BranchAndBound bnb;
       bnb.objective = [&](const std::vector<RunResult>& results) {
         return sign * class_objective(results, objective_);
       };
       bnb.lower_bound = [&](std::span<const Simulation> sims) { return class_lower_bound(sims, objective_); };
       bnb.on_pruned = on_vectors;
-      stats = exact_search(
-          specs, grid_, threads,
-          [&](Behaviour&& b) {
-            on_vectors(b.vectors);
-            keep(std::move(b));
-          },
-          &bnb);
-      // Only the optimal behaviours (ties included): the others were reported before a better one
-      // was found.
-      std::erase_if(found, [&](const Found& f) { return !(sign * f.objective == stats.best); });
+      bnb.incumbent = incumbent;
+      out.stats = exact_search(specs, grid_, threads, keep, &bnb, &within);
+    }
+    out.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return out;
+  }
+
+  /// The rows of the files for the behaviours of the whole grid (one search's, or the shards'
+  /// merged by merged()). Mode best keeps the optimal ones (every tie): the others were found
+  /// before a better one was.
+  SearchRows rows(Searched searched, const json& shards = nullptr) {
+    std::vector<Found>& found = searched.found;
+    const std::size_t n = instance_count();
+    if (search_.mode == WeightSearch::Mode::Best) {
+      const double sign = objective_.direction == Direction::Minimize ? 1.0 : -1.0;
+      double optimum = std::numeric_limits<double>::infinity();
+      for (const Found& f : found) {
+        if (!std::isnan(f.objective)) optimum = std::min(optimum, sign * f.objective);
+      }
+      std::erase_if(found, [&](const Found& f) { return !(sign * f.objective == optimum); });
+      searched.stats.best = optimum;
       for (const Found& f : found) optimal_vectors_ += f.behaviour.vectors;
     }
-    const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::sort(found.begin(), found.end(), [](const Found& a, const Found& b) {
       return a.behaviour.representative < b.behaviour.representative;
     });
@@ -224,19 +231,75 @@ class SearchWriter {
       }
     }
     SearchRows rows;
-    write_behaviours(found, specs, rows);
+    write_behaviours(found, instance_specs(), rows);
     write_best_and_ranks(found, rows);
     if (search_.mode == WeightSearch::Mode::All) {
       write_summary(found, n, rows);
       write_heatmaps(found, rows);
     }
     if (search_.write_vectors) write_vectors(found, rows);
-    rows.record = record(specs.size(), found, stats, wall_s);
+    rows.record = record(found.size(), searched, shards);
     return rows;
   }
 
-  /// The journal of finished behaviours (mode all), shared by the sweep's searches.
-  [[nodiscard]] std::string journal_path() const { return out_dir_ + "/search_journal.jsonl"; }
+  /// The parts of the whole grid's behaviours that searches of its shards found in `dirs`,
+  /// merged: behaviours with one trace are one behaviour of the whole search (Behaviour::trace),
+  /// its region the union of theirs. `records`: each shard's searches.json record of this search.
+  Searched merged(const std::vector<std::string>& dirs, const std::vector<json>& records) {
+    Searched out;
+    const std::string key = unit_key(instance_count());
+    std::map<std::uint64_t, std::size_t> by_trace;
+    for (const std::string& dir : dirs) {
+      for (Found& f : read_journal(key, dir)) {
+        const auto [at, is_new] = by_trace.emplace(f.behaviour.trace, out.found.size());
+        if (is_new) {
+          out.found.push_back(std::move(f));
+          continue;
+        }
+        Behaviour& b = out.found[at->second].behaviour;
+        b.region = WeightGrid::united(b.region, f.behaviour.region);
+        b.vectors = grid_.count(b.region);
+        b.representative = grid_.lexmin(b.region);
+        b.bounds = grid_.bounds(b.region);
+      }
+    }
+    std::uint64_t vectors = 0;
+    for (const Found& f : out.found) vectors += f.behaviour.vectors;
+    if (search_.mode == WeightSearch::Mode::All && vectors != grid_.size()) {
+      throw ConfigError(journal_path(dirs.front()), "the shards' journals hold the behaviours of " +
+                                                        std::to_string(vectors) + " of the search's " +
+                                                        std::to_string(grid_.size()) +
+                                                        " weight vectors; rerun the shards that lack some");
+    }
+    for (const json& r : records) {
+      out.stats.splits += r.at("splits").get<std::uint64_t>();
+      out.stats.forks += r.at("forks").get<std::uint64_t>();
+      out.wall_s += r.at("wall_s").get<double>();
+      const json& c = r.at("certificate");
+      if (c.is_null()) continue;
+      out.stats.behaviours += c.at("finished_behaviours").get<std::uint64_t>();
+      out.stats.pruned_regions += c.at("pruned_regions").get<std::uint64_t>();
+      out.stats.pruned_vectors += c.at("pruned_vectors").get<std::uint64_t>();
+      if (!c.at("smallest_pruned_bound").is_null()) {
+        const double sign = objective_.direction == Direction::Minimize ? 1.0 : -1.0;
+        out.stats.smallest_pruned_bound =
+            std::min(out.stats.smallest_pruned_bound, sign * c.at("smallest_pruned_bound").get<double>());
+      }
+    }
+    return out;
+  }
+
+  /// The record of one shard's search in its searches.json (the files are written by merge).
+  [[nodiscard]] json shard_record(const Searched& searched, std::uint64_t index, std::uint64_t count) const {
+    json r = record(searched.found.size(), searched, nullptr);
+    r["shard"] = {{"index", index}, {"count", count}};
+    return r;
+  }
+
+  /// The journal of finished behaviours in `dir`, shared by the sweep's searches.
+  [[nodiscard]] static std::string journal_path(const std::string& dir) {
+    return dir + "/search_journal.jsonl";
+  }
 
   /// What a journal line must match to be this search's: its instances (every resolved
   /// parameter), box and objective.
@@ -281,17 +344,24 @@ class SearchWriter {
       for (const auto& [name, cell] : c) row.push_back(cell);
       cells.push_back(std::move(row));
     }
-    return json{
-        {"key", key}, {"boxes", boxes}, {"parts", parts}, {"choices", f.behaviour.choices}, {"cells", cells}}
+    char trace[17];
+    std::snprintf(trace, sizeof(trace), "%016llx", static_cast<unsigned long long>(f.behaviour.trace));
+    return json{{"key", key},
+                {"trace", trace},
+                {"boxes", boxes},
+                {"parts", parts},
+                {"choices", f.behaviour.choices},
+                {"cells", cells}}
         .dump();
   }
 
   /// This search's behaviours in the journal. A line that does not parse (the torn last line of
   /// a killed search) ends the reading; the file is then cut to the lines before it, so that
   /// new lines follow complete ones.
-  [[nodiscard]] std::vector<Found> read_journal(const std::string& key) const {
+  [[nodiscard]] std::vector<Found> read_journal(const std::string& key, const std::string& dir) const {
     std::vector<Found> out;
-    std::ifstream in(journal_path(), std::ios::binary);
+    const std::string path = journal_path(dir);
+    std::ifstream in(path, std::ios::binary);
     if (!in) return out;
     const Columns names =
         instance_cells(RunResult{}, plan_.maps().at(unit_.maps.front()), plan_.search_instance(unit_, 0));
@@ -326,6 +396,9 @@ class SearchWriter {
             f.behaviour.region.parts.push_back(part);
           }
           f.behaviour.choices = j.at("choices").get<std::vector<int>>();
+          const std::string trace = j.at("trace").get<std::string>();
+          if (trace.size() != 16) throw std::runtime_error("bad trace");
+          f.behaviour.trace = std::stoull(trace, nullptr, 16);
           for (const json& row : j.at("cells")) {
             if (row.size() != names.size()) throw std::runtime_error("another build's columns");
             Columns c = names;
@@ -346,14 +419,14 @@ class SearchWriter {
       } catch (const std::exception& e) {
         std::fprintf(stderr,
                      "fsweep: %s:%zu: %s; this line and the rest are dropped (the search redoes them)\n",
-                     journal_path().c_str(), number, e.what());
+                     path.c_str(), number, e.what());
         torn = true;
         break;
       }
       kept += line + '\n';
     }
     in.close();
-    if (torn) write_file_atomically(journal_path(), kept);
+    if (torn) write_file_atomically(path, kept);
     return out;
   }
 
@@ -636,12 +709,13 @@ class SearchWriter {
                  "optimum; the counts depend on the order threads finished behaviours in"}};
   }
 
-  [[nodiscard]] json record(std::size_t instances, const std::vector<Found>& found,
-                            const ExactSearchStats& stats, double wall_s) const {
+  /// The search's searches.json record. `shards`: the records of the shards it was merged from.
+  [[nodiscard]] json record(std::size_t behaviours, const Searched& searched, const json& shards) const {
+    const ExactSearchStats& stats = searched.stats;
     json box = json::object();
     for (std::size_t k = 0; k < search_.weights.size(); ++k) box[search_.weights[k]] = search_.values[k];
     json specs = json::array();
-    for (std::size_t i = 0; i < instances; ++i) specs.push_back(plan_.search_instance_json(unit_, i));
+    for (std::size_t i = 0; i < instance_count(); ++i) specs.push_back(plan_.search_instance_json(unit_, i));
     std::vector<std::string> maps;
     for (const std::size_t m : unit_.maps) maps.push_back(plan_.maps().at(m).label);
     return json{{"search_id", std::stoi(id_)},
@@ -655,13 +729,27 @@ class SearchWriter {
                 {"objective", std::string(objective_.name)},
                 {"box", box},
                 {"vectors", grid_.size()},
-                {"behaviours", found.size()},
-                {"resumed_behaviours", resumed_},
+                {"behaviours", behaviours},
+                {"resumed_behaviours", searched.resumed},
                 {"splits", stats.splits},
                 {"forks", stats.forks},
                 {"certificate", certificate(stats)},
-                {"wall_s", wall_s},
+                {"wall_s", searched.wall_s},
+                {"merged_from_shards", shards},
                 {"instances", specs}};
+  }
+
+  /// The class's instances: its maps times the repetitions (SweepPlan::search_instance()).
+  [[nodiscard]] std::size_t instance_count() const {
+    return unit_.maps.size() * static_cast<std::size_t>(plan_.repetitions());
+  }
+  [[nodiscard]] std::vector<RunSpec> instance_specs() const {
+    std::vector<RunSpec> specs;
+    for (std::size_t i = 0; i < instance_count(); ++i) specs.push_back(plan_.search_instance(unit_, i));
+    return specs;
+  }
+  [[nodiscard]] const SweepMap& instance_map(std::size_t instance) const {
+    return plan_.maps().at(unit_.maps[instance / static_cast<std::size_t>(plan_.repetitions())]);
   }
 
   std::string out_dir_;
@@ -672,28 +760,36 @@ class SearchWriter {
   WeightGrid grid_;
   const Objective& objective_;
   std::uint64_t optimal_vectors_ = 0;
-  std::size_t resumed_ = 0;
 };
 
 }  // namespace
 
-SearchRunReport run_weight_searches(const SweepPlan& plan, const std::string& out_dir, int threads,
-                                    bool progress) {
-  SearchRunReport report;
-  const std::vector<SearchUnit> units = plan.search_units();
-  if (units.empty()) return report;
-  if (threads < 1) throw std::invalid_argument("run_weight_searches: threads must be >= 1");
-  const Objective* objective = find_objective(plan.objective());
+namespace {
+
+/// The searches of `plan` (checked: one set of weight names) and the objective.
+std::vector<SearchUnit> checked_units(const SweepPlan& plan, const Objective*& objective) {
+  std::vector<SearchUnit> units = plan.search_units();
+  objective = find_objective(plan.objective());
   if (objective == nullptr)
     throw ConfigError("output/objective", "unknown objective '" + plan.objective() + "'");
-  const auto start = std::chrono::steady_clock::now();
-  std::uint64_t total = 0;
-  for (const SearchUnit& u : units) total += plan.strategies().at(u.entry).search->vectors();
-  ProgressMeter meter(total, "weight vectors", progress);
-  std::uint64_t done = 0;
-  std::mutex mutex;
-  // Each file: the header of the first search's entry (searches of one sweep with different
-  // weight names are refused by the layout: every search entry's weights head its columns).
+  // Each file has the header of the first search's entry: every search entry's weights head its
+  // columns.
+  for (const SearchUnit& u : units) {
+    const WeightSearch& first = *plan.strategies().at(units.front().entry).search;
+    const WeightSearch& s = *plan.strategies().at(u.entry).search;
+    if (s.weights != first.weights) {
+      throw ConfigError("/strategies/" + std::to_string(u.entry) + "/search",
+                        "every search entry of one sweep must search the same weights (" +
+                            join_names(first.weights) + "); got " + join_names(s.weights));
+    }
+  }
+  return units;
+}
+
+/// Writes the files of the searches `units` of `plan` from their rows (one per unit) into
+/// `out_dir`, searches.json last, and counts them in `report`.
+void write_search_files(const SweepPlan& plan, const std::vector<SearchUnit>& units,
+                        std::vector<SearchRows> rows, const std::string& out_dir, SearchRunReport& report) {
   const WeightSearch& first = *plan.strategies().at(units.front().entry).search;
   std::string behaviours = SearchWriter::behaviours_header(first) + '\n';
   std::string summary = SearchWriter::summary_header() + '\n';
@@ -702,40 +798,24 @@ SearchRunReport run_weight_searches(const SweepPlan& plan, const std::string& ou
   std::string heatmaps = SearchWriter::heatmaps_header() + '\n';
   std::string vectors = SearchWriter::vectors_header(first) + '\n';
   bool any_vectors = false;
-  for (const SearchUnit& u : units) {
-    const WeightSearch& s = *plan.strategies().at(u.entry).search;
-    if (s.weights != first.weights) {
-      throw ConfigError("/strategies/" + std::to_string(u.entry) + "/search",
-                        "every search entry of one sweep must search the same weights (" +
-                            join_names(first.weights) + "); got " + join_names(s.weights));
-    }
-  }
+  bool any_all = false;
   json searches = json::array();
   for (std::size_t id = 0; id < units.size(); ++id) {
     const WeightSearch& s = *plan.strategies().at(units[id].entry).search;
-    SearchWriter writer(plan, units[id], id, *objective, out_dir);
-    SearchRows rows = writer.run(threads, [&](std::uint64_t n) {
-      const std::lock_guard<std::mutex> lock(mutex);
-      done += n;
-      meter.update(done, 0);
-    });
-    behaviours += rows.behaviours;
-    summary += rows.summary;
-    best += rows.best;
-    ranks += rows.ranks;
-    heatmaps += rows.heatmaps;
-    vectors += rows.vectors;
+    behaviours += rows[id].behaviours;
+    summary += rows[id].summary;
+    best += rows[id].best;
+    ranks += rows[id].ranks;
+    heatmaps += rows[id].heatmaps;
+    vectors += rows[id].vectors;
     any_vectors = any_vectors || s.write_vectors;
+    any_all = any_all || s.mode == WeightSearch::Mode::All;
     (s.mode == WeightSearch::Mode::All ? report.behaviours : report.optimal) +=
-        rows.record.at("behaviours").get<std::uint64_t>();
+        rows[id].record.at("behaviours").get<std::uint64_t>();
     report.vectors += s.vectors();
-    searches.push_back(std::move(rows.record));
+    searches.push_back(std::move(rows[id].record));
   }
-  meter.finish(done, 0);
   const std::filesystem::path dir(out_dir);
-  bool any_all = false;
-  for (const SearchUnit& u : units)
-    any_all = any_all || plan.strategies().at(u.entry).search->mode == WeightSearch::Mode::All;
   std::vector<std::pair<std::string, const std::string*>> files{{"behaviours.csv", &behaviours},
                                                                 {"search_best.csv", &best}};
   if (any_all) {
@@ -752,6 +832,100 @@ SearchRunReport run_weight_searches(const SweepPlan& plan, const std::string& ou
   write_file_atomically((dir / "searches.json").string(), json{{"searches", searches}}.dump(2) + '\n');
   report.files.emplace_back("searches.json");
   report.searches = units.size();
+}
+
+}  // namespace
+
+SearchRunReport run_weight_searches(const SweepPlan& plan, const std::string& out_dir, int threads,
+                                    bool progress, std::uint64_t shard_index, std::uint64_t shard_count) {
+  SearchRunReport report;
+  const Objective* objective = nullptr;
+  const std::vector<SearchUnit> units = checked_units(plan, objective);
+  if (units.empty()) return report;
+  if (threads < 1) throw std::invalid_argument("run_weight_searches: threads must be >= 1");
+  if (shard_count == 0 || shard_index >= shard_count) {
+    throw std::invalid_argument("run_weight_searches: shard " + std::to_string(shard_index) + " of " +
+                                std::to_string(shard_count));
+  }
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<WeightRegion> roots;
+  std::uint64_t total = 0;
+  for (const SearchUnit& u : units) {
+    const WeightGrid grid(plan.strategies().at(u.entry).search->values);
+    roots.push_back(shard_count > 1 ? grid.shard(shard_index, shard_count) : grid.everything());
+    total += grid.count(roots.back());
+  }
+  ProgressMeter meter(total, "weight vectors", progress);
+  std::uint64_t done = 0;
+  std::mutex mutex;
+  std::vector<SearchRows> rows;
+  json shard_records = json::array();
+  for (std::size_t id = 0; id < units.size(); ++id) {
+    SearchWriter writer(plan, units[id], id, *objective, out_dir);
+    Searched searched = writer.search(
+        threads,
+        [&](std::uint64_t n) {
+          const std::lock_guard<std::mutex> lock(mutex);
+          done += n;
+          meter.update(done, 0);
+        },
+        roots[id]);
+    if (shard_count > 1) {
+      shard_records.push_back(writer.shard_record(searched, shard_index, shard_count));
+    } else {
+      rows.push_back(writer.rows(std::move(searched)));
+    }
+  }
+  meter.finish(done, 0);
+  if (shard_count > 1) {
+    // A shard's searches are parts: merge_weight_searches() writes the files. Its searches.json
+    // marks it complete.
+    write_file_atomically(out_dir + "/searches.json", json{{"searches", shard_records}}.dump(2) + '\n');
+    report.files.emplace_back("searches.json");
+    report.searches = units.size();
+  } else {
+    write_search_files(plan, units, std::move(rows), out_dir, report);
+  }
+  report.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return report;
+}
+
+SearchRunReport merge_weight_searches(const SweepPlan& plan, const std::string& out_dir,
+                                      const std::vector<std::string>& shard_dirs) {
+  SearchRunReport report;
+  const Objective* objective = nullptr;
+  const std::vector<SearchUnit> units = checked_units(plan, objective);
+  if (units.empty()) return report;
+  const auto start = std::chrono::steady_clock::now();
+  // Each shard's record of each search: its searches.json says the shard's searches finished.
+  std::vector<std::vector<json>> records(units.size());
+  for (const std::string& dir : shard_dirs) {
+    const std::string path = dir + "/searches.json";
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+      throw ConfigError(path,
+                        "missing: the shard's weight searches did not finish; rerun `fsweep run --shard` "
+                        "for it (it resumes from its search_journal.jsonl)");
+    }
+    json shard;
+    try {
+      shard = json::parse(in);
+      const json& list = shard.at("searches");
+      if (list.size() != units.size()) {
+        throw std::runtime_error("has " + std::to_string(list.size()) + " searches, the sweep " +
+                                 std::to_string(units.size()));
+      }
+      for (std::size_t id = 0; id < units.size(); ++id) records[id].push_back(list.at(id));
+    } catch (const std::exception& e) {
+      throw ConfigError(path, std::string("not a shard's searches.json of this sweep: ") + e.what());
+    }
+  }
+  std::vector<SearchRows> rows;
+  for (std::size_t id = 0; id < units.size(); ++id) {
+    SearchWriter writer(plan, units[id], id, *objective, out_dir);
+    rows.push_back(writer.rows(writer.merged(shard_dirs, records[id]), json(records[id])));
+  }
+  write_search_files(plan, units, std::move(rows), out_dir, report);
   report.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return report;
 }

@@ -7,12 +7,13 @@
 /// objective is the mean of the objective over its instances (the class mean); every statistic
 /// weighs a behaviour by its number of weight vectors, so it is the statistic over all vectors.
 ///
-/// Resume (mode "all"): every finished behaviour is appended to `search_journal.jsonl` as one
-/// JSON line (its search's key, region, choices and metric cells per instance), flushed at
-/// once. A rerun reads the lines of its search's key (instances, box and objective), keeps
-/// those behaviours and leaves their vectors out of the search (exact_search's `done`): the
-/// files are the same as an uninterrupted search's. A line that does not parse (torn by a
-/// kill) and every line after it are dropped (stderr says so) and the file is cut there.
+/// Resume: every finished behaviour (mode best: every one that was at most the best known
+/// when it finished) is appended to `search_journal.jsonl` as one JSON line (its search's key,
+/// trace, region, choices and metric cells per instance), flushed at once. A rerun reads the
+/// lines of its search's key (instances, box and objective), keeps those behaviours and leaves
+/// their vectors out of the search (exact_search's `within`; mode best starts with the best of
+/// them as its incumbent): the CSV files are the same as an uninterrupted search's. A line that does not
+/// parse (torn by a kill) and every line after it are dropped (stderr says so) and the file is cut there.
 ///
 /// Files, written after the search through temp files (a killed search leaves none of them
 /// half written):
@@ -66,8 +67,22 @@ struct SearchRunReport {
 /// Runs every search of `plan` (none: returns at once, writing nothing) on `threads` worker
 /// threads (>= 1) and writes the files above into `out_dir`. `progress`: share of weight vectors
 /// resolved, with ETA, on stderr.
+///
+/// Shard `shard_index` of `shard_count` > 1 searches only its part of each box
+/// (WeightGrid::shard(): contiguous runs of blocks, deterministic) and writes only its journal
+/// and a searches.json of its records (with "shard"); merge_weight_searches() joins the shards.
 SearchRunReport run_weight_searches(const SweepPlan& plan, const std::string& out_dir, int threads,
-                                    bool progress);
+                                    bool progress, std::uint64_t shard_index = 0,
+                                    std::uint64_t shard_count = 1);
+
+/// Joins the searches of `plan` run as shards into `shard_dirs` (each with its searches.json,
+/// else ConfigError naming it) and writes the files above into `out_dir`: the behaviours of the
+/// shards with one trace (Behaviour::trace) are one behaviour, so every CSV file is the one an
+/// unsharded search writes. In searches.json the counts of work (splits, forks, wall_s, the
+/// certificate's pruned regions) are the shards' sums and `merged_from_shards` keeps each
+/// shard's record (for mode best, its certificate).
+SearchRunReport merge_weight_searches(const SweepPlan& plan, const std::string& out_dir,
+                                      const std::vector<std::string>& shard_dirs);
 
 }  // namespace sweep
 }  // namespace fsweep

@@ -132,6 +132,45 @@ TEST(WeightGrid, EverythingHoldsEveryPoint) {
   EXPECT_EQ(grid.weights_at(Point{2, 8, 0, 0}), (std::vector<double>{2, 13}));
 }
 
+TEST(WeightGrid, ShardsAreDisjointAndCoverTheGridInAFewBoxes) {
+  // Grids of 1 to 4 weights whose block counts are not multiples of the shard counts, and more
+  // shards than blocks (some empty).
+  const auto values = [](int n) {
+    std::vector<double> v;
+    for (int i = 0; i < n; ++i) v.push_back(i);
+    return v;
+  };
+  for (const std::vector<int>& shape :
+       std::vector<std::vector<int>>{{20}, {17, 30}, {9, 25, 3}, {24, 3, 17, 10}}) {
+    std::vector<std::vector<double>> lists;
+    for (const int n : shape) lists.push_back(values(n));
+    const WeightGrid grid(lists);
+    for (const std::uint64_t count : {1U, 2U, 3U, 7U, 40U}) {
+      const std::string what =
+          std::to_string(shape.size()) + " weights, " + std::to_string(count) + " shards";
+      std::map<Point, std::uint64_t> owner;
+      WeightRegion all;
+      for (std::uint64_t i = 0; i < count; ++i) {
+        const WeightRegion shard = grid.shard(i, count);
+        EXPECT_LE(shard.whole.size(), 4U * 2U * 4U) << what;
+        for (const Point& p : points_of(grid, shard)) {
+          EXPECT_TRUE(owner.emplace(p, i).second) << what << ": a point in two shards";
+        }
+        if (!shard.empty()) expect_consistent(grid, shard, what);
+        all = WeightGrid::united(all, shard);
+      }
+      EXPECT_EQ(owner.size(), grid.size()) << what;
+      EXPECT_EQ(grid.count(all), grid.size()) << what;
+      if (count == 1) {
+        EXPECT_EQ(grid.count(grid.shard(0, 1)), grid.size());
+      }
+    }
+  }
+  const WeightGrid grid({values(3)});
+  EXPECT_THROW((void)grid.shard(2, 2), std::invalid_argument);
+  EXPECT_THROW((void)grid.shard(0, 0), std::invalid_argument);
+}
+
 TEST(WeightGrid, RefusesBadValueLists) {
   const auto refusal = [](std::vector<std::vector<double>> values) {
     try {

@@ -193,6 +193,67 @@ TEST(ExactSearch, AClassIsSearchedJointlyAsTheCommonRefinementOfItsInstances) {
   EXPECT_EQ(total, grid.size());
 }
 
+TEST(ExactSearch, ShardsFindPartsOfTheWholeSearchsBehavioursWithTheirTraces) {
+  // The whole grid's behaviours have distinct traces; a shard's behaviours are their parts in
+  // the shard (same trace, same run), and the parts of one trace join into the whole region.
+  const RunSpec spec = spec_on("office:w=32,h=32,seed=3", 120.0);
+  const WeightGrid grid({integers(0, 3), integers(0, 2), integers(0, 9), integers(0, 2)});
+  const std::vector<Behaviour> whole = behaviours_of(spec, grid, 2);
+  ASSERT_GE(whole.size(), 5U);
+  std::map<std::uint64_t, std::size_t> by_trace;
+  for (std::size_t i = 0; i < whole.size(); ++i) {
+    EXPECT_TRUE(by_trace.emplace(whole[i].trace, i).second) << "two behaviours with one trace";
+  }
+  std::map<std::uint64_t, std::uint64_t> joined;
+  std::size_t parts = 0;
+  for (std::uint64_t i = 0; i < 3; ++i) {
+    const WeightRegion shard = grid.shard(i, 3);
+    (void)exact_search(
+        std::span<const RunSpec>(&spec, 1), grid, 2,
+        [&](Behaviour&& b) {
+          ++parts;
+          const Behaviour& w = whole.at(by_trace.at(b.trace));
+          EXPECT_TRUE(grid.contains(w.region, b.representative));
+          EXPECT_TRUE(without_effort(b.results.at(0)) == without_effort(w.results.at(0)));
+          joined[b.trace] += b.vectors;
+        },
+        nullptr, &shard);
+  }
+  EXPECT_GT(parts, whole.size()) << "no behaviour spans two shards: the join is untested";
+  for (const Behaviour& b : whole) EXPECT_EQ(joined[b.trace], b.vectors);
+}
+
+TEST(ExactSearch, AnIncumbentPrunesEverythingWorseFromTheStart) {
+  // Branch and bound started with the optimum as its incumbent (a resumed search) reports only
+  // optimal behaviours, and the same ones as a search without it.
+  const RunSpec spec = spec_on("office:w=32,h=32,seed=3", 120.0);
+  const WeightGrid grid({integers(0, 3), integers(0, 2), integers(0, 5), integers(0, 2)});
+  BranchAndBound bnb;
+  bnb.objective = [](const std::vector<RunResult>& r) {
+    return r.at(0).metrics.distance_to_final_coverage_m;
+  };
+  bnb.lower_bound = [](std::span<const Simulation> sims) {
+    return sims.front().metrics_so_far().distance_to_final_coverage_m;
+  };
+  const auto search = [&](double incumbent, std::vector<double>& objectives) {
+    bnb.incumbent = incumbent;
+    return exact_search(
+        std::span<const RunSpec>(&spec, 1), grid, 2,
+        [&](Behaviour&& b) { objectives.push_back(b.results.at(0).metrics.distance_to_final_coverage_m); },
+        &bnb);
+  };
+  std::vector<double> first;
+  const ExactSearchStats cold = search(std::numeric_limits<double>::infinity(), first);
+  ASSERT_GE(first.size(), 2U) << "a search that finds the optimum first tests no incumbent";
+  std::vector<double> warm_found;
+  const ExactSearchStats warm = search(cold.best, warm_found);
+  EXPECT_EQ(warm.best, cold.best);
+  ASSERT_FALSE(warm_found.empty());
+  for (const double o : warm_found) EXPECT_EQ(o, cold.best);
+  EXPECT_EQ(warm_found.size(), static_cast<std::size_t>(std::count(first.begin(), first.end(), cold.best)));
+  EXPECT_LT(warm.behaviours, cold.behaviours);
+}
+
 /// The message of the std::invalid_argument that exact_search throws for `spec` over `grid`.
 std::string refusal(const RunSpec& spec, const WeightGrid& grid) {
   try {

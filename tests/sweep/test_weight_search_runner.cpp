@@ -16,6 +16,7 @@
 #include "core/csv_reader.hpp"
 #include "core/statistics.hpp"
 #include "report/runs_schema.hpp"
+#include "sweep/merge.hpp"
 #include "sweep/sweep_plan.hpp"
 #include "sweep/sweep_runner.hpp"
 #include "sweep/sweep_test_files.hpp"
@@ -44,16 +45,17 @@ Table read_table(const std::string& path) {
 }
 
 /// A sweep with a search entry and a brute-force entry ("grid") over the same box.
-json search_and_grid(const json& maps, const json& box, const json& rank, int repetitions = 1) {
+json search_and_grid(const json& maps, const json& box, const json& rank, int repetitions = 1,
+                     const std::string& strategy = "energy_aware") {
   return json{{"schema_version", 1},
               {"name", "search_test"},
               {"maps", maps},
               {"strategies",
-               {{{"name", "energy_aware"},
+               {{{"name", strategy},
                  {"label", "exact"},
                  {"search", {{"method", "exact"}, {"mode", "all"}, {"write_vectors", true}, {"rank", rank}}},
                  {"params", box}},
-                {{"name", "energy_aware"}, {"label", "grid"}, {"params", box}}}},
+                {{"name", strategy}, {"label", "grid"}, {"params", box}}}},
               {"robot", {{"sensor", {{"range_m", 3}}}, {"battery", 120}}},
               {"repetitions", repetitions},
               {"seed", 5}};
@@ -72,24 +74,69 @@ std::string run(const json& sweep, const std::string& name) {
 }
 
 using Vector = std::vector<std::string>;
+const std::vector<std::string> kEnergyAwareWeights{"w1", "w2", "w3", "w4"};
 
-/// The weights of a runs.csv row, as written.
-Vector weights_of(const Table& runs, std::size_t row) {
+/// The weights `names` of a runs.csv row, as written.
+Vector weights_of(const Table& runs, std::size_t row,
+                  const std::vector<std::string>& names = kEnergyAwareWeights) {
   Vector w;
-  for (const char* name : {"strategy.w1", "strategy.w2", "strategy.w3", "strategy.w4"}) {
-    w.push_back(runs.rows[row][runs.col(name)]);
-  }
+  for (const std::string& name : names) w.push_back(runs.rows[row][runs.col("strategy." + name)]);
   return w;
 }
 
-/// vectors.csv: the behaviour of every vector.
-std::map<Vector, std::string> owners(const Table& vectors) {
+/// vectors.csv: the behaviour of every vector of weights `names`.
+std::map<Vector, std::string> owners(const Table& vectors,
+                                     const std::vector<std::string>& names = kEnergyAwareWeights) {
   std::map<Vector, std::string> out;
   for (const auto& r : vectors.rows) {
-    out[{r[vectors.col("w1")], r[vectors.col("w2")], r[vectors.col("w3")], r[vectors.col("w4")]}] =
-        r[vectors.col("behaviour_id")];
+    Vector w;
+    for (const std::string& name : names) w.push_back(r[vectors.col(name)]);
+    out[w] = r[vectors.col("behaviour_id")];
   }
   return out;
+}
+
+/// runs.csv, vectors.csv and behaviours.csv of a sweep with a search and its brute force.
+struct SearchFiles {
+  Table runs;
+  Table vectors;
+  Table behaviours;
+};
+
+SearchFiles read_search_files(const std::string& dir) {
+  return {read_table(dir + "/runs.csv"), read_table(dir + "/vectors.csv"),
+          read_table(dir + "/behaviours.csv")};
+}
+
+/// Every run of runs.csv (the brute-force entry) against the behaviour vectors.csv gives its
+/// weights: the same seed, end reason and every metric but the effort ones; and every
+/// behaviour's vector count is the number of runs that are it.
+void expect_every_vector_is_its_run(const Table& runs, const Table& vectors, const Table& behaviours,
+                                    const std::vector<std::string>& names) {
+  const std::map<Vector, std::string> owner = owners(vectors, names);
+  std::map<std::string, std::size_t> behaviour_row;
+  for (std::size_t i = 0; i < behaviours.rows.size(); ++i) {
+    behaviour_row[behaviours.rows[i][behaviours.col("behaviour_id")]] = i;
+  }
+  const std::size_t first_metric = behaviours.col(kEndReasonColumn);
+  std::map<std::string, int> counted;
+  for (std::size_t r = 0; r < runs.rows.size(); ++r) {
+    const Vector w = weights_of(runs, r, names);
+    const std::string id = owner.at(w);
+    ++counted[id];
+    const auto& b = behaviours.rows[behaviour_row.at(id)];
+    EXPECT_EQ(b[behaviours.col("seed")], runs.rows[r][runs.col("seed")]);
+    std::string at;
+    for (const std::string& v : w) at += (at.empty() ? "(" : ", ") + v;
+    for (std::size_t c = first_metric; c < behaviours.header.size(); ++c) {
+      const std::string& name = behaviours.header[c];
+      if (is_effort_column(name)) continue;
+      EXPECT_EQ(b[c], runs.rows[r][runs.col(name)]) << name << " at " << at << ")";
+    }
+  }
+  for (const auto& b : behaviours.rows) {
+    EXPECT_EQ(std::to_string(counted[b[behaviours.col("behaviour_id")]]), b[behaviours.col("vectors")]);
+  }
 }
 
 double objective_of(const Table& runs, std::size_t row) {
@@ -103,36 +150,13 @@ TEST(WeightSearchRunner, AgreesWithABruteForceSweepOfTheSameBoxForEveryVector) {
                     {"w4", {0, 1, 3}}};
   const std::string dir = run(
       search_and_grid(json::array({"office:w=32,h=32,seed=3"}), box, {{1, 0, 0, 0}, {3, 2, 1, 3}}), "brute");
-  const Table runs = read_table(dir + "/runs.csv");
-  const Table vectors = read_table(dir + "/vectors.csv");
-  const Table behaviours = read_table(dir + "/behaviours.csv");
+  const auto [runs, vectors, behaviours] = read_search_files(dir);
   ASSERT_EQ(runs.rows.size(), 96U);
   ASSERT_EQ(vectors.rows.size(), 96U);
   ASSERT_GE(behaviours.rows.size(), 5U) << "weights that change nothing test nothing";
-  const std::map<Vector, std::string> owner = owners(vectors);
-  std::map<std::string, std::size_t> behaviour_row;
-  for (std::size_t i = 0; i < behaviours.rows.size(); ++i) {
-    behaviour_row[behaviours.rows[i][behaviours.col("behaviour_id")]] = i;
-  }
   // 1. Every vector's behaviour is its run, metric for metric (effort metrics aside).
-  const std::size_t first_metric = behaviours.col(kEndReasonColumn);
-  std::map<std::string, int> counted;
-  for (std::size_t r = 0; r < runs.rows.size(); ++r) {
-    const Vector w = weights_of(runs, r);
-    const std::string id = owner.at(w);
-    ++counted[id];
-    const auto& b = behaviours.rows[behaviour_row.at(id)];
-    EXPECT_EQ(b[behaviours.col("seed")], runs.rows[r][runs.col("seed")]);
-    for (std::size_t c = first_metric; c < behaviours.header.size(); ++c) {
-      const std::string& name = behaviours.header[c];
-      if (is_effort_column(name)) continue;
-      EXPECT_EQ(b[c], runs.rows[r][runs.col(name)])
-          << name << " at (" << w[0] << ", " << w[1] << ", " << w[2] << ", " << w[3] << ")";
-    }
-  }
-  for (const auto& b : behaviours.rows) {
-    EXPECT_EQ(std::to_string(counted[b[behaviours.col("behaviour_id")]]), b[behaviours.col("vectors")]);
-  }
+  expect_every_vector_is_its_run(runs, vectors, behaviours, kEnergyAwareWeights);
+  const std::map<Vector, std::string> owner = owners(vectors);
   // 2. The ranking: rank = 1 + vectors strictly better, by brute force.
   std::vector<double> objectives;
   for (std::size_t r = 0; r < runs.rows.size(); ++r) objectives.push_back(objective_of(runs, r));
@@ -188,15 +212,114 @@ TEST(WeightSearchRunner, AgreesWithABruteForceSweepOfTheSameBoxForEveryVector) {
   EXPECT_EQ(summary.rows[0][summary.col("vectors")], "96");
 }
 
+TEST(WeightSearchRunner, TargetSeekingIsSearchedAsEquationTwelveOverDecimalWeights) {
+  // Arvanitakis' equation 12 is linear in (w1, w2, w3): a box of decimal weights, with a target
+  // (one cell step per decision) and without (pure exploration), against the brute force.
+  const std::vector<std::string> names{"w1", "w2", "w3"};
+  for (const json& target : {json::array({json{60, 60}}), json(nullptr)}) {
+    const json box = {{"target", target},
+                      {"w1", {{"range", {0, 1}}, {"step", 0.25}}},
+                      {"w2", {0, 0.3, 0.9}},
+                      {"w3", {0.1, 0.4, 1}}};
+    json sweep =
+        search_and_grid(json::array({"office:w=64,h=64,seed=4"}), box, json::array(), 1, "target_seeking");
+    sweep["robot"] = {{"sensor", {{"range_m", 4}}}};
+    const std::string dir = run(sweep, target.is_null() ? "ts_explore" : "ts_target");
+    const auto [runs, vectors, behaviours] = read_search_files(dir);
+    ASSERT_EQ(runs.rows.size(), 45U);
+    ASSERT_EQ(vectors.rows.size(), 45U);
+    EXPECT_GE(behaviours.rows.size(), 3U) << "weights that change nothing test nothing";
+    expect_every_vector_is_its_run(runs, vectors, behaviours, names);
+  }
+}
+
+TEST(WeightSearchRunner, ShardsMergeIntoExactlyTheFilesOfOneSearch) {
+  // A map class searched whole and as 3 shards (their parts of one behaviour joined by its
+  // trace), in both modes: every CSV file of the merge is the unsharded one, byte for byte.
+  const json box = {
+      {"w1", {0, 1, 2}}, {"w2", {0, 2}}, {"w3", {{"range", {0, 9}}, {"step", 1}}}, {"w4", {0, 2}}};
+  const json maps = json::array({{{"generator", "office"}, {"w", 32}, {"h", 32}, {"seeds", {3, 4}}}});
+  for (const std::string mode : {"all", "best"}) {
+    json sweep = search_and_grid(maps, box, mode == "all" ? json{{1, 0, 2, 0}} : json::array());
+    sweep["strategies"].erase(1);  // the search alone
+    sweep["strategies"][0]["search"] = {{"mode", mode}, {"write_vectors", mode == "all"}};
+    if (mode == "all") sweep["strategies"][0]["search"]["rank"] = {{1, 0, 2, 0}};
+    const std::string whole = run(sweep, "unsharded_" + mode);
+    const std::string dir = testing::fresh_dir("search", "sharded_" + mode);
+    for (std::uint64_t i = 0; i < 3; ++i) {
+      RunnerOptions o;
+      o.threads = 2;
+      o.out_dir = dir;
+      o.progress = false;
+      o.shard_index = i;
+      o.shard_count = 3;
+      (void)run_sweep(SweepPlan::from_json(sweep, "search.json"), o);
+      EXPECT_FALSE(std::filesystem::exists(dir + "/shard-" + std::to_string(i) + "-of-3/behaviours.csv"))
+          << "a shard writes its parts only";
+    }
+    const MergeReport merged = merge_shards(dir);
+    ASSERT_TRUE(merged.written);
+    EXPECT_EQ(merged.searches, 1U);
+    std::vector<std::string> files{"behaviours.csv", "search_best.csv"};
+    if (mode == "all") {
+      for (const char* f : {"search_summary.csv", "search_ranks.csv", "search_heatmaps.csv", "vectors.csv"})
+        files.emplace_back(f);
+    }
+    for (const auto& f : files) {
+      EXPECT_EQ(testing::read_file(dir + "/" + f), testing::read_file(whole + "/" + f)) << mode << ": " << f;
+    }
+    const json one = json::parse(testing::read_file(whole + "/searches.json"))["searches"][0];
+    const json joined = json::parse(testing::read_file(dir + "/searches.json"))["searches"][0];
+    EXPECT_EQ(joined["behaviours"], one["behaviours"]) << mode;
+    ASSERT_EQ(joined["merged_from_shards"].size(), 3U);
+    if (mode == "best") {
+      EXPECT_EQ(joined["certificate"]["optimum"], one["certificate"]["optimum"]);
+      EXPECT_EQ(joined["certificate"]["optimal_vectors"], one["certificate"]["optimal_vectors"]);
+      for (const json& shard : joined["merged_from_shards"]) EXPECT_TRUE(shard["certificate"].is_object());
+    } else {
+      // Some behaviour spans shards, or the test would not test the join.
+      std::size_t parts = 0;
+      for (const json& shard : joined["merged_from_shards"]) parts += shard["behaviours"].get<std::size_t>();
+      EXPECT_GT(parts, joined["behaviours"].get<std::size_t>());
+    }
+  }
+}
+
+TEST(WeightSearchRunner, AKilledBestSearchResumesWithItsJournalAsIncumbent) {
+  // Mode best journals the behaviours it finishes; a rerun after the files are lost keeps them,
+  // starts from the best of them and writes the same optimal behaviours.
+  const json box = {
+      {"w1", {0, 1, 2, 3}}, {"w2", {0, 2}}, {"w3", {{"range", {0, 5}}, {"step", 1}}}, {"w4", {0, 1}}};
+  json sweep = search_and_grid(json::array({"office:w=32,h=32,seed=3"}), box, json::array());
+  sweep["strategies"].erase(1);
+  sweep["strategies"][0]["search"] = {{"mode", "best"}};
+  const std::string dir = run(sweep, "best_resume");
+  const std::string behaviours = testing::read_file(dir + "/behaviours.csv");
+  const std::string best = testing::read_file(dir + "/search_best.csv");
+  const std::string journal = testing::read_file(dir + "/search_journal.jsonl");
+  ASSERT_GE(std::count(journal.begin(), journal.end(), '\n'), 2);
+  // Keep the first journaled behaviour only, as a kill soon after it would.
+  testing::write_file(dir + "/search_journal.jsonl", journal.substr(0, journal.find('\n') + 1));
+  for (const char* f : {"behaviours.csv", "search_best.csv", "searches.json"})
+    std::filesystem::remove(dir + "/" + f);
+  RunnerOptions o;
+  o.threads = 2;
+  o.out_dir = dir;
+  o.progress = false;
+  (void)run_sweep(SweepPlan::from_json(sweep, "search.json"), o);
+  EXPECT_EQ(testing::read_file(dir + "/behaviours.csv"), behaviours);
+  EXPECT_EQ(testing::read_file(dir + "/search_best.csv"), best);
+  const json resumed = json::parse(testing::read_file(dir + "/searches.json"))["searches"][0];
+  EXPECT_EQ(resumed["resumed_behaviours"], 1);
+}
+
 TEST(WeightSearchRunner, AMapClassIsSearchedJointlyByItsMean) {
   // Two generated maps of one class: each behaviour has a row per map, its objective is the mean
   // of the two maps' runs, and the ranking is the brute-force ranking of the class means.
   const json box = {{"w1", {0, 1, 2}}, {"w2", {0, 2}}, {"w3", {0, 1, 2}}, {"w4", {0, 2}}};
   const json maps = json::array({{{"generator", "office"}, {"w", 32}, {"h", 32}, {"seeds", {3, 4}}}});
   const std::string dir = run(search_and_grid(maps, box, json::array()), "class");
-  const Table runs = read_table(dir + "/runs.csv");
-  const Table vectors = read_table(dir + "/vectors.csv");
-  const Table behaviours = read_table(dir + "/behaviours.csv");
+  const auto [runs, vectors, behaviours] = read_search_files(dir);
   ASSERT_EQ(runs.rows.size(), 72U);
   const std::map<Vector, std::string> owner = owners(vectors);
   std::map<Vector, double> mean;
@@ -331,7 +454,7 @@ TEST(WeightSearchRunner, BadSearchEntriesAreRefusedWithTheirPath) {
   EXPECT_NE(with("/strategies/0/search/method", "random").find("/strategies/0/search/method"),
             std::string::npos);
   EXPECT_NE(with("/strategies/0/search/speed", 1).find("/strategies/0/search"), std::string::npos);
-  EXPECT_NE(with("/strategies/0/params/w1", json::array({0, 1.5})).find("integer weights"),
+  EXPECT_NE(with("/strategies/0/params/w1", json::array({0, "x"})).find("/strategies/0/params/w1"),
             std::string::npos);
   EXPECT_NE(with("/strategies/0/params/w2", json::array({0, 251})).find("/strategies/0/params/w2"),
             std::string::npos);
