@@ -328,7 +328,6 @@ std::vector<WeightGrid::Share> WeightGrid::split(const WeightRegion& region,
   std::vector<double> hi_cost(static_cast<std::size_t>(n));
   std::vector<double> w_lo(k);
   std::vector<double> w_hi(k);
-  std::vector<double> w(k);
   std::vector<BlockBits> shares(static_cast<std::size_t>(n));
   std::vector<std::uint8_t> touched(static_cast<std::size_t>(n));
 
@@ -375,20 +374,59 @@ std::vector<WeightGrid::Share> WeightGrid::split(const WeightRegion& region,
   // box), point by point by argmin_linear's own rule over the candidates `among`. (Deciding its
   // cubes of 4^4 and 2^4 points by corner tests first took twice as long on the free-space
   // search: with many candidates a corner test costs more than the points it saves.)
+  // The costs are argmin_linear_among()'s own: linear_cost() adds w_j * F_j to 0.0 in feature
+  // order, so its partial sums over the first weights are computed once per value of them
+  // (partial[j]: the sum of the first j terms, per candidate of `among`) and the last term is
+  // added per point: the same operations on the same doubles, in the same order.
+  std::array<std::vector<double>, kWeights + 1> partial;
+  std::vector<double> among_features;
   const auto decide_points = [&](std::uint32_t block, const BlockBits* member, const WeightRegion::Box* box,
                                  const std::vector<int>& among) {
     const BlockSpan span = span_of(block);
-    for (const int i : among) {
-      shares[static_cast<std::size_t>(i)] = BlockBits{};
-      touched[static_cast<std::size_t>(i)] = 0;
+    const std::size_t m = among.size();
+    among_features.resize(m * kWeights);
+    for (std::size_t c = 0; c < m; ++c) {
+      shares[static_cast<std::size_t>(among[c])] = BlockBits{};
+      touched[static_cast<std::size_t>(among[c])] = 0;
+      for (std::size_t j = 0; j < k; ++j) {
+        among_features[j * m + c] = features[static_cast<std::size_t>(among[c]) * k + j];
+      }
     }
-    for_each_in_block(span, [&](int bit, const std::array<int, kMaxWeights>& at) {
-      if (member != nullptr && !has_point(*member, bit)) return;
-      for (std::size_t j = 0; j < k; ++j) w[j] = values_[j][static_cast<std::size_t>(at[j])];
-      const int best = argmin_linear_among(candidates, w, among);
-      set_bit(shares[static_cast<std::size_t>(best)], bit);
-      touched[static_cast<std::size_t>(best)] = 1;
-    });
+    for (auto& p : partial) p.assign(m, 0.0);
+    // partial[j + 1] = partial[j] + w * F_j, for each candidate (feature j unused: unchanged).
+    const auto add_term = [&](std::size_t j, int index) {
+      if (j >= k) {
+        partial[j + 1] = partial[j];
+        return;
+      }
+      const double wj = values_[j][static_cast<std::size_t>(index)];
+      const double* f = &among_features[j * m];
+      for (std::size_t c = 0; c < m; ++c) partial[j + 1][c] = partial[j][c] + wj * f[c];
+    };
+    std::array<int, kMaxWeights> local{};
+    for (local[0] = 0; local[0] < span.extent[0]; ++local[0]) {
+      add_term(0, span.first[0] + local[0]);
+      for (local[1] = 0; local[1] < span.extent[1]; ++local[1]) {
+        add_term(1, span.first[1] + local[1]);
+        for (local[2] = 0; local[2] < span.extent[2]; ++local[2]) {
+          add_term(2, span.first[2] + local[2]);
+          for (local[3] = 0; local[3] < span.extent[3]; ++local[3]) {
+            const int bit = bit_of(local);
+            if (member != nullptr && !has_point(*member, bit)) continue;
+            add_term(3, span.first[3] + local[3]);
+            // argmin_linear_among()'s rule: strict '<', so a tie keeps the earlier candidate.
+            const std::vector<double>& cost = partial[kWeights];
+            std::size_t best = 0;
+            for (std::size_t c = 1; c < m; ++c) {
+              if (cost[c] < cost[best]) best = c;
+            }
+            const auto winner = static_cast<std::size_t>(among[best]);
+            set_bit(shares[winner], bit);
+            touched[winner] = 1;
+          }
+        }
+      }
+    }
     const BlockBits full = member == nullptr ? all_bits(span) : *member;
     for (const int i : among) {
       if (touched[static_cast<std::size_t>(i)] == 0) continue;
