@@ -257,6 +257,19 @@ TEST(WeightSearchRunner, ShardsMergeIntoExactlyTheFilesOfOneSearch) {
       EXPECT_FALSE(std::filesystem::exists(dir + "/shard-" + std::to_string(i) + "-of-3/behaviours.csv"))
           << "a shard writes its parts only";
     }
+    // A shard whose search did not finish (no searches.json) stops the merge, naming it, before
+    // anything is written.
+    const std::string unfinished = dir + "/shard-1-of-3/searches.json";
+    std::filesystem::rename(unfinished, unfinished + ".away");
+    try {
+      (void)merge_shards(dir);
+      ADD_FAILURE() << "merged a shard whose search did not finish";
+    } catch (const ConfigError& e) {
+      EXPECT_NE(std::string(e.what()).find(unfinished), std::string::npos) << e.what();
+    }
+    EXPECT_FALSE(std::filesystem::exists(dir + "/behaviours.csv"));
+    EXPECT_FALSE(std::filesystem::exists(dir + "/runs.csv"));
+    std::filesystem::rename(unfinished + ".away", unfinished);
     const MergeReport merged = merge_shards(dir);
     ASSERT_TRUE(merged.written);
     EXPECT_EQ(merged.searches, 1U);
