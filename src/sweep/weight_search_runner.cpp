@@ -159,7 +159,7 @@ class SearchWriter {
     Searched out;
     std::vector<Found>& found = out.found;
     const std::string key = unit_key(specs.size());
-    found = read_journal(key, out_dir_);
+    found = read_journal(key, out_dir_, true);
     PointsByBlock done;
     const double sign = objective_.direction == Direction::Minimize ? 1.0 : -1.0;
     double incumbent = std::numeric_limits<double>::infinity();
@@ -250,7 +250,7 @@ class SearchWriter {
     const std::string key = unit_key(instance_count());
     std::map<std::uint64_t, std::size_t> by_trace;
     for (const std::string& dir : dirs) {
-      for (Found& f : read_journal(key, dir)) {
+      for (Found& f : read_journal(key, dir, false)) {
         const auto [at, is_new] = by_trace.emplace(f.behaviour.trace, out.found.size());
         if (is_new) {
           out.found.push_back(std::move(f));
@@ -355,10 +355,13 @@ class SearchWriter {
         .dump();
   }
 
-  /// This search's behaviours in the journal. A line that does not parse (the torn last line of
-  /// a killed search) ends the reading; the file is then cut to the lines before it, so that
-  /// new lines follow complete ones.
-  [[nodiscard]] std::vector<Found> read_journal(const std::string& key, const std::string& dir) const {
+  /// This search's behaviours in the journal of `dir`. A line that does not parse (the torn last
+  /// line of a killed search) ends the reading. `repair` (a search about to append): the file is
+  /// cut to the lines before it, so that new lines follow complete ones. Otherwise (a merge reads
+  /// a finished shard, whose journal must be whole) it is a ConfigError naming the line, and the
+  /// file is left as it is.
+  [[nodiscard]] std::vector<Found> read_journal(const std::string& key, const std::string& dir,
+                                                bool repair) const {
     std::vector<Found> out;
     const std::string path = journal_path(dir);
     std::ifstream in(path, std::ios::binary);
@@ -417,6 +420,13 @@ class SearchWriter {
           out.push_back(std::move(f));
         }
       } catch (const std::exception& e) {
+        if (!repair) {
+          throw ConfigError(path + ":" + std::to_string(number),
+                            std::string(e.what()) +
+                                "; the shard's journal is damaged: delete its searches.json and rerun its "
+                                "`fsweep run --shard i/N`, which keeps the lines before this one and redoes "
+                                "the rest");
+        }
         std::fprintf(stderr,
                      "fsweep: %s:%zu: %s; this line and the rest are dropped (the search redoes them)\n",
                      path.c_str(), number, e.what());

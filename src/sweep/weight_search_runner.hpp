@@ -75,8 +75,9 @@ SearchRunReport run_weight_searches(const SweepPlan& plan, const std::string& ou
                                     bool progress, std::uint64_t shard_index = 0,
                                     std::uint64_t shard_count = 1);
 
-/// Joins the searches of `plan` run as shards into `shard_dirs` (each with its searches.json,
-/// else ConfigError naming it) and writes the files above into `out_dir`: the behaviours of the
+/// Joins the searches of `plan` run as shards into `shard_dirs` (each with its searches.json and
+/// a journal without a damaged line, else ConfigError naming the file or line; the shards' files
+/// are only read) and writes the files above into `out_dir`: the behaviours of the
 /// shards with one trace (Behaviour::trace) are one behaviour, so every CSV file is the one an
 /// unsharded search writes. In searches.json the counts of work (splits, forks, wall_s, the
 /// certificate's pruned regions) are the shards' sums and `merged_from_shards` keeps each

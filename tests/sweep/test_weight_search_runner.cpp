@@ -270,6 +270,19 @@ TEST(WeightSearchRunner, ShardsMergeIntoExactlyTheFilesOfOneSearch) {
     EXPECT_FALSE(std::filesystem::exists(dir + "/behaviours.csv"));
     EXPECT_FALSE(std::filesystem::exists(dir + "/runs.csv"));
     std::filesystem::rename(unfinished + ".away", unfinished);
+    // A damaged line in a finished shard's journal stops it too, naming the line, and the merge
+    // leaves the journal as it was.
+    const std::string journal = dir + "/shard-0-of-3/search_journal.jsonl";
+    const std::string whole_journal = testing::read_file(journal);
+    testing::write_file(journal, "{not json\n" + whole_journal);
+    try {
+      (void)merge_shards(dir);
+      ADD_FAILURE() << "merged a damaged journal";
+    } catch (const ConfigError& e) {
+      EXPECT_NE(std::string(e.what()).find(journal + ":1"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(testing::read_file(journal), "{not json\n" + whole_journal);
+    testing::write_file(journal, whole_journal);
     const MergeReport merged = merge_shards(dir);
     ASSERT_TRUE(merged.written);
     EXPECT_EQ(merged.searches, 1U);
