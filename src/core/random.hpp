@@ -4,7 +4,9 @@
 /// run seed and a stream name, so adding a stream never shifts another one.
 
 #include <cstdint>
+#include <cstdio>
 #include <random>
+#include <string>
 #include <string_view>
 
 namespace fsweep {
@@ -29,6 +31,13 @@ constexpr std::uint64_t fnv1a(std::string_view s) {
     h *= 0x100000001B3ULL;
   }
   return h;
+}
+
+/// `v` as 16 lower-case hex digits (run keys, sweep hashes, journal fields).
+inline std::string hex64(std::uint64_t v) {
+  char buf[17];
+  std::snprintf(buf, sizeof(buf), "%016llx", static_cast<unsigned long long>(v));
+  return buf;
 }
 
 /// Seed of the stream `name` of a run with seed `seed`.

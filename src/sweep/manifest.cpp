@@ -4,7 +4,6 @@
 #include <unistd.h>
 
 #include <array>
-#include <cstdio>
 #include <ctime>
 #include <fstream>
 
@@ -60,11 +59,7 @@ nlohmann::json libraries() {
 
 }  // namespace
 
-std::string sweep_hash(const nlohmann::json& sweep) {
-  char buf[17];
-  std::snprintf(buf, sizeof(buf), "%016llx", static_cast<unsigned long long>(fnv1a(sweep.dump())));
-  return buf;
-}
+std::string sweep_hash(const nlohmann::json& sweep) { return hex64(fnv1a(sweep.dump())); }
 
 std::string utc_now_iso8601() {
   const std::time_t t = std::time(nullptr);

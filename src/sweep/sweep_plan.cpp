@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -364,11 +363,7 @@ json SweepPlan::key_json_of(const RunCoordinates& c, const RunSpec& spec) const 
 
 namespace {
 
-std::string key_of(const json& key_json) {
-  char buf[17];
-  std::snprintf(buf, sizeof(buf), "%016llx", static_cast<unsigned long long>(fnv1a(key_json.dump())));
-  return buf;
-}
+std::string key_of(const json& key_json) { return hex64(fnv1a(key_json.dump())); }
 
 }  // namespace
 

@@ -20,6 +20,7 @@
 #include "core/csv_format.hpp"
 #include "core/csv_reader.hpp"
 #include "core/files.hpp"
+#include "core/random.hpp"
 #include "core/statistics.hpp"
 #include "report/runs_schema.hpp"
 #include "sim/heuristics.hpp"
@@ -161,7 +162,7 @@ class SearchWriter {
     const std::string key = unit_key(specs.size());
     found = read_journal(key, out_dir_, true);
     PointsByBlock done;
-    const double sign = objective_.direction == Direction::Minimize ? 1.0 : -1.0;
+    const double sign = direction_sign();
     double incumbent = std::numeric_limits<double>::infinity();
     for (const Found& f : found) {
       grid_.add_points(done, f.behaviour.region);
@@ -211,7 +212,7 @@ class SearchWriter {
     std::vector<Found>& found = searched.found;
     const std::size_t n = instance_count();
     if (search_.mode == WeightSearch::Mode::Best) {
-      const double sign = objective_.direction == Direction::Minimize ? 1.0 : -1.0;
+      const double sign = direction_sign();
       double optimum = std::numeric_limits<double>::infinity();
       for (const Found& f : found) {
         if (!std::isnan(f.objective)) optimum = std::min(optimum, sign * f.objective);
@@ -281,9 +282,8 @@ class SearchWriter {
       out.stats.pruned_regions += c.at("pruned_regions").get<std::uint64_t>();
       out.stats.pruned_vectors += c.at("pruned_vectors").get<std::uint64_t>();
       if (!c.at("smallest_pruned_bound").is_null()) {
-        const double sign = objective_.direction == Direction::Minimize ? 1.0 : -1.0;
-        out.stats.smallest_pruned_bound =
-            std::min(out.stats.smallest_pruned_bound, sign * c.at("smallest_pruned_bound").get<double>());
+        out.stats.smallest_pruned_bound = std::min(
+            out.stats.smallest_pruned_bound, direction_sign() * c.at("smallest_pruned_bound").get<double>());
       }
     }
     return out;
@@ -331,11 +331,7 @@ class SearchWriter {
     json parts = json::array();
     for (const WeightRegion::Part& p : f.behaviour.region.parts) {
       std::string hex;
-      for (const std::uint64_t word : p.bits) {
-        char w[17];
-        std::snprintf(w, sizeof(w), "%016llx", static_cast<unsigned long long>(word));
-        hex += w;
-      }
+      for (const std::uint64_t word : p.bits) hex += hex64(word);
       parts.push_back({p.block, hex});
     }
     json cells = json::array();
@@ -344,14 +340,8 @@ class SearchWriter {
       for (const auto& [name, cell] : c) row.push_back(cell);
       cells.push_back(std::move(row));
     }
-    char trace[17];
-    std::snprintf(trace, sizeof(trace), "%016llx", static_cast<unsigned long long>(f.behaviour.trace));
-    return json{{"key", key},
-                {"trace", trace},
-                {"boxes", boxes},
-                {"parts", parts},
-                {"choices", f.behaviour.choices},
-                {"cells", cells}}
+    return json{{"key", key},     {"trace", hex64(f.behaviour.trace)}, {"boxes", boxes},
+                {"parts", parts}, {"choices", f.behaviour.choices},    {"cells", cells}}
         .dump();
   }
 
@@ -705,7 +695,7 @@ class SearchWriter {
   /// Mode best: what was pruned (null in mode all).
   [[nodiscard]] json certificate(const ExactSearchStats& stats) const {
     if (search_.mode == WeightSearch::Mode::All) return nullptr;
-    const double sign = objective_.direction == Direction::Minimize ? 1.0 : -1.0;
+    const double sign = direction_sign();
     return json{{"optimum", std::isfinite(stats.best) ? json(sign * stats.best) : json(nullptr)},
                 {"optimal_vectors", optimal_vectors_},
                 {"finished_behaviours", stats.behaviours},
@@ -749,6 +739,12 @@ class SearchWriter {
                 {"instances", specs}};
   }
 
+  /// Branch and bound minimises direction_sign() x the objective: 1 for a minimised objective, -1 for a
+  /// maximised one.
+  [[nodiscard]] double direction_sign() const {
+    return objective_.direction == Direction::Minimize ? 1.0 : -1.0;
+  }
+
   /// The class's instances: its maps times the repetitions (SweepPlan::search_instance()).
   [[nodiscard]] std::size_t instance_count() const {
     return unit_.maps.size() * static_cast<std::size_t>(plan_.repetitions());
@@ -771,10 +767,6 @@ class SearchWriter {
   const Objective& objective_;
   std::uint64_t optimal_vectors_ = 0;
 };
-
-}  // namespace
-
-namespace {
 
 /// The searches of `plan` (checked: one set of weight names) and the objective.
 std::vector<SearchUnit> checked_units(const SweepPlan& plan, const Objective*& objective) {
