@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "cli/sweep_warnings.hpp"
 #include "core/config_error.hpp"
 #include "core/csv_format.hpp"
 #include "sweep/sweep_plan.hpp"
@@ -151,6 +152,7 @@ void print_runs(const SweepPlan& plan, std::uint64_t from, std::uint64_t limit) 
 
 int run_expand(const ExpandOptions& o) {
   const SweepPlan plan = SweepPlan::from_file(o.sweep);
+  print_sweep_warnings(plan, o.sweep);
   if (o.from > 0 && o.from >= plan.run_count()) {
     throw ConfigError("--from", "index " + std::to_string(o.from) + " out of range; allowed: 0 .. " +
                                     std::to_string(plan.run_count() - 1));

@@ -11,6 +11,7 @@
 #include <tuple>
 
 #include "cli/commands.hpp"
+#include "cli/sweep_warnings.hpp"
 #include "core/config_error.hpp"
 #include "sweep/sweep_plan.hpp"
 #include "sweep/sweep_runner.hpp"
@@ -52,6 +53,7 @@ std::pair<std::uint64_t, std::uint64_t> parse_shard(const std::string& s) {
 
 int run_command(const RunCommandOptions& o) {
   const SweepPlan plan = SweepPlan::from_file(o.sweep_file);
+  print_sweep_warnings(plan, o.sweep_file);
   RunnerOptions options;
   options.threads = o.threads;
   options.fresh = o.fresh;

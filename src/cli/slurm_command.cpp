@@ -23,6 +23,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/output_dir.hpp"
+#include "cli/sweep_warnings.hpp"
 #include "core/config_error.hpp"
 #include "sweep/slurm_script.hpp"
 #include "sweep/sweep_plan.hpp"
@@ -120,6 +121,7 @@ int run_slurm(const SlurmCommandOptions& o) {
 
   // 1. The sweep: loaded and expanded here, so that its errors show now and not on the cluster.
   const SweepPlan plan = SweepPlan::from_file(o.sweep_file);
+  print_sweep_warnings(plan, o.sweep_file);
   const std::uint64_t runs = plan.run_count();
 
   SlurmScriptOptions s;

@@ -10,6 +10,7 @@
 #include "core/random.hpp"
 #include "sweep/csv_journal.hpp"
 #include "sweep/sweep_plan.hpp"
+#include "sweep/sweep_table.hpp"
 
 #ifndef FSWEEP_GIT_REVISION
 #define FSWEEP_GIT_REVISION "unknown"
@@ -80,6 +81,7 @@ nlohmann::json manifest_json(const SweepPlan& plan, const ManifestInfo& info) {
   j["objective"] = plan.objective();
   j["seed"] = plan.seed();
   j["repetitions"] = plan.repetitions();
+  j["warnings"] = clipped_free_space_warnings(plan);
   j["runs"] = {{"total", info.runs.total},
                {"done", info.runs.done},
                {"skipped", info.runs.skipped},

@@ -12,7 +12,10 @@
 ///   The last two columns are empty where no optimum is known: they hold the star-pattern
 ///   optimum d* = pi r^2 / (2 r_s) (competitive.hpp) and distance_m / d* for runs on a `free`
 ///   map with a finite battery, r = battery capacity / energy per metre of straight travel
-///   (per_metre + per_cell / resolution), r_s = sensor range_m.
+///   (per_metre + per_cell / resolution), r_s = sensor range_m, when the map holds the disc of
+///   radius r/2 + r_s around the dock and one cell more (sweep_table.hpp's star_optimum()). In a
+///   sweep with a `free` map the last config column, `optimum_check`, says why per run: empty
+///   (no free-space competitive setting), `ok`, or `clipped: half-width H < N cells`.
 ///   A run that fails (planner error, step cap, a plugin throwing ConfigError) is a row with its
 ///   end_reason and end_detail; an exception leaves the metric cells empty. It never stops the
 ///   sweep.

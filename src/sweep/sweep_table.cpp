@@ -13,27 +13,85 @@
 namespace fsweep {
 inline namespace sweep {
 
-// The free generator's interior is a rectangle, so its four extreme cells decide whether the
-// disc of radius r/2 lies inside it.
-double optimal_distance_m(const SweepMap& map, const RunSpec& spec) {
-  if (!map.free_space || !std::isfinite(spec.robot.battery_capacity)) return std::nan("");
-  const EnergyModel& e = spec.robot.energy;
-  const double per_metre = e.per_metre + e.per_cell / spec.map->resolution_m;
-  if (!(per_metre > 0.0) || !(spec.robot.sensor.range_m > 0.0)) return std::nan("");
-  // The star pattern is optimal only when travel is all that costs energy, and only while the
-  // disc of radius r/2 the robot can reach lies inside the free map.
+std::string StarOptimum::check_text() const {
+  switch (status) {
+    case Status::NotApplicable:
+      return "";
+    case Status::Ok:
+      return "ok";
+    case Status::Clipped:
+      return "clipped: half-width " + std::to_string(half_width_cells) + " < " +
+             std::to_string(needed_cells) + " cells";
+  }
+  return "";
+}
+
+StarOptimum star_optimum(const SweepMap& map, const RobotParams& robot) {
+  StarOptimum out;
+  if (!map.free_space || !std::isfinite(robot.battery_capacity)) return out;
+  const EnergyModel& e = robot.energy;
+  const double resolution_m = map.map->resolution_m;
+  const double per_metre = e.per_metre + e.per_cell / resolution_m;
+  const double sensor_m = robot.sensor.range_m;
+  if (!(per_metre > 0.0) || !(sensor_m > 0.0)) return out;
+  // The star pattern is optimal only when travel is all that costs energy.
   if (e.per_stop != 0.0 ||
       std::any_of(e.per_turn.begin(), e.per_turn.end(), [](double t) { return t != 0.0; })) {
-    return std::nan("");
+    return out;
   }
-  const double range_m = spec.robot.battery_capacity / per_metre;
-  const Cell dock = spec.robot.dock.value_or(spec.map->start);
-  const int reach = static_cast<int>(std::ceil(range_m / 2.0 / spec.map->resolution_m));
-  for (const Cell c : {Cell{dock.x - reach, dock.y}, Cell{dock.x + reach, dock.y},
-                       Cell{dock.x, dock.y - reach}, Cell{dock.x, dock.y + reach}}) {
-    if (!spec.map->is_free(c)) return std::nan("");
+  const double range_m = robot.battery_capacity / per_metre;
+  // The robot reaches the disc of radius r/2 around the dock and sees r_s beyond it; one more
+  // cell keeps the border off the sensor band. The tolerance keeps an exact multiple of the
+  // resolution (930 m / 10 m) from rounding up.
+  constexpr double kTolerance = 1e-9;
+  out.needed_cells = static_cast<int>(std::ceil((range_m / 2.0 + sensor_m) / resolution_m - kTolerance)) + 1;
+  // The free generator's interior is a rectangle, so the four axis directions from the dock
+  // decide whether the disc lies inside it.
+  const WorldMap& world = *map.map;
+  const Cell dock = robot.dock.value_or(world.start);
+  out.half_width_cells = std::numeric_limits<int>::max();
+  for (const Cell step : {Cell{1, 0}, Cell{-1, 0}, Cell{0, 1}, Cell{0, -1}}) {
+    int k = 0;
+    while (k < out.needed_cells && world.is_free(Cell{dock.x + (k + 1) * step.x, dock.y + (k + 1) * step.y}))
+      ++k;
+    out.half_width_cells = std::min(out.half_width_cells, k);
   }
-  return star_pattern_optimum_m(range_m, spec.robot.sensor.range_m);
+  if (out.half_width_cells < out.needed_cells) {
+    out.status = StarOptimum::Status::Clipped;
+    return out;
+  }
+  out.status = StarOptimum::Status::Ok;
+  out.optimum_m = star_pattern_optimum_m(range_m, sensor_m);
+  return out;
+}
+
+double optimal_distance_m(const SweepMap& map, const RunSpec& spec) {
+  return star_optimum(map, spec.robot).optimum_m;
+}
+
+std::vector<std::string> clipped_free_space_warnings(const SweepPlan& plan) {
+  std::vector<std::string> out;
+  for (const SweepMap& map : plan.maps()) {
+    if (!map.free_space) continue;
+    for (const RobotVariant& robot : plan.robots()) {
+      const StarOptimum check = star_optimum(map, robot.params);
+      if (check.status != StarOptimum::Status::Clipped) continue;
+      const WorldMap& world = *map.map;
+      const Cell dock = robot.params.dock.value_or(world.start);
+      out.push_back(
+          "map '" + map.label + "' (" + std::to_string(world.width()) + "x" + std::to_string(world.height()) +
+          " cells of " + format_number(world.resolution_m) + " m, dock " + std::to_string(dock.x) + ";" +
+          std::to_string(dock.y) + ")" +
+          (plan.robots().size() > 1 ? ", robot " + robot.label : std::string()) +
+          ": clips the free-space optimum: the disc the robot can reach (radius r/2) and its sensor "
+          "band need a half-width of " +
+          std::to_string(check.needed_cells) + " cells (r/2 + r_s + 1 cell), the map has " +
+          std::to_string(check.half_width_cells) +
+          "; optimal_distance_m and competitive_ratio stay empty (optimum_check in runs.csv, "
+          "summary.csv and best.csv)");
+    }
+  }
+  return out;
 }
 
 std::uint64_t representative_run(const SweepPlan& plan, std::size_t strategy_entry, std::size_t planner,
@@ -79,7 +137,12 @@ SweepTable::SweepTable(const SweepPlan& plan) {
       }
     }
   }
-  // 2. The whole row (runs_schema.hpp's order).
+  // 2. With a free-space map, whether each run's star-pattern optimum applies (last config
+  //    column: it depends on the map and the robot, not on the strategy).
+  if (std::any_of(plan.maps().begin(), plan.maps().end(), [](const SweepMap& m) { return m.free_space; })) {
+    config.emplace_back(kOptimumCheckColumn);
+  }
+  // 3. The whole row (runs_schema.hpp's order).
   for (const auto& name : sweep_runs_columns(config)) {
     if (position_.emplace(name, columns_.size()).second) columns_.push_back(name);
   }
@@ -123,12 +186,13 @@ RunRows SweepTable::run(const SweepPlan& plan, const SweepRun& run) const {
     set(kStrategyLabelColumn,
         plan.strategies().at(at.strategy_entry).label + (heuristics.empty() ? "" : "+" + heuristics));
     for (auto& [name, value] : config_columns(spec)) set(name, std::move(value));
+    const StarOptimum star = star_optimum(plan.maps().at(at.map), spec.robot);
+    if (star.status != StarOptimum::Status::NotApplicable) set(kOptimumCheckColumn, star.check_text());
     const RunResult result = simulate(spec);
     for (auto& [name, value] : metric_columns(result)) set(name, std::move(value));
-    const double optimum = optimal_distance_m(plan.maps().at(at.map), spec);
-    if (!std::isnan(optimum)) {
-      set(kSweepMetricColumns[0], format_number(optimum));
-      set(kSweepMetricColumns[1], format_number(result.metrics.distance_m / optimum));
+    if (star.status == StarOptimum::Status::Ok) {
+      set(kSweepMetricColumns[0], format_number(star.optimum_m));
+      set(kSweepMetricColumns[1], format_number(result.metrics.distance_m / star.optimum_m));
     }
     out.failed = result.end == EndReason::Error;
     const std::string prefix = std::to_string(index) + ',' + csv_field(run_key) + ',';

@@ -4,6 +4,7 @@
 /// run turned into its rows.
 
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -26,8 +27,9 @@ struct RunRows {
 };
 
 /// runs.csv columns of one sweep, in runs_schema.hpp's order (sweep_runs_columns()):
-/// `run_index, run_key, map_class, strategy_label`, the union of config_columns() (seed last),
-/// the metric columns, `optimal_distance_m, competitive_ratio`.
+/// `run_index, run_key, map_class, strategy_label`, the union of config_columns(), in a sweep
+/// with a free-space map `optimum_check` (kOptimumCheckColumn), seed, the metric columns,
+/// `optimal_distance_m, competitive_ratio`.
 ///
 /// The union is taken over one representative run per (strategy entry, planner, robot variant),
 /// in that order: the config columns depend on those and not on the map, the parameter values or
@@ -62,11 +64,49 @@ class SweepTable {
   std::unordered_map<std::string, std::size_t> position_;
 };
 
-/// The star-pattern optimum d* (sim/competitive.hpp) of a run of `spec` on `map`, or NaN where
-/// it does not apply: free space, a finite battery, an energy model that charges travel only
-/// (no stop or turn costs), and the whole disc of radius r/2 around the dock inside the free
-/// part of the map; r = capacity / energy per metre of straight travel, r_s = sensor range.
+/// Whether the star-pattern optimum d* (sim/competitive.hpp) applies to a run, and its value.
+struct StarOptimum {
+  enum class Status : std::uint8_t {
+    /// Not a free-space competitive setting: another map, no battery limit, an energy model with
+    /// stop or turn costs, or no travel cost or sensor range.
+    NotApplicable,
+    /// d* applies: the free map holds the disc the robot can reach and its sensor band.
+    Ok,
+    /// A free-space competitive setting on a map too small for it: the border cuts the disc of
+    /// radius r/2 around the dock or its sensor band, so the robot explores less than d* assumes.
+    Clipped,
+  };
+  Status status = Status::NotApplicable;
+  /// d* in metres (Ok only; NaN otherwise).
+  double optimum_m = std::numeric_limits<double>::quiet_NaN();
+  /// Free cells beyond the dock along the map's axes before a blocked cell or the edge, the
+  /// smallest of the four directions (free-space settings only).
+  int half_width_cells = 0;
+  /// The half-width d* needs: ceil((r/2 + r_s) / resolution) + 1 cells.
+  int needed_cells = 0;
+
+  /// The `optimum_check` cell: "" (not applicable), "ok", or "clipped: ..." with both widths.
+  [[nodiscard]] std::string check_text() const;
+};
+
+/// The star-pattern optimum of a run of `spec` on `map`: it applies in free space (the `free`
+/// generator), with a finite battery and an energy model that charges travel only (no stop or
+/// turn costs); r = capacity / energy per metre of straight travel, r_s = sensor range. The map
+/// must hold the disc of radius r/2 around the dock plus the sensor band and one cell:
+/// half-width >= r/2 + r_s + 1 cell, else the run explores less than d* assumes (Clipped).
+[[nodiscard]] StarOptimum star_optimum(const SweepMap& map, const RobotParams& robot);
+
+/// star_optimum(map, spec.robot).optimum_m: d*, or NaN where it does not apply or the map clips it.
 [[nodiscard]] double optimal_distance_m(const SweepMap& map, const RunSpec& spec);
+
+/// The runs.csv config column that says whether each run's free-space optimum applies
+/// (StarOptimum::check_text()); present only in sweeps with a free-space map.
+inline constexpr char kOptimumCheckColumn[] = "optimum_check";
+
+/// One line per (free-space map, robot variant) of `plan` whose map clips the disc the robot can
+/// reach (StarOptimum::Clipped): the map, the robot, both widths and what it costs (no
+/// optimal_distance_m or competitive_ratio). Empty when there is none.
+[[nodiscard]] std::vector<std::string> clipped_free_space_warnings(const SweepPlan& plan);
 
 /// Index of the run at the given axis positions (repetition 0): the inverse of
 /// SweepPlan::coordinates() for the header's representatives. Throws std::logic_error when the

@@ -44,4 +44,27 @@ TEST(CliExpand, BadSweepExits2ListingEveryProblem) {
   std::filesystem::remove(path);
 }
 
+TEST(CliExpand, WarnsAboutAFreeMapThatClipsTheFreeSpaceOptimum) {
+  // r = 60 m, r_s = 5 m on 1 m cells: the optimum needs 30 + 5 + 1 = 36 free cells beyond the
+  // dock each way. free:w=73 (frame, dock 36;36) has 35, free:w=75 has 36.
+  const auto path =
+      (std::filesystem::temp_directory_path() / ("fsweep_cli_clipped_" + std::to_string(getpid()) + ".json"))
+          .string();
+  std::ofstream(path)
+      << R"({"schema_version": 1, "name": "clipped", "maps": ["free:w=73,h=73", "free:w=75,h=75"],
+    "strategies": [{"name": "closest_frontier"}], "robot": {"sensor": {"range_m": 5}, "battery": 60}})";
+  const Outcome r = fsweep("expand " + path + " --limit 0");
+  EXPECT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find("fsweep: warning: " + path +
+                          ": map 'free:w=73,h=73' (73x73 cells of 1 m, dock 36;36): "
+                          "clips the free-space optimum"),
+            std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("need a half-width of 36 cells (r/2 + r_s + 1 cell), the map has 35"),
+            std::string::npos)
+      << r.output;
+  EXPECT_EQ(r.output.find("free:w=75,h=75' ("), std::string::npos) << r.output;  // it fits: no warning
+  std::filesystem::remove(path);
+}
+
 }  // namespace test_cli_expand

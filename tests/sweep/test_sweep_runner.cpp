@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -22,6 +23,7 @@
 #include "sweep/csv_journal.hpp"
 #include "sweep/sweep_plan.hpp"
 #include "sweep/sweep_runner.hpp"
+#include "sweep/sweep_table.hpp"
 #include "sweep/sweep_test_files.hpp"
 
 extern char** environ;  // NOLINT(readability-redundant-declaration): for posix_spawn
@@ -377,6 +379,63 @@ TEST(SweepRunner, CompetitiveRatioColumns) {
     EXPECT_TRUE(ratio[i].empty()) << i;
   }
   fs::remove_all(dir);
+}
+
+TEST(SweepRunner, AFreeMapThatClipsTheReachableDiscOrItsSensorBandHasNoOptimumAndSaysWhy) {
+  // r = 60 m, r_s = 5 m, 1 m cells: d* needs the disc of radius r/2 = 30 cells around the dock,
+  // its 5-cell sensor band and one cell more: 36 free cells beyond the dock each way. The free
+  // generator draws an occupied frame, so free:w=75 (dock 37;37) has exactly 36 (cells 38..73)
+  // and free:w=73 (dock 36;36) one too few; the rooms map is no free-space setting at all.
+  const json sweep = json::parse(R"({
+    "schema_version": 1,
+    "name": "clipped_test",
+    "maps": ["free:w=75,h=75", "free:w=73,h=73", "rooms:w=30,h=24,door=3,seed=1"],
+    "strategies": [{"name": "closest_frontier"}],
+    "robot": {"sensor": {"range_m": 5}, "battery": 60}
+  })");
+  const SweepPlan plan = SweepPlan::from_json(sweep, "clipped.json");
+  const std::vector<std::string> warnings = clipped_free_space_warnings(plan);
+  ASSERT_EQ(warnings.size(), 1U);
+  EXPECT_NE(warnings[0].find("map 'free:w=73,h=73' (73x73 cells of 1 m, dock 36;36)"), std::string::npos)
+      << warnings[0];
+  EXPECT_NE(warnings[0].find("half-width of 36 cells (r/2 + r_s + 1 cell), the map has 35"),
+            std::string::npos)
+      << warnings[0];
+  const StarOptimum fits = star_optimum(plan.maps()[0], plan.robots()[0].params);
+  EXPECT_EQ(fits.status, StarOptimum::Status::Ok);
+  EXPECT_EQ(fits.half_width_cells, 36);
+  EXPECT_EQ(fits.needed_cells, 36);
+  EXPECT_EQ(star_optimum(plan.maps()[2], plan.robots()[0].params).status, StarOptimum::Status::NotApplicable);
+
+  const std::string dir = temp_dir("clipped");
+  ASSERT_EQ(run(sweep, dir, 2).ran, 3U);
+  const std::string csv = read_file(dir + "/runs.csv");
+  const auto check = column(csv, "optimum_check");
+  const auto optimum = column(csv, "optimal_distance_m");
+  const auto ratio = column(csv, "competitive_ratio");
+  EXPECT_EQ(check, (std::vector<std::string>{"ok", "clipped: half-width 35 < 36 cells", ""}));
+  EXPECT_NEAR(std::stod(optimum.at(0)), M_PI * 60.0 * 60.0 / 10.0, 1e-9);
+  EXPECT_FALSE(ratio.at(0).empty());
+  for (const std::size_t i : {1U, 2U}) {
+    EXPECT_TRUE(optimum.at(i).empty()) << i;
+    EXPECT_TRUE(ratio.at(i).empty()) << i;
+  }
+  // A config column: best.csv and summary.csv carry it, one configuration per value.
+  const auto best_checks = column(read_file(dir + "/best.csv"), "optimum_check");
+  EXPECT_EQ(best_checks.size(), 3U);
+  EXPECT_NE(std::find(best_checks.begin(), best_checks.end(), "clipped: half-width 35 < 36 cells"),
+            best_checks.end());
+  EXPECT_EQ(column(read_file(dir + "/summary.csv"), "optimum_check").size(), 3U);
+  const json manifest = json::parse(read_file(dir + "/manifest.json"));
+  EXPECT_EQ(manifest["warnings"], json(warnings));
+  fs::remove_all(dir);
+
+  // A sweep without a free map has no such column.
+  const std::string plain = temp_dir("no_free");
+  ASSERT_EQ(run(small_sweep(), plain, 2).ran, 48U);
+  EXPECT_EQ(read_file(plain + "/runs.csv").find("optimum_check"), std::string::npos);
+  EXPECT_TRUE(json::parse(read_file(plain + "/manifest.json"))["warnings"].empty());
+  fs::remove_all(plain);
 }
 
 TEST(SweepRunner, ManifestHasTheFields) {

@@ -1,0 +1,15 @@
+#include "cli/sweep_warnings.hpp"
+
+#include <iostream>
+
+#include "sweep/sweep_table.hpp"
+
+namespace fsweep::cli {
+
+void print_sweep_warnings(const SweepPlan& plan, const std::string& file) {
+  for (const std::string& line : clipped_free_space_warnings(plan)) {
+    std::cerr << "fsweep: warning: " << file << ": " << line << '\n';
+  }
+}
+
+}  // namespace fsweep::cli
