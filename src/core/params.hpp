@@ -56,6 +56,9 @@ struct ParamSpec {
   bool nullable = false;
   /// Unit of the value ("m", "s", "1/m"), empty when it has none.
   std::string unit;
+  /// Left out of the resolved parameters (ParamDecl::write) while at its default: for a
+  /// parameter added after run keys existed, so that runs which do not set it keep their keys.
+  bool omitted_at_default = false;
   /// One line: what the parameter does (paper equation where it has one).
   std::string doc;
   /// Custom: what is allowed, for messages and `fsweep describe`.
@@ -126,6 +129,11 @@ class ParamDecl {
     }
     Builder& unit(std::string u) {
       spec_.unit = std::move(u);
+      return *this;
+    }
+    /// ParamSpec::omitted_at_default.
+    Builder& omitted_at_default() {
+      spec_.omitted_at_default = true;
       return *this;
     }
 
@@ -237,10 +245,15 @@ class ParamDecl {
     return p;
   }
 
-  /// The resolved parameters of `p`: every declared parameter by name.
+  /// The resolved parameters of `p`: every declared parameter by name (but those
+  /// omitted_at_default() while at their default).
   [[nodiscard]] nlohmann::json write(const P& p) const {
     nlohmann::json j = nlohmann::json::object();
-    for (std::size_t i = 0; i < specs_.size(); ++i) j[specs_[i].name] = bindings_[i].load(p);
+    for (std::size_t i = 0; i < specs_.size(); ++i) {
+      nlohmann::json value = bindings_[i].load(p);
+      if (specs_[i].omitted_at_default && value == specs_[i].default_value) continue;
+      j[specs_[i].name] = std::move(value);
+    }
     return j;
   }
 

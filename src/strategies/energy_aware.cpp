@@ -49,6 +49,10 @@ ParamDecl<EnergyAwareParams> energy_aware_params() {
   d.number("w4", &EnergyAwareParams::w4, "weight of theta_rel in [0, 1], the turn toward the goal (eq. 10)")
       .range(0, max);
   d.choice("distance", &EnergyAwareParams::distance, kDistanceModes, kDistanceDoc);
+  d.choice("unit", &EnergyAwareParams::unit, {"m", "cell"},
+           "unit of d_g, d_gb and d_gbe in the cost (eq. 8): metres, or cells of the map (the paper does "
+           "not say; theta_rel is in [0, 1] either way)")
+      .omitted_at_default();
   return d;
 }
 
@@ -73,6 +77,8 @@ struct EnergyAware::Terms {
   Cell robot;
   double theta_r = 0.0;
   int width = 1;
+  /// Metres per distance unit of the features (EnergyAwareParams::unit): 1, or the resolution.
+  double unit_m = 1.0;
 
   /// Eq. 10 for representative i (the same value every time it is asked for).
   [[nodiscard]] double theta(std::size_t i) const {
@@ -91,13 +97,19 @@ struct EnergyAware::Terms {
   }
   /// The feature row of representative i at robot distance d_g (kFeatures order).
   [[nodiscard]] std::array<double, kFeatures> features(std::size_t i, double d_g) const {
-    return {d_g, d_gb[i], above_half ? -d_gb[i] : d_gb[i], theta(i)};
+    auto row = features_without_theta(i, d_g);
+    row[3] = theta(i);
+    return row;
   }
   /// The same row with theta_rel at its lower bound 0. Its cost with weights >= 0 is a lower
   /// bound of the row's: linear_cost adds the theta term last, and adding w4 theta >= 0 never
   /// rounds below the sum before it.
+  /// Distances are divided by unit_m (x / 1 is x exactly: metres are the lengths themselves);
+  /// the division keeps the row non-decreasing in d_g.
   [[nodiscard]] std::array<double, kFeatures> features_without_theta(std::size_t i, double d_g) const {
-    return {d_g, d_gb[i], above_half ? -d_gb[i] : d_gb[i], 0.0};
+    const double g = d_g / unit_m;
+    const double gb = d_gb[i] / unit_m;
+    return {g, gb, above_half ? -gb : gb, 0.0};
   }
 
   /// Theta_rel per representative, NaN until computed.
@@ -127,6 +139,7 @@ EnergyAware::Terms EnergyAware::terms(const Observation& obs, bool dock_weighted
     const auto metric = params_.distance == "euclidean" ? &euclidean_distance : &octile_distance;
     for (const int r : t.reps) t.d_gb.push_back(metric(obs.known.cell(r), obs.dock) * res);
   }
+  t.unit_m = params_.unit == "cell" ? res : 1.0;
   t.robot = obs.robot;
   t.theta_r = direction(obs.previous_position, obs.robot);
   t.width = obs.known.width();
@@ -277,7 +290,9 @@ class WatchedChoice final : public RepresentativeWatch {
   /// again. An estimate; go_on_until() decides on the exact bounds.
   [[nodiscard]] double closing_radius(std::size_t i) const {
     double r = terms_.d_l - terms_.d_gb[i];
-    if (best_ >= 0 && weights_[0] > 0.0) r = std::min(r, (best_cost_ - cost_at(i, 0.0)) / weights_[0]);
+    if (best_ >= 0 && weights_[0] > 0.0) {
+      r = std::min(r, (best_cost_ - cost_at(i, 0.0)) / weights_[0] * terms_.unit_m);
+    }
     return r;
   }
 
@@ -335,7 +350,7 @@ class BoxWatch final : public RepresentativeWatch {
       // About where it closes (eq. 7, or its lowest cost passing the ceiling): an estimate, as
       // go_on_until decides on the exact bounds when asked there.
       double r = terms_.d_l - terms_.d_gb[i];
-      if (best_ >= 0 && w1 > 0.0) r = std::min(r, d_g + (ceiling_ - lowest) / w1);
+      if (best_ >= 0 && w1 > 0.0) r = std::min(r, d_g + (ceiling_ - lowest) / w1 * terms_.unit_m);
       next = std::min(next, r);
     }
     if (!any_open) return -std::numeric_limits<double>::infinity();

@@ -26,11 +26,17 @@ struct EnergyAwareParams {
   /// this 8-connected grid it underestimates travel by up to 8%, so a battery-limited robot
   /// can run out on the way back: such runs end as battery_depleted).
   std::string distance = "path";
+  /// The unit of d_g, d_gb and d_gbe in the cost (eq. 8): "m" (metres) or "cell" (metres /
+  /// the map's resolution). The paper does not say; theta_rel is in [0, 1] either way, so on
+  /// 10 m cells w4 weighs ten times more against the distances in cells than in metres. Eq. 7
+  /// compares metres in both.
+  std::string unit = "m";
 
   static constexpr double kMaxWeight = 250.0;
 };
 
-/// The declared parameters (core/params.hpp): w1..w4 in [0, 250], distance.
+/// The declared parameters (core/params.hpp): w1..w4 in [0, 250], distance, unit (recorded
+/// only when set, so runs without it keep their run keys).
 [[nodiscard]] ParamDecl<EnergyAwareParams> energy_aware_params();
 
 /// closest_frontier's parameters: energy_aware with weights (1, 0, 0, 0) and its distance mode.

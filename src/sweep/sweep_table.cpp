@@ -135,6 +135,25 @@ SweepTable::SweepTable(const SweepPlan& plan) {
           }
         }
       }
+      // A parameter recorded only away from its default (ParamSpec::omitted_at_default) is
+      // missing from a representative at its default but present in the entry's other values:
+      // every parameter the entry gives has a column, after the strategy's others.
+      for (const StrategyEntry::Group& group : plan.strategies()[e].groups) {
+        for (const std::string& param : group.names) {
+          const std::string column = "strategy." + param;
+          const auto is_strategy_column = [&](const std::string& c, const std::string& prefix) {
+            return c == prefix || c.rfind(prefix + ".", 0) == 0;
+          };
+          if (std::any_of(config.begin(), config.end(),
+                          [&](const std::string& c) { return is_strategy_column(c, column); })) {
+            continue;
+          }
+          const auto last = std::find_if(config.rbegin(), config.rend(), [&](const std::string& c) {
+            return is_strategy_column(c, "strategy");
+          });
+          config.insert(last.base(), column);
+        }
+      }
     }
   }
   // 2. With a free-space map, whether each run's star-pattern optimum applies (last config

@@ -35,7 +35,9 @@ struct RunRows {
 /// in that order: the config columns depend on those and not on the map, the parameter values or
 /// the repetition, so the header costs a few decodes even for 10^9 runs. Order: the first
 /// representative's columns; a column first seen later goes right after the column preceding it
-/// in that representative's list (so one strategy's parameters stay together). A
+/// in that representative's list (so one strategy's parameters stay together). Every parameter a
+/// strategy entry gives has its column too, after the strategy's others (one recorded only away
+/// from its default, ParamSpec::omitted_at_default, may be missing from the representative). A
 /// run whose configuration has a column outside the union (a strategy parameter whose nested
 /// keys change with its value) is recorded as an `error` row saying so.
 class SweepTable {

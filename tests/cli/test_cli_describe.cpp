@@ -30,7 +30,9 @@ TEST(CliDescribe, EnergyAwareWeightsHaveDefaultRangeAndDoc) {
   const auto out = run_fsweep("describe strategy energy_aware --format json");
   ASSERT_EQ(out.code, 0) << out.output;
   const auto j = nlohmann::json::parse(out.output);
-  ASSERT_EQ(j["params"].size(), 5U);
+  ASSERT_EQ(j["params"].size(), 6U);
+  EXPECT_EQ(j["params"][5]["name"], "unit");
+  EXPECT_EQ(j["params"][5]["default"], "m");
   const auto& w1 = j["params"][0];
   EXPECT_EQ(w1["name"], "w1");
   EXPECT_EQ(w1["default"], 10.0);

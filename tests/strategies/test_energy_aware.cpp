@@ -51,7 +51,7 @@ class TableOracle final : public DistanceOracle {
 // The situation: 11x11 map, robot at (5,5) having come from (2,5) (heading east), dock at (5,9).
 // Three frontier clusters: A east at (9,5), B north at (5,1), C west at (1,5).
 struct Situation {
-  KnownMap known{11, 11, 1.0};
+  KnownMap known;
   FrontierMap frontiers{known};
   std::vector<FrontierCluster> clusters;
   TableOracle oracle;
@@ -59,7 +59,7 @@ struct Situation {
   Cell robot{5, 5}, previous{2, 5}, dock{5, 9};
   Cell a{9, 5}, b{5, 1}, c{1, 5};
 
-  Situation() {
+  explicit Situation(double resolution_m = 1.0) : known(11, 11, resolution_m) {
     for (const Cell f : {a, b, c}) {
       FrontierCluster cl;
       cl.representative = known.index(f);
@@ -102,6 +102,38 @@ TEST(EnergyAware, FeaturesMatchHandComputation) {
   EXPECT_DOUBLE_EQ(c.features[7], 0.5);
   // C: behind the robot: theta_rel 1.
   EXPECT_DOUBLE_EQ(c.features[11], 1.0);
+}
+
+TEST(EnergyAware, DistancesInCellsAreMetresOverTheResolution) {
+  // 10 m cells, capacity 20, level 12 (above half: d_gbe = -d_gb), 300 m left: all in reach.
+  Situation s(10.0);
+  const BatteryView full{12.0, 20.0, 300.0};
+  EnergyAwareParams p;
+  p.w1 = 0;
+  p.w2 = 0;
+  p.w3 = 1;
+  p.w4 = 30;
+  p.distance = "euclidean";
+  EnergyAware metres("energy_aware", p);
+  p.unit = "cell";
+  EnergyAware cells("energy_aware", p);
+  const Candidates c = cells.candidates(s.observe(full));
+  ASSERT_EQ(c.cells.size(), 3U);
+  // A: d_g 4 cells (40 m), d_gb sqrt(32) cells, theta_rel 0; B: d_gb 8 cells, theta_rel 0.5.
+  EXPECT_DOUBLE_EQ(c.features[0], 4.0);
+  EXPECT_DOUBLE_EQ(c.features[1], std::sqrt(32.0));
+  EXPECT_DOUBLE_EQ(c.features[2], -std::sqrt(32.0));
+  EXPECT_DOUBLE_EQ(c.features[3], 0.0);
+  EXPECT_DOUBLE_EQ(c.features[6], -8.0);
+  EXPECT_DOUBLE_EQ(c.features[7], 0.5);
+  EXPECT_DOUBLE_EQ(metres.candidates(s.observe(full)).features[6], -80.0);
+  // w3 d_gbe + w4 theta_rel: in metres B wins (-80 + 15 < -56.6 + 0), in cells A
+  // (-5.66 + 0 < -8 + 15): the unit decides how much the turn weighs.
+  EXPECT_EQ(metres.decide(s.observe(full)).goal, s.b);
+  EXPECT_EQ(cells.decide(s.observe(full)).goal, s.a);
+  // Recorded only when set: runs that do not set it keep their run keys.
+  EXPECT_FALSE(energy_aware_params().write(EnergyAwareParams{}).contains("unit"));
+  EXPECT_EQ(energy_aware_params().write(p)["unit"], "cell");
 }
 
 TEST(EnergyAware, EachTermDrivesTheChoice) {

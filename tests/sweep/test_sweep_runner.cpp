@@ -438,6 +438,25 @@ TEST(SweepRunner, AFreeMapThatClipsTheReachableDiscOrItsSensorBandHasNoOptimumAn
   fs::remove_all(plain);
 }
 
+TEST(SweepRunner, AParameterRecordedOnlyAwayFromItsDefaultHasItsColumnWhenSwept) {
+  // energy_aware's `unit` is left out of the resolved parameters at its default ("m"), so the
+  // header's representative (the first value) lacks it; the "cell" runs still need the column.
+  const json sweep = json::parse(R"({
+    "schema_version": 1,
+    "name": "unit_test",
+    "maps": ["rooms:w=30,h=24,door=3,seed=1"],
+    "strategies": [{"name": "energy_aware", "params": {"unit": ["m", "cell"]}}, {"name": "closest_frontier"}]
+  })");
+  const std::string dir = temp_dir("unit_column");
+  const RunnerReport r = run(sweep, dir, 2);
+  EXPECT_EQ(r.ran, 3U);
+  EXPECT_EQ(r.failed, 0U);
+  const std::string csv = read_file(dir + "/runs.csv");
+  EXPECT_EQ(column(csv, "strategy.unit"), (std::vector<std::string>{"", "cell", ""}));
+  EXPECT_EQ(column(csv, "end_reason"), (std::vector<std::string>{"complete", "complete", "complete"}));
+  fs::remove_all(dir);
+}
+
 TEST(SweepRunner, ManifestHasTheFields) {
   const std::string dir = temp_dir("manifest");
   const RunnerReport r = run(small_sweep(), dir, 2);
