@@ -7,6 +7,7 @@
 #include <iomanip>
 #include <limits>
 #include <sstream>
+#include <utility>
 #include <vector>
 
 #include "core/config_error.hpp"
@@ -129,6 +130,16 @@ void validate(const GeneratorParams& p, const std::string& where) {
   } else if (k == "manhattan") {
     require_range(where, "block", p.block, 1, 100000);
     require_range(where, "street", p.street, 1, 100000);
+    for (const auto& [key, share] : {std::pair{"parks", p.park_share}, std::pair{"alleys", p.alley_share}}) {
+      if (!(share >= 0.0 && share <= 1.0)) {
+        throw ConfigError(where,
+                          std::string(key) + " = " + number_text(share) + " is out of range; allowed: 0..1");
+      }
+    }
+    if (p.park_share + p.alley_share > 1.0) {
+      throw ConfigError(where, "parks + alleys = " + number_text(p.park_share + p.alley_share) +
+                                   " is out of range; allowed: at most 1 (they are shares of the blocks)");
+    }
     require_range(where, "w", p.width, p.block + 2 * p.street, 65536, " (at least block + 2 * street)");
     require_range(where, "h", p.height, p.block + 2 * p.street, 65536, " (at least block + 2 * street)");
   } else if (k == "oldtown") {
@@ -168,7 +179,7 @@ const std::vector<KindEntry>& kind_table() {
        &generator_detail::make_office},
       {"manhattan",
        "a street grid of square blocks (parks, buildings with alleys)",
-       {"block", "street"},
+       {"block", "street", "parks", "alleys"},
        &generator_detail::make_manhattan},
       {"oldtown",
        "narrow winding lanes joining a few open squares",
@@ -208,6 +219,14 @@ void declare_key(ParamDecl<GeneratorParams>& d, const std::string& key) {
   }
   if (key == "p") {
     d.number("p", &P::obstacle_probability, "probability that a cell is occupied").range(0, 1);
+    return;
+  }
+  if (key == "parks") {
+    d.number("parks", &P::park_share, "share of blocks that are parks (free)").range(0, 1);
+    return;
+  }
+  if (key == "alleys") {
+    d.number("alleys", &P::alley_share, "share of blocks that are buildings cut by an alley").range(0, 1);
     return;
   }
   ParamSpec spec;

@@ -26,9 +26,12 @@
 ///   width >= 2 * min_room + corridor + 4 * wall, 1 <= door <= min_room.
 /// - `manhattan`: a street grid: square blocks `block` cells wide separated by streets `street`
 ///   cells wide, with a street crossing at the map centre; blocks at the map edges are clipped.
-///   Each block is a park (free) with probability 0.1, else a building, cut through by an alley
-///   max(1, street / 2) wide (random direction and offset) with probability 0.35 when
-///   block >= alley + 2. Needs width, height >= block + 2 * street.
+///   Each block is a park (free) with probability `parks` (default 0.1), a building cut
+///   through by an alley max(1, street / 2) wide (random direction and offset) with probability
+///   `alleys` (default 0.35; when block >= alley + 2, else a plain building), else a plain
+///   building. Needs width, height >= block + 2 * street and parks + alleys <= 1. Every block
+///   draws the same random numbers whatever the shares, so maps of one seed differ only where
+///   the shares make them differ.
 /// - `oldtown`: inside a one-cell occupied frame, `squares` open squares (sides in
 ///   [3 * lane, 6 * lane], clipped to the map) and one waypoint per tile of a jittered grid
 ///   (tiles 6 * lane wide, grown to keep at most 2000 waypoints); a Euclidean minimum spanning
@@ -70,6 +73,8 @@ struct GeneratorParams {
   int wall = 1;                       // wall thickness (cells): free/random frame, rooms, office
   int block = 20;                     // manhattan: building block edge (cells)
   int street = 6;                     // manhattan: street width (cells)
+  double park_share = 0.1;            // manhattan: probability that a block is a park
+  double alley_share = 0.35;          // manhattan: probability that a block is a building with an alley
   int corridor = 4;                   // office: corridor width (cells)
   int squares = 4;                    // oldtown: number of open squares
   int lane = 3;                       // oldtown: narrow street width (cells)

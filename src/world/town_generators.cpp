@@ -16,8 +16,6 @@ namespace generator_detail {
 /// Manhattan: a periodic street grid (period block + street) whose central street crossing
 /// sits at the map centre; blocks at the edges are clipped. Blocks are drawn in row-major order.
 Occupancy make_manhattan(const GeneratorParams& p, Rng& rng) {
-  constexpr double kParkProbability = 0.1;
-  constexpr double kAlleyProbability = 0.35;
   Occupancy g(p.width, p.height, kFree);
   const int b = p.block;
   const int s = p.street;
@@ -42,9 +40,9 @@ Occupancy make_manhattan(const GeneratorParams& p, Rng& rng) {
     for (const int x0 : xs) {
       const Rect r{x0, y0, x0 + b, y0 + b};
       const double kind = uniform01(rng);
-      if (kind < kParkProbability) continue;
+      if (kind < p.park_share) continue;
       fill_rect(g, r, kWall);
-      if (kind < kParkProbability + kAlleyProbability && b >= alley + 2) {
+      if (kind < p.park_share + p.alley_share && b >= alley + 2) {
         const bool vertical = uniform_below(rng, 2) == 0;
         const int k = uniform_int(rng, 1, b - alley - 1);
         fill_rect(g,

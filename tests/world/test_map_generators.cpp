@@ -206,6 +206,50 @@ TEST(ManhattanGenerator, StreetsCrossAtTheCentreAndBlocksAreSquare) {
   EXPECT_LT(map.free_count(), map.occupied.size());
 }
 
+TEST(ManhattanGenerator, ParkAndAlleySharesDecideTheBlocks) {
+  // 240 x 240 cells, blocks 16, streets 4: the block of columns and rows [122, 138) lies wholly
+  // inside (the centre street spans [118, 122)).
+  GeneratorParams p = params_of("manhattan", 240, 240, 3);
+  p.block = 16;
+  p.street = 4;
+  const WorldMap defaults = generate_map(p);
+  p.park_share = 0.1;
+  p.alley_share = 0.35;
+  EXPECT_EQ(generate_map(p).occupied, defaults.occupied);  // the documented defaults
+  // No parks, no alleys: every block a solid building; the free cells are the streets alone.
+  p.park_share = 0.0;
+  p.alley_share = 0.0;
+  const WorldMap plain = generate_map(p);
+  for (int y = 122; y < 138; ++y) {
+    for (int x = 122; x < 138; ++x) EXPECT_FALSE(plain.is_free(Cell{x, y})) << x << ";" << y;
+  }
+  int street_cells = 0;
+  for (int i = 0; i < plain.occupied.size(); ++i) {
+    const Cell c = plain.occupied.cell(i);
+    const auto on_street = [](int v) { return ((v - 118) % 20 + 20) % 20 < 4; };
+    street_cells += on_street(c.x) || on_street(c.y) ? 1 : 0;
+  }
+  EXPECT_EQ(plain.free_count(), street_cells);
+  // Every block a park: all free. Every block cut by an alley: each block has free cells inside.
+  p.park_share = 1.0;
+  EXPECT_EQ(generate_map(p).free_count(), 240 * 240);
+  p.park_share = 0.0;
+  p.alley_share = 1.0;
+  const WorldMap alleys = generate_map(p);
+  int free_inside = 0;
+  for (int y = 122; y < 138; ++y) {
+    for (int x = 122; x < 138; ++x) free_inside += alleys.is_free(Cell{x, y}) ? 1 : 0;
+  }
+  EXPECT_EQ(free_inside, 2 * 16);  // an alley street / 2 = 2 cells wide across the block
+  EXPECT_EQ(reachable_count(alleys), alleys.free_count());
+  // Shares outside [0, 1] or above 1 together are refused.
+  p.alley_share = 0.95;
+  p.park_share = 0.1;
+  expect_config_error([&] { (void)generate_map(p); }, {"parks + alleys = 1.05", "at most 1"});
+  p.park_share = -0.1;
+  expect_config_error([&] { (void)generate_map(p); }, {"parks = -0.1 is out of range; allowed: 0..1"});
+}
+
 TEST(OldtownGenerator, HasOpenSquaresAndNarrowLanes) {
   GeneratorParams p = params_of("oldtown", 120, 100, 7);
   p.lane = 2;

@@ -132,8 +132,9 @@ TEST(MapSpec, UnknownKeysListTheAllowedOnes) {
   expect_config_error(
       [] { (void)load_map_spec("rooms:w=40,colour=red"); },
       {"unknown key 'colour'", "generator 'rooms'", "allowed: w, h, res, seed, start, door, min_room, wall"});
-  expect_config_error([] { (void)load_map_spec("manhattan:door=3"); },
-                      {"unknown key 'door'", "allowed: w, h, res, seed, start, block, street"});
+  expect_config_error(
+      [] { (void)load_map_spec("manhattan:door=3"); },
+      {"unknown key 'door'", "allowed: w, h, res, seed, start, block, street, parks, alleys"});
   expect_config_error([] { (void)load_map_spec(kData + "/turtlebot3_world/map.yaml:res=0.1"); },
                       {"unknown key 'res'", "allowed: start"});
   const ConfigError e = expect_config_error(
