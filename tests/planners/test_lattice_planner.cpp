@@ -121,6 +121,27 @@ TEST_P(LatticePlannerBoth, LongerButCheaperThanShortestPath) {
   EXPECT_LT(cheapest.energy, shortest.energy);
 }
 
+TEST_P(LatticePlannerBoth, WithSectionIVAsCornerRuleTheStaircaseIsOneDiagonal) {
+  // Mei 2006 section IV-A: a move needs only its two cells free, so a diagonal may pass a
+  // blocked corner. On the Figure 2 map every staircase step (1,1) -> (2,2) -> ... -> (6,6) then
+  // is one diagonal: 5 sqrt(2) cells, one stop with a 45-degree turn from the start heading
+  // east (0.5 + 0.4). Without the rule the same planner pays 10 cells and 9 turns or goes round.
+  const auto m = figure2_map();
+  LatticePlanner lattice(GetParam());
+  PlanRequest req = mei_request(m.start, m.goal);
+  req.allow_corner_cutting = true;
+  const PlanResult cut = lattice.plan(m.known, req);
+  expect_valid_path(m.known, req, cut);
+  EXPECT_NEAR(cut.length_m, 5.0 * kSqrt2, 1e-9);
+  EXPECT_EQ(cut.path.size(), 6U);
+  EXPECT_EQ(cut.stops, 1);
+  EXPECT_NEAR(cut.energy, 5.0 * kSqrt2 + 0.9, 1e-9);
+  req.allow_corner_cutting = false;
+  const PlanResult uncut = lattice.plan(m.known, req);
+  expect_valid_path(m.known, req, uncut);
+  EXPECT_NEAR(uncut.energy, 13.8 + 2.0 * kSqrt2, 1e-9);  // R2, as above
+}
+
 TEST_P(LatticePlannerBoth, NeverMoreEnergyThanShortestPath) {
   // On random maps the lattice energy is a lower bound on the measured energy of astar's path.
   GridPlanner astar(GridSearchKind::AStar);
