@@ -18,6 +18,7 @@ ParamDecl<OrientationParams> orientation_params() {
            "the list head (Mei 2006 section IV-B step 3(b))")
       .range(0, 1)
       .above(0);
+  declare_sensing_region_params(d);
   return d;
 }
 
@@ -68,7 +69,7 @@ std::size_t walk_from_head(const KnownMap& known, std::span<const int> ordered, 
 }
 
 Decision Orientation::decide(const Observation& obs) {
-  SensingRegion region = split_by_sensing_region(obs);  // step 1
+  SensingRegion region = split_by_sensing_region(obs, params_);  // step 1
   restrict_to_segment(obs, region);  // the `seg` heuristic, when on (src/sim/heuristics.hpp)
   if (region.inside.empty()) return closest_outside(obs, region.outside);  // steps 4, 5
   const std::vector<int> ordered =

@@ -9,13 +9,15 @@
 #include <vector>
 
 #include "core/params.hpp"
+#include "strategies/sensing_region.hpp"
 #include "strategies/strategy.hpp"
 
 namespace fsweep {
 inline namespace strategies {
 
-/// Parameters (JSON keys as named).
-struct OrientationParams {
+/// Parameters (JSON keys as named): the sensing-region rule of step 1 (`region`,
+/// `pocket_cells`: SensingRegionRule) and the walk of step 3.
+struct OrientationParams : SensingRegionRule {
   /// The walk along the list stops before the first cell whose distance from the list head is
   /// not below head_distance_ratio * d_s (section IV-B step 3(b): 0.7, so that the robot at
   /// the target still senses at least 0.3 d_s beyond the head). In (0, 1].
@@ -46,8 +48,9 @@ struct OrientationParams {
                                          double limit_cells);
 
 /// The orientation strategy of Mei 2006 section IV-B:
-/// 1. the frontier cells within the sensing region (split_by_sensing_region: Euclidean <= d_s,
-///    d_s = sensor.range_m / resolution in cells; unreachable ones ignored);
+/// 1. the frontier cells within the sensing region (split_by_sensing_region under the params'
+///    SensingRegionRule: Euclidean <= d_s, d_s = sensor.range_m / resolution in cells, by
+///    default every such cell; unreachable ones ignored);
 /// 2. listed clockwise from the robot's left (clockwise_from_left);
 /// 3. target: the end of the walk from the head (walk_from_head, limit head_distance_ratio d_s);
 /// 4. none in the region: the closest frontier cell outside, by path length (closest_outside);

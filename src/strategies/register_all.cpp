@@ -42,10 +42,12 @@ StrategyRegistry make_registry() {
       "frontier cells of the sensing region walked clockwise from the robot's left (Mei 2006 IV-B)",
       orientation_params(),
       [](const OrientationParams& p, std::uint64_t) -> Made { return std::make_unique<Orientation>(p); });
-  r.add<NoParams>("widest_frontier",
-                  "middle cell of the largest frontier group in the sensing region (Mei 2006's baseline)",
-                  ParamDecl<NoParams>{},
-                  [](const NoParams&, std::uint64_t) -> Made { return std::make_unique<WidestFrontier>(); });
+  r.add<WidestFrontierParams>(
+      "widest_frontier",
+      "middle cell of the largest frontier group in the sensing region (Mei 2006's baseline)",
+      widest_frontier_params(), [](const WidestFrontierParams& p, std::uint64_t) -> Made {
+        return std::make_unique<WidestFrontier>(p);
+      });
   r.add<GblParams>(
       "gbl",
       "Gonzalez-Banos and Latombe: sampled candidates maximising I(p) exp(-lambda L(p)) (Holz 2010 eq. 3)",

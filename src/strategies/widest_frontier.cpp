@@ -62,8 +62,14 @@ int middle_cell(const KnownMap& known, std::span<const int> group) {
   return best;
 }
 
+ParamDecl<WidestFrontierParams> widest_frontier_params() {
+  ParamDecl<WidestFrontierParams> d;
+  declare_sensing_region_params(d);
+  return d;
+}
+
 Decision WidestFrontier::decide(const Observation& obs) {
-  SensingRegion region = split_by_sensing_region(obs);  // 1
+  SensingRegion region = split_by_sensing_region(obs, params_);  // 1
   restrict_to_segment(obs, region);  // the `seg` heuristic, when on (src/sim/heuristics.hpp)
   if (region.inside.empty()) return closest_outside(obs, region.outside);  // 4
   const auto groups = frontier_groups(obs.known, region.inside);           // 2

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "core/params.hpp"
+#include "strategies/sensing_region.hpp"
 #include "strategies/strategy.hpp"
 
 namespace fsweep {
@@ -27,9 +29,16 @@ inline namespace strategies {
 /// cell along it; for a bent one it can sit nearer the bend than the middle along the border.
 [[nodiscard]] int middle_cell(const KnownMap& known, std::span<const int> group);
 
+/// Parameters: the sensing-region rule of step 1 (`region`, `pocket_cells`), as orientation's.
+struct WidestFrontierParams : SensingRegionRule {};
+
+/// The declared parameters (core/params.hpp).
+[[nodiscard]] ParamDecl<WidestFrontierParams> widest_frontier_params();
+
 /// The widest-frontier strategy of Mei 2006 section V-C:
-/// 1. the frontier cells within the sensing region (split_by_sensing_region: Euclidean <= d_s,
-///    d_s = sensor.range_m / resolution in cells; unreachable ones ignored);
+/// 1. the frontier cells within the sensing region (split_by_sensing_region under the params'
+///    SensingRegionRule: Euclidean <= d_s, d_s = sensor.range_m / resolution in cells, by
+///    default every such cell; unreachable ones ignored);
 /// 2. grouped by frontier_groups(); the widest frontier is the group with the most cells
 ///    (ties: the group with the lowest cell index);
 /// 3. target: its middle_cell();
@@ -38,11 +47,15 @@ inline namespace strategies {
 /// Stateless; works with any planner.
 class WidestFrontier final : public Strategy {
  public:
+  explicit WidestFrontier(const WidestFrontierParams& params = {}) : params_(params) {}
   [[nodiscard]] std::string name() const override { return "widest_frontier"; }
   [[nodiscard]] Decision decide(const Observation& obs) override;
   [[nodiscard]] std::unique_ptr<Strategy> clone() const override {
     return std::make_unique<WidestFrontier>(*this);
   }
+
+ private:
+  WidestFrontierParams params_;
 };
 
 }  // namespace strategies

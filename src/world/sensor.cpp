@@ -589,6 +589,18 @@ ScanCounts Sensor::gain(const KnownMap& known, Cell at, double heading_rad) cons
   return counts;
 }
 
+bool centre_ray_clear(const KnownMap& known, Cell at, Cell target) {
+  const int dx = target.x - at.x;
+  const int dy = target.y - at.y;
+  const auto occupied = [&](int ox, int oy) {
+    const Cell c{at.x + ox, at.y + oy};
+    return !known.in_bounds(c) || known.state(c) == CellState::Occupied;
+  };
+  return walk_ray(
+      2 * dx, 2 * dy, [&](int x, int y) { return (x == dx && y == dy) || !occupied(x, y); },
+      [&](int ax, int ay, int bx, int by) { return !(occupied(ax, ay) && occupied(bx, by)); });
+}
+
 bool Sensor::visible(const WorldMap& truth, Cell at, Cell target, double heading_rad) const {
   if (params_.model == SensorModel::Beams) return beams_.visible(truth, at, target, heading_rad);
   if (!truth.occupied.in_bounds(at) || !truth.occupied.in_bounds(target)) return false;

@@ -81,6 +81,13 @@
 namespace fsweep {
 inline namespace world {
 
+/// True when the centre ray from the centre of `at` to the centre of `target` (cells of
+/// `known`) is clear on the robot's own map: the grid model's ray rule (file comment above)
+/// with known occupied cells as the only obstacles (unknown cells transparent, as
+/// Sensor::gain()) and cells off the map as occupied. No range or field of view: the caller
+/// decides those. `at` == `target`: true. For strategies that ask which cells are in view.
+[[nodiscard]] bool centre_ray_clear(const KnownMap& known, Cell at, Cell target);
+
 /// The physical model of a Sensor (rules in the file comment above).
 enum class SensorModel {
   Grid,   ///< "grid": every cell in range and in line of sight (exact shadowcasting)

@@ -12,8 +12,10 @@
 #include "core/config_error.hpp"
 #include "strategies/orientation.hpp"
 #include "strategies/registry.hpp"
+#include "strategies/sensing_region.hpp"
 #include "strategies/strategy_test_utils.hpp"
 #include "strategies/widest_frontier.hpp"
+#include "world/sensor.hpp"
 
 namespace fsweep {
 namespace test_mei_strategies {  // not anonymous: unity builds put it beside other test files' helpers
@@ -126,7 +128,9 @@ TEST(Orientation, DistanceFromTheHeadMustStayBelowTheLimit) {
   Orientation o{OrientationParams{}};
   EXPECT_EQ(o.decide(s.observe()).goal, (Cell{3, 2}));
   // head_distance_ratio 1: the limit 2 admits (3,1).
-  Orientation wide{OrientationParams{1.0}};
+  OrientationParams whole;
+  whole.head_distance_ratio = 1.0;
+  Orientation wide{whole};
   EXPECT_EQ(wide.decide(s.observe()).goal, (Cell{3, 1}));
 }
 
@@ -202,6 +206,64 @@ TEST(WidestFrontier, EqualGroupsBreakToTheLowestIndex) {
   EXPECT_EQ(w.decide(s.observe()).goal, (Cell{1, 1}));
 }
 
+// A corridor cut by a wall at (3,1): the cells beyond it, (1,1) and (2,1), are known (seen
+// before), so (1,1) is a frontier cell 3 cells from R, within d_s = 5 but out of view; (7,1)
+// is 3 cells the other way, in view.
+const std::vector<std::string> kWalledCorridor = {
+    "#########",  //
+    "?..#R...?",  //
+    "#########",  //
+};
+
+TEST(SensingRegion, VisibleKeepsOnlyTheFrontierCellsInView) {
+  Situation s(kWalledCorridor, 5.0, kEast);
+  const SensingRegion disc = split_by_sensing_region(s.observe());
+  EXPECT_EQ(s.as_cells(disc.inside), (std::vector<Cell>{{1, 1}, {7, 1}}));
+  SensingRegionRule rule;
+  rule.region = "visible";
+  const SensingRegion visible = split_by_sensing_region(s.observe(), rule);
+  EXPECT_EQ(s.as_cells(visible.inside), (std::vector<Cell>{{7, 1}}));
+  EXPECT_EQ(s.as_cells(visible.outside), (std::vector<Cell>{{1, 1}}));  // still a goal for step 4
+  // The ray rule of the sensor on the known map: the wall blocks, unknown cells do not.
+  EXPECT_FALSE(centre_ray_clear(s.known, s.robot, Cell{1, 1}));
+  EXPECT_TRUE(centre_ray_clear(s.known, s.robot, Cell{8, 1}));
+}
+
+// An enclosed pocket of 3 unknown cells (3,2)-(3,4) behind walls, its rim (4,1)-(4,5) five
+// frontier cells, and the open unknown beyond column 9 (16 cells) with four frontier cells
+// (8,2)-(8,5).
+const std::vector<std::string> kPocket = {
+    "##########??",  //
+    "#.##.....#??",  //
+    "#.#?.....#??",  //
+    "#.#?.....???",  //
+    "#.#?.....???",  //
+    "#.##.R...#??",  //
+    "##########??",  //
+};
+
+TEST(SensingRegion, PocketRimsLeaveTheRegionUpToTheirSize) {
+  Situation s(kPocket, 10.0, kEast);
+  const std::vector<Cell> rim = {{4, 1}, {4, 2}, {8, 2}, {4, 3}, {8, 3}, {4, 4}, {8, 4}, {4, 5}, {8, 5}};
+  EXPECT_EQ(s.as_cells(split_by_sensing_region(s.observe()).inside), rim);
+  SensingRegionRule rule;
+  for (const int cells : {3, 15}) {  // the pocket's 3 cells, or up to 15: the open region has 16
+    rule.pocket_cells = cells;
+    const SensingRegion r = split_by_sensing_region(s.observe(), rule);
+    EXPECT_EQ(s.as_cells(r.inside), (std::vector<Cell>{{8, 2}, {8, 3}, {8, 4}, {8, 5}})) << cells;
+    EXPECT_EQ(r.outside.size(), 5U) << cells;
+  }
+  rule.pocket_cells = 2;  // smaller than the pocket: every rim stays
+  EXPECT_EQ(s.as_cells(split_by_sensing_region(s.observe(), rule).inside), rim);
+  rule.pocket_cells = 16;  // the open region counts as a pocket too: nothing is left
+  EXPECT_TRUE(split_by_sensing_region(s.observe(), rule).inside.empty());
+  // Through the registry: widest frontier goes to the middle of the rim (5 cells against 4)
+  // by default, to the open frontier when rims of pockets up to 3 cells are left out.
+  EXPECT_EQ(make_strategy("widest_frontier", nullptr, 1, "strategy")->decide(s.observe()).goal, (Cell{4, 3}));
+  EXPECT_EQ(make_strategy("widest_frontier", {{"pocket_cells", 3}}, 1, "strategy")->decide(s.observe()).goal,
+            (Cell{8, 3}));
+}
+
 TEST(MeiStrategies, ParamsAreValidated) {
   EXPECT_DOUBLE_EQ(orientation_params().read(nullptr, "p").head_distance_ratio, 0.7);
   EXPECT_DOUBLE_EQ(orientation_params().read({{"head_distance_ratio", 1.0}}, "p").head_distance_ratio, 1.0);
@@ -222,6 +284,11 @@ TEST(MeiStrategies, ParamsAreValidated) {
   EXPECT_EQ(configure_strategy("orientation", nullptr).params,
             (nlohmann::json{{"head_distance_ratio", 0.7}}));
   EXPECT_EQ(configure_strategy("widest_frontier", nullptr).params, nlohmann::json::object());
+  // The sensing-region options are recorded only when set, so older run keys hold.
+  EXPECT_EQ(configure_strategy("orientation", {{"region", "visible"}, {"pocket_cells", 30}}).params,
+            (nlohmann::json{{"head_distance_ratio", 0.7}, {"region", "visible"}, {"pocket_cells", 30}}));
+  EXPECT_THROW((void)configure_strategy("widest_frontier", {{"region", "cone"}}, "p"), ConfigError);
+  EXPECT_THROW((void)configure_strategy("widest_frontier", {{"pocket_cells", -1}}, "p"), ConfigError);
 }
 
 TEST(MeiStrategies, RegisteredAndCloneable) {
