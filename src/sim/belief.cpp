@@ -1,6 +1,8 @@
 #include "sim/belief.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 #include "search/distance_field.hpp"
 
@@ -18,6 +20,7 @@ int Belief::sense(Sensor& sensor, const RunSetup& setup, Cell at, int heading, C
   const auto revealed = sensor.scan(setup.map(), known_, at, heading_angle(heading), sensor_rng_);
   frontiers_.update(known_, revealed);
   clusters_.revealed(revealed);
+  keep_margin(setup, revealed);
   dock_field_.take_in(known_, revealed, dock, setup.allow_corner_cutting());
   for (const int i : revealed) {
     if (known_.is_free(i) && setup.reachable[i] != 0) ++known_reachable_;
@@ -61,6 +64,32 @@ bool Belief::frontier_reachable_from(Cell from, Cell dock, const RunSetup& setup
   }
   // The nearest of them is -1 only when none is reachable.
   return distance_oracle(setup, from, dock, scratch).nearest_from_robot(open) >= 0;
+}
+
+void Belief::keep_margin(const RunSetup& setup, std::span<const int> revealed) {
+  const double margin_m = setup.spec.sim.target_margin_m;
+  if (!(margin_m > 0.0)) return;
+  // A cell at offset (dx, dy) cells from an obstacle cell is that close to the obstacle's square:
+  // res * hypot(max(|dx| - 1/2, 0), max(|dy| - 1/2, 0)).
+  const double margin = margin_m / known_.resolution_m();
+  const int reach = static_cast<int>(std::ceil(margin + 0.5));
+  const auto gap = [](int d) { return std::max(std::abs(d) - 0.5, 0.0); };
+  for (const int i : revealed) {
+    if (known_.state(i) != CellState::Occupied) continue;
+    const Cell o = known_.cell(i);
+    for (int dy = -reach; dy <= reach; ++dy) {
+      for (int dx = -reach; dx <= reach; ++dx) {
+        const Cell c{o.x + dx, o.y + dy};
+        if (!known_.in_bounds(c) || std::hypot(gap(dx), gap(dy)) >= margin) continue;
+        const int k = known_.index(c);
+        if (dropped_[static_cast<std::size_t>(k)] != 0) continue;
+        dropped_[static_cast<std::size_t>(k)] = 1;
+        // A cell that is no frontier cell yet is in no cluster; the clusters read the flag when
+        // it becomes one.
+        if (frontiers_.is_frontier(k)) clusters_.exclusion_changed(k);
+      }
+    }
+  }
 }
 
 double Belief::coverage(const RunSetup& setup) const {

@@ -5,6 +5,7 @@
 /// seen). A value: copying it forks what the robot knows.
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "core/random.hpp"
@@ -70,7 +71,12 @@ class Belief {
   /// The sensor's noise stream (used only when SensorParams::miss_probability > 0).
   Rng sensor_rng_;
   DockField dock_field_;
-  /// One flag per cell: a goal dropped for good.
+  /// Marks as excluded (as dropped_) the cells within SimParams::target_margin_m of the newly
+  /// known occupied cells among `revealed`.
+  void keep_margin(const RunSetup& setup, std::span<const int> revealed);
+
+  /// One flag per cell: a goal dropped for good, or too close to a known obstacle
+  /// (SimParams::target_margin_m).
   std::vector<std::uint8_t> dropped_;
   int known_reachable_ = 0;
   int known_observable_ = 0;

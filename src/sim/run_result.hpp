@@ -80,7 +80,9 @@ struct RunMetrics {
   /// empty map's and H_full the fully explored map's (0 over O), is exactly |K & O| / |O|.
   /// (The paper prints c = (1 - H_full / H_expl) * 100, which would be 0 for a complete map;
   /// we read it as this ratio.) An unknown observable cell always leaves a frontier cell next
-  /// to it, so a `complete` run without dropped goals has completeness exactly 1.
+  /// to it, so a `complete` run without dropped goals and without a target margin
+  /// (SimParams::target_margin_m, which keeps cells near walls from being goals) has
+  /// completeness exactly 1.
   double completeness = 0.0;
   /// `rr` heuristic (src/sim/heuristics.hpp): journeys cut short because the goal stopped
   /// being worth reaching, each followed by a new decision. 0 without `rr`.

@@ -96,6 +96,12 @@ ParamDecl<SimParams> make_sim_params() {
       "a cell that ends the run `target_reached` once reached (any strategy becomes a navigation "
       "baseline); \"random\": drawn from the run seed as target_seeking's \"target\": "
       "\"random\"; null: none");
+  d.number("target_margin_m", &P::target_margin_m,
+           "frontier cells closer than this to a known obstacle are not offered as goals (Holz 2010 "
+           "section III: 0.3 m); 0: none")
+      .range(0, 100)
+      .unit("m")
+      .omitted_at_default();
   return d;
 }
 

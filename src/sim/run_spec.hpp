@@ -67,6 +67,11 @@ struct SimParams {
   /// so the same cell as a target_seeking run with that seed on that map).
   std::optional<Cell> stop_at_cell;
   bool stop_at_random = false;
+  /// Holz 2010 section III's safety margin for goals (metres; 0, the default: none, and left out
+  /// of to_json): a frontier cell whose centre is closer than this to a known occupied cell
+  /// (to the nearest point of its square) is never offered to a strategy as a goal, as if
+  /// dropped. Paths may still pass such cells: only goals keep the margin.
+  double target_margin_m = 0.0;
 };
 
 /// The declared parameters of the sweep's "sim" object; `fsweep describe sim` prints them.

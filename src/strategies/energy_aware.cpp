@@ -59,7 +59,60 @@ ParamDecl<EnergyAwareParams> energy_aware_params() {
 ParamDecl<ClosestFrontierParams> closest_frontier_params() {
   ParamDecl<ClosestFrontierParams> d;
   d.choice("distance", &ClosestFrontierParams::distance, kDistanceModes, kDistanceDoc);
+  d.choice(
+       "goal", &ClosestFrontierParams::goal, {"cluster", "cell"},
+       "the representative of the nearest frontier cluster, or the nearest frontier cell (Holz 2010 eq. 2)")
+      .omitted_at_default();
   return d;
+}
+
+namespace {
+
+/// Every frontier cell of obs.clusters as a cluster of its own (ascending index; with the `seg`
+/// heuristic's mask, only the cells of the robot's segment).
+std::vector<FrontierCluster> cell_clusters(const Observation& obs) {
+  std::vector<int> cells;
+  for (const auto& c : obs.clusters) cells.insert(cells.end(), c.cells.begin(), c.cells.end());
+  std::sort(cells.begin(), cells.end());
+  cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+  if (obs.segment_mask != nullptr) {
+    std::erase_if(cells, [&](int i) { return (*obs.segment_mask)[static_cast<std::size_t>(i)] == 0; });
+  }
+  std::vector<FrontierCluster> out(cells.size());
+  for (std::size_t k = 0; k < cells.size(); ++k) {
+    out[k].cells = {cells[k]};
+    out[k].representative = cells[k];
+  }
+  return out;
+}
+
+/// `obs` with `clusters` in place of its own.
+Observation with_clusters(const Observation& obs, const std::vector<FrontierCluster>& clusters) {
+  return Observation{obs.known,         obs.frontiers, clusters,    obs.distances,
+                     obs.sensor,        obs.robot,     obs.heading, obs.previous_position,
+                     obs.previous_goal, obs.dock,      obs.battery, obs.decision_index,
+                     obs.segment_mask};
+}
+
+}  // namespace
+
+Decision EnergyAware::decide(const Observation& obs) {
+  if (params_.goal != "cell") return decide_among(obs);
+  const std::vector<FrontierCluster> cells = cell_clusters(obs);
+  return decide_among(with_clusters(obs, cells));
+}
+
+Candidates EnergyAware::candidates(const Observation& obs) {
+  if (params_.goal != "cell") return candidates_among(obs);
+  const std::vector<FrontierCluster> cells = cell_clusters(obs);
+  return candidates_among(with_clusters(obs, cells));
+}
+
+Candidates EnergyAware::candidates_within(const Observation& obs, std::span<const double> w_lo,
+                                          std::span<const double> w_hi) {
+  if (params_.goal != "cell") return candidates_within_among(obs, w_lo, w_hi);
+  const std::vector<FrontierCluster> cells = cell_clusters(obs);
+  return candidates_within_among(with_clusters(obs, cells), w_lo, w_hi);
 }
 
 EnergyAware::EnergyAware(std::string name, const EnergyAwareParams& params)
@@ -165,7 +218,7 @@ void EnergyAware::set_weights(std::span<const double> weights) {
   params_.w4 = weights_[3];
 }
 
-Candidates EnergyAware::candidates(const Observation& obs) {
+Candidates EnergyAware::candidates_among(const Observation& obs) {
   Candidates out;
   out.feature_count = kFeatures;
   if (obs.clusters.empty()) return out;
@@ -384,9 +437,9 @@ class BoxWatch final : public RepresentativeWatch {
 
 }  // namespace
 
-Candidates EnergyAware::candidates_within(const Observation& obs, std::span<const double> w_lo,
-                                          std::span<const double> w_hi) {
-  if (params_.distance != "path" || obs.clusters.empty()) return candidates(obs);
+Candidates EnergyAware::candidates_within_among(const Observation& obs, std::span<const double> w_lo,
+                                                std::span<const double> w_hi) {
+  if (params_.distance != "path" || obs.clusters.empty()) return candidates_among(obs);
   if (w_lo.size() != kFeatures || w_hi.size() != kFeatures) {
     throw std::invalid_argument(name_ + ": candidates_within needs " + std::to_string(kFeatures) +
                                 " weights");
@@ -491,7 +544,7 @@ bool choose_by_probes(const Observation& obs, const EnergyAware::Terms& t, Watch
 
 }  // namespace
 
-Decision EnergyAware::decide(const Observation& obs) {
+Decision EnergyAware::decide_among(const Observation& obs) {
   if (params_.distance != "path") return LinearScoredStrategy::decide(obs);
   if (obs.clusters.empty()) return on_no_candidate(obs);
   // Pure closest frontier without a battery limit: the nearest representative by path (ties to

@@ -31,6 +31,10 @@ struct EnergyAwareParams {
   /// 10 m cells w4 weighs ten times more against the distances in cells than in metres. Eq. 7
   /// compares metres in both.
   std::string unit = "m";
+  /// The goals: "cluster" (each frontier cluster's representative, the paper's p_f) or "cell"
+  /// (every frontier cell of the clusters, each its own candidate). Not a parameter of
+  /// energy_aware: closest_frontier's `goal` sets it.
+  std::string goal = "cluster";
 
   static constexpr double kMaxWeight = 250.0;
 };
@@ -42,6 +46,9 @@ struct EnergyAwareParams {
 /// closest_frontier's parameters: energy_aware with weights (1, 0, 0, 0) and its distance mode.
 struct ClosestFrontierParams {
   std::string distance = "path";  ///< as EnergyAwareParams::distance
+  /// "cluster" (default): the representative of the nearest cluster; "cell": the nearest
+  /// frontier cell (Holz 2010 eq. 2). Recorded only when set.
+  std::string goal = "cluster";
 };
 [[nodiscard]] ParamDecl<ClosestFrontierParams> closest_frontier_params();
 
@@ -73,6 +80,8 @@ class EnergyAware final : public LinearScoredStrategy {
   EnergyAware(std::string name, const EnergyAwareParams& params);
 
   [[nodiscard]] std::string name() const override { return name_; }
+  /// With goal "cell" these three see every frontier cell of obs.clusters as its own cluster
+  /// (ascending index, so ties go to the lowest cell index).
   [[nodiscard]] Decision decide(const Observation& obs) override;
   [[nodiscard]] Candidates candidates(const Observation& obs) override;
   /// With path distances, the search from the robot stops once no representative it has not
@@ -102,6 +111,11 @@ class EnergyAware final : public LinearScoredStrategy {
   [[nodiscard]] Terms terms(const Observation& obs, bool dock_weighted) const;
   /// terms() for this strategy's own weights.
   [[nodiscard]] Terms own_terms(const Observation& obs) const;
+  /// decide(), candidates() and candidates_within() over obs.clusters as given.
+  [[nodiscard]] Decision decide_among(const Observation& obs);
+  [[nodiscard]] Candidates candidates_among(const Observation& obs);
+  [[nodiscard]] Candidates candidates_within_among(const Observation& obs, std::span<const double> w_lo,
+                                                   std::span<const double> w_hi);
 
   std::string name_;
   EnergyAwareParams params_;

@@ -35,6 +35,7 @@ StrategyRegistry make_registry() {
         ea.w1 = 1.0;
         ea.w2 = ea.w3 = ea.w4 = 0.0;
         ea.distance = p.distance;
+        ea.goal = p.goal;
         return std::make_unique<EnergyAware>("closest_frontier", ea);
       });
   r.add<OrientationParams>(

@@ -5,6 +5,7 @@
 
 #include "core/config_error.hpp"
 #include "sim/simulation.hpp"
+#include "world/ascii_world.hpp"
 #include "world/map_loaders.hpp"
 #include "world/map_spec.hpp"
 
@@ -158,6 +159,43 @@ TEST(Simulation, UnreachablePocketDoesNotCountAgainstCoverage) {
   EXPECT_EQ(r.end, EndReason::Complete);
   EXPECT_DOUBLE_EQ(r.metrics.reachable_area_m2, 6.0);
   EXPECT_DOUBLE_EQ(r.metrics.coverage, 1.0);
+}
+
+TEST(Simulation, ATargetMarginKeepsGoalsAwayFromWallsAndLeavesANarrowAlcoveUnseen) {
+  // A room and a dead-end alcove one cell wide below it. sim.target_margin_m 0.6 on 1 m cells
+  // leaves out of the goals every cell whose centre is closer than 0.6 to a known wall's square,
+  // i.e. the 4-neighbours of known walls: every alcove cell. With a 1.5 m sensor the alcove's
+  // far end is seen only from inside it, so it stays unknown.
+  RunSpec spec;
+  spec.map = std::make_shared<const WorldMap>(test::ascii_world({
+      "##########",  //
+      "#........#",  //
+      "#...S....#",  //
+      "#........#",  //
+      "#####.####",  //
+      "#####.####",  //
+      "#####.####",  //
+      "#####.####",  //
+      "##########",  //
+  }));
+  spec.strategy = configure_strategy("closest_frontier", nullptr);
+  spec.robot.sensor.range_m = 1.5;
+  spec.seed = 7;
+  const RunResult plain = simulate(spec);
+  EXPECT_EQ(plain.end, EndReason::Complete);
+  EXPECT_DOUBLE_EQ(plain.metrics.completeness, 1.0);
+  EXPECT_DOUBLE_EQ(plain.metrics.coverage, 1.0);
+  spec.sim.target_margin_m = 0.6;
+  const RunResult margin = simulate(spec);
+  EXPECT_EQ(margin.end, EndReason::Complete) << margin.end_detail;  // no goal the robot may take
+  EXPECT_LT(margin.metrics.coverage, 1.0);
+  EXPECT_LT(margin.metrics.completeness, 1.0);
+  // The robot never enters the alcove below its first cell (5,4), which it sees from the room.
+  for (const Cell c : margin.trajectory) EXPECT_LT(c.y, 5) << c.x << ";" << c.y;
+  EXPECT_EQ(margin.metrics.dropped_goals, 0);  // excluded, not dropped
+  // Recorded only when set.
+  EXPECT_FALSE(nlohmann::json(SimParams{}).contains("target_margin_m"));
+  EXPECT_EQ(nlohmann::json(spec.sim)["target_margin_m"], 0.6);
 }
 
 }  // namespace

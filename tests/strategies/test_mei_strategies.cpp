@@ -264,6 +264,26 @@ TEST(SensingRegion, PocketRimsLeaveTheRegionUpToTheirSize) {
             (Cell{8, 3}));
 }
 
+TEST(ClosestFrontier, GoalCellIsTheNearestFrontierCellNotTheNearestClustersRepresentative) {
+  // One cluster: row 1, ten frontier cells under the unknown row 0. Its representative, the
+  // member nearest the centroid (4.5, 1), is (4,1) (a tie with (5,1) to the lower index); the
+  // nearest frontier cell to R (0,2) is (0,1) (Holz 2010 eq. 2).
+  const std::vector<std::string> rows = {"??????????", "..........", "R.........", "##########"};
+  Situation s(rows, 3.0, kEast);
+  ASSERT_EQ(s.clusters.size(), 1U);
+  EXPECT_EQ(make_strategy("closest_frontier", nullptr, 1, "strategy")->decide(s.observe()).goal,
+            (Cell{4, 1}));
+  const auto by_cell = make_strategy("closest_frontier", {{"goal", "cell"}}, 1, "strategy");
+  EXPECT_EQ(by_cell->decide(s.observe()).goal, (Cell{0, 1}));
+  // Its candidates are the ten cells, each with its own distance.
+  auto* linear = dynamic_cast<LinearScoredStrategy*>(by_cell.get());
+  ASSERT_NE(linear, nullptr);
+  EXPECT_EQ(linear->candidates(s.observe()).cells.size(), 10U);
+  // Recorded only when set.
+  EXPECT_EQ(configure_strategy("closest_frontier", nullptr).params, (nlohmann::json{{"distance", "path"}}));
+  EXPECT_THROW((void)configure_strategy("closest_frontier", {{"goal", "room"}}, "p"), ConfigError);
+}
+
 TEST(MeiStrategies, ParamsAreValidated) {
   EXPECT_DOUBLE_EQ(orientation_params().read(nullptr, "p").head_distance_ratio, 0.7);
   EXPECT_DOUBLE_EQ(orientation_params().read({{"head_distance_ratio", 1.0}}, "p").head_distance_ratio, 1.0);
