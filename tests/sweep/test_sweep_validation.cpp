@@ -9,6 +9,7 @@
 
 #include "core/config_error.hpp"
 #include "sweep/sweep_plan.hpp"
+#include "sweep/sweep_table.hpp"
 
 namespace fsweep {
 namespace test_sweep_validation {  // not anonymous: unity builds put it beside other test files' helpers
@@ -224,6 +225,25 @@ TEST(SweepValidation, ShippedExamplesAreValid) {
     ++n;
   }
   EXPECT_GE(n, 2);
+}
+
+TEST(SweepValidation, NoShippedSweepClipsTheFreeSpaceOptimum) {
+  // Every free map of the shipped sweeps holds the disc its robots can reach, the sensor band and
+  // one cell (sweep_table.hpp's star_optimum()): no sweep prints the clipped-map warning. The
+  // paper sweeps name their maps relative to the repository, so they load from there.
+  const std::filesystem::path before = std::filesystem::current_path();
+  std::filesystem::current_path(FSWEEP_SOURCE_DIR);
+  int n = 0;
+  for (const char* folder : {"sweeps", "sweeps/examples", "sweeps/paper"}) {
+    for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+      if (entry.path().extension() != ".json") continue;
+      const SweepPlan plan = SweepPlan::from_file(entry.path().string());
+      EXPECT_TRUE(clipped_free_space_warnings(plan).empty()) << entry.path();
+      ++n;
+    }
+  }
+  std::filesystem::current_path(before);
+  EXPECT_GE(n, 30);
 }
 
 }  // namespace test_sweep_validation
