@@ -43,11 +43,11 @@ constexpr Cost octile_step(bool diagonal) {
   }
 }
 
-/// Calls `sink(next_index, cost_cells)` for every allowed move out of cell `index`, in heading order (see
-/// grid.hpp), with costs of type `Cost` (octile_step). `index` must be in the grid; its own state is not
-/// checked. The allowed moves are gathered into a mask first (without branches away from the
-/// border), then each is one call with constant offsets: measured 3% faster per A* query than
-/// one call site in a loop over the mask's bits (BM_ScenarioSearch, interleaved).
+/// Calls `sink(next_index, cost_cells)` for every allowed move out of cell `index`, in heading
+/// order (see grid.hpp), with costs of type `Cost` (octile_step). `index` must be in the grid;
+/// its own state is not checked. The allowed moves are gathered into a mask first (without
+/// branches away from the border), then each is one call with its constant offset: measured
+/// 2-5% faster per grid search than one call site in a loop over the mask's bits.
 template <typename Cost = double, typename Sink>
 inline void for_each_octile_neighbour(const KnownMap& known, int index, bool allow_corner_cutting,
                                       Sink&& sink) {

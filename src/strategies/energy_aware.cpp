@@ -13,6 +13,7 @@
 
 #include "core/config_error.hpp"
 #include "core/csv_format.hpp"
+#include "strategies/sensing_region.hpp"
 
 namespace fsweep {
 inline namespace strategies {
@@ -71,10 +72,7 @@ namespace {
 /// Every frontier cell of obs.clusters as a cluster of its own (ascending index; with the `seg`
 /// heuristic's mask, only the cells of the robot's segment).
 std::vector<FrontierCluster> cell_clusters(const Observation& obs) {
-  std::vector<int> cells;
-  for (const auto& c : obs.clusters) cells.insert(cells.end(), c.cells.begin(), c.cells.end());
-  std::sort(cells.begin(), cells.end());
-  cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+  std::vector<int> cells = open_frontier_cells(obs);
   if (obs.segment_mask != nullptr) {
     std::erase_if(cells, [&](int i) { return (*obs.segment_mask)[static_cast<std::size_t>(i)] == 0; });
   }

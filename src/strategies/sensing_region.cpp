@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <limits>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "world/sensor.hpp"
 
@@ -32,7 +33,7 @@ class PocketTest {
   bool small(int index) {
     if (const auto it = pocket_of_.find(index); it != pocket_of_.end()) return it->second;
     std::vector<int> component{index};
-    std::unordered_map<int, bool> seen{{index, true}};
+    std::unordered_set<int> seen{index};
     bool small = true;
     for (std::size_t k = 0; k < component.size() && small; ++k) {
       const Cell c = known_.cell(component[k]);
@@ -40,7 +41,7 @@ class PocketTest {
         const Cell n{c.x + d.x, c.y + d.y};
         if (!known_.in_bounds(n) || known_.state(n) != CellState::Unknown) continue;
         const int ni = known_.index(n);
-        if (!seen.emplace(ni, true).second) continue;
+        if (!seen.insert(ni).second) continue;
         component.push_back(ni);
         if (static_cast<int>(component.size()) > limit_) {
           small = false;

@@ -13,6 +13,15 @@
 namespace fsweep {
 inline namespace sweep {
 
+namespace {
+
+/// True when runs.csv column `column` is `name` or one of its nested keys (`name.key`).
+bool is_column_of(const std::string& column, const std::string& name) {
+  return column == name || column.rfind(name + ".", 0) == 0;
+}
+
+}  // namespace
+
 std::string StarOptimum::check_text() const {
   switch (status) {
     case Status::NotApplicable:
@@ -141,16 +150,12 @@ SweepTable::SweepTable(const SweepPlan& plan) {
       for (const StrategyEntry::Group& group : plan.strategies()[e].groups) {
         for (const std::string& param : group.names) {
           const std::string column = "strategy." + param;
-          const auto is_strategy_column = [&](const std::string& c, const std::string& prefix) {
-            return c == prefix || c.rfind(prefix + ".", 0) == 0;
-          };
           if (std::any_of(config.begin(), config.end(),
-                          [&](const std::string& c) { return is_strategy_column(c, column); })) {
+                          [&](const std::string& c) { return is_column_of(c, column); })) {
             continue;
           }
-          const auto last = std::find_if(config.rbegin(), config.rend(), [&](const std::string& c) {
-            return is_strategy_column(c, "strategy");
-          });
+          const auto last = std::find_if(config.rbegin(), config.rend(),
+                                         [](const std::string& c) { return is_column_of(c, "strategy"); });
           config.insert(last.base(), column);
         }
       }

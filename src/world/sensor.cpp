@@ -589,16 +589,28 @@ ScanCounts Sensor::gain(const KnownMap& known, Cell at, double heading_rad) cons
   return counts;
 }
 
+namespace {
+
+/// The ray rule of the file comment for a ray from the robot's cell centre to the end point
+/// (ex, ey) (doubled coordinates, walk_ray()) towards the target at (dx, dy) (cells, relative):
+/// clear when no cell it enters but the target is occupied(x, y) and no corner it passes has
+/// both side cells occupied.
+template <typename Occupied>
+bool ray_clear(int ex, int ey, int dx, int dy, Occupied&& occupied) {
+  return walk_ray(
+      ex, ey, [&](int x, int y) { return (x == dx && y == dy) || !occupied(x, y); },
+      [&](int ax, int ay, int bx, int by) { return !(occupied(ax, ay) && occupied(bx, by)); });
+}
+
+}  // namespace
+
 bool centre_ray_clear(const KnownMap& known, Cell at, Cell target) {
   const int dx = target.x - at.x;
   const int dy = target.y - at.y;
-  const auto occupied = [&](int ox, int oy) {
+  return ray_clear(2 * dx, 2 * dy, dx, dy, [&](int ox, int oy) {
     const Cell c{at.x + ox, at.y + oy};
     return !known.in_bounds(c) || known.state(c) == CellState::Occupied;
-  };
-  return walk_ray(
-      2 * dx, 2 * dy, [&](int x, int y) { return (x == dx && y == dy) || !occupied(x, y); },
-      [&](int ax, int ay, int bx, int by) { return !(occupied(ax, ay) && occupied(bx, by)); });
+  });
 }
 
 bool Sensor::visible(const WorldMap& truth, Cell at, Cell target, double heading_rad) const {
@@ -610,11 +622,7 @@ bool Sensor::visible(const WorldMap& truth, Cell at, Cell target, double heading
     return false;
   }
   const auto occupied = [&](int ox, int oy) { return !truth.is_free(Cell{at.x + ox, at.y + oy}); };
-  const auto clear = [&](int ex, int ey) {
-    return walk_ray(
-        ex, ey, [&](int x, int y) { return (x == dx && y == dy) || !occupied(x, y); },
-        [&](int ax, int ay, int bx, int by) { return !(occupied(ax, ay) && occupied(bx, by)); });
-  };
+  const auto clear = [&](int ex, int ey) { return ray_clear(ex, ey, dx, dy, occupied); };
   if (clear(2 * dx, 2 * dy)) return true;  // centre ray
   if (!occupied(dx, dy)) return false;     // free targets: centre ray only
   const int sx = dx > 0 ? 1 : (dx < 0 ? -1 : 0);

@@ -263,6 +263,34 @@ TEST(Sensor, VisibilityBetweenFreeCellsIsSymmetric) {
   }
 }
 
+TEST(Sensor, CentreRayOnTheKnownMapIsTheSensorsRuleForFreeTargets) {
+  // centre_ray_clear() on a fully known map decides in range exactly as visible() on the true
+  // map does for free targets (both take the centre ray; corners need both side cells
+  // occupied). Unknown cells are transparent: on an all-unknown map every ray is clear.
+  const WorldMap map = random_world(24, 24, 0.3, 7);
+  KnownMap known(24, 24, 1.0);
+  for (int i = 0; i < map.occupied.size(); ++i) (void)known.reveal(i, !map.is_free(i));
+  const KnownMap unknown(24, 24, 1.0);
+  Sensor sensor(range(9.0), 1.0);
+  int compared = 0;
+  int blocked = 0;
+  for (int a = 0; a < map.occupied.size(); ++a) {
+    if (!map.is_free(a)) continue;
+    const Cell at = map.occupied.cell(a);
+    for (int b = 0; b < map.occupied.size(); ++b) {
+      const Cell t = map.occupied.cell(b);
+      if (!map.is_free(b) || (t.x - at.x) * (t.x - at.x) + (t.y - at.y) * (t.y - at.y) > 81) continue;
+      const bool clear = centre_ray_clear(known, at, t);
+      ASSERT_EQ(clear, sensor.visible(map, at, t)) << at.x << ";" << at.y << " -> " << t.x << ";" << t.y;
+      ASSERT_TRUE(centre_ray_clear(unknown, at, t));
+      ++compared;
+      blocked += clear ? 0 : 1;
+    }
+  }
+  EXPECT_GT(compared, 10000);
+  EXPECT_GT(blocked, 1000);  // walls do block: the comparison is not trivially all-clear
+}
+
 // ---------------------------------------------------------------------------------------------
 // Occupied targets: face rays (see the rule list in sensor.hpp).
 
