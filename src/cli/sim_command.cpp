@@ -33,7 +33,7 @@ struct SimOptions {
 
 int run_sim(const SimOptions& o) {
   RunSpec spec;
-  spec.map = std::make_shared<const WorldMap>(load_map_spec(o.map));
+  RunMap map = load_run_map_spec(o.map);
   spec.strategy = configure_strategy(o.strategy, kv_to_json(o.params, "--param"), "--strategy", "--param");
   if (!o.heuristics.empty()) {
     nlohmann::json names = nlohmann::json::array();
@@ -45,6 +45,11 @@ int run_sim(const SimOptions& o) {
   spec.robot = robot_params_from_json(kv_to_json(o.robot, "--robot"), "--robot");
   spec.sim = sim_params_from_json(kv_to_json(o.sim, "--sim"), "--sim");
   spec.seed = o.seed;
+  if (map.random_start) {  // as a sweep draws it (SweepPlan::spec_at), so --seed <a run's seed> repeats it
+    map.map.start =
+        draw_region_cell(largest_free_region(map.map, spec.robot.allow_corner_cutting), spec.seed);
+  }
+  spec.map = std::make_shared<const WorldMap>(std::move(map.map));
 
   create_output_dir(o.out);  // before the run, so a bad --out costs nothing
   const RunResult result = simulate(spec);
@@ -72,9 +77,10 @@ Command add_sim_command(CLI::App& app) {
   auto o = std::make_shared<SimOptions>();
   CLI::App* sub =
       app.add_subcommand("sim", "Run one exploration and write run.csv, progress.csv, trajectory.png");
-  sub->add_option(
-         "--map", o->map,
-         "Map SPEC: a file (.map .yaml .png .pgm .txt) or a generator, e.g. rooms:w=120,h=80,door=3,seed=4")
+  sub->add_option("--map", o->map,
+                  "Map SPEC: a file (.map .yaml .png .pgm .txt .json) or a generator, e.g. "
+                  "rooms:w=120,h=80,door=3,seed=4; "
+                  "start=random draws the start from --seed")
       ->required();
   sub->add_option("--strategy", o->strategy, "Strategy name")->capture_default_str();
   sub->add_option("--param", o->params, "Strategy parameter key=value (repeatable), e.g. w1=10");

@@ -7,7 +7,7 @@
 namespace fsweep::cli {
 
 void print_sweep_warnings(const SweepPlan& plan, const std::string& file) {
-  for (const std::string& line : clipped_free_space_warnings(plan)) {
+  for (const std::string& line : sweep_warnings(plan)) {
     std::cerr << "fsweep: warning: " << file << ": " << line << '\n';
   }
 }

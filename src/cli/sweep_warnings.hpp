@@ -9,8 +9,9 @@
 
 namespace fsweep::cli {
 
-/// Prints "fsweep: warning: <file>: <line>" on stderr for every warning of `plan` (today: free
-/// maps that clip the free-space optimum, sweep_table.hpp's clipped_free_space_warnings()).
+/// Prints "fsweep: warning: <file>: <line>" on stderr for every warning of `plan` (dataset plans
+/// skipped by "on_bad_map": "skip", free maps that clip the free-space optimum:
+/// sweep_table.hpp's sweep_warnings()).
 void print_sweep_warnings(const SweepPlan& plan, const std::string& file);
 
 }  // namespace fsweep::cli

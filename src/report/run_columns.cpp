@@ -32,8 +32,8 @@ Columns config_columns(const RunSpec& spec) {
   Columns c;
   const WorldMap& m = *spec.map;
   c.emplace_back(kMapColumn, m.source);
-  c.emplace_back("map.width", std::to_string(m.width()));
-  c.emplace_back("map.height", std::to_string(m.height()));
+  c.emplace_back(kMapWidthColumn, std::to_string(m.width()));
+  c.emplace_back(kMapHeightColumn, std::to_string(m.height()));
   c.emplace_back("map.resolution_m", format_number(m.resolution_m));
   c.emplace_back(kMapStartColumn, std::to_string(m.start.x) + ";" + std::to_string(m.start.y));
   c.emplace_back("strategy", spec.strategy.name);

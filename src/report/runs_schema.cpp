@@ -42,7 +42,8 @@ RunsHeader::RunsHeader(std::vector<std::string> names, const std::string& path)
     if (i < seed) {
       if (name == kRunIndexColumn || name == kRunKeyColumn) {
         role = ColumnRole::Identity;
-      } else if (name == kMapColumn || name == kMapStartColumn) {
+      } else if (name == kMapColumn || name == kMapStartColumn || name == kMapWidthColumn ||
+                 name == kMapHeightColumn) {
         role = ColumnRole::Instance;
       } else {
         role = ColumnRole::Config;

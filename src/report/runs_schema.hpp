@@ -12,8 +12,9 @@
 /// A header is read by position, so that files of older and newer builds (other metrics, other
 /// parameters) read alike (RunsHeader):
 /// - identity: run_index, run_key (which run);
-/// - instance: map, map.start and seed, pooled within a configuration: runs on the maps of one
-///   map_class and their seeds are repetitions of one configuration;
+/// - instance: map, map.width, map.height, map.start and seed, pooled within a configuration: runs
+///   on the maps of one map_class (generator seeds, a dataset's plans of any size) and their seeds
+///   are repetitions of one configuration;
 /// - config: every other column before seed;
 /// - outcome: end_reason and end_detail (text);
 /// - metric: every column after end_detail (after end_reason without it), numbers; an empty or
@@ -44,6 +45,8 @@ inline constexpr char kRunKeyColumn[] = "run_key";
 inline constexpr char kMapClassColumn[] = "map_class";
 inline constexpr char kMapColumn[] = "map";
 inline constexpr char kMapStartColumn[] = "map.start";
+inline constexpr char kMapWidthColumn[] = "map.width";
+inline constexpr char kMapHeightColumn[] = "map.height";
 inline constexpr char kStrategyLabelColumn[] = "strategy_label";
 inline constexpr char kPlannerColumn[] = "planner";
 inline constexpr char kSeedColumn[] = "seed";

@@ -81,7 +81,11 @@ nlohmann::json manifest_json(const SweepPlan& plan, const ManifestInfo& info) {
   j["objective"] = plan.objective();
   j["seed"] = plan.seed();
   j["repetitions"] = plan.repetitions();
-  j["warnings"] = clipped_free_space_warnings(plan);
+  j["warnings"] = sweep_warnings(plan);
+  j["skipped_maps"] = nlohmann::json::array();
+  for (const SkippedMap& m : plan.skipped_maps()) {
+    j["skipped_maps"].push_back({{"where", m.where}, {"file", m.file}, {"reason", m.reason}});
+  }
   j["runs"] = {{"total", info.runs.total},
                {"done", info.runs.done},
                {"skipped", info.runs.skipped},

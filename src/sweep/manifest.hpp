@@ -44,7 +44,8 @@ struct ManifestInfo {
 [[nodiscard]] std::string utc_now_iso8601();
 
 /// The manifest's JSON: sweep (the file's JSON), sweep_file, sweep_hash, name, objective, seed,
-/// repetitions, warnings (clipped_free_space_warnings(): what the CLI printed), runs {total, done, skipped,
+/// repetitions, warnings (sweep_warnings(): what the CLI printed), skipped_maps [{where, file,
+/// reason}] (dataset plans left out by "on_bad_map": "skip"), runs {total, done, skipped,
 /// ran, failed}, shard {index, count}, git_revision, compiler, libraries {oneTBB, nlohmann_json}, host,
 /// cpu_model, threads, start_utc, end_utc (null while running), wall_s, runs_per_s, status.
 [[nodiscard]] nlohmann::json manifest_json(const SweepPlan& plan, const ManifestInfo& info);

@@ -33,9 +33,10 @@ namespace sweep_detail {
 /// 12,345,678.
 [[nodiscard]] std::string with_thousands(std::uint64_t n);
 
-/// `maps`: loads every map (see sweep_plan.hpp).
-[[nodiscard]] std::vector<SweepMap> parse_maps(const nlohmann::json& maps,
-                                               std::vector<std::string>& problems);
+/// `maps`: loads every map (see sweep_plan.hpp); plans of dataset items skipped by
+/// `"on_bad_map": "skip"` go to `skipped`.
+[[nodiscard]] std::vector<SweepMap> parse_maps(const nlohmann::json& maps, std::vector<std::string>& problems,
+                                               std::vector<SkippedMap>& skipped);
 
 /// `strategies`: entries with their parameter groups, each axis value validated.
 [[nodiscard]] std::vector<StrategyEntry> parse_strategies(const nlohmann::json& strategies,

@@ -2,13 +2,17 @@
 /// The `maps` axis of a sweep: SPEC strings and JSON objects, "seeds" expansion, loading and
 /// the canonical spec that run keys hash.
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <fstream>
 #include <map>
+#include <set>
 
 #include "core/config_error.hpp"
+#include "core/random.hpp"
 #include "sweep/sweep_axes.hpp"
 #include "world/map_spec.hpp"
 
@@ -116,9 +120,181 @@ std::vector<std::uint64_t> parse_seeds(const json& item, const std::string& wher
   return seeds;
 }
 
+/// The regions a random start draws from (SweepMap::start_regions).
+std::shared_ptr<const std::array<Grid<std::uint8_t>, 2>> start_regions_of(const WorldMap& map) {
+  return std::make_shared<const std::array<Grid<std::uint8_t>, 2>>(
+      std::array<Grid<std::uint8_t>, 2>{largest_free_region(map, false), largest_free_region(map, true)});
+}
+
+/// Keys of a dataset item (besides `dataset`).
+const std::vector<std::string>& dataset_keys() {
+  static const std::vector<std::string> kKeys{"ids",   "sample",     "sample_seed", "res",
+                                              "start", "on_bad_map", "label"};
+  return kKeys;
+}
+
+/// A dataset item's plan files: `<dataset>/<id>.json` for each id of the `ids` file (blank
+/// lines and surrounding spaces ignored), else every `*.json` of the folder in name order; then
+/// a seeded sample of `sample` of them, kept in list order. Problems at `where`.
+std::vector<std::string> dataset_plans(const json& item, const std::string& where,
+                                       std::vector<std::string>& problems) {
+  namespace fs = std::filesystem;
+  const json& dir_json = item.at("dataset");
+  if (!dir_json.is_string() || dir_json.get<std::string>().empty()) {
+    problems.push_back(where + "/dataset: expected a folder path, got " + value_text(dir_json));
+    return {};
+  }
+  const fs::path dir = dir_json.get<std::string>();
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) {
+    problems.push_back(where + "/dataset: '" + dir.string() + "' is not a folder (a HouseExpo json folder)");
+    return {};
+  }
+  std::vector<std::string> plans;
+  if (item.contains("ids")) {
+    const json& ids = item.at("ids");
+    std::ifstream in(ids.is_string() ? ids.get<std::string>() : std::string());
+    if (!ids.is_string() || !in) {
+      problems.push_back(where + "/ids: cannot read the id list " + value_text(ids) +
+                         "; allowed: a text file with one plan id per line (HouseExpo's map_id_*.txt)");
+      return {};
+    }
+    std::string line;
+    while (std::getline(in, line)) {
+      const std::size_t begin = line.find_first_not_of(" \t\r");
+      if (begin == std::string::npos) continue;
+      const std::string id = line.substr(begin, line.find_last_not_of(" \t\r") - begin + 1);
+      plans.push_back((dir / (id + ".json")).lexically_normal().generic_string());
+    }
+  } else {
+    for (const auto& entry : fs::directory_iterator(dir, ec)) {
+      if (entry.path().extension() == ".json")
+        plans.push_back(entry.path().lexically_normal().generic_string());
+    }
+    std::sort(plans.begin(), plans.end());
+  }
+  if (plans.empty()) {
+    problems.push_back(
+        where + ": the dataset has no plans" +
+        (item.contains("ids") ? std::string(" (the id list is empty)") : " (no .json file in the folder)"));
+    return {};
+  }
+  if (!item.contains("sample")) return plans;
+  const json& sample = item.at("sample");
+  if (!sample.is_number_integer() || sample.get<std::int64_t>() < 1 ||
+      sample.get<std::uint64_t>() > plans.size()) {
+    problems.push_back(where + "/sample: " + value_text(sample) +
+                       " not allowed; allowed: an integer from 1 to " + std::to_string(plans.size()) +
+                       " (the dataset's plans)");
+    return {};
+  }
+  std::uint64_t seed = 0;
+  if (item.contains("sample_seed")) {
+    const json& v = item.at("sample_seed");
+    if (!v.is_number_unsigned() && !(v.is_number_integer() && v.get<std::int64_t>() >= 0)) {
+      problems.push_back(where + "/sample_seed: " + value_text(item.at("sample_seed")) +
+                         " not allowed; allowed: an integer >= 0");
+      return {};
+    }
+    seed = item.at("sample_seed").get<std::uint64_t>();
+  }
+  // The first `sample` positions of a Fisher-Yates shuffle (stream "dataset/sample"), sorted.
+  std::vector<std::size_t> order(plans.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  Rng rng = make_rng(seed, "dataset/sample");
+  const auto n = static_cast<std::size_t>(sample.get<std::uint64_t>());
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t j = i + static_cast<std::size_t>(uniform_below(rng, order.size() - i));
+    std::swap(order[i], order[j]);
+  }
+  order.resize(n);
+  std::sort(order.begin(), order.end());
+  std::vector<std::string> chosen;
+  chosen.reserve(n);
+  for (const std::size_t i : order) chosen.push_back(plans[i]);
+  return chosen;
+}
+
+/// A dataset item (sweep_plan.hpp, "maps"): one map class of HouseExpo plans. Appends its maps
+/// to `out`; plans that fail to load are problems, or skipped with `"on_bad_map": "skip"`.
+void parse_dataset(const json& item, const std::string& where, std::vector<SweepMap>& out,
+                   std::vector<std::string>& problems, std::vector<SkippedMap>& skipped) {
+  const std::size_t before = problems.size();
+  for (const auto& [key, value] : item.items()) {
+    if (key != "dataset" &&
+        std::find(dataset_keys().begin(), dataset_keys().end(), key) == dataset_keys().end()) {
+      std::string allowed;
+      for (const std::string& k : dataset_keys()) allowed += (allowed.empty() ? "" : ", ") + k;
+      problems.push_back(
+          concat({where, "/", key, ": unknown key for a dataset (HouseExpo plans); allowed: dataset, ",
+                  allowed, key == "seeds" ? " (seeds apply to generated maps only)" : ""}));
+    }
+  }
+  bool skip = false;
+  if (item.contains("on_bad_map")) {
+    const json& v = item.at("on_bad_map");
+    skip = v == "skip";
+    if (!skip && v != "refuse") {
+      problems.push_back(where + "/on_bad_map: " + value_text(v) +
+                         " not allowed; allowed: \"refuse\" (the "
+                         "default: the sweep does not start), \"skip\"");
+    }
+  }
+  std::string label;
+  if (item.contains("label")) {
+    if (item.at("label").is_string()) {
+      label = item.at("label").get<std::string>();
+    } else {
+      problems.push_back(where + "/label: expected a string, got " + value_text(item.at("label")));
+    }
+  }
+  const std::vector<std::string> plans = dataset_plans(item, where, problems);
+  if (problems.size() != before) return;
+  json options = json::object();  // what every plan's source gets besides its file
+  for (const char* key : {"res", "start"}) {
+    if (item.contains(key)) options[key] = item.at(key);
+  }
+  const std::string map_class =
+      !label.empty() ? label
+                     : "dataset " + item.at("dataset").get<std::string>() +
+                           (item.contains("sample") ? " sample=" + item.at("sample").dump() : "");
+  std::size_t bad = 0;
+  constexpr std::size_t kListedBadPlans = 20;
+  for (const std::string& file : plans) {
+    json source = options;
+    source["file"] = file;
+    SweepMap m;
+    try {
+      RunMap loaded = load_run_map_json(source, where);
+      if (loaded.random_start) m.start_regions = start_regions_of(loaded.map);
+      m.map = std::make_shared<const WorldMap>(std::move(loaded.map));
+    } catch (const ConfigError& e) {
+      const std::string reason = strip_path(e.what(), where);
+      if (skip) {
+        skipped.push_back(SkippedMap{where, file, reason});
+      } else if (++bad <= kListedBadPlans) {
+        problems.push_back(concat({where, ": plan ", file, " does not load: ", reason,
+                                   " (or give \"on_bad_map\": \"skip\" to leave it out)"}));
+      }
+      continue;
+    }
+    m.spec = canonical(source);
+    m.map_class = map_class;
+    m.label = spec_text(source);
+    out.push_back(std::move(m));
+  }
+  if (bad > kListedBadPlans) {
+    problems.push_back(where + ": " + std::to_string(bad - kListedBadPlans) + " more plans do not load");
+  }
+  if (problems.size() == before && out.empty()) {
+    problems.push_back(where + ": every plan of the dataset was skipped; allowed: at least one that loads");
+  }
+}
+
 }  // namespace
 
-std::vector<SweepMap> parse_maps(const json& maps, std::vector<std::string>& problems) {
+std::vector<SweepMap> parse_maps(const json& maps, std::vector<std::string>& problems,
+                                 std::vector<SkippedMap>& skipped) {
   std::vector<SweepMap> out;
   if (!maps.is_array() || maps.empty()) {
     problems.push_back("/maps: expected a non-empty list of maps (SPEC strings or objects), got " +
@@ -131,6 +307,19 @@ std::vector<SweepMap> parse_maps(const json& maps, std::vector<std::string>& pro
     const json& item = maps[i];
     if (!item.is_string() && !item.is_object()) {
       problems.push_back(where + ": expected a SPEC string or an object, got " + value_text(item));
+      continue;
+    }
+    if (item.is_object() && item.contains("dataset")) {
+      const std::size_t first = out.size();
+      parse_dataset(item, where, out, problems, skipped);
+      for (std::size_t k = first; k < out.size(); ++k) {
+        if (!seen.emplace(out[k].spec.dump(), where).second) {
+          problems.push_back(where + ": plan " + out[k].label +
+                             " is listed twice or also elsewhere in /maps; " +
+                             "allowed: each map once (repeated maps would be the same runs)");
+          break;
+        }
+      }
       continue;
     }
     // 1. The source without label and seeds, as an object; and the label.
@@ -189,8 +378,9 @@ std::vector<SweepMap> parse_maps(const json& maps, std::vector<std::string>& pro
       }
       SweepMap m;
       try {
-        m.map = std::make_shared<const WorldMap>(spec_k.empty() ? load_map_json(source, where)
-                                                                : load_map_spec(spec_k));
+        RunMap loaded = spec_k.empty() ? load_run_map_json(source, where) : load_run_map_spec(spec_k);
+        if (loaded.random_start) m.start_regions = start_regions_of(loaded.map);
+        m.map = std::make_shared<const WorldMap>(std::move(loaded.map));
       } catch (const ConfigError& e) {
         const std::string what = e.what();
         const std::string seed_note = has_seeds ? " (seed " + std::to_string(seeds[k]) + ")" : "";
@@ -200,6 +390,12 @@ std::vector<SweepMap> parse_maps(const json& maps, std::vector<std::string>& pro
       }
       m.spec = canonical(source);
       m.free_space = source.value("generator", json("")) == "free";
+      if (m.free_space && m.start_regions) {
+        problems.push_back(where +
+                           "/start: \"random\" is not allowed on a free map: its optimum (the star "
+                           "pattern) is computed from the map's start; allowed: a cell x;y");
+        break;
+      }
       m.map_class = !label.empty() ? label : (spec_string.empty() ? spec_text(base) : spec_string);
       if (!label.empty()) {
         m.label = has_seeds ? label + " seed=" + std::to_string(seeds[k]) : label;

@@ -227,7 +227,7 @@ SweepPlan SweepPlan::build(const json& sweep, const std::string& file, std::vect
   }
 
   // 3. The axes.
-  plan.maps_ = sweep_detail::parse_maps(get("maps"), problems);
+  plan.maps_ = sweep_detail::parse_maps(get("maps"), problems, plan.skipped_maps_);
   plan.strategies_ = sweep_detail::parse_strategies(get("strategies"), problems);
   plan.planners_ = sweep_detail::parse_planners(get("planners"), problems);
   plan.robots_ = sweep_detail::parse_robots(get("robot"), problems);
@@ -343,6 +343,12 @@ RunSpec SweepPlan::spec_at(const RunCoordinates& c) const {
   spec.robot = robots_[c.robot].params;
   spec.sim = sim_;
   spec.seed = derive_seed(seed_, "repetition/" + std::to_string(c.repetition));
+  if (const auto& regions = maps_[c.map].start_regions) {
+    // A random start: the map with the start this run's seed draws (recorded as map.start).
+    auto drawn = std::make_shared<WorldMap>(*spec.map);
+    drawn->start = draw_region_cell((*regions)[spec.robot.allow_corner_cutting ? 1 : 0], spec.seed);
+    spec.map = std::move(drawn);
+  }
   return spec;
 }
 

@@ -81,6 +81,7 @@
 /// equivalent JSON item; integral floats become integers; file paths are lexically normalised),
 /// without `label`/`seeds`. Same configuration, map and seed: same key, in any sweep.
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -127,6 +128,17 @@ struct SweepMap {
   /// True for the `free` generator (the star-pattern optimum of docs/architecture.md, "Sweeps, keys, shards
   /// and the weight search" applies).
   bool free_space = false;
+  /// `start: "random"`: the cells each run draws its start from (draw_region_cell() with the run
+  /// seed), per motion rule: [0] without corner cutting, [1] with (largest_free_region(),
+  /// world_map.hpp). Null: every run starts at map->start.
+  std::shared_ptr<const std::array<Grid<std::uint8_t>, 2>> start_regions;
+};
+
+/// A plan of a dataset item that did not load and was skipped (`"on_bad_map": "skip"`).
+struct SkippedMap {
+  std::string where;  ///< JSON path of the dataset item
+  std::string file;   ///< the plan's file
+  std::string reason;
 };
 
 /// The exact weight search of a strategy entry ("search" in the file; format above): every
@@ -275,6 +287,8 @@ class SweepPlan {
   [[nodiscard]] std::vector<std::pair<std::string, std::uint64_t>> axes() const;
 
   [[nodiscard]] const std::vector<SweepMap>& maps() const { return maps_; }
+  /// Plans of dataset items skipped because they failed to load (manifest.json, the CLI's warnings).
+  [[nodiscard]] const std::vector<SkippedMap>& skipped_maps() const { return skipped_maps_; }
   [[nodiscard]] const std::vector<StrategyEntry>& strategies() const { return strategies_; }
   [[nodiscard]] const std::vector<SweepPlanner>& planners() const { return planners_; }
   [[nodiscard]] const std::vector<RobotVariant>& robots() const { return robots_; }
@@ -294,6 +308,7 @@ class SweepPlan {
   int repetitions_ = 1;
   std::uint64_t seed_ = 0;
   std::vector<SweepMap> maps_;
+  std::vector<SkippedMap> skipped_maps_;
   std::vector<StrategyEntry> strategies_;
   std::vector<std::uint64_t> strategy_offsets_{0};  ///< prefix sums of entries' counts
   std::vector<SweepPlanner> planners_;

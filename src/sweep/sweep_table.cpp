@@ -103,6 +103,15 @@ std::vector<std::string> clipped_free_space_warnings(const SweepPlan& plan) {
   return out;
 }
 
+std::vector<std::string> sweep_warnings(const SweepPlan& plan) {
+  std::vector<std::string> out;
+  for (const SkippedMap& m : plan.skipped_maps()) {
+    out.push_back(m.where + ": skipped plan " + m.file + " (\"on_bad_map\": \"skip\"): " + m.reason);
+  }
+  for (std::string& line : clipped_free_space_warnings(plan)) out.push_back(std::move(line));
+  return out;
+}
+
 std::uint64_t representative_run(const SweepPlan& plan, std::size_t strategy_entry, std::size_t planner,
                                  std::size_t robot) {
   const auto axes = plan.axes();

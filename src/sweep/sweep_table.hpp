@@ -110,6 +110,10 @@ inline constexpr char kOptimumCheckColumn[] = "optimum_check";
 /// optimal_distance_m or competitive_ratio). Empty when there is none.
 [[nodiscard]] std::vector<std::string> clipped_free_space_warnings(const SweepPlan& plan);
 
+/// Every warning about `plan` that `expand`, `run` and `slurm` print and manifest.json keeps: one
+/// line per skipped dataset plan (SweepPlan::skipped_maps()), then clipped_free_space_warnings().
+[[nodiscard]] std::vector<std::string> sweep_warnings(const SweepPlan& plan);
+
 /// Index of the run at the given axis positions (repetition 0): the inverse of
 /// SweepPlan::coordinates() for the header's representatives. Throws std::logic_error when the
 /// plan's run order is not the documented one.

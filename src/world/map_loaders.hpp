@@ -49,6 +49,21 @@ struct BitmapScale {
 [[nodiscard]] WorldMap load_bitmap(const std::string& path, const BitmapScale& scale, int threshold,
                                    double resolution_m);
 
+/// HouseExpo's own resolution: PseudoSLAM draws its plans at 25 pixels per metre.
+inline constexpr double kHouseExpoResolution = 0.04;
+
+/// HouseExpo floor plan (JSON; keys `verts`, `id`, `bbox`, `room_category`, `room_num`): the
+/// `verts` contour (metres) is the free space, everything else is wall. Drawn as PseudoSLAM's
+/// jsonReader draws it: every vertex scaled by 1 / `resolution_m` (rounded to the nearest
+/// integer when within 1e-9 of it, as PseudoSLAM's integer `meter2pixel`) and truncated toward
+/// zero (numpy's astype(int), so 1.16 m is cell 28 at 25 cells per metre: 1.16 * 25 rounds
+/// below 29), shifted so the smallest x and y are 0, then filled as cv2.drawContours fills
+/// (polygon_fill.hpp). The map is the contour's bounding box plus a border of one wall cell
+/// (PseudoSLAM pads 25 pixels; outside the grid is a wall here anyway). Other keys are not
+/// read. The start is the first free cell in row-major order. Errors name the file and the JSON
+/// path (a vertex that is not two finite numbers, fewer than 3 vertices, a grid over 10^8 cells).
+[[nodiscard]] WorldMap load_houseexpo(const std::string& path, double resolution_m = kHouseExpoResolution);
+
 /// One MovingAI scenario query.
 struct ScenarioQuery {
   int bucket = 0;

@@ -38,6 +38,7 @@ struct FileKind {
 std::vector<FileKind> file_kinds() {
   return {{".map", {"res", "start"}},
           {".txt", {"res", "start"}},
+          {".json", {"res", "start"}},
           {".yaml", {"start"}},
           {".yml", {"start"}},
           {".png", {"res", "start", "threshold", "mpp", "size"}},
@@ -131,7 +132,7 @@ WorldMap generate(const json& j, const Where& where) {
   if (std::find(kinds.begin(), kinds.end(), p.kind) == kinds.end()) {
     throw ConfigError(where.key("generator"),
                       "unknown map kind '" + p.kind + "'; allowed generators: " + join_names(kinds) +
-                          "; or a file ending in .map, .txt, .yaml, .yml, .png, .pgm");
+                          "; or a file ending in .map, .txt, .json, .yaml, .yml, .png, .pgm");
   }
   json params = j;
   params.erase("generator");
@@ -193,6 +194,8 @@ WorldMap load_file(const json& j, const Where& where) {
       map = load_movingai_map(path, res > 0.0 ? res : 1.0);
     } else if (ext == ".txt") {
       map = load_ascii_map(path, res > 0.0 ? res : 1.0);
+    } else if (ext == ".json") {
+      map = load_houseexpo(path, res > 0.0 ? res : kHouseExpoResolution);
     } else if (ext == ".yaml" || ext == ".yml") {
       map = load_ros_map(path);
     } else {
@@ -239,7 +242,18 @@ WorldMap load_file(const json& j, const Where& where) {
   return map;
 }
 
+bool is_random_start(const json& j) {
+  return j.is_object() && j.contains("start") && j.at("start").is_string() &&
+         j.at("start").get<std::string>() == "random";
+}
+
 WorldMap build(const json& j, const Where& where) {
+  if (is_random_start(j)) {
+    throw ConfigError(
+        where.key("start"),
+        "start \"random\" is drawn per run, from the run seed; allowed here: a cell x;y (random "
+        "starts are for sweeps and fsweep sim)");
+  }
   if (!j.is_object()) {
     throw ConfigError(where.base, "a map must be a JSON object with 'generator' or 'file', got " + j.dump());
   }
@@ -250,6 +264,19 @@ WorldMap build(const json& j, const Where& where) {
                                       ") or 'file'");
   }
   return has_generator ? generate(j, where) : load_file(j, where);
+}
+
+RunMap build_run_map(const json& j, const Where& where) {
+  RunMap out;
+  if (is_random_start(j)) {
+    json rest = j;
+    rest.erase("start");
+    out.map = build(rest, where);
+    out.random_start = true;
+  } else {
+    out.map = build(j, where);
+  }
+  return out;
 }
 
 /// A spec option value: an integer, a number, true/false, or else the text itself.
@@ -271,10 +298,8 @@ json parse_value(const std::string& text) {
   return json(text);
 }
 
-}  // namespace
-
-WorldMap load_map_spec(const std::string& spec) {
-  const Where where{"map spec '" + spec + "'", false};
+/// The JSON object form of a SPEC string (options parsed as values), reporting malformed specs.
+json spec_object(const std::string& spec, const Where& where) {
   // The source ends at the first ':'; file paths therefore must not contain ':'.
   const std::size_t colon = spec.find(':');
   const std::string head = spec.substr(0, colon);
@@ -306,11 +331,29 @@ WorldMap load_map_spec(const std::string& spec) {
       rest.remove_prefix(comma + 1);
     }
   }
-  return build(j, where);
+  return j;
+}
+
+Where spec_where(const std::string& spec) { return Where{"map spec '" + spec + "'", false}; }
+
+}  // namespace
+
+WorldMap load_map_spec(const std::string& spec) {
+  const Where where = spec_where(spec);
+  return build(spec_object(spec, where), where);
 }
 
 WorldMap load_map_json(const nlohmann::json& j, const std::string& where) {
   return build(j, Where{where, true});
+}
+
+RunMap load_run_map_spec(const std::string& spec) {
+  const Where where = spec_where(spec);
+  return build_run_map(spec_object(spec, where), where);
+}
+
+RunMap load_run_map_json(const nlohmann::json& j, const std::string& where) {
+  return build_run_map(j, Where{where, true});
 }
 
 }  // namespace world

@@ -2,7 +2,8 @@
 /// @file map_spec.hpp
 /// A map SPEC names a map source in one string, as on the command line:
 /// - a file path: `.map` (MovingAI), `.yaml` (ROS map_server), `.png`/`.pgm` (bitmap),
-///   `.txt` (ASCII), optionally followed by `:key=value,...` options
+///   `.txt` (ASCII), `.json` (a HouseExpo floor plan, map_loaders.hpp), optionally followed by
+///   `:key=value,...` options
 ///   (`res=0.5`, `start=x;y`, bitmap: `threshold=127`, `mpp=0.05` or `size=40x18`);
 /// - a generator: `KIND:key=value,...`, e.g. `rooms:w=120,h=80,door=3,seed=4`
 ///   (keys: w, h, res, seed, border, p, door, min_room, wall, block, street, corridor,
@@ -16,13 +17,15 @@
 /// - Keys each source accepts: generators w, h, res, seed, start plus their own (free: border,
 ///   wall; random: border, wall, p; rooms: door, min_room, wall; office: door, min_room, wall,
 ///   corridor; manhattan: block, street; oldtown: squares, lane); `.map`/`.txt`: res, start;
+///   `.json`: res (default HouseExpo's 0.04 m), start;
 ///   `.yaml`/`.yml`: start (resolution from the YAML); `.png`/`.pgm`: res, start, threshold,
 ///   mpp, size. Integers must be integers; nothing is rounded or clamped.
 /// - Bitmaps: threshold defaults to 127 (Stage). With `mpp` or `size`, `res` is the cell size
 ///   to resample to (max-pooling; omitted: one pixel per cell, pixels must be square). With
 ///   neither, one pixel is one cell of `res` metres (default 1).
 /// - `start` overrides the source's start (generators: their default; files: the first free
-///   cell in row-major order); it must be a free cell inside the grid.
+///   cell in row-major order); it must be a free cell inside the grid, or "random" where runs
+///   draw their own start (load_run_map_spec()).
 /// - Errors from loaders and generators are rethrown with the spec (or JSON path) in front.
 
 #include <nlohmann/json_fwd.hpp>
@@ -40,6 +43,20 @@ inline namespace world {
 
 /// The same from a JSON object (sweep files); `where` is its JSON path for messages.
 [[nodiscard]] WorldMap load_map_json(const nlohmann::json& j, const std::string& where);
+
+/// A map as runs use it: the map, and whether each run draws its own start cell.
+struct RunMap {
+  WorldMap map;
+  /// The source said `start: "random"` (`start=random` in a SPEC string): each run draws its
+  /// start with draw_region_cell() from its run seed over largest_free_region() of its motion
+  /// rule (world_map.hpp). map.start is then the loader's default start, unused by runs.
+  bool random_start = false;
+};
+
+/// load_map_spec() and load_map_json() that also accept `start: "random"` (those two refuse it,
+/// naming where random starts are allowed: sweeps and `fsweep sim`).
+[[nodiscard]] RunMap load_run_map_spec(const std::string& spec);
+[[nodiscard]] RunMap load_run_map_json(const nlohmann::json& j, const std::string& where);
 
 }  // namespace world
 }  // namespace fsweep

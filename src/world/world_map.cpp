@@ -5,6 +5,8 @@
 #include <limits>
 #include <vector>
 
+#include "core/random.hpp"
+
 namespace fsweep {
 inline namespace world {
 
@@ -12,18 +14,19 @@ int WorldMap::free_count() const {
   return static_cast<int>(std::count(occupied.data().begin(), occupied.data().end(), std::uint8_t{0}));
 }
 
-/// Breadth-first search over free cells. A diagonal step from c to c + (dx, dy) needs both
-/// orthogonal cells c + (dx, 0) and c + (0, dy) free unless corner cutting is allowed (the
-/// MovingAI convention, docs/architecture.md, "Robot, motion and energy"). A `from` that is not free yields
-/// an all-zero grid.
-Grid<std::uint8_t> reachable_free(const WorldMap& map, Cell from, bool allow_corner_cutting) {
-  Grid<std::uint8_t> reached(map.width(), map.height(), 0);
-  if (!map.is_free(from)) return reached;
-  std::vector<int> queue;
-  queue.reserve(static_cast<std::size_t>(map.occupied.size()));
+namespace {
+
+/// Breadth-first search over free cells from `from` (free, not yet marked), marking every cell
+/// it reaches with 1 in `reached` and appending its index to `queue`. A diagonal step from c to
+/// c + (dx, dy) needs both orthogonal cells c + (dx, 0) and c + (0, dy) free unless corner
+/// cutting is allowed (the MovingAI convention, docs/architecture.md, "Robot, motion and
+/// energy"); the rule is symmetric, so the cells reached form one connected region.
+void flood_free(const WorldMap& map, Cell from, bool allow_corner_cutting, Grid<std::uint8_t>& reached,
+                std::vector<int>& queue) {
+  const std::size_t first = queue.size();
   reached.at(from) = 1;
   queue.push_back(map.occupied.index(from));
-  for (std::size_t head = 0; head < queue.size(); ++head) {
+  for (std::size_t head = first; head < queue.size(); ++head) {
     const Cell c = map.occupied.cell(queue[head]);
     for (int h = 0; h < 8; ++h) {
       const Cell d = kDirections[static_cast<std::size_t>(h)];
@@ -37,7 +40,45 @@ Grid<std::uint8_t> reachable_free(const WorldMap& map, Cell from, bool allow_cor
       queue.push_back(map.occupied.index(n));
     }
   }
+}
+
+}  // namespace
+
+Grid<std::uint8_t> reachable_free(const WorldMap& map, Cell from, bool allow_corner_cutting) {
+  Grid<std::uint8_t> reached(map.width(), map.height(), 0);
+  if (!map.is_free(from)) return reached;
+  std::vector<int> queue;
+  queue.reserve(static_cast<std::size_t>(map.occupied.size()));
+  flood_free(map, from, allow_corner_cutting, reached, queue);
   return reached;
+}
+
+Grid<std::uint8_t> largest_free_region(const WorldMap& map, bool allow_corner_cutting) {
+  Grid<std::uint8_t> seen(map.width(), map.height(), 0);
+  std::vector<int> region;
+  std::vector<int> best;
+  for (int i = 0; i < map.occupied.size(); ++i) {
+    if (!map.is_free(i) || seen[i] != 0) continue;
+    region.clear();
+    flood_free(map, map.occupied.cell(i), allow_corner_cutting, seen, region);
+    if (region.size() > best.size()) best.swap(region);  // strict: the earliest region wins ties
+  }
+  Grid<std::uint8_t> out(map.width(), map.height(), 0);
+  for (const int i : best) out[i] = 1;
+  return out;
+}
+
+Cell draw_region_cell(const Grid<std::uint8_t>& region, std::uint64_t seed) {
+  const auto cells = static_cast<std::uint64_t>(std::count(region.data().begin(), region.data().end(), 1));
+  if (cells == 0) return Cell{-1, -1};
+  Rng rng = make_rng(seed, "map/start");
+  std::uint64_t k = uniform_below(rng, cells);
+  for (int i = 0; i < region.size(); ++i) {
+    if (region[i] == 0) continue;
+    if (k == 0) return region.cell(i);
+    --k;
+  }
+  return Cell{-1, -1};  // not reached: k < cells
 }
 
 Cell nearest_free_cell(const WorldMap& map, Cell near) {

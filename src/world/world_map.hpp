@@ -35,6 +35,16 @@ struct WorldMap {
 [[nodiscard]] Grid<std::uint8_t> reachable_free(const WorldMap& map, Cell from,
                                                 bool allow_corner_cutting = false);
 
+/// The largest region of free cells connected by 8-connected moves (the motion rule of
+/// reachable_free()); of equal regions, the one holding the lowest cell index. 1 for its cells.
+/// All zero on a map without free cells.
+[[nodiscard]] Grid<std::uint8_t> largest_free_region(const WorldMap& map, bool allow_corner_cutting = false);
+
+/// A cell drawn uniformly from the cells of `region` that are 1 (row-major order; the k-th of
+/// them for k drawn from stream "map/start" of `seed`, core/random.hpp). {-1, -1} when none is.
+/// A map's `start: "random"` (map_spec.hpp) draws with the run seed from largest_free_region().
+[[nodiscard]] Cell draw_region_cell(const Grid<std::uint8_t>& region, std::uint64_t seed);
+
 /// The first free cell in row-major order nearest (Euclidean, ties by index) to `near`;
 /// used by generators that must guarantee a free start. Returns {-1,-1} when no cell is free.
 [[nodiscard]] Cell nearest_free_cell(const WorldMap& map, Cell near);

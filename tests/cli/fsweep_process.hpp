@@ -19,9 +19,11 @@ struct CliOutcome {
   std::string output;  // stdout and stderr
 };
 
-/// Runs `fsweep ARGS` (a shell command line) from the build tree.
-inline CliOutcome run_fsweep(const std::string& args) {
-  const std::string cmd = std::string(FSWEEP_BINARY_DIR) + "/bin/fsweep " + args + " 2>&1";
+/// Runs `fsweep ARGS` (a shell command line) from the build tree, or from `dir` when given (the
+/// README's commands name files relative to the repository).
+inline CliOutcome run_fsweep(const std::string& args, const std::string& dir = "") {
+  const std::string cmd = (dir.empty() ? std::string() : "cd '" + dir + "' && ") +
+                          std::string(FSWEEP_BINARY_DIR) + "/bin/fsweep " + args + " 2>&1";
   CliOutcome out;
   FILE* pipe = popen(cmd.c_str(), "r");
   if (pipe == nullptr) return out;

@@ -55,9 +55,9 @@ TEST(RunsHeader, ClassifiesIdentityInstanceConfigOutcomeAndMetricColumns) {
   const RunsHeader h(kHeader, "runs.csv");
   using V = std::vector<std::string>;
   EXPECT_EQ(names_with_role(h, ColumnRole::Identity), (V{"run_index", "run_key"}));
-  EXPECT_EQ(names_with_role(h, ColumnRole::Instance), (V{"map", "map.start", "seed"}));
-  EXPECT_EQ(names_with_role(h, ColumnRole::Config), (V{"map_class", "strategy_label", "map.width", "strategy",
-                                                       "strategy.w1", "planner", "robot.dock"}));
+  EXPECT_EQ(names_with_role(h, ColumnRole::Instance), (V{"map", "map.width", "map.start", "seed"}));
+  EXPECT_EQ(names_with_role(h, ColumnRole::Config),
+            (V{"map_class", "strategy_label", "strategy", "strategy.w1", "planner", "robot.dock"}));
   EXPECT_EQ(names_with_role(h, ColumnRole::Outcome), (V{"end_reason", "end_detail"}));
   EXPECT_EQ(names_with_role(h, ColumnRole::Metric), (V{"distance_m", "planner_time_s", "wall_time_s",
                                                        "coverage", "stops", "time_s", "optimal_distance_m"}));
@@ -128,7 +128,10 @@ TEST(RunsHeader, WriterColumnsReadBackInTheirRoles) {
   const RunsHeader h(header, "runs.csv");
   std::vector<std::string> expected_config{kMapClassColumn, kStrategyLabelColumn};
   std::copy_if(config_names.begin(), config_names.end(), std::back_inserter(expected_config),
-               [](const std::string& n) { return n != kMapColumn && n != kMapStartColumn; });
+               [](const std::string& n) {
+                 return n != kMapColumn && n != kMapStartColumn && n != kMapWidthColumn &&
+                        n != kMapHeightColumn;
+               });
   EXPECT_EQ(h.names_of(h.config()), expected_config);
   std::vector<std::string> expected_metrics(metrics.begin() + 2, metrics.end());
   expected_metrics.insert(expected_metrics.end(), kSweepMetricColumns.begin(), kSweepMetricColumns.end());

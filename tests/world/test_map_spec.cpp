@@ -150,7 +150,7 @@ TEST(MapSpec, UnknownKindsAndExtensionsListTheAllowedOnes) {
       [] { (void)load_map_spec("forest:w=10"); },
       {"unknown map kind 'forest'", "free, random, rooms, office, manhattan, oldtown", ".map"});
   expect_config_error([] { (void)load_map_spec("maps/plan.bmp"); },
-                      {"unknown extension", ".map, .txt, .yaml, .yml, .png, .pgm"});
+                      {"unknown extension", ".map, .txt, .json, .yaml, .yml, .png, .pgm"});
   expect_config_error(
       [] {
         (void)load_map_json({{"generator", "free"}, {"file", "x.map"}}, "/maps/5");
