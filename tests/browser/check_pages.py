@@ -15,7 +15,7 @@ checks, per page:
   heat map, an exact-search heat map), it has the trajectories of the best and worst runs and
   behaviours, each re-simulated to the recorded outcome, and the label's HTML is text (no
   element made of it, no script);
-- compare.html: the plots of both sides are embedded;
+- compare.html: the plots of both sides are embedded, one image per PNG;
 
 and saves a screenshot of each (--screenshots DIR). Exit 0 when every check passes, 1 when one
 fails, 77 (ctest SKIP_RETURN_CODE) only when chromium cannot start.
@@ -239,6 +239,11 @@ def main():
             problems += check_page(driver, path, os.path.join(shots, shot) if shot else None, args.width)
             if key.startswith("report"):
                 problems += check_report(driver, path, pages["plots"][path])
+            else:
+                drawn = sum(len([n for n in os.listdir(d) if n.endswith(".png")]) for d in pages["plots"].values())
+                shown = driver.execute_script("return document.images.length")
+                if shown != drawn:
+                    problems.append(f"{path}: {shown} images, the two plots directories have {drawn} PNGs")
         if problems:
             raise CheckFailed("\n".join(problems))
         print(f"3 pages checked in chromium: results {made - start:.1f} s, browser {time.time() - made:.1f} s; "
