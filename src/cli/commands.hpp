@@ -21,6 +21,7 @@ Command add_merge_command(CLI::App& app);
 Command add_compare_command(CLI::App& app);
 Command add_slurm_command(CLI::App& app);
 Command add_plot_command(CLI::App& app);
+Command add_report_command(CLI::App& app);
 Command add_describe_command(CLI::App& app);
 
 }  // namespace fsweep::cli

@@ -45,6 +45,7 @@ int main(int argc, char** argv) try {
   commands["compare"] = fsweep::cli::add_compare_command(app);
   commands["slurm"] = fsweep::cli::add_slurm_command(app);
   commands["plot"] = fsweep::cli::add_plot_command(app);
+  commands["report"] = fsweep::cli::add_report_command(app);
   commands["describe"] = fsweep::cli::add_describe_command(app);
   try {
     app.parse(argc, argv);

@@ -4,6 +4,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
+#include <utility>
 
 #include "core/config_error.hpp"
 
@@ -24,6 +26,15 @@ void write_file_atomically(const std::string& path, std::string_view contents) {
   std::error_code ec;
   std::filesystem::rename(tmp, path, ec);
   if (ec) throw ConfigError(path, "cannot replace: " + ec.message());
+}
+
+std::optional<std::string> read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::nullopt;
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  if (in.bad()) return std::nullopt;
+  return std::move(bytes).str();
 }
 
 std::string read_first_line(const std::string& path) {

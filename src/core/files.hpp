@@ -3,6 +3,7 @@
 /// Whole-file helpers shared by every layer that writes results.
 
 #include <fstream>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -18,6 +19,9 @@ inline namespace core {
 /// Writes `contents` to `path` atomically: a temp file in the same directory, then rename.
 /// Throws ConfigError naming the file on an error.
 void write_file_atomically(const std::string& path, std::string_view contents);
+
+/// The whole file's bytes; nullopt when it cannot be opened or read.
+[[nodiscard]] std::optional<std::string> read_file(const std::string& path);
 
 /// The first line of a file without its newline; empty when the file is missing or has no
 /// complete first line.

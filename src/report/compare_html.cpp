@@ -1,17 +1,16 @@
 // compare.html of `fsweep compare` (compare.hpp): inline SVG charts, tables, embedded PNGs.
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <limits>
 #include <set>
 #include <sstream>
 #include <system_error>
 
+#include "core/files.hpp"
 #include "report/compare.hpp"
+#include "report/html.hpp"
 
 namespace fsweep {
 inline namespace report {
@@ -23,51 +22,10 @@ constexpr int kLabelWidth = 300;  // px left of each chart for the labels
 constexpr int kPlotWidth = 560;   // px of the chart's data area
 constexpr int kChartWidth = kLabelWidth + kPlotWidth + 20;
 
-std::string escape(const std::string& s) {
-  std::string out;
-  for (const char c : s) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
-
 std::string num(double v, const char* format = "%.4g") {
   char buf[48];
   std::snprintf(buf, sizeof(buf), format, v);
   return buf;
-}
-
-/// Standard base64 (RFC 4648) with padding.
-std::string base64(const std::string& bytes) {
-  static constexpr char kAlphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  out.reserve((bytes.size() + 2) / 3 * 4);
-  for (std::size_t i = 0; i < bytes.size(); i += 3) {
-    const std::size_t n = std::min<std::size_t>(3, bytes.size() - i);
-    std::uint32_t v = 0;
-    for (std::size_t j = 0; j < 3; ++j) {
-      v = (v << 8) | (j < n ? static_cast<unsigned char>(bytes[i + j]) : 0U);
-    }
-    for (std::size_t j = 0; j < 4; ++j) {
-      out += j <= n ? kAlphabet[(v >> (18 - 6 * j)) & 63U] : '=';
-    }
-  }
-  return out;
 }
 
 std::string label_text(const std::string& s, std::size_t max_chars = 46) {
@@ -100,10 +58,10 @@ void axis(std::ostringstream& out, double lo, double hi, int height, const std::
     const double x = kLabelWidth + kPlotWidth * i / 4.0;
     out << "<line x1='" << num(x) << "' x2='" << num(x) << "' y1='0' y2='" << height << "' stroke='#ddd'/>"
         << "<text x='" << num(x) << "' y='" << height + 14 << "' text-anchor='middle' font-size='11'>"
-        << escape(num(v)) << "</text>";
+        << html_escape(num(v)) << "</text>";
   }
   out << "<text x='" << kLabelWidth + kPlotWidth / 2 << "' y='" << height + 30
-      << "' text-anchor='middle' font-size='12'>" << escape(title) << "</text>";
+      << "' text-anchor='middle' font-size='12'>" << html_escape(title) << "</text>";
 }
 
 /// Box plots of metric `m` (index into box_metrics): baseline above NEW per configuration.
@@ -121,7 +79,7 @@ void box_chart(std::ostringstream& out, const CompareReport& r, std::size_t m) {
     }
     if (any) shown.push_back(&c);
   }
-  out << "<h3>" << escape(r.box_metrics[m]) << "</h3>\n";
+  out << "<h3>" << html_escape(r.box_metrics[m]) << "</h3>\n";
   if (shown.empty()) {
     out << "<p>No values in either summary.csv.</p>\n";
     return;
@@ -140,8 +98,8 @@ void box_chart(std::ostringstream& out, const CompareReport& r, std::size_t m) {
     const ConfigComparison& c = *shown[i];
     const int y = static_cast<int>(i) * kRow + 2;
     out << "<text x='" << kLabelWidth - 6 << "' y='" << y + kRow / 2 + 4
-        << "' text-anchor='end' font-size='11'><title>" << escape(c.name) << "</title>"
-        << escape(label_text(c.name)) << "</text>";
+        << "' text-anchor='end' font-size='11'><title>" << html_escape(c.name) << "</title>"
+        << html_escape(label_text(c.name)) << "</text>";
     if (m < c.baseline_box.size() && c.baseline_box[m])
       box(out, *c.baseline_box[m], lo, hi, y + 2, 11, kBaselineColour);
     if (m < c.new_box.size() && c.new_box[m]) box(out, *c.new_box[m], lo, hi, y + 15, 11, kNewColour);
@@ -196,10 +154,10 @@ void speed_chart(std::ostringstream& out, const CompareReport& r) {
     const double a = std::min(x(1.0), x(*k.ratio)), b = std::max(x(1.0), x(*k.ratio));
     const std::string name = k.kind == "speed" ? "sweep seconds per run" : k.name;
     out << "<text x='" << kLabelWidth - 6 << "' y='" << y + 12 << "' text-anchor='end' font-size='11'><title>"
-        << escape(name) << "</title>" << escape(label_text(name)) << "</text>"
+        << html_escape(name) << "</title>" << html_escape(label_text(name)) << "</text>"
         << "<rect x='" << num(a) << "' y='" << y + 2 << "' width='" << num(std::max(1.0, b - a))
-        << "' height='12' fill='" << colour << "'><title>" << escape(name) << " x" << num(*k.ratio, "%.3f")
-        << "</title></rect>";
+        << "' height='12' fill='" << colour << "'><title>" << html_escape(name) << " x"
+        << num(*k.ratio, "%.3f") << "</title></rect>";
   }
   out << "</svg>\n";
 }
@@ -210,11 +168,12 @@ void check_table(std::ostringstream& out, const CompareReport& r, bool quality) 
   for (const auto& k : r.checks) {
     const bool is_quality = k.kind == "run" || k.kind == "config";
     if (is_quality != quality) continue;
-    out << "<tr class='" << (k.failure ? "fail" : "") << "'><td>" << k.kind << "</td><td>" << escape(k.name)
-        << "</td><td>" << escape(k.metric) << "</td><td>" << escape(k.baseline) << "</td><td>"
-        << escape(k.current) << "</td><td>" << (k.delta ? num(*k.delta) : "") << "</td><td>"
-        << (k.ratio ? num(*k.ratio, "%.3f") : "") << "</td><td>" << (k.tolerance ? num(*k.tolerance) : "")
-        << "</td><td>" << escape(to_string(k.status)) << (k.failure ? " (fail)" : "") << "</td></tr>\n";
+    out << "<tr class='" << (k.failure ? "fail" : "") << "'><td>" << k.kind << "</td><td>"
+        << html_escape(k.name) << "</td><td>" << html_escape(k.metric) << "</td><td>"
+        << html_escape(k.baseline) << "</td><td>" << html_escape(k.current) << "</td><td>"
+        << (k.delta ? num(*k.delta) : "") << "</td><td>" << (k.ratio ? num(*k.ratio, "%.3f") : "")
+        << "</td><td>" << (k.tolerance ? num(*k.tolerance) : "") << "</td><td>"
+        << html_escape(to_string(k.status)) << (k.failure ? " (fail)" : "") << "</td></tr>\n";
   }
   out << "</table>\n";
 }
@@ -229,42 +188,36 @@ std::set<std::string> png_names(const std::string& dir) {
 }
 
 std::string png_cell(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return "<td>(none)</td>";
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  return "<td><img style='max-width:100%' alt='" + escape(path) + "' src='data:image/png;base64," +
-         base64(bytes) + "'></td>";
+  const auto bytes = read_file(path);
+  return bytes ? "<td>" + png_img(*bytes, path) + "</td>" : "<td>(none)</td>";
 }
 
 }  // namespace
 
 std::string compare_html(const CompareReport& r) {
   std::ostringstream out;
-  out << "<!DOCTYPE html>\n<html><head><meta charset='utf-8'><title>fsweep compare</title><style>"
-         "body{font-family:sans-serif;margin:1em 2em}table{border-collapse:collapse;font-size:13px}"
-         "td,th{border:1px solid #ccc;padding:2px 6px;text-align:left}tr.fail{background:#fdd}"
-         ".warn{background:#fff3cd;border:1px solid #e0c060;padding:6px;margin:4px 0}"
-         ".verdict{font-size:1.3em;font-weight:bold}</style></head><body>\n";
-  out << "<h1>fsweep compare</h1>\n<p>new: <code>" << escape(r.new_dir) << "</code><br>baseline: <code>"
-      << escape(r.baseline_dir) << "</code></p>\n";
+  out << html_page_start("fsweep compare",
+                         "tr.fail{background:#fdd}.verdict{font-size:1.3em;font-weight:bold}");
+  out << "<h1>fsweep compare</h1>\n<p>new: <code>" << html_escape(r.new_dir) << "</code><br>baseline: <code>"
+      << html_escape(r.baseline_dir) << "</code></p>\n";
   out << "<p class='verdict' style='color:" << (r.regressions ? "#c00" : "#080") << "'>"
       << (r.regressions
               ? std::to_string(r.regressions) + (r.regressions == 1 ? " regression" : " regressions")
               : std::string("no regressions"))
       << "</p>\n";
-  for (const auto& w : r.warnings) out << "<div class='warn'>" << escape(w) << "</div>\n";
-  for (const auto& n : r.notes) out << "<p>" << escape(n) << "</p>\n";
+  for (const auto& w : r.warnings) out << "<div class='warn'>" << html_escape(w) << "</div>\n";
+  for (const auto& n : r.notes) out << "<p>" << html_escape(n) << "</p>\n";
 
   // 1. Status per configuration.
   out << "<h2>Configurations</h2>\n<table><tr>";
-  for (const auto& c : r.label_columns) out << "<th>" << escape(c) << "</th>";
+  for (const auto& c : r.label_columns) out << "<th>" << html_escape(c) << "</th>";
   out << "<th>kind</th><th>runs baseline/new</th><th>status</th><th>worst difference</th></tr>\n";
   for (const auto& c : r.configs) {
     out << "<tr class='" << (c.failure ? "fail" : "") << "'>";
-    for (const auto& v : c.label) out << "<td>" << escape(v) << "</td>";
+    for (const auto& v : c.label) out << "<td>" << html_escape(v) << "</td>";
     out << "<td>" << (c.reproducible ? "exact" : "quantiles") << "</td><td>" << c.baseline_runs << "/"
-        << c.new_runs << "</td><td>" << escape(to_string(c.status)) << "</td><td>" << escape(c.worst)
-        << "</td></tr>\n";
+        << c.new_runs << "</td><td>" << html_escape(to_string(c.status)) << "</td><td>"
+        << html_escape(c.worst) << "</td></tr>\n";
   }
   out << "</table>\n";
 
@@ -288,7 +241,7 @@ std::string compare_html(const CompareReport& r) {
   if (!pngs.empty()) {
     out << "<h2>Plots</h2>\n<table><tr><th>baseline</th><th>new</th></tr>\n";
     for (const auto& name : pngs) {
-      out << "<tr><th colspan='2'>" << escape(name) << "</th></tr><tr>"
+      out << "<tr><th colspan='2'>" << html_escape(name) << "</th></tr><tr>"
           << png_cell(r.baseline_dir + "/plots/" + name) << png_cell(r.new_dir + "/plots/" + name)
           << "</tr>\n";
     }

@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
-#include "core/config_error.hpp"
+#include "core/files.hpp"
 
 namespace fsweep {
 inline namespace sim {
@@ -38,10 +40,18 @@ class Canvas {
       }
     }
   }
-  void save(const std::string& path) const {
-    if (stbi_write_png(path.c_str(), w_, h_, 3, px_.data(), w_ * 3) == 0) {
-      throw ConfigError(path, "cannot write PNG");
+  /// The canvas as PNG file bytes.
+  [[nodiscard]] std::string png() const {
+    std::string bytes;
+    auto append = [](void* context, void* data, int size) {
+      static_cast<std::string*>(context)->append(static_cast<const char*>(data),
+                                                 static_cast<std::size_t>(size));
+    };
+    if (stbi_write_png_to_func(append, &bytes, w_, h_, 3, px_.data(), w_ * 3) == 0) {
+      throw std::runtime_error("stb could not encode a PNG of " + std::to_string(w_) + " x " +
+                               std::to_string(h_) + " pixels");
     }
+    return bytes;
   }
 
  private:
@@ -65,7 +75,7 @@ Rgb time_colour(double t) {
 
 }  // namespace
 
-void write_trajectory_png(const std::string& path, const WorldMap& map, const RunResult& result, int scale) {
+std::string trajectory_png(const WorldMap& map, const RunResult& result, int scale) {
   if (scale <= 0) scale = std::clamp(800 / std::max({map.width(), map.height(), 1}), 1, 16);
   Canvas canvas(map.width(), map.height(), scale);
   const KnownMap& known = result.final_known;
@@ -91,7 +101,11 @@ void write_trajectory_png(const std::string& path, const WorldMap& map, const Ru
     for (int dx = -1; dx <= 1; ++dx)
       canvas.cell(Cell{result.dock.x + dx, result.dock.y + dy}, Rgb{0, 170, 0});
   }
-  canvas.save(path);
+  return canvas.png();
+}
+
+void write_trajectory_png(const std::string& path, const WorldMap& map, const RunResult& result, int scale) {
+  write_file_atomically(path, trajectory_png(map, result, scale));
 }
 
 }  // namespace sim

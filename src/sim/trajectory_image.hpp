@@ -11,10 +11,14 @@
 namespace fsweep {
 inline namespace sim {
 
-/// Colours: unexplored free = light grey, unexplored occupied = mid grey, explored free =
-/// white, explored occupied = black, path = blue (start) to red (end), recharge points and the
-/// dock = green, frontier cells left = magenta. Each cell is `scale` x `scale` pixels; scale 0
-/// picks one so the longer side is about 800 pixels. Throws ConfigError if writing fails.
+/// The picture as PNG file bytes. Colours: unexplored free = light grey, unexplored occupied = mid grey,
+/// explored free = white, explored occupied = black, path = blue (start) to red (end), recharge points and
+/// the dock = green, frontier cells left = magenta. Each cell is `scale` x `scale` pixels; scale 0 picks one
+/// so the longer side is about 800 pixels.
+[[nodiscard]] std::string trajectory_png(const WorldMap& map, const RunResult& result, int scale = 0);
+
+/// trajectory_png() written to `path` (temp file and rename). Throws ConfigError naming the
+/// file if writing fails.
 void write_trajectory_png(const std::string& path, const WorldMap& map, const RunResult& result,
                           int scale = 0);
 

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 namespace fsweep::testing {
@@ -41,6 +42,14 @@ inline std::string fresh_temp_dir(const std::string& tag, const std::string& nam
                    ("fsweep_cli_" + tag + "_" + name + "_" + std::to_string(getpid()));
   std::filesystem::remove_all(dir);
   return dir.string();
+}
+
+/// The whole file ("" when it cannot be read).
+inline std::string read_all(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
 }
 
 /// Number of lines of a text file (0 when it cannot be read).

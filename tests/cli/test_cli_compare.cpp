@@ -15,14 +15,8 @@
 namespace {
 
 namespace fs = std::filesystem;
+using fsweep::testing::read_all;
 using fsweep::testing::run_fsweep;
-
-std::string read_all(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 /// Runs a sweep of 1 map x 2 strategies x 2 repetitions (4 runs, planner astar) into
 /// `dir`/base and copies it to `dir`/new.

@@ -1,0 +1,381 @@
+/// @file report_page.cpp
+/// report.html (report_page.hpp): the sections in the order of the file comment there.
+
+#include "report/report_page.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <set>
+#include <sstream>
+#include <string_view>
+
+#include "core/csv_format.hpp"
+#include "report/html.hpp"
+
+namespace fsweep {
+inline namespace report {
+namespace {
+
+/// best.csv's columns before the config columns: rank, config_id, n and the objective's median,
+/// q05 and q95 (aggregate.hpp).
+constexpr std::size_t kBestLeadingColumns = 6;
+
+/// The summary's metrics shown in its compact table (besides the objective), when present.
+constexpr const char* kSummaryMetrics[] = {"distance_m",       "energy",    "coverage",
+                                           "explored_area_m2", "decisions", "recharges"};
+
+/// A manifest value as text: strings as they are, numbers as the CSV files write them.
+std::string json_text(const nlohmann::json& j) {
+  if (j.is_string()) return j.get<std::string>();
+  if (j.is_number_float()) return format_number(j.get<double>());
+  if (j.is_null()) return "";
+  return j.dump();
+}
+
+/// The manifest's value at `pointer` as text, empty when absent.
+std::string field(const nlohmann::json& manifest, const char* pointer) {
+  const nlohmann::json::json_pointer p(pointer);
+  return manifest.contains(p) ? json_text(manifest.at(p)) : std::string();
+}
+
+/// A POSIX shell word: as it is when it has only safe characters, else single-quoted.
+std::string shell_word(const std::string& s) {
+  const bool safe = !s.empty() && std::all_of(s.begin(), s.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) != 0 ||
+           std::string_view("/._-+=:,@%").find(c) != std::string_view::npos;
+  });
+  if (safe) return s;
+  std::string out = "'";
+  for (const char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+/// The table of `t`'s columns `keep` (indices), after one line listing the columns `fold`
+/// whose cells are equal in every row shown, and a line saying how many rows are left out.
+std::string folded_table(const CsvExcerpt& t, std::vector<std::size_t> keep,
+                         const std::vector<std::size_t>& fold) {
+  std::ostringstream out;
+  std::string same;
+  for (const std::size_t c : fold) {
+    const bool constant = std::all_of(t.rows.begin(), t.rows.end(),
+                                      [&](const auto& row) { return row[c] == t.rows.front()[c]; });
+    if (constant && !t.rows.empty()) {
+      if (!t.rows.front()[c].empty())
+        same += (same.empty() ? "" : "; ") + t.header[c] + " = " + t.rows.front()[c];
+    } else {
+      keep.push_back(c);
+    }
+  }
+  std::sort(keep.begin(), keep.end());
+  if (!same.empty()) out << "<p class='same'>Equal in every row shown: " << html_escape(same) << "</p>\n";
+  std::vector<std::string> header;
+  header.reserve(keep.size());
+  for (const std::size_t c : keep) header.push_back(t.header[c]);
+  std::vector<std::vector<std::string>> rows;
+  for (const auto& row : t.rows) {
+    rows.emplace_back();
+    for (const std::size_t c : keep) rows.back().push_back(row[c]);
+  }
+  out << "<div class='scroll'>" << html_table(header, rows) << "</div>\n";
+  if (t.total_rows > t.rows.size()) {
+    out << "<p>The first " << t.rows.size() << " of " << t.total_rows << " rows; every row is in <code>"
+        << html_escape(t.path) << "</code>.</p>\n";
+  }
+  return out.str();
+}
+
+/// Index of column `name` of `t`, or -1.
+int column(const CsvExcerpt& t, const std::string& name) {
+  const auto it = std::find(t.header.begin(), t.header.end(), name);
+  return it == t.header.end() ? -1 : static_cast<int>(it - t.header.begin());
+}
+
+void what_ran(std::ostringstream& out, const ResultDir& r) {
+  const nlohmann::json& m = r.manifest;
+  std::vector<std::vector<std::string>> rows;
+  const auto add = [&](const std::string& key, const std::string& value) {
+    if (!value.empty()) rows.push_back({key, value});
+  };
+  add("result directory", r.dir);
+  add("sweep file", field(m, "/sweep_file"));
+  add("sweep hash", field(m, "/sweep_hash"));
+  add("status", field(m, "/status"));
+  add("objective (best.csv)", field(m, "/objective"));
+  add("seed, repetitions", field(m, "/seed") + ", " + field(m, "/repetitions"));
+  add("runs (manifest)", "total " + field(m, "/runs/total") + ", done " + field(m, "/runs/done") + ", ran " +
+                             field(m, "/runs/ran") + ", skipped as done before " + field(m, "/runs/skipped") +
+                             ", failed " + field(m, "/runs/failed"));
+  std::string ends;
+  for (const auto& [reason, n] : r.end_reasons)
+    ends += (ends.empty() ? ": " : ", ") + reason + " " + std::to_string(n);
+  add("runs.csv", std::to_string(r.runs) + " runs" + ends);
+  if (!field(m, "/shard/merged_from").empty()) {
+    add("shards", "merged from " + field(m, "/shard/merged_from") + " shards (fsweep merge)");
+  } else if (field(m, "/shard/count") != "1" && !field(m, "/shard/count").empty()) {
+    add("shard", field(m, "/shard/index") + " of " + field(m, "/shard/count"));
+  }
+  add("version (git revision)", field(m, "/git_revision"));
+  add("compiler", field(m, "/compiler"));
+  std::string libraries;
+  if (m.contains("libraries") && m["libraries"].is_object()) {
+    for (const auto& [name, version] : m["libraries"].items())
+      libraries += (libraries.empty() ? "" : ", ") + name + " " + json_text(version);
+  }
+  add("libraries", libraries);
+  add("host, CPU", field(m, "/host") + ", " + field(m, "/cpu_model"));
+  add("threads", field(m, "/threads"));
+  add("started, ended (UTC)", field(m, "/start_utc") + ", " + field(m, "/end_utc"));
+  add("wall time (s)", field(m, "/wall_s"));
+  add("runs per second", field(m, "/runs_per_s"));
+  out << "<h2 id='what-ran'>What ran</h2>\n<table>";
+  for (const auto& row : rows)
+    out << "<tr><th>" << html_escape(row[0]) << "</th><td>" << html_escape(row[1]) << "</td></tr>";
+  out << "</table>\n";
+  if (m.contains("warnings") && m["warnings"].is_array()) {
+    for (const auto& w : m["warnings"])
+      out << "<div class='warn'>warning: " << html_escape(json_text(w)) << "</div>\n";
+  }
+  for (const auto& n : r.notes) out << "<p>" << html_escape(n) << "</p>\n";
+  out << "<details><summary>The sweep (manifest.json's copy of the sweep file)</summary><pre>"
+      << html_escape(m["sweep"].dump(2)) << "</pre></details>\n";
+}
+
+void best_section(std::ostringstream& out, const ResultDir& r) {
+  const CsvExcerpt& t = r.best;
+  out << "<h2 id='best'>Best configurations (best.csv)</h2>\n";
+  if (t.total_rows == 0) {
+    out << "<p>No configurations: the sweep has no runs of its own.</p>\n";
+    return;
+  }
+  // rank, config_id, n and the objective's three columns, then the config columns.
+  std::vector<std::size_t> keep, fold;
+  for (std::size_t c = 0; c < t.header.size(); ++c) (c < kBestLeadingColumns ? keep : fold).push_back(c);
+  out << "<p>Configurations ranked by the median of the objective (rank 1 best).</p>\n"
+      << folded_table(t, keep, fold);
+}
+
+void summary_section(std::ostringstream& out, const ResultDir& r) {
+  const CsvExcerpt& t = r.summary;
+  out << "<h2 id='summary'>Summary (summary.csv)</h2>\n";
+  const int first = column(t, "config_id"), n = column(t, "n");
+  if (t.total_rows == 0 || first < 0 || n < first) {
+    out << "<p>No configurations.</p>\n";
+    return;
+  }
+  std::vector<std::size_t> keep{static_cast<std::size_t>(first), static_cast<std::size_t>(n)}, fold;
+  for (int c = first + 1; c < n; ++c) fold.push_back(static_cast<std::size_t>(c));
+  for (std::size_t c = static_cast<std::size_t>(n) + 1; c < t.header.size(); ++c) {
+    const bool any =
+        std::any_of(t.rows.begin(), t.rows.end(), [&](const auto& row) { return row[c] != "0"; });
+    if (t.header[c].starts_with("end.") && any) keep.push_back(c);
+  }
+  std::vector<std::string> metrics;
+  if (r.best.header.size() > 3 && r.best.header[3].ends_with(".median")) {
+    metrics.push_back(r.best.header[3].substr(0, r.best.header[3].size() - 7));
+  }
+  for (const char* m : kSummaryMetrics) {
+    if (std::find(metrics.begin(), metrics.end(), m) == metrics.end()) metrics.emplace_back(m);
+  }
+  for (const auto& m : metrics) {
+    for (const char* stat : {".median", ".q05", ".q95"}) {
+      if (const int c = column(t, m + stat); c >= 0) keep.push_back(static_cast<std::size_t>(c));
+    }
+  }
+  out << "<p>Per configuration (runs with equal config columns; the maps of a map class and the seeds "
+         "pooled): the runs <code>n</code>, how they ended, and the median, q05 and q95 of the main "
+         "metrics.</p>\n"
+      << folded_table(t, keep, fold);
+  std::vector<std::size_t> all(t.header.size());
+  for (std::size_t c = 0; c < all.size(); ++c) all[c] = c;
+  out << "<details><summary>Every column of summary.csv</summary>" << folded_table(t, all, {})
+      << "</details>\n";
+}
+
+void figure(std::ostringstream& out, const PageImage& image) {
+  out << "<figure id='" << html_escape(image.id) << "'><h3>" << html_escape(image.title) << "</h3>"
+      << png_img(image.png, image.title) << "<figcaption>" << html_escape(image.caption)
+      << "</figcaption></figure>\n";
+}
+
+void trajectories_section(std::ostringstream& out, const ReportPage& page,
+                          const std::vector<PageImage>& images) {
+  out << "<h2 id='trajectories'>Trajectories</h2>\n";
+  if (page.trajectories.empty()) {
+    out << "<p>" << html_escape(page.trajectories_note.empty() ? "No runs to show." : page.trajectories_note)
+        << "</p>\n";
+    return;
+  }
+  out << "<p>Runs are pure functions of their configuration and seed, so <code>fsweep report</code> "
+         "re-simulated "
+         "these runs from the sweep recorded in manifest.json (the run of the same run_index, checked by its "
+         "run_key; for a weight search, its first instance with the behaviour's weights) and drew them: the "
+         "best and the worst of the ranking, to show what separates them. Explored free cells white, "
+         "explored obstacles black, unexplored grey; the path from blue (start) to red (end); the dock and "
+         "recharges green; frontier cells left magenta.</p>\n";
+  for (const PageTrajectory& t : page.trajectories) {
+    if (!t.replay) {
+      out << "<div class='warn'>" << html_escape(t.run.role) << ": not re-simulated: " << html_escape(t.error)
+          << "</div>\n";
+    }
+  }
+  out << "<div class='gallery'>\n";
+  for (const PageImage& image : images) figure(out, image);
+  out << "</div>\n";
+}
+
+/// The trajectories' figures: title, caption and anchor of each re-simulated run.
+std::vector<PageImage> trajectory_images(const ReportPage& page) {
+  std::vector<PageImage> images;
+  for (const PageTrajectory& t : page.trajectories) {
+    if (!t.replay) continue;
+    const Replay& rp = *t.replay;
+    PageImage image;
+    image.id = "trajectory-" + std::to_string(images.size() + 1);
+    image.title = t.run.role;
+    image.caption = t.run.run_index
+                        ? "run_index " + std::to_string(*t.run.run_index) + ", run_key " + t.run.run_key
+                        : "search " + std::to_string(*t.run.search_id) + ", behaviour " + t.run.behaviour_id;
+    image.caption += ", map " + rp.map + ". ";
+    if (rp.differences.empty()) {
+      image.caption +=
+          "Re-simulated: the " + std::to_string(rp.compared) +
+          " recorded outcome cells (end reason and every metric but timings and search counters) are equal.";
+    } else {
+      image.caption +=
+          "Re-simulated, but " + std::to_string(rp.differences.size()) + " of " +
+          std::to_string(rp.compared) +
+          " recorded outcome cells differ (a planner that is not deterministic, or another build): ";
+      for (std::size_t i = 0; i < rp.differences.size(); ++i)
+        image.caption += (i ? "; " : "") + rp.differences[i];
+    }
+    image.png = rp.png;
+    images.push_back(std::move(image));
+  }
+  return images;
+}
+
+}  // namespace
+
+PageImage plot_image(const std::string& name, std::string png) {
+  PageImage image;
+  const std::string stem = name.substr(0, name.rfind('.'));
+  image.id = "plot-" + stem;
+  image.png = std::move(png);
+  if (stem == "progress") {
+    image.title = "Explored area over distance";
+    image.caption =
+        "Per configuration (the best by best.csv), the mean explored area over the distance travelled, "
+        "and the band from q05 to q95 over its runs.";
+  } else if (stem == "metrics") {
+    image.title = "Metrics per configuration";
+    image.caption =
+        "Per configuration (the best by best.csv), the median of distance, energy, coverage and distance "
+        "to the final coverage, with bars from q05 to q95.";
+  } else if (stem.starts_with("heatmap_")) {
+    image.title = "Weight heat map " + stem.substr(8);
+    image.caption =
+        "The objective's median over each pair of values of two weights (the best over the other "
+        "weights and config columns); the best cell framed.";
+  } else if (stem.starts_with("search")) {
+    image.title = "Exact weight search " + stem.substr(6);
+    image.caption =
+        "Exact search: the best objective of any weight vector with each pair of values of two weights "
+        "(search_heatmaps.csv); the best cell framed.";
+  } else {
+    image.title = name;
+    image.caption = "A figure of fsweep plot.";
+  }
+  return image;
+}
+
+std::vector<std::string> reproduce_commands(const ResultDir& r) {
+  const nlohmann::json& m = r.manifest;
+  std::string sweep_file = field(m, "/sweep_file");
+  if (sweep_file.empty()) sweep_file = "sweep.json";
+  const std::string rerun = shell_word(r.dir + "-rerun");
+  std::vector<std::string> lines;
+  const std::string revision = field(m, "/git_revision");
+  if (!revision.empty() && revision != "unknown") lines.push_back("git checkout " + shell_word(revision));
+  const std::string threads =
+      field(m, "/threads").empty() ? "" : " --threads " + shell_word(field(m, "/threads"));
+  const std::string shards = field(m, "/shard/merged_from");
+  if (!shards.empty()) {
+    lines.push_back("for i in $(seq 0 $((" + shell_word(shards) + " - 1))); do fsweep run " +
+                    shell_word(sweep_file) + " --shard \"$i/" + shell_word(shards) + "\"" + threads +
+                    " --out " + rerun + "; done");
+    lines.push_back("fsweep merge " + rerun);
+  } else {
+    lines.push_back("fsweep run " + shell_word(sweep_file) + threads + " --out " + rerun);
+  }
+  lines.push_back("fsweep compare " + rerun + " " + shell_word(r.dir));
+  lines.push_back("fsweep report " + shell_word(r.dir));
+  return lines;
+}
+
+std::string report_html(const ReportPage& page) {
+  const ResultDir& r = page.result;
+  const std::string name = field(r.manifest, "/sweep/name");
+  const std::vector<PageImage> trajectories = trajectory_images(page);
+  std::ostringstream out;
+  out << html_page_start(
+      "fsweep report: " + name,
+      "figure{margin:1em 0}figcaption{font-size:13px;color:#333;max-width:1100px}"
+      ".scroll{overflow-x:auto}.same{font-size:13px;color:#333}pre{background:#f4f4f4;padding:6px}"
+      "figure img{max-width:100%;border:1px solid #ddd}.gallery{display:flex;flex-wrap:wrap;gap:0 2em}"
+      ".gallery figure{flex:1 1 420px;max-width:640px}.gallery h3{font-size:15px}");
+  out << "<h1>fsweep report: " << html_escape(name) << "</h1>\n";
+  if (const std::string d = field(r.manifest, "/sweep/description"); !d.empty())
+    out << "<p>" << html_escape(d) << "</p>\n";
+  out << "<p>" << r.runs << " runs in <code>" << html_escape(r.dir) << "</code>.</p>\n";
+
+  // Contents: the sections and every figure the page holds.
+  out << "<ul class='contents'><li><a href='#what-ran'>What ran</a></li><li><a href='#best'>Best "
+         "configurations</a></li>"
+         "<li><a href='#summary'>Summary</a></li>";
+  if (r.search_best) out << "<li><a href='#searches'>Exact weight searches</a></li>";
+  out << "<li><a href='#plots'>Plots</a><ul>";
+  for (const auto& p : page.plots) {
+    out << "<li><a class='figure-link' href='#" << html_escape(p.id) << "'>" << html_escape(p.title)
+        << "</a></li>";
+  }
+  out << "</ul></li><li><a href='#trajectories'>Trajectories</a><ul>";
+  for (const auto& t : trajectories) {
+    out << "<li><a class='figure-link' href='#" << html_escape(t.id) << "'>" << html_escape(t.title)
+        << "</a></li>";
+  }
+  out << "</ul></li><li><a href='#reproduce'>Reproduce</a></li></ul>\n";
+
+  what_ran(out, r);
+  best_section(out, r);
+  summary_section(out, r);
+  if (r.search_best) {
+    out << "<h2 id='searches'>Exact weight searches (search_best.csv)</h2>\n<p>Per search, its behaviours "
+           "ranked by "
+           "the objective (the class mean); the representative is the smallest weight vector of each.</p>\n"
+        << folded_table(*r.search_best,
+                        [&] {
+                          std::vector<std::size_t> all(r.search_best->header.size());
+                          for (std::size_t c = 0; c < all.size(); ++c) all[c] = c;
+                          return all;
+                        }(),
+                        {});
+  }
+  out << "<h2 id='plots'>Plots</h2>\n<p>Drawn by <code>fsweep plot</code> (tools/plot.py) from the summary "
+         "files.</p>\n";
+  for (const auto& p : page.plots) figure(out, p);
+  trajectories_section(out, page, trajectories);
+
+  out << "<h2 id='reproduce'>Reproduce</h2>\n<p>From the source tree, with <code>fsweep</code> built at the "
+         "revision "
+         "above: rerun the sweep into a new directory, check it against this one (runs of deterministic "
+         "planners "
+         "equal cell for cell), and make this page again. If the sweep file is no longer there, save the "
+         "sweep "
+         "shown under What ran as that file.</p>\n<pre>";
+  for (const auto& line : reproduce_commands(r)) out << html_escape(line) << "\n";
+  out << "</pre>\n</body></html>\n";
+  return out.str();
+}
+
+}  // namespace report
+}  // namespace fsweep
