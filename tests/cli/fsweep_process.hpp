@@ -19,9 +19,9 @@ struct CliOutcome {
   std::string output;  // stdout and stderr
 };
 
-/// Runs `fsweep ARGS` (a shell command line) from the build tree.
-inline CliOutcome run_fsweep(const std::string& args) {
-  const std::string cmd = std::string(FSWEEP_BINARY_DIR) + "/bin/fsweep " + args + " 2>&1";
+/// Runs the shell command line `command` (stderr into the output).
+inline CliOutcome run_command(const std::string& command) {
+  const std::string cmd = command + " 2>&1";
   CliOutcome out;
   FILE* pipe = popen(cmd.c_str(), "r");
   if (pipe == nullptr) return out;
@@ -30,6 +30,14 @@ inline CliOutcome run_fsweep(const std::string& args) {
   const int status = pclose(pipe);
   out.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return out;
+}
+
+/// Runs `fsweep ARGS` (a shell command line) from the build tree.
+inline CliOutcome run_fsweep(const std::string& args) {
+  std::string command = FSWEEP_BINARY_DIR;  // appended, not `+`: GCC 12 warns on the temporaries
+  command += "/bin/fsweep ";
+  command += args;
+  return run_command(command);
 }
 
 /// A fresh (removed) directory under the system temp dir, unique per process:
