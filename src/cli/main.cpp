@@ -47,6 +47,7 @@ int main(int argc, char** argv) try {
   commands["plot"] = fsweep::cli::add_plot_command(app);
   commands["report"] = fsweep::cli::add_report_command(app);
   commands["describe"] = fsweep::cli::add_describe_command(app);
+  commands["export-sqlite"] = fsweep::cli::add_export_sqlite_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -3,7 +3,9 @@
 /// map, against the optimal octile length. The logic is in src/evaluation/plan_bench.hpp; this file
 /// parses options, prints the table and writes the files.
 
+#include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -11,6 +13,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <set>
+#include <thread>
 
 #include "cli/commands.hpp"
 #include "cli/kv_options.hpp"
@@ -19,8 +22,12 @@
 #include "core/config_error.hpp"
 #include "core/csv_format.hpp"
 #include "core/files.hpp"
+#include "core/host_info.hpp"
+#include "evaluation/ompl_benchmark_log.hpp"
 #include "evaluation/plan_bench.hpp"
+#include "planners/ompl_planner.hpp"
 #include "planners/registry.hpp"
+#include "sweep/manifest.hpp"
 #include "world/energy_model.hpp"
 #include "world/known_map.hpp"
 #include "world/map_loaders.hpp"
@@ -38,6 +45,7 @@ struct PlanBenchOptions {
   std::uint64_t seed = 1;
   std::string energy = "distance";
   bool allow_corner_cutting = false;
+  double progress_interval_s = 0.05;
   std::string out;
 };
 
@@ -86,6 +94,35 @@ void write_bench_summary_csv(const std::string& path, const std::vector<std::str
   if (!f) throw ConfigError(path, "write failed");
 }
 
+/// The preamble of ompl_benchmark.log: what was benchmarked (the setup block), on what machine.
+BenchmarkLogExperiment log_experiment(const PlanBenchOptions& o, const KnownMap& known, std::size_t queries,
+                                      const std::vector<std::unique_ptr<Planner>>& planners) {
+  BenchmarkLogExperiment e;
+  e.name = plan_bench_experiment_name(o.map, o.scen, o.pairs, o.seed);
+  e.ompl_version = ompl_version();
+  e.host = host_name();
+  e.date = utc_now_iso8601();
+  e.setup = "fsweep plan-bench\nmap: " + o.map + " (" + std::to_string(known.width()) + "x" +
+            std::to_string(known.height()) + " cells of " + format_number(known.resolution_m()) + " m)\n" +
+            "queries: " + std::to_string(queries) +
+            (o.scen.empty()
+                 ? " random reachable pairs, seed " + std::to_string(o.seed) + ", optimal lengths from astar"
+                 : " of " + o.scen + ", optimal lengths from the scenario") +
+            "\nrequest: start heading 0, energy model " + o.energy + ", corner cutting " +
+            (o.allow_corner_cutting ? "allowed" : "not allowed") + ", seed of query q derive_seed(" +
+            std::to_string(o.seed) + ", \"plan_bench\") + q\nprogress samples every " +
+            format_number(o.progress_interval_s) + " s (0: none)\n";
+  e.cpuinfo = "model name: " + cpu_model() +
+              "\nlogical CPUs: " + std::to_string(std::thread::hardware_concurrency()) + "\n";
+  e.seed = o.seed;
+  for (const auto& p : planners) e.time_limit_s = std::max(e.time_limit_s, p->budget().time_limit_s);
+  e.properties = {{"map_width", "INTEGER", std::to_string(known.width())},
+                  {"map_height", "INTEGER", std::to_string(known.height())},
+                  {"resolution_m", "REAL", format_number(known.resolution_m())},
+                  {"allow_corner_cutting", "BOOLEAN", o.allow_corner_cutting ? "1" : "0"}};
+  return e;
+}
+
 int run_plan_bench_command(const PlanBenchOptions& o) {
   // 1. Planners (all registered by default) with their parameters, energy model, map, queries.
   const std::vector<std::string> names = o.planners.empty() ? planner_names() : o.planners;
@@ -104,11 +141,18 @@ int run_plan_bench_command(const PlanBenchOptions& o) {
       }
     }
   }
+  if (o.progress_interval_s < 0.0) {
+    throw ConfigError("--progress-interval",
+                      "must be >= 0 s (0: no progress samples), got " + format_number(o.progress_interval_s));
+  }
   std::vector<std::unique_ptr<Planner>> planners;
+  std::vector<BenchmarkLogPlanner> log_planners;
   for (const std::string& name : names) {
     const nlohmann::json p =
         params.is_object() && params.contains(name) ? params.at(name) : nlohmann::json::object();
-    planners.push_back(make_planner(name, p, "--planner-param/" + name));
+    const PlannerConfig config = configure_planner(name, p, "--planner-param/" + name);
+    planners.push_back(config.make());
+    log_planners.push_back(BenchmarkLogPlanner{name, config.params});
   }
   const EnergyModel energy = energy_model_from_json(nlohmann::json{{"preset", o.energy}}, "--energy");
   const KnownMap known = fully_known(load_map_spec(o.map));
@@ -130,7 +174,11 @@ int run_plan_bench_command(const PlanBenchOptions& o) {
   settings.energy = energy;
   settings.allow_corner_cutting = o.allow_corner_cutting;
   settings.seed = o.seed;
+  settings.progress_interval_s = o.out.empty() ? 0.0 : o.progress_interval_s;  // only the log has them
+  BenchmarkLogExperiment experiment = log_experiment(o, known, queries.size(), planners);
+  const auto started = std::chrono::steady_clock::now();
   const auto plans = run_plan_bench(known, queries, planners, settings);
+  experiment.total_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   std::vector<BenchSummary> summaries;
   summaries.reserve(plans.size());
   for (const auto& row : plans) summaries.push_back(summarize_plan_bench(row));
@@ -160,7 +208,9 @@ int run_plan_bench_command(const PlanBenchOptions& o) {
     create_output_dir(o.out);
     write_queries_csv(o.out + "/queries.csv", names, queries, plans);
     write_bench_summary_csv(o.out + "/summary.csv", names, summaries);
-    std::printf("wrote %s/{queries.csv,summary.csv}\n", o.out.c_str());
+    write_file_atomically(o.out + "/ompl_benchmark.log",
+                          ompl_benchmark_log(experiment, queries, log_planners, plans));
+    std::printf("wrote %s/{queries.csv,summary.csv,ompl_benchmark.log}\n", o.out.c_str());
   }
   return 0;
 }
@@ -186,7 +236,12 @@ Command add_plan_bench_command(CLI::App& app) {
       ->capture_default_str();
   sub->add_flag("--allow-corner-cutting", o->allow_corner_cutting,
                 "Diagonal moves may pass a blocked corner");
-  sub->add_option("--out", o->out, "Directory for queries.csv and summary.csv");
+  sub->add_option("--progress-interval", o->progress_interval_s,
+                  "Seconds between samples of the OMPL planners' progress properties for "
+                  "ompl_benchmark.log (0: none)")
+      ->capture_default_str();
+  sub->add_option("--out", o->out,
+                  "Directory for queries.csv, summary.csv and ompl_benchmark.log (OMPL's benchmark log)");
   return [o] { return run_plan_bench_command(*o); };
 }
 

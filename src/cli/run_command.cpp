@@ -13,6 +13,7 @@
 #include "cli/commands.hpp"
 #include "cli/sweep_warnings.hpp"
 #include "core/config_error.hpp"
+#include "report/sqlite_export.hpp"
 #include "sweep/sweep_plan.hpp"
 #include "sweep/sweep_runner.hpp"
 
@@ -26,6 +27,7 @@ struct RunCommandOptions {
   std::string out;
   bool quiet = false;
   std::string shard;
+  bool sqlite = false;
 };
 
 std::string one_decimal(double v) {
@@ -96,8 +98,13 @@ int run_command(const RunCommandOptions& o) {
                                                            : "")
             << (r.searches.searches > 0 ? ", " + join_names(r.searches.files) : std::string()) << ")\n";
   if (r.interrupted) {
-    std::cout << "rerun the same command to resume\n";
+    std::cout << "rerun the same command to resume"
+              << (o.sqlite ? " (results.sqlite is written once it is done)" : "") << "\n";
     return 130;
+  }
+  if (o.sqlite) {
+    const SqliteExport e = export_sqlite(r.out_dir);
+    std::cout << "wrote " << describe_export(e) << '\n';
   }
   return 0;
 }
@@ -114,6 +121,9 @@ Command add_run_command(CLI::App& app) {
   sub->add_flag("--fresh", o->fresh, "Delete previous outputs and start over");
   sub->add_option("--out", o->out, "Output directory (default: the sweep's output.dir or results/<name>)");
   sub->add_flag("--quiet", o->quiet, "No progress on stderr");
+  sub->add_flag("--sqlite", o->sqlite,
+                "Also write results.sqlite (the runs as an SQLite database, as `fsweep export-sqlite`) once "
+                "the run is done");
   sub->add_option("--shard", o->shard,
                   "Run shard i of n (runs with index % n == i) into <out>/shard-i-of-n/, e.g. 0/4");
   return [o] { return run_command(*o); };

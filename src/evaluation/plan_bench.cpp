@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 #include <stdexcept>
+#include <utility>
 
 #include "core/random.hpp"
 #include "planners/registry.hpp"
@@ -47,12 +48,15 @@ std::vector<std::vector<BenchPlan>> run_plan_bench(const KnownMap& known,
       request.energy = settings.energy;
       request.allow_corner_cutting = settings.allow_corner_cutting;
       request.seed = derive_seed(settings.seed, "plan_bench") + q;
-      const PlanResult r = planners[i]->plan(known, request);
+      request.progress_interval_s = settings.progress_interval_s;
+      PlanResult r = planners[i]->plan(known, request);
       BenchPlan& p = plans[i][q];
       p.status = r.status;
       p.time_s = r.time_s;
+      p.progress = std::move(r.progress);
       if (r.status == PlanStatus::Success) {
-        p.length_ratio = r.length_m / known.resolution_m() / queries[q].optimal_cells;
+        p.length_cells = r.length_m / known.resolution_m();
+        p.length_ratio = p.length_cells / queries[q].optimal_cells;
         p.energy = r.energy;
         p.turns = r.turns;
       }

@@ -44,14 +44,21 @@ struct BenchPlan {
   double energy = 0.0;
   int turns = 0;
   double time_s = 0.0;
+  /// Path length in cells (length_m / resolution_m: length_ratio's numerator); 0 unless Success.
+  double length_cells = 0.0;
+  /// The planner's progress properties (PlanResult::progress) when BenchSettings asks for them.
+  PlanProgress progress;
 };
 
 /// The request every planner gets for query q: start heading 0, `energy`,
-/// `allow_corner_cutting`, seed derive_seed(seed, "plan_bench") + q.
+/// `allow_corner_cutting`, seed derive_seed(seed, "plan_bench") + q, `progress_interval_s`.
 struct BenchSettings {
   EnergyModel energy;
   bool allow_corner_cutting = false;
   std::uint64_t seed = 1;
+  /// PlanRequest::progress_interval_s: seconds between samples of the planners' progress
+  /// properties (0: none).
+  double progress_interval_s = 0.0;
 };
 
 /// Plans every query with every planner, in order. Result [planner][query].

@@ -6,6 +6,7 @@
 #include <ompl/base/SpaceInformation.h>
 #include <ompl/base/objectives/PathLengthOptimizationObjective.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
+#include <ompl/config.h>
 #include <ompl/geometric/PathGeometric.h>
 #include <ompl/geometric/PathSimplifier.h>
 #include <ompl/geometric/planners/informedtrees/BITstar.h>
@@ -21,11 +22,14 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
+#include <thread>
+#include <utility>
 
 #include "core/config_error.hpp"
 #include "core/random.hpp"
@@ -67,6 +71,62 @@ class OmplSession {
   std::lock_guard<std::mutex> lock_;
 };
 
+/// Samples an OMPL planner's progress properties during one solve (PlanProgress): at its first
+/// termination check, then at the first check at least `interval_s` after the previous sample,
+/// and once more when the solve returns. The properties are only read (none of OMPL's progress
+/// functions changes the planner), in the solving thread, so a query's result is the same with
+/// or without sampling unless a time limit ends it. A planner that solves in several threads
+/// (`during_solve` false: PRMstar, whose solution thread writes the best cost while the roadmap
+/// grows) is sampled only when its solve has returned: its properties are not safe to read before.
+class ProgressSampler {
+ public:
+  using Clock = StopCondition::Clock;
+
+  ProgressSampler(const ob::Planner& planner, double interval_s, bool during_solve, Clock::time_point started)
+      : properties_(interval_s > 0.0 ? &planner.getPlannerProgressProperties() : nullptr),
+        interval_(std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(interval_s))),
+        during_solve_(during_solve && properties_ != nullptr && !properties_->empty()),
+        started_(started),
+        solver_(std::this_thread::get_id()) {
+    if (properties_ == nullptr) return;
+    for (const auto& [name, read] : *properties_) progress_.properties.push_back(name);
+  }
+
+  /// Called at every termination check.
+  void on_check() {
+    if (!during_solve_ || std::this_thread::get_id() != solver_) return;
+    const Clock::time_point now = Clock::now();
+    if (!progress_.samples.empty() && now < last_ + interval_) return;
+    sample(now);
+  }
+
+  /// Called once the solve has returned; gives the samples.
+  [[nodiscard]] PlanProgress finish() {
+    if (properties_ != nullptr && !properties_->empty()) {
+      const Clock::time_point now = Clock::now();
+      if (progress_.samples.empty() || now > last_) sample(now);
+    }
+    return std::move(progress_);
+  }
+
+ private:
+  void sample(Clock::time_point now) {
+    PlanProgress::Sample s;
+    s.time_s = std::chrono::duration<double>(now - started_).count();
+    for (const auto& [name, read] : *properties_) s.values.push_back(read());
+    progress_.samples.push_back(std::move(s));
+    last_ = now;
+  }
+
+  const ob::Planner::PlannerProgressProperties* properties_;
+  Clock::duration interval_;
+  bool during_solve_;
+  Clock::time_point started_;
+  Clock::time_point last_;
+  std::thread::id solver_;
+  PlanProgress progress_;
+};
+
 /// The OMPL planner factory of a table row.
 template <typename OmplPlannerClass>
 ob::PlannerPtr make_planner_of(const ob::SpaceInformationPtr& si) {
@@ -106,6 +166,8 @@ struct OmplOutcome {
   std::vector<PlanePoint> points;
   /// State and motion validity checks OMPL made while solving.
   long checks = 0;
+  /// The planner's progress properties, when the request asks for them.
+  PlanProgress progress;
 };
 
 OmplOutcome solve_with_ompl(const OmplPlannerKind& kind, const OmplPlannerParams& params,
@@ -134,15 +196,22 @@ OmplOutcome solve_with_ompl(const OmplPlannerKind& kind, const OmplPlannerParams
   planner->setup();
 
   // 3. Budget: the stop condition with its clock restarted now (the time limit is solve time,
-  //    not the wait for the lock nor the set-up), the expansion budget counting termination checks.
-  const StopCondition solve_stop = stop.restarted(StopCondition::Clock::now());
+  //    not the wait for the lock nor the set-up), the expansion budget counting termination checks;
+  //    the progress properties sampled at the checks when asked for.
+  const StopCondition::Clock::time_point solve_started = StopCondition::Clock::now();
+  const StopCondition solve_stop = stop.restarted(solve_started);
+  const bool one_thread =
+      kind.capabilities.determinism != Determinism::Never;  // Never: PRMstar's two threads
+  ProgressSampler progress(*planner, request.progress_interval_s, one_thread, solve_started);
   std::atomic<long> checks{0};
-  const ob::PlannerTerminationCondition ptc([&solve_stop, &checks] {
+  const ob::PlannerTerminationCondition ptc([&solve_stop, &checks, &progress] {
+    progress.on_check();
     return solve_stop.time_up() || solve_stop.budget_spent(checks.fetch_add(1, std::memory_order_relaxed));
   });
   const ob::PlannerStatus solved = planner->solve(ptc);
 
   OmplOutcome outcome;
+  outcome.progress = progress.finish();
   outcome.checks = grid_validity_checks(*si);
   const bool exact = pdef->hasExactSolution();
   og::PathGeometric path(si);
@@ -169,6 +238,14 @@ OmplOutcome solve_with_ompl(const OmplPlannerKind& kind, const OmplPlannerParams
 }  // namespace
 
 std::span<const OmplPlannerKind> ompl_planner_kinds() { return kOmplPlanners; }
+
+std::string ompl_version() {
+  // Debian's OMPL 1.5.2 headers define OMPL_VERSION as "" (the numeric macros are right).
+  std::string version = OMPL_VERSION;
+  if (!version.empty()) return version;
+  return std::to_string(OMPL_MAJOR_VERSION) + "." + std::to_string(OMPL_MINOR_VERSION) + "." +
+         std::to_string(OMPL_PATCH_VERSION);
+}
 
 const OmplPlannerKind& ompl_planner_kind(std::string_view name) {
   for (const OmplPlannerKind& kind : kOmplPlanners) {
@@ -246,9 +323,10 @@ SearchResult OmplPlanner::search(const KnownMap& known, const PlanRequest& reque
     return result;
   }
   // 2. OMPL, then the cell chain of its polyline.
-  const OmplOutcome outcome = solve_with_ompl(kind_, params_, known, request, stop);
+  OmplOutcome outcome = solve_with_ompl(kind_, params_, known, request, stop);
   result.expansions = outcome.checks;
   result.status = outcome.status;
+  result.progress = std::move(outcome.progress);
   if (outcome.status != PlanStatus::Success) return result;
   result.path = polyline_cell_chain(known, outcome.points, request.allow_corner_cutting);
   // 3. The chain must be a valid plan by construction; anything else is a bug here.

@@ -56,6 +56,10 @@ struct OmplPlannerKind {
 /// Every OMPL planner on offer, in registry order.
 [[nodiscard]] std::span<const OmplPlannerKind> ompl_planner_kinds();
 
+/// The version of the OMPL headers of this build, e.g. "1.5.2": OMPL_VERSION, or
+/// OMPL_MAJOR_VERSION.OMPL_MINOR_VERSION.OMPL_PATCH_VERSION where OMPL_VERSION is empty.
+[[nodiscard]] std::string ompl_version();
+
 /// The kind registered as `name` (e.g. "ompl:RRTstar"); throws std::invalid_argument if none is.
 [[nodiscard]] const OmplPlannerKind& ompl_planner_kind(std::string_view name);
 
@@ -92,6 +96,15 @@ struct OmplPlannerParams {
 /// every move of which is allowed by octile_step_allowed(). `expansions` is the number of state
 /// and motion validity checks OMPL made while solving (its sampling effort; simplification not
 /// included).
+///
+/// Progress: with PlanRequest::progress_interval_s > 0, PlanResult::progress holds the OMPL
+/// planner's progress properties (as OMPL's Benchmark records them: RRTstar and InformedRRTstar
+/// "best cost REAL", "iterations INTEGER"; BITstar "best cost DOUBLE" and its counters; PRMstar
+/// and LazyPRMstar "best cost REAL", "iterations INTEGER", "milestone count INTEGER", "edge count
+/// INTEGER"; none for RRTConnect and KPIECE1), sampled at OMPL's termination checks in the solving
+/// thread: at the first, then every interval, and once when the solve returns (PRMstar, which
+/// solves in two threads, only then). Sampling only reads the planner, so a query that ends by
+/// itself or by `max_iterations` gives the same result with or without it.
 class OmplPlanner final : public Planner {
  public:
   /// `params` must come from ompl_planner_params(kind) (or be defaults).

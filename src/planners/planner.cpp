@@ -47,6 +47,7 @@ PlanResult Planner::plan(const KnownMap& known, const PlanRequest& request) {
     SearchResult found = search(known, request, StopCondition(budget_, started));
     result.status = found.status;
     result.expansions = found.expansions;
+    result.progress = std::move(found.progress);
     if (found.status == PlanStatus::Success) {
       // 3. The shared motion accounting of a path that must start and end right.
       if (found.path.empty() || found.path.front() != request.start || found.path.back() != request.goal) {

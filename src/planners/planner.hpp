@@ -34,6 +34,26 @@ struct PlanRequest {
   bool allow_corner_cutting = false;
   /// Seed for sampling planners (derived from the run seed).
   std::uint64_t seed = 0;
+  /// Seconds between samples of the planner's own progress properties (PlanResult::progress);
+  /// 0, the default: none. Only planners that report progress properties take samples.
+  double progress_interval_s = 0.0;
+};
+
+/// A planner's own progress properties sampled during one query: OMPL's planner progress
+/// properties (e.g. RRTstar's "best cost REAL" and "iterations INTEGER"). Empty unless asked for
+/// (PlanRequest::progress_interval_s) and the planner reports any.
+struct PlanProgress {
+  /// One sample: when, and the value of every property, in the order of `properties`.
+  struct Sample {
+    /// Seconds since the search started.
+    double time_s = 0.0;
+    /// The values as the planner writes them (text).
+    std::vector<std::string> values;
+  };
+  /// Property names, each ending in its type as OMPL names it (REAL, DOUBLE, INTEGER, ...).
+  std::vector<std::string> properties;
+  /// Samples in time order (strictly increasing time_s).
+  std::vector<Sample> samples;
 };
 
 /// Outcome of one query. On failure `path` is empty and the metrics are 0.
@@ -49,6 +69,8 @@ struct PlanResult {
   long expansions = 0;
   /// Wall time of the query (seconds).
   double time_s = 0.0;
+  /// The planner's progress properties during the search, when asked for.
+  PlanProgress progress;
 };
 
 /// StartInvalid or GoalInvalid when that endpoint is not a known-free cell (outside the grid
@@ -86,6 +108,8 @@ struct SearchResult {
   std::vector<Cell> path;
   /// Nodes expanded (grid and lattice planners) or validity checks made (sampling planners).
   long expansions = 0;
+  /// The planner's progress properties, when PlanRequest::progress_interval_s asks for them.
+  PlanProgress progress;
 };
 
 /// A path planner: the plugin edge. plan() is the one entry point and does what every planner

@@ -1,12 +1,11 @@
 #include "sweep/manifest.hpp"
 
 #include <oneapi/tbb/version.h>
-#include <unistd.h>
 
-#include <array>
 #include <ctime>
 #include <fstream>
 
+#include "core/host_info.hpp"
 #include "core/random.hpp"
 #include "sweep/csv_journal.hpp"
 #include "sweep/sweep_plan.hpp"
@@ -19,26 +18,6 @@
 namespace fsweep {
 inline namespace sweep {
 namespace {
-
-std::string host_name() {
-  std::array<char, 256> buf{};
-  if (::gethostname(buf.data(), buf.size() - 1) != 0) return "unknown";
-  return buf.data();
-}
-
-/// The first "model name" of /proc/cpuinfo (Linux); "unknown" elsewhere.
-std::string cpu_model() {
-  std::ifstream in("/proc/cpuinfo");
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.rfind("model name", 0) != 0) continue;
-    const auto colon = line.find(':');
-    if (colon == std::string::npos) break;
-    const auto begin = line.find_first_not_of(" \t", colon + 1);
-    return begin == std::string::npos ? std::string() : line.substr(begin);
-  }
-  return "unknown";
-}
 
 std::string compiler() {
 #if defined(__clang__)

@@ -39,7 +39,7 @@ constexpr const char* kOutputFiles[] = {
     "runs.csv",           "progress.csv",         "manifest.json",    "summary.csv",
     "best.csv",           "progress_summary.csv", "searches.json",    "behaviours.csv",
     "search_summary.csv", "search_best.csv",      "search_ranks.csv", "search_heatmaps.csv",
-    "vectors.csv",        "search_journal.jsonl"};
+    "vectors.csv",        "search_journal.jsonl", "results.sqlite"};
 
 /// Set by SIGINT/SIGTERM while run_sweep runs (a signal handler can only reach a global).
 std::atomic<bool> stop_requested{false};  // NOLINT(cppcoreguidelines-avoid-non-const-global-variables)

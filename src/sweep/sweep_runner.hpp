@@ -35,6 +35,8 @@
 ///   searches.json is already there (a finished search is not redone; --fresh redoes it). A
 ///   shard searches its part of each box and writes its journal and searches.json only; the
 ///   merge writes the files (merge.hpp).
+/// - `results.sqlite`: the runs as an SQLite database (report/sqlite_export.hpp), written by the
+///   CLI after a run that was not interrupted when asked (`fsweep run --sqlite`); `fresh` deletes it.
 /// - `.fsweep.lock`: an flock held while running; a second runner on the same directory is
 ///   refused (the kernel drops the lock when the process dies, even by SIGKILL). Temp files a
 ///   killed runner left (`runs.csv.tmp.<pid>`, ...) are deleted on start.

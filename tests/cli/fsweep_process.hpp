@@ -20,11 +20,9 @@ struct CliOutcome {
   std::string output;  // stdout and stderr
 };
 
-/// Runs `fsweep ARGS` (a shell command line) from the build tree, or from `dir` when given (the
-/// README's commands name files relative to the repository).
-inline CliOutcome run_fsweep(const std::string& args, const std::string& dir = "") {
-  const std::string cmd = (dir.empty() ? std::string() : "cd '" + dir + "' && ") +
-                          std::string(FSWEEP_BINARY_DIR) + "/bin/fsweep " + args + " 2>&1";
+/// Runs the shell command line `command` (stderr into the output).
+inline CliOutcome run_command(const std::string& command) {
+  const std::string cmd = command + " 2>&1";
   CliOutcome out;
   FILE* pipe = popen(cmd.c_str(), "r");
   if (pipe == nullptr) return out;
@@ -33,6 +31,16 @@ inline CliOutcome run_fsweep(const std::string& args, const std::string& dir = "
   const int status = pclose(pipe);
   out.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return out;
+}
+
+/// Runs `fsweep ARGS` (a shell command line) from the build tree, or from `dir` when given (the
+/// README's commands name files relative to the repository).
+inline CliOutcome run_fsweep(const std::string& args, const std::string& dir = "") {
+  std::string command = dir.empty() ? std::string() : "cd '" + dir + "' && ";
+  command += FSWEEP_BINARY_DIR;  // appended, not `+`: GCC 12 warns on the temporaries
+  command += "/bin/fsweep ";
+  command += args;
+  return run_command(command);
 }
 
 /// A fresh (removed) directory under the system temp dir, unique per process:

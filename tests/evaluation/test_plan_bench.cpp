@@ -77,9 +77,9 @@ TEST(PlanBench, SummaryStatisticsByHand) {
   // Solved ratios {1.0, 1.5}: mean = median = 1.25; times {1, 3, 2} ms over all three queries:
   // median 2 ms; one timeout.
   std::vector<BenchPlan> plans(3);
-  plans[0] = BenchPlan{PlanStatus::Success, 1.0, 10.0, 2, 0.001};
-  plans[1] = BenchPlan{PlanStatus::Success, 1.5, 20.0, 4, 0.003};
-  plans[2] = BenchPlan{PlanStatus::Timeout, 0.0, 0.0, 0, 0.002};
+  plans[0] = BenchPlan{PlanStatus::Success, 1.0, 10.0, 2, 0.001, 10.0, {}};
+  plans[1] = BenchPlan{PlanStatus::Success, 1.5, 20.0, 4, 0.003, 15.0, {}};
+  plans[2] = BenchPlan{PlanStatus::Timeout, 0.0, 0.0, 0, 0.002, 0.0, {}};
   const BenchSummary s = summarize_plan_bench(plans);
   EXPECT_EQ(s.queries, 3);
   EXPECT_EQ(s.solved, 2);

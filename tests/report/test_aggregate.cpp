@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "core/config_error.hpp"
+#include "core/config_error_message.hpp"
 #include "core/csv_reader.hpp"
 #include "report/aggregate.hpp"
 #include "report/aggregate_fixture.hpp"
@@ -41,16 +42,7 @@ std::vector<std::string> best_order(const std::filesystem::path& dir, const std:
   return ids;
 }
 
-/// The message of the ConfigError that `f` throws (empty if none).
-template <typename F>
-std::string config_error(F f) {
-  try {
-    f();
-  } catch (const ConfigError& e) {
-    return e.what();
-  }
-  return "";
-}
+using testing::config_error;
 
 TEST(Summary, GroupsRunsByConfigurationIgnoringSeed) {
   const auto dir = make_sweep_dir("group");

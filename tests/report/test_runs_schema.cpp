@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/config_error.hpp"
+#include "core/config_error_message.hpp"
 #include "core/csv_reader.hpp"
 #include "report/runs_schema.hpp"
 #include "world/map_spec.hpp"
@@ -20,16 +21,7 @@
 namespace fsweep {
 namespace test_runs_schema {  // not anonymous: unity builds put it beside other test files' helpers
 
-/// The message of the ConfigError that `f` throws (empty if none).
-template <typename F>
-std::string config_error(F f) {
-  try {
-    f();
-  } catch (const ConfigError& e) {
-    return e.what();
-  }
-  return "";
-}
+using testing::config_error;
 
 std::vector<std::string> names(const Columns& columns) {
   std::vector<std::string> out;
