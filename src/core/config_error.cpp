@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <nlohmann/json.hpp>
 
+#include "core/json_excerpt.hpp"
+
 namespace fsweep {
 inline namespace core {
 
@@ -18,7 +20,7 @@ std::string join_names(const std::vector<std::string>& names) {
 void require_known_keys(const nlohmann::json& object, std::initializer_list<std::string_view> allowed,
                         const std::string& where) {
   if (!object.is_object()) {
-    throw ConfigError(where, "expected a JSON object, got " + object.dump());
+    throw ConfigError(where, "expected a JSON object, got " + json_excerpt(object));
   }
   for (const auto& [key, value] : object.items()) {
     if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "core/config_error.hpp"
+#include "core/json_excerpt.hpp"
 
 namespace fsweep {
 inline namespace core {
@@ -27,14 +28,8 @@ std::string quoted_list(const std::vector<std::string>& names) {
 /// 2^53: the largest integer magnitude a double holds exactly.
 constexpr double kMaxExactInteger = 9007199254740992.0;
 
-/// Values longer than this are cut in messages (a bad value may be a huge array).
-constexpr std::size_t kMaxValueText = 80;
-
-std::string value_text(const nlohmann::json& v) {
-  std::string text = v.dump();
-  if (text.size() > kMaxValueText) text = text.substr(0, kMaxValueText) + "...";
-  return text;
-}
+/// A value in messages, cut (a bad value may be a huge array).
+std::string value_text(const nlohmann::json& v) { return json_excerpt(v); }
 
 }  // namespace
 

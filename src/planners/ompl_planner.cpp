@@ -32,6 +32,7 @@
 #include <utility>
 
 #include "core/config_error.hpp"
+#include "core/json_excerpt.hpp"
 #include "core/random.hpp"
 #include "planners/ompl_segment_walk.hpp"
 #include "planners/ompl_space.hpp"
@@ -156,7 +157,7 @@ std::string ompl_value_string(const nlohmann::json& value, const std::string& wh
   if (value.is_string()) return value.get<std::string>();
   if (value.is_boolean()) return value.get<bool>() ? "1" : "0";
   if (value.is_number()) return value.dump();
-  throw ConfigError(where, "expected a string, number or boolean, got " + value.dump());
+  throw ConfigError(where, "expected a string, number or boolean, got " + json_excerpt(value));
 }
 
 /// What one OMPL query gives back.
@@ -289,7 +290,7 @@ ParamDecl<OmplPlannerParams> ompl_planner_params(const OmplPlannerKind& kind) {
       try {
         text = ompl_value_string(v, name);
       } catch (const ConfigError&) {
-        return {"expected a string, number or boolean, got " + v.dump()};
+        return {"expected a string, number or boolean, got " + json_excerpt(v)};
       }
       const OmplSession check_session(0);
       const KnownMap map(1, 1, 1.0);

@@ -1,6 +1,7 @@
 #include "sim/heuristics.hpp"
 
 #include "core/config_error.hpp"
+#include "core/json_excerpt.hpp"
 
 namespace fsweep {
 inline namespace sim {
@@ -11,15 +12,13 @@ Heuristics heuristics_from_json(const nlohmann::json& list, const std::string& w
   Heuristics h;
   if (list.is_null()) return h;
   if (!list.is_array()) {
-    std::string text = list.dump();
-    if (text.size() > 80) text = text.substr(0, 80) + "...";
-    throw ConfigError(where, "expected a list of heuristic names, e.g. [\"rr\", \"seg\"] or [], got " + text +
-                                 "; known: " + join_names(heuristic_names()));
+    throw ConfigError(where, "expected a list of heuristic names, e.g. [\"rr\", \"seg\"] or [], got " +
+                                 json_excerpt(list) + "; known: " + join_names(heuristic_names()));
   }
   for (std::size_t i = 0; i < list.size(); ++i) {
     const std::string item_at = where + "/" + std::to_string(i);
     if (!list[i].is_string()) {
-      throw ConfigError(item_at, "expected a heuristic name, got " + list[i].dump() +
+      throw ConfigError(item_at, "expected a heuristic name, got " + json_excerpt(list[i]) +
                                      "; known: " + join_names(heuristic_names()));
     }
     const std::string name = list[i].get<std::string>();

@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "core/config_error.hpp"
+#include "core/json_excerpt.hpp"
 #include "world/cell_param.hpp"
 
 namespace fsweep {
@@ -60,7 +61,7 @@ ParamDecl<RobotParams> make_robot_params() {
   dock.allowed_text = "[x, y], two integers";
   dock.custom_check = [](const nlohmann::json& v) -> std::vector<std::string> {
     if (cell_of(v, std::numeric_limits<int>::min())) return {};
-    return {"value " + v.dump() + " not allowed; allowed: [x, y], two integers"};
+    return {"value " + json_excerpt(v) + " not allowed; allowed: [x, y], two integers"};
   };
   d.custom(
       std::move(dock),

@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "core/config_error.hpp"
+#include "core/json_excerpt.hpp"
 #include "strategies/choquet.hpp"
 
 namespace fsweep {
@@ -39,7 +40,7 @@ std::vector<std::string> measure_problems(const nlohmann::json& m, std::array<do
     return {
         "expected an object {\"L\": ..., \"I\": ..., \"O\": ..., \"LI\": ..., "
         "\"LO\": ..., \"IO\": ...}, got " +
-        m.dump()};
+        json_excerpt(m)};
   for (const auto& [key, value] : m.items()) {
     if (std::find(kKeys.begin() + 1, kKeys.end() - 1, key) == kKeys.end() - 1) {
       problems.push_back(key + ": unknown subset; allowed: L, I, O, LI, LO, IO");
@@ -54,7 +55,7 @@ std::vector<std::string> measure_problems(const nlohmann::json& m, std::array<do
     }
     const auto& v = m.at(key);
     if (!v.is_number() || !(v.get<double>() >= 0.0 && v.get<double>() <= 1.0)) {
-      problems.push_back(key + ": value " + v.dump() + " not allowed; allowed: a number in [0, 1]");
+      problems.push_back(key + ": value " + json_excerpt(v) + " not allowed; allowed: a number in [0, 1]");
       continue;
     }
     measure[s] = v.get<double>();

@@ -12,6 +12,7 @@
 #include <set>
 
 #include "core/config_error.hpp"
+#include "core/json_excerpt.hpp"
 #include "planners/registry.hpp"
 #include "sim/heuristics.hpp"
 #include "sim/run_spec.hpp"
@@ -385,7 +386,7 @@ std::vector<StrategyEntry> parse_strategies(const json& strategies, std::vector<
       std::set<std::size_t> sizes;
       for (std::size_t m = 0; m < zip[g].size(); ++m) {
         const json& n = zip[g][m];
-        const std::string name = n.is_string() ? n.get<std::string>() : n.dump();
+        const std::string name = n.is_string() ? n.get<std::string>() : json_excerpt(n);
         if (!n.is_string() || !axes.count(name)) {
           std::string names_given;
           for (const auto& [k, a] : axes) names_given += (names_given.empty() ? "" : ", ") + k;

@@ -16,7 +16,7 @@ namespace fsweep {
 inline namespace sweep {
 namespace sweep_detail {
 
-/// A JSON value for messages: its dump(), cut to about 80 characters.
+/// A JSON value for messages: json_excerpt() cut to 77 characters and "...", bounded in size and depth.
 [[nodiscard]] std::string value_text(const nlohmann::json& v);
 
 /// `message` without a leading "<path>: " (ConfigErrors from the plugins repeat the path of

@@ -19,6 +19,7 @@
 #include "sim/heuristics.hpp"
 #include "strategies/registry.hpp"
 #include "sweep/sweep_axes.hpp"
+#include "sweep/sweep_json_reader.hpp"
 #include "world/sensor.hpp"
 
 namespace fsweep {
@@ -43,59 +44,6 @@ bool is_uint(const json& v) {
   return v.is_number_unsigned() || (v.is_number_integer() && v.get<std::int64_t>() >= 0);
 }
 
-/// Duplicate keys of one object, found while parsing (nlohmann keeps only the last).
-class DuplicateKeyFinder {
- public:
-  bool operator()(int /*depth*/, json::parse_event_t event, json& parsed) {
-    switch (event) {
-      case json::parse_event_t::object_start:
-        stack_.push_back(Frame{true, {}, {}, 0});
-        break;
-      case json::parse_event_t::array_start:
-        stack_.push_back(Frame{false, {}, {}, 0});
-        break;
-      case json::parse_event_t::key: {
-        Frame& top = stack_.back();
-        top.key = parsed.get<std::string>();
-        if (!top.keys.insert(top.key).second) {
-          problems_.push_back(path() + ": duplicate key '" + top.key +
-                              "'; allowed: each key once (JSON keeps only "
-                              "the last)");
-        }
-        break;
-      }
-      case json::parse_event_t::object_end:
-      case json::parse_event_t::array_end:
-        stack_.pop_back();
-        element_done();
-        break;
-      case json::parse_event_t::value:
-        element_done();
-        break;
-    }
-    return true;
-  }
-  [[nodiscard]] const std::vector<std::string>& problems() const { return problems_; }
-
- private:
-  struct Frame {
-    bool object;
-    std::set<std::string> keys;
-    std::string key;
-    std::size_t index;
-  };
-  void element_done() {
-    if (!stack_.empty() && !stack_.back().object) ++stack_.back().index;
-  }
-  [[nodiscard]] std::string path() const {
-    std::string p;
-    for (const auto& f : stack_) p += "/" + (f.object ? f.key : std::to_string(f.index));
-    return p;
-  }
-  std::vector<Frame> stack_;
-  std::vector<std::string> problems_;
-};
-
 }  // namespace
 
 SweepPlan SweepPlan::from_json(const json& sweep, const std::string& file) { return build(sweep, file, {}); }
@@ -111,25 +59,8 @@ SweepPlan SweepPlan::from_file(const std::string& path) {
   std::stringstream buffer;
   buffer << in.rdbuf();
   if (!in) throw ConfigError(path, "cannot read the sweep file");
-  const std::string text = buffer.str();
-  auto finder = std::make_shared<DuplicateKeyFinder>();
-  json sweep;
-  try {
-    sweep = json::parse(text, [finder](int d, json::parse_event_t e, json& p) { return (*finder)(d, e, p); });
-  } catch (const json::parse_error& e) {
-    // e.byte: 1-based position of the offending character.
-    const std::size_t end = std::min<std::size_t>(e.byte == 0 ? 0 : e.byte - 1, text.size());
-    const auto line = 1 + std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(end), '\n');
-    const std::size_t last_newline = text.rfind('\n', end == 0 ? 0 : end - 1);
-    const std::size_t column = last_newline == std::string::npos || end == 0 ? end + 1 : end - last_newline;
-    std::string detail = e.what();
-    if (const std::size_t cut = detail.find(": ", detail.find("column")); cut != std::string::npos) {
-      detail = detail.substr(cut + 2);
-    }
-    throw ConfigError(path, "invalid JSON at line " + std::to_string(line) + ", column " +
-                                std::to_string(column) + ": " + detail);
-  }
-  return build(sweep, path, finder->problems());
+  SweepJson parsed = parse_sweep_json(buffer.str(), path);
+  return build(parsed.value, path, std::move(parsed.problems));
 }
 
 SweepPlan SweepPlan::build(const json& sweep, const std::string& file, std::vector<std::string> problems) {

@@ -240,9 +240,10 @@ class SweepPlan {
   /// collected and thrown at once as one ConfigError (where() = file) whose message lists
   /// them, one per line, "<file>: <JSON path>: <message>". Loads every map.
   static SweepPlan from_json(const nlohmann::json& sweep, const std::string& file);
-  /// Reads the file and calls from_json. A missing file names the file; bad JSON names the
-  /// file, line and column; duplicate keys in one object are problems (JSON would keep only
-  /// the last).
+  /// Reads the file and calls from_json. A missing file names the file; bad JSON, a number
+  /// beyond a double and nesting deeper than kMaxSweepNesting name the file, line and column
+  /// (parse_sweep_json()); duplicate keys in one object are problems (JSON would keep only the
+  /// last).
   static SweepPlan from_file(const std::string& path);
 
   [[nodiscard]] const std::string& name() const { return name_; }

@@ -7,6 +7,7 @@
 #include <limits>
 #include <set>
 
+#include "core/json_excerpt.hpp"
 #include "sweep/sweep_axes.hpp"
 
 namespace fsweep {
@@ -68,7 +69,8 @@ std::vector<json> expand_range(const json& v, const std::string& where, std::vec
                        " not allowed; allowed: a number > 0");
   }
   if (range_ok && r[0].get<double>() > r[1].get<double>()) {
-    problems.push_back(where + "/range: lo " + r[0].dump() + " > hi " + r[1].dump() + "; allowed: lo <= hi");
+    problems.push_back(where + "/range: lo " + sweep_detail::value_text(r[0]) + " > hi " +
+                       sweep_detail::value_text(r[1]) + "; allowed: lo <= hi");
   }
   if (problems.size() != before) return {};
 
@@ -120,11 +122,7 @@ std::vector<json> expand_range(const json& v, const std::string& where, std::vec
 
 namespace sweep_detail {
 
-std::string value_text(const json& v) {
-  std::string s = v.dump();
-  if (s.size() > 80) s = s.substr(0, 77) + "...";
-  return s;
-}
+std::string value_text(const json& v) { return json_excerpt(v, kMaxExcerptChars - 3); }
 
 std::string strip_path(const std::string& message, const std::string& path) {
   const std::string prefix = path + ": ";

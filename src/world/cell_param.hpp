@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "core/json_excerpt.hpp"
 #include "core/params.hpp"
 #include "world/grid.hpp"
 
@@ -40,7 +41,8 @@ void declare_cell_or_random(ParamDecl<P>& d, std::string name, std::optional<Cel
   spec.allowed_text = "[x, y], two integers >= 0, or \"random\"";
   spec.custom_check = [](const nlohmann::json& v) -> std::vector<std::string> {
     if (v == nlohmann::json("random") || cell_from_json(v)) return {};
-    return {"value " + v.dump() + " is not a cell; allowed: [x, y], two integers >= 0, \"random\", or null"};
+    return {"value " + json_excerpt(v) +
+            " is not a cell; allowed: [x, y], two integers >= 0, \"random\", or null"};
   };
   d.custom(
       std::move(spec),

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "core/config_error.hpp"
+#include "core/json_excerpt.hpp"
 
 namespace fsweep {
 inline namespace world {
@@ -92,7 +93,7 @@ void declare_overrides(ParamDecl<P>& d, const EnergyModel& preset) {
           return x.is_number() && std::isfinite(x.get<double>()) && x.get<double>() >= 0.0;
         });
     if (ok) return {};
-    return {"expected 4 numbers >= 0 (45, 90, 135, 180 degrees), got " + t.dump()};
+    return {"expected 4 numbers >= 0 (45, 90, 135, 180 degrees), got " + json_excerpt(t)};
   };
   d.custom(
       std::move(turn),
@@ -157,7 +158,7 @@ EnergyModel energy_model_from_json(const nlohmann::json& j, const std::string& w
   if (j.is_string()) return energy_registry().configure(j.get<std::string>(), nullptr, where).make();
   if (!j.is_object()) {
     throw ConfigError(where, "expected a preset name (" + join_names(energy_registry().names()) +
-                                 ") or an object {\"preset\": name, overrides...}, got " + j.dump());
+                                 ") or an object {\"preset\": name, overrides...}, got " + json_excerpt(j));
   }
   const nlohmann::json preset = j.value("preset", nlohmann::json("distance"));
   if (!preset.is_string()) {

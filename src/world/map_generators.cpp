@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/config_error.hpp"
+#include "core/json_excerpt.hpp"
 #include "core/random.hpp"
 #include "world/generator_canvas.hpp"
 #include "world/loader_support.hpp"
@@ -237,7 +238,7 @@ void declare_key(ParamDecl<GeneratorParams>& d, const std::string& key) {
     spec.allowed_text = "an integer >= 0";
     spec.custom_check = [](const nlohmann::json& v) -> std::vector<std::string> {
       if (v.is_number_unsigned() || (v.is_number_integer() && v.get<std::int64_t>() >= 0)) return {};
-      return {"'seed' must be a non-negative integer, got " + v.dump()};
+      return {"'seed' must be a non-negative integer, got " + json_excerpt(v)};
     };
     d.custom(
         std::move(spec), [](P& p, const nlohmann::json& v) { p.seed = v.get<std::uint64_t>(); },
@@ -249,7 +250,7 @@ void declare_key(ParamDecl<GeneratorParams>& d, const std::string& key) {
       if (v.is_boolean() || (v.is_number_integer() && (v.get<long long>() == 0 || v.get<long long>() == 1))) {
         return {};
       }
-      return {"'border' must be true, false, 1 or 0, got " + v.dump()};
+      return {"'border' must be true, false, 1 or 0, got " + json_excerpt(v)};
     };
     d.custom(
         std::move(spec),
@@ -263,7 +264,8 @@ void declare_key(ParamDecl<GeneratorParams>& d, const std::string& key) {
     spec.allowed_text = "[x, y] or \"x;y\", non-negative integers";
     spec.custom_check = [](const nlohmann::json& v) -> std::vector<std::string> {
       if (parse_cell_pair(v)) return {};
-      return {"start must be two non-negative integer cell coordinates, [x, y] or \"x;y\", got " + v.dump()};
+      return {"start must be two non-negative integer cell coordinates, [x, y] or \"x;y\", got " +
+              json_excerpt(v)};
     };
     d.custom(
         std::move(spec),

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/config_error.hpp"
+#include "core/json_excerpt.hpp"
 #include "world/map_generators.hpp"
 #include "world/map_loaders.hpp"
 
@@ -67,13 +68,14 @@ int get_int(const json& j, const std::string& key, const Where& where) {
     fits = v.get<std::int64_t>() >= std::numeric_limits<int>::min() &&
            v.get<std::int64_t>() <= std::numeric_limits<int>::max();
   }
-  if (!fits) throw ConfigError(where.key(key), "'" + key + "' must be an integer, got " + v.dump());
+  if (!fits) throw ConfigError(where.key(key), "'" + key + "' must be an integer, got " + json_excerpt(v));
   return v.get<int>();
 }
 
 double get_number(const json& j, const std::string& key, const Where& where) {
   const json& v = j.at(key);
-  if (!v.is_number()) throw ConfigError(where.key(key), "'" + key + "' must be a number, got " + v.dump());
+  if (!v.is_number())
+    throw ConfigError(where.key(key), "'" + key + "' must be a number, got " + json_excerpt(v));
   return v.get<double>();
 }
 
@@ -81,7 +83,7 @@ double get_positive(const json& j, const std::string& key, const Where& where) {
   const double v = get_number(j, key, where);
   if (!(v > 0.0) || !std::isfinite(v)) {
     throw ConfigError(where.key(key),
-                      "'" + key + "' = " + j.at(key).dump() + " is out of range; allowed: > 0");
+                      "'" + key + "' = " + json_excerpt(j.at(key)) + " is out of range; allowed: > 0");
   }
   return v;
 }
@@ -90,7 +92,7 @@ double get_positive(const json& j, const std::string& key, const Where& where) {
 std::pair<double, double> get_pair(const json& j, const std::string& key, char sep, const Where& where) {
   const json& v = j.at(key);
   const std::string expected =
-      "'" + key + "' must be [a, b] or \"a" + std::string(1, sep) + "b\", got " + v.dump();
+      "'" + key + "' must be [a, b] or \"a" + std::string(1, sep) + "b\", got " + json_excerpt(v);
   if (v.is_array() && v.size() == 2 && v[0].is_number() && v[1].is_number()) {
     return {v[0].get<double>(), v[1].get<double>()};
   }
@@ -114,8 +116,8 @@ std::pair<double, double> get_pair(const json& j, const std::string& key, char s
 Cell get_start(const json& j, const Where& where) {
   const auto [x, y] = get_pair(j, "start", ';', where);
   if (x != std::floor(x) || y != std::floor(y) || x < 0 || y < 0 || x > 1e9 || y > 1e9) {
-    throw ConfigError(where.key("start"),
-                      "start must be two non-negative integer cell coordinates, got " + j.at("start").dump());
+    throw ConfigError(where.key("start"), "start must be two non-negative integer cell coordinates, got " +
+                                              json_excerpt(j.at("start")));
   }
   return Cell{static_cast<int>(x), static_cast<int>(y)};
 }
@@ -171,7 +173,8 @@ std::string lower_extension(const std::string& path) {
 WorldMap load_file(const json& j, const Where& where) {
   const json& file_json = j.at("file");
   if (!file_json.is_string() || file_json.get<std::string>().empty()) {
-    throw ConfigError(where.key("file"), "'file' must be a non-empty path string, got " + file_json.dump());
+    throw ConfigError(where.key("file"),
+                      "'file' must be a non-empty path string, got " + json_excerpt(file_json));
   }
   const std::string path = file_json.get<std::string>();
   const std::string ext = lower_extension(path);
@@ -213,8 +216,8 @@ WorldMap load_file(const json& j, const Where& where) {
       } else if (j.contains("size")) {
         const auto [w, h] = get_pair(j, "size", 'x', where);
         if (!(w > 0.0) || !(h > 0.0)) {
-          throw ConfigError(where.key("size"),
-                            "'size' must be two positive lengths in metres, got " + j.at("size").dump());
+          throw ConfigError(where.key("size"), "'size' must be two positive lengths in metres, got " +
+                                                   json_excerpt(j.at("size")));
         }
         scale.width_m = w;
         scale.height_m = h;
@@ -255,7 +258,8 @@ WorldMap build(const json& j, const Where& where) {
         "starts are for sweeps and fsweep sim)");
   }
   if (!j.is_object()) {
-    throw ConfigError(where.base, "a map must be a JSON object with 'generator' or 'file', got " + j.dump());
+    throw ConfigError(where.base,
+                      "a map must be a JSON object with 'generator' or 'file', got " + json_excerpt(j));
   }
   const bool has_generator = j.contains("generator");
   const bool has_file = j.contains("file");

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/config_error.hpp"
+#include "sweep/sweep_json_reader.hpp"
 #include "sweep/sweep_plan.hpp"
 #include "sweep/sweep_table.hpp"
 
@@ -195,8 +196,44 @@ TEST(SweepValidation, FromFileMissingNamesTheFile) {
 TEST(SweepValidation, FromFileBadJsonNamesLineAndColumn) {
   const std::string path = write_temp("bad.json", "{\n  \"name\": \"x\",\n  \"maps\": [1,,]\n}\n");
   const std::string m = from_file_error(path);
-  EXPECT_EQ(m.rfind(path + ": invalid JSON at line 3, column 14: ", 0), 0U) << m;
+  EXPECT_EQ(m.rfind(path + ":3:14: invalid JSON: syntax error", 0), 0U) << m;
   std::filesystem::remove(path);
+}
+
+TEST(SweepValidation, FromFileDeepNestingIsRefusedWithLineColumnAndPath) {
+  // 100,000 levels (200 KB): printing or copying such a value recursively overflows the stack.
+  const std::string head = R"({"schema_version": 1, "name": "t", "maps": )";
+  const std::string path =
+      write_temp("deep.json", head + std::string(100'000, '[') + std::string(100'000, ']') + "}\n");
+  const std::string m = from_file_error(path);
+  // Level 65 (the object is level 1, "maps" level 2) opens at column head + 63 + 1.
+  std::string json_path = "/maps";
+  for (int i = 0; i < kMaxSweepNesting - 1; ++i) json_path += "/0";
+  EXPECT_EQ(m, path + ":1:" + std::to_string(head.size() + 64) + ": " + json_path +
+                   ": arrays and objects are nested more than 64 levels deep; allowed: at most 64 levels");
+  std::filesystem::remove(path);
+}
+
+TEST(SweepValidation, FromFileNumberOverflowNamesLineColumnAndPath) {
+  const std::string path = write_temp("overflow.json", "{\"schema_version\": 1,\n  \"seed\": [1, -1e400]}\n");
+  EXPECT_EQ(from_file_error(path), path +
+                                       ":2:15: /seed/1: number -1e400 is out of range; allowed: numbers of "
+                                       "magnitude below 1.8e308 (a double)");
+  std::filesystem::remove(path);
+}
+
+TEST(SweepValidation, HugeValuesAreCutInMessages) {
+  json s = minimal();
+  s["description"] = json(std::vector<int>(100'000, 1));
+  s["name"] = std::string(200'000, '!');
+  s["maps"] = json::array({json{{"file", std::vector<int>(100'000, 2)}}});
+  s["robot"] = json{{"dock", std::vector<int>(100'000, 3)}};
+  const std::string m = problems_of(s);
+  EXPECT_HAS(m, "/description: expected a string, got [1,1,1,");
+  EXPECT_HAS(m, "/name: value \"!!!!");
+  EXPECT_HAS(m, "/maps/0/file: 'file' must be a non-empty path string, got [2,2,2,");
+  EXPECT_HAS(m, "/robot/dock: value [3,3,3,");
+  EXPECT_LT(m.size(), 1000U) << m.substr(0, 3000);
 }
 
 TEST(SweepValidation, FromFileDuplicateKeysAreProblems) {
