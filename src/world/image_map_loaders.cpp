@@ -4,10 +4,14 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <array>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <limits>
 #include <memory>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -19,8 +23,9 @@ namespace fsweep {
 inline namespace world {
 namespace {
 
-using loader_detail::at_line;
 using loader_detail::number_text;
+using loader_detail::read_whole_file;
+using loader_detail::require_map_size;
 using loader_detail::require_positive_resolution;
 using loader_detail::set_first_free_start;
 
@@ -39,13 +44,74 @@ struct GreyImage {
   }
 };
 
+/// The header of a binary PGM/PPM (P5/P6): "P5", width, height, maxval, each after whitespace
+/// or '#' comments, then one whitespace byte before the pixel data.
+struct PnmHeader {
+  std::int64_t width = 0;
+  std::int64_t height = 0;
+  int channels = 1;          // P5: 1, P6: 3
+  int bytes_per_sample = 1;  // maxval < 256: 1, else 2
+  std::size_t data_offset = 0;
+};
+
+/// The header of `bytes` if they start a binary PGM/PPM with a complete header; nullopt otherwise
+/// (stb_image then reports what is wrong).
+std::optional<PnmHeader> read_pnm_header(const std::string& bytes) {
+  if (bytes.size() < 2 || bytes[0] != 'P' || (bytes[1] != '5' && bytes[1] != '6')) return std::nullopt;
+  PnmHeader h;
+  h.channels = bytes[1] == '5' ? 1 : 3;
+  std::size_t i = 2;
+  std::array<std::int64_t, 3> fields{};  // width, height, maxval
+  for (auto& field : fields) {
+    while (i < bytes.size() && (std::isspace(static_cast<unsigned char>(bytes[i])) != 0 || bytes[i] == '#')) {
+      if (bytes[i] == '#') {
+        while (i < bytes.size() && bytes[i] != '\n') ++i;
+      } else {
+        ++i;
+      }
+    }
+    const std::size_t begin = i;
+    // At most 12 digits: enough for any size this loader could accept, and no overflow.
+    while (i < bytes.size() && i - begin < 12 && std::isdigit(static_cast<unsigned char>(bytes[i])) != 0) {
+      field = field * 10 + (bytes[i] - '0');
+      ++i;
+    }
+    if (i == begin || i >= bytes.size() || std::isspace(static_cast<unsigned char>(bytes[i])) == 0) {
+      return std::nullopt;
+    }
+  }
+  h.width = fields[0];
+  h.height = fields[1];
+  h.bytes_per_sample = fields[2] < 256 ? 1 : 2;
+  h.data_offset = i + 1;
+  return h;
+}
+
 /// Reads a PNG or PGM (or any format stb_image knows) as grey; 16-bit images are scaled to 8 bits.
+/// The declared size is checked before decoding: at most kMaxMapCells pixels and, for a PGM/PPM,
+/// all of its pixel bytes present.
 GreyImage load_grey_image(const std::string& path) {
+  const std::string bytes = read_whole_file(path, "cannot read the image: cannot open the file");
+  const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
+  const int length = static_cast<int>(std::min<std::size_t>(bytes.size(), std::numeric_limits<int>::max()));
+  if (const std::optional<PnmHeader> pnm = read_pnm_header(bytes)) {
+    require_map_size(pnm->width, pnm->height, path);
+    const auto expected = static_cast<std::size_t>(pnm->width * pnm->height) *
+                          static_cast<std::size_t>(pnm->channels * pnm->bytes_per_sample);
+    const std::size_t present = bytes.size() - std::min(bytes.size(), pnm->data_offset);
+    if (present < expected) {
+      throw ConfigError(path, "the pixel data is cut short: the header declares " +
+                                  std::to_string(pnm->width) + " x " + std::to_string(pnm->height) +
+                                  " pixels, " + std::to_string(expected) + " bytes, but only " +
+                                  std::to_string(present) + " bytes follow it");
+    }
+  }
   int w = 0;
   int h = 0;
   int n = 0;
-  const std::unique_ptr<stbi_uc, decltype(&stbi_image_free)> pixels(stbi_load(path.c_str(), &w, &h, &n, 0),
-                                                                    &stbi_image_free);
+  if (stbi_info_from_memory(data, length, &w, &h, &n) != 0) require_map_size(w, h, path);
+  const std::unique_ptr<stbi_uc, decltype(&stbi_image_free)> pixels(
+      stbi_load_from_memory(data, length, &w, &h, &n, 0), &stbi_image_free);
   if (!pixels) {
     const char* reason = stbi_failure_reason();
     throw ConfigError(path, std::string("cannot read the image (") +
@@ -66,14 +132,34 @@ GreyImage load_grey_image(const std::string& path) {
   return image;
 }
 
-/// A YAML scalar as T, or a ConfigError naming the file, the key and its line.
+/// "<path>:<line>:<column>" of a yaml-cpp mark (counted from 0 there, from 1 here); the path
+/// alone for a mark yaml-cpp did not set.
+std::string at_mark(const std::string& path, const YAML::Mark& mark) {
+  if (mark.is_null() || mark.line < 0) return path;
+  return path + ":" + std::to_string(mark.line + 1) + ":" + std::to_string(mark.column + 1);
+}
+
+/// A YAML node for messages: a scalar quoted and cut to 80 characters (before it is formatted),
+/// otherwise its kind.
+std::string yaml_text(const YAML::Node& node) {
+  constexpr std::size_t kMaxText = 80;
+  if (node.IsScalar()) {
+    const std::string& s = node.Scalar();
+    return "'" + (s.size() > kMaxText ? s.substr(0, kMaxText) + "..." : s) + "'";
+  }
+  if (node.IsSequence()) return "a sequence";
+  if (node.IsMap()) return "a mapping";
+  return "nothing";
+}
+
+/// A YAML scalar as T, or a ConfigError naming the file, the key and its line and column.
 template <typename T>
 T yaml_value(const YAML::Node& node, const std::string& key, const std::string& path, const char* expected) {
   try {
     return node.as<T>();
   } catch (const YAML::Exception&) {
-    throw ConfigError(at_line(path, node.Mark().line + 1),
-                      "'" + key + "' must be " + expected + ", got '" + YAML::Dump(node) + "'");
+    throw ConfigError(at_mark(path, node.Mark()),
+                      "'" + key + "' must be " + expected + ", got " + yaml_text(node));
   }
 }
 
@@ -86,7 +172,8 @@ WorldMap load_ros_map(const std::string& yaml_path) {
   } catch (const YAML::BadFile&) {
     throw ConfigError(yaml_path, "cannot open the file for reading");
   } catch (const YAML::Exception& e) {
-    throw ConfigError(at_line(yaml_path, e.mark.line + 1), "invalid YAML: " + e.msg);
+    // e.msg is yaml-cpp's reason without its "yaml-cpp: error at line ..." prefix.
+    throw ConfigError(at_mark(yaml_path, e.mark), "invalid YAML: " + e.msg);
   }
   if (!doc.IsMap()) throw ConfigError(yaml_path, "expected a YAML mapping with image, resolution, ... keys");
   const auto required = [&](const std::string& key) {
@@ -116,8 +203,9 @@ WorldMap load_ros_map(const std::string& yaml_path) {
   if (const YAML::Node node = doc["mode"]) {
     const auto mode = yaml_value<std::string>(node, "mode", yaml_path, "a string");
     if (mode != "trinary" && mode != "scale") {
-      throw ConfigError(at_line(yaml_path, node.Mark().line + 1),
-                        "mode '" + mode + "' is not supported; allowed: trinary, scale (thresholded alike)");
+      throw ConfigError(
+          at_mark(yaml_path, node.Mark()),
+          "mode " + yaml_text(node) + " is not supported; allowed: trinary, scale (thresholded alike)");
     }
   }
   require_positive_resolution(resolution_m, yaml_path);
@@ -189,8 +277,7 @@ WorldMap load_bitmap(const std::string& path, const BitmapScale& scale, int thre
   constexpr double kEps = 1e-6;
   const double cells_x = std::ceil(image.width * mpp_x / resolution_m - kEps);
   const double cells_y = std::ceil(image.height * mpp_y / resolution_m - kEps);
-  constexpr double kMaxCells = 1e8;  // as for generated maps
-  if (cells_x * cells_y > kMaxCells) {
+  if (cells_x * cells_y > static_cast<double>(loader_detail::kMaxMapCells)) {
     throw ConfigError(path, "resampling to " + number_text(resolution_m) + " m cells gives " +
                                 number_text(cells_x) + "x" + number_text(cells_y) +
                                 " cells; allowed: at most 100000000");

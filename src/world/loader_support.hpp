@@ -4,6 +4,8 @@
 /// checks every loader shares.
 
 #include <cmath>
+#include <cstdint>
+#include <fstream>
 #include <iomanip>
 #include <sstream>
 #include <string>
@@ -15,6 +17,10 @@ namespace fsweep {
 inline namespace world {
 namespace loader_detail {
 
+/// The most cells a loaded map may have (MovingAI maps, images, resampled bitmaps; as generated
+/// maps): checked against the header's declared size before anything is allocated.
+inline constexpr std::int64_t kMaxMapCells = 100'000'000;
+
 /// A number for messages: shortest form with up to 10 significant digits (0.05, not 0.050000).
 inline std::string number_text(double v) {
   std::ostringstream out;
@@ -22,8 +28,25 @@ inline std::string number_text(double v) {
   return out.str();
 }
 
+/// The bytes of the file at `path`; a ConfigError(path, `cannot_open`) if it cannot be opened.
+inline std::string read_whole_file(const std::string& path, const std::string& cannot_open) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw ConfigError(path, cannot_open);
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  return bytes.str();
+}
+
 /// "path:line" for messages (line counted from 1).
 inline std::string at_line(const std::string& path, int line) { return path + ":" + std::to_string(line); }
+
+/// Throws at `where` unless a declared width x height (both > 0) fits kMaxMapCells.
+inline void require_map_size(std::int64_t width, std::int64_t height, const std::string& where) {
+  if (width > 0 && height > 0 && width > kMaxMapCells / height) {
+    throw ConfigError(where, "width " + std::to_string(width) + " x height " + std::to_string(height) +
+                                 " is more than 100000000 cells; allowed: at most 100000000 cells");
+  }
+}
 
 /// Throws unless the cell size is a finite number of metres > 0.
 inline void require_positive_resolution(double resolution_m, const std::string& where) {

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <charconv>
-#include <fstream>
 #include <sstream>
 #include <string_view>
 
@@ -15,15 +14,12 @@ inline namespace world {
 namespace {
 
 using loader_detail::at_line;
+using loader_detail::require_map_size;
 using loader_detail::require_positive_resolution;
 using loader_detail::set_first_free_start;
 
 std::string read_text_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw ConfigError(path, "cannot open the file for reading");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
+  return loader_detail::read_whole_file(path, "cannot open the file for reading");
 }
 
 /// Lines of `text` without their '\n' or "\r\n" terminators.
@@ -66,13 +62,18 @@ bool parse_number(std::string_view s, T& value) {
 
 WorldMap load_movingai_map(const std::string& path, double resolution_m) {
   require_positive_resolution(resolution_m, path);
-  const std::vector<std::string> lines = split_lines(read_text_file(path));
+  const std::string text = read_text_file(path);
+  const std::vector<std::string> lines = split_lines(text);
   int width = -1;
   int height = -1;
+  std::size_t width_line = 0;  // 1-based lines of the header's width and height
+  std::size_t height_line = 0;
   std::size_t line_no = 0;
+  std::size_t header_bytes = 0;  // bytes of the header lines, with their line ends
   // 1. Header: `type octile`, `height H`, `width W` (either order), then `map`.
   bool saw_map = false;
   for (; line_no < lines.size() && !saw_map; ++line_no) {
+    header_bytes = std::min(text.size(), header_bytes + lines[line_no].size() + 1);
     const std::vector<std::string> words = words_of(lines[line_no]);
     const std::string where = at_line(path, static_cast<int>(line_no) + 1);
     if (words.empty()) continue;
@@ -88,6 +89,7 @@ WorldMap load_movingai_map(const std::string& path, double resolution_m) {
         throw ConfigError(where, words[0] + " '" + words[1] + "' is not a positive integer");
       }
       (words[0] == "height" ? height : width) = value;
+      (words[0] == "height" ? height_line : width_line) = line_no + 1;
     } else {
       throw ConfigError(where, "unexpected header line '" + lines[line_no] +
                                    "'; allowed: 'type octile', 'height H', 'width W', 'map'");
@@ -98,16 +100,28 @@ WorldMap load_movingai_map(const std::string& path, double resolution_m) {
                       "incomplete MovingAI header; it needs 'type octile', 'height H', 'width W' "
                       "and a 'map' line before the rows");
   }
-  // 2. Exactly `height` rows of `width` characters.
+  // 2. The declared size, checked before allocating: at most kMaxMapCells, no more rows than the
+  // file has lines left, and no more cells than it has bytes left.
+  require_map_size(width, height, at_line(path, static_cast<int>(std::max(width_line, height_line))));
+  const std::size_t lines_left = lines.size() - line_no;
+  if (static_cast<std::size_t>(height) > lines_left) {
+    throw ConfigError(at_line(path, static_cast<int>(height_line)),
+                      "height " + std::to_string(height) + ": the header promises " + std::to_string(height) +
+                          " rows but only " + std::to_string(lines_left) + " lines follow the 'map' line");
+  }
+  const std::size_t bytes_left = text.size() - header_bytes;
+  if (static_cast<std::size_t>(width) * static_cast<std::size_t>(height) > bytes_left) {
+    throw ConfigError(at_line(path, static_cast<int>(width_line)),
+                      "width " + std::to_string(width) + " x height " + std::to_string(height) +
+                          " cells do not fit in the " + std::to_string(bytes_left) +
+                          " bytes that follow the 'map' line");
+  }
+  // 3. Exactly `height` rows of `width` characters.
   WorldMap map;
   map.occupied = Grid<std::uint8_t>(width, height, 1);
   map.resolution_m = resolution_m;
   map.source = path;
   for (int y = 0; y < height; ++y, ++line_no) {
-    if (line_no >= lines.size()) {
-      throw ConfigError(path, "the header promises " + std::to_string(height) + " rows but the file has " +
-                                  std::to_string(y));
-    }
     const std::string& row = lines[line_no];
     const std::string where = at_line(path, static_cast<int>(line_no) + 1);
     if (static_cast<int>(row.size()) != width) {
@@ -129,7 +143,7 @@ WorldMap load_movingai_map(const std::string& path, double resolution_m) {
       map.occupied.at(Cell{x, y}) = occupied;
     }
   }
-  // 3. Nothing but blank lines may follow.
+  // 4. Nothing but blank lines may follow.
   for (; line_no < lines.size(); ++line_no) {
     if (!is_blank(lines[line_no])) {
       throw ConfigError(at_line(path, static_cast<int>(line_no) + 1),

@@ -97,6 +97,25 @@ TEST(MovingAiMap, ShortRowAndMissingRowsAreErrors) {
   expect_config_error([&] { (void)load_movingai_map(missing); }, {missing, "3 rows"});
 }
 
+TEST(MovingAiMap, HugeHeaderIsRefusedBeforeAllocating) {
+  // 10^16 cells: allocating first ended in std::bad_alloc.
+  const std::string huge = write_temp("huge.map", "type octile\nheight 100000000\nwidth 100000000\nmap\n.\n");
+  expect_config_error([&] { (void)load_movingai_map(huge); },
+                      {huge + ":3: width 100000000 x height 100000000", "allowed: at most 100000000 cells"});
+  // 2^31 - 1 rows of one cell (2 GB).
+  const std::string tallest = write_temp("tallest.map", "type octile\nheight 2147483647\nwidth 1\nmap\n.\n");
+  expect_config_error([&] { (void)load_movingai_map(tallest); },
+                      {tallest + ":3: width 1 x height 2147483647 is more than 100000000 cells"});
+  // 10^8 rows of one cell are allowed, but not in a file of one row.
+  const std::string tall = write_temp("tall.map", "type octile\nheight 100000000\nwidth 1\nmap\n.\n");
+  expect_config_error([&] { (void)load_movingai_map(tall); },
+                      {tall + ":2: height 100000000", "promises 100000000 rows but only 1 lines follow"});
+  // 2 rows of 10^7 cells in a file of 6 bytes of rows.
+  const std::string wide = write_temp("wide.map", "type octile\nwidth 10000000\nheight 2\nmap\n..\n..\n");
+  expect_config_error([&] { (void)load_movingai_map(wide); },
+                      {wide + ":2: width 10000000 x height 2 cells do not fit in the 6 bytes"});
+}
+
 TEST(MovingAiMap, BadHeaderAndMissingFileAreErrors) {
   const std::string path = write_temp("bad_header.map", "type hex\nheight 1\nwidth 1\nmap\n.\n");
   expect_config_error([&] { (void)load_movingai_map(path); }, {path + ":1", "allowed: octile"});
@@ -209,6 +228,37 @@ TEST(RosMap, MissingKeysBadValuesAndBadImagesNameTheFile) {
   expect_config_error([&] { (void)load_ros_map(broken); }, {broken, "invalid YAML"});
 }
 
+TEST(RosMap, InvalidYamlNamesLineAndColumn) {
+  const std::string path =
+      write_temp("unclosed.yaml", "image: map.pgm\nresolution: [0.05\noccupied_thresh: 0.65\n");
+  expect_config_error([&] { (void)load_ros_map(path); },
+                      {path + ":3:16: invalid YAML: end of sequence flow not found"});
+  // A bad value is quoted cut to 80 characters, with its line and column.
+  const std::string long_value =
+      write_temp("long_value.yaml", std::string("image: map.pgm\nresolution: ")
+                                        .append(100'000, 'x')
+                                        .append("\noccupied_thresh: 0.65\nfree_thresh: 0.2\n"));
+  try {
+    (void)load_ros_map(long_value);
+    ADD_FAILURE() << "expected a ConfigError";
+  } catch (const ConfigError& e) {
+    const std::string message = e.what();
+    EXPECT_EQ(message, std::string(long_value)
+                           .append(":2:13: 'resolution' must be a number, got '")
+                           .append(80, 'x')
+                           .append("...'"));
+  }
+}
+
+TEST(RosMap, TruncatedImageIsRefusedWithByteCounts) {
+  const std::string pgm = write_temp("cut_ros.pgm", "P5\n3 2\n255\n\xff\xff\xff\xff");
+  const std::string yaml = write_temp("cut_ros.yaml",
+                                      "image: fsweep_loaders_cut_ros.pgm\nresolution: 0.5\n"
+                                      "occupied_thresh: 0.65\nfree_thresh: 0.196\n");
+  expect_config_error([&] { (void)load_ros_map(yaml); },
+                      {pgm + ": the pixel data is cut short", "3 x 2 pixels, 6 bytes, but only 4 bytes"});
+}
+
 // --- Bitmaps -------------------------------------------------------------------------------
 
 TEST(Bitmap, HospitalAt40By18MetresKeepsEveryWall) {
@@ -296,6 +346,44 @@ TEST(Bitmap, BadScaleThresholdAndFileAreErrors) {
         (void)load_bitmap(text, BitmapScale{0.1, 0.0, 0.0}, 127, 0.0);
       },
       {text, "cannot read the image"});
+}
+
+TEST(Bitmap, TruncatedPgmIsRefusedWithByteCounts) {
+  // 3 x 2 pixels need 6 bytes; the file stops after 4 (the missing 2 used to become obstacles).
+  const std::string pgm = write_temp("cut.pgm", "P5\n# cut short\n3 2\n255\n\xff\xff\xff\xff");
+  expect_config_error(
+      [&] {
+        (void)load_bitmap(pgm, BitmapScale{1.0, 0.0, 0.0}, 127, 0.0);
+      },
+      {pgm + ": the pixel data is cut short: the header declares 3 x 2 pixels, 6 bytes, but "
+             "only 4 bytes follow it"});
+  // 16-bit samples take two bytes each.
+  const std::string wide = write_temp("cut16.pgm", "P5 2 1 65535\n\xff\xff\xff");
+  expect_config_error(
+      [&] {
+        (void)load_bitmap(wide, BitmapScale{1.0, 0.0, 0.0}, 127, 0.0);
+      },
+      {"4 bytes, but only 3 bytes"});
+}
+
+TEST(Bitmap, HugeDeclaredSizeIsRefusedBeforeDecoding) {
+  const std::string pgm = write_temp("huge.pgm", "P5\n100000 100000\n255\n\xff");
+  expect_config_error(
+      [&] {
+        (void)load_bitmap(pgm, BitmapScale{1.0, 0.0, 0.0}, 127, 0.0);
+      },
+      {pgm + ": width 100000 x height 100000 is more than 100000000 cells"});
+  // A PNG whose header (IHDR) declares 20000 x 20000 grey pixels and has no pixel data.
+  std::string png = "\x89PNG\r\n\x1a\n";
+  png += std::string("\0\0\0\x0d", 4) + "IHDR";
+  png += std::string("\0\0\x4e\x20\0\0\x4e\x20\x08\0\0\0\0", 13);
+  png += std::string("\0\0\0\0", 4);  // CRC (stb_image does not check it)
+  const std::string path = write_temp("huge.png", png);
+  expect_config_error(
+      [&] {
+        (void)load_bitmap(path, BitmapScale{1.0, 0.0, 0.0}, 127, 0.0);
+      },
+      {path + ": width 20000 x height 20000 is more than 100000000 cells"});
 }
 
 // --- Scenarios -----------------------------------------------------------------------------
