@@ -5,13 +5,11 @@
 #include "sweep/sweep_json_reader.hpp"
 
 #include <algorithm>
-#include <cmath>
-#include <cstdlib>
 #include <memory>
 #include <set>
-#include <string_view>
 
 #include "core/config_error.hpp"
+#include "core/json_text.hpp"
 
 namespace fsweep {
 inline namespace sweep {
@@ -84,80 +82,6 @@ class DuplicateKeyFinder {
   std::vector<std::string> problems_;
 };
 
-/// "<path>:<line>:<column>" of byte `offset` of `text` (both counted from 1).
-std::string at_offset(const std::string& path, const std::string& text, std::size_t offset) {
-  offset = std::min(offset, text.size());
-  const auto begin = text.begin();
-  const auto line = 1 + std::count(begin, begin + static_cast<std::ptrdiff_t>(offset), '\n');
-  const std::size_t last_newline = offset == 0 ? std::string::npos : text.rfind('\n', offset - 1);
-  const std::size_t column = last_newline == std::string::npos ? offset + 1 : offset - last_newline;
-  return path + ":" + std::to_string(line) + ":" + std::to_string(column);
-}
-
-/// Offsets of the text outside strings: calls `visit(offset)` for each such character, in
-/// order, until it returns false. Strings (with their escapes) are skipped.
-template <typename Visit>
-void scan_outside_strings(std::string_view text, Visit visit) {
-  bool in_string = false;
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    const char c = text[i];
-    if (in_string) {
-      if (c == '\\') {
-        ++i;
-      } else if (c == '"') {
-        in_string = false;
-      }
-    } else if (c == '"') {
-      in_string = true;
-    } else if (!visit(i)) {
-      return;
-    }
-  }
-}
-
-/// Offset of the first '[' or '{' that opens level kMaxSweepNesting + 1 (the text's size if none).
-std::size_t too_deep_offset(std::string_view text) {
-  std::size_t found = text.size();
-  int depth = 0;
-  scan_outside_strings(text, [&](std::size_t i) {
-    if (text[i] == '[' || text[i] == '{') {
-      if (++depth > kMaxSweepNesting) {
-        found = i;
-        return false;
-      }
-    } else if (text[i] == ']' || text[i] == '}') {
-      --depth;
-    }
-    return true;
-  });
-  return found;
-}
-
-/// The first number outside strings that a double cannot hold: its offset and text (offset =
-/// the text's size if none).
-std::pair<std::size_t, std::string> overflowing_number(std::string_view text) {
-  std::pair<std::size_t, std::string> found{text.size(), ""};
-  std::size_t skip_to = 0;
-  scan_outside_strings(text, [&](std::size_t i) {
-    if (i < skip_to) return true;
-    const char c = text[i];
-    if (c != '-' && (c < '0' || c > '9')) return true;
-    std::size_t end = i;
-    while (end < text.size() &&
-           std::string_view("+-0123456789.eE").find(text[end]) != std::string_view::npos) {
-      ++end;
-    }
-    skip_to = end;
-    const std::string number(text.substr(i, end - i));
-    if (std::isinf(std::strtod(number.c_str(), nullptr))) {
-      found = {i, number};
-      return false;
-    }
-    return true;
-  });
-  return found;
-}
-
 /// `s` cut to `n` characters for messages.
 std::string cut(const std::string& s, std::size_t n) { return s.size() > n ? s.substr(0, n) + "..." : s; }
 
@@ -170,7 +94,7 @@ SweepJson parse_sweep_json(const std::string& text, const std::string& path) {
     out.value = json::parse(
         text, [finder](int /*depth*/, json::parse_event_t e, json& p) { return (*finder)(e, p); });
   } catch (const NestingTooDeep& e) {
-    throw ConfigError(at_offset(path, text, too_deep_offset(text)),
+    throw ConfigError(text_position(path, text, first_too_deep_opening(text, kMaxSweepNesting)),
                       e.path + ": arrays and objects are nested more than " +
                           std::to_string(kMaxSweepNesting) + " levels deep; allowed: at most " +
                           std::to_string(kMaxSweepNesting) + " levels");
@@ -180,12 +104,12 @@ SweepJson parse_sweep_json(const std::string& text, const std::string& path) {
     if (const std::size_t colon = detail.find(": ", detail.find("column")); colon != std::string::npos) {
       detail = detail.substr(colon + 2);
     }
-    throw ConfigError(at_offset(path, text, e.byte == 0 ? 0 : e.byte - 1),
+    throw ConfigError(text_position(path, text, e.byte == 0 ? 0 : e.byte - 1),
                       "invalid JSON: " + cut(detail, 200));
   } catch (const json::out_of_range&) {
     // 406: a number beyond the range of a double; nlohmann names neither the place nor the path.
-    const auto [offset, number] = overflowing_number(text);
-    throw ConfigError(at_offset(path, text, offset),
+    const auto [offset, number] = first_overflowing_number(text);
+    throw ConfigError(text_position(path, text, offset),
                       finder->path() + ": number " + cut(number, 40) +
                           " is out of range; allowed: numbers of magnitude below 1.8e308 (a double)");
   }

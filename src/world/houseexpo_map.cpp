@@ -2,12 +2,12 @@
 /// HouseExpo floor plans (map_loaders.hpp, load_houseexpo()).
 
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <vector>
 
 #include "core/config_error.hpp"
+#include "core/json_text.hpp"
 #include "world/loader_support.hpp"
 #include "world/map_loaders.hpp"
 #include "world/polygon_fill.hpp"
@@ -27,8 +27,7 @@ constexpr long long kMaxPlanCells = 100'000'000;
 constexpr double kMaxCellCoordinate = 1e9;
 
 json read_plan_json(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw ConfigError(path, "cannot open the file for reading");
+  const std::string text = loader_detail::read_whole_file(path, "cannot open the file for reading");
   const json::parser_callback_t depth_guard = [&path](int depth, json::parse_event_t /*event*/,
                                                       json& /*parsed*/) {
     if (depth > kMaxPlanDepth) {
@@ -38,9 +37,23 @@ json read_plan_json(const std::string& path) {
     return true;
   };
   try {
-    return json::parse(in, depth_guard);
+    return json::parse(text, depth_guard);
   } catch (const json::parse_error& e) {
-    throw ConfigError(path, std::string("not a valid JSON file: ") + e.what());
+    // e.byte: 1-based position of the offending character; the reason follows nlohmann's
+    // "... column C: ".
+    std::string detail = e.what();
+    if (const std::size_t colon = detail.find(": ", detail.find("column")); colon != std::string::npos) {
+      detail = detail.substr(colon + 2);
+    }
+    if (detail.size() > 200) detail = detail.substr(0, 200) + "...";
+    throw ConfigError(text_position(path, text, e.byte == 0 ? 0 : e.byte - 1),
+                      "not a valid JSON file: " + detail);
+  } catch (const json::out_of_range&) {
+    // 406: a number beyond a double; nlohmann names neither the file nor the place.
+    const auto [offset, number] = first_overflowing_number(text);
+    throw ConfigError(text_position(path, text, offset),
+                      "number " + (number.size() > 40 ? number.substr(0, 40) + "..." : number) +
+                          " is out of range; allowed: numbers of magnitude below 1.8e308 (a double)");
   }
 }
 

@@ -180,6 +180,17 @@ TEST(HouseExpo, RandomStartsAreForRunsOnly) {
   EXPECT_FALSE(load_run_map_spec(kPlans + "house_expo_room_0000.json:res=0.1").random_start);
 }
 
+TEST(HouseExpo, BadJsonAndNumberOverflowNameLineAndColumn) {
+  const std::string not_json = write_plan("not_json_at.json", "{\"verts\":\n  [[0, 0],,");
+  expect_config_error([&] { (void)load_houseexpo(not_json); },
+                      {not_json + ":2:11: not a valid JSON file: syntax error"});
+  // nlohmann's own message named neither the file nor the place.
+  const std::string overflow = write_plan("overflow.json", "{\"verts\": [[0, 0],\n  [1e400, 0], [0, 1]]}");
+  expect_config_error([&] { (void)load_houseexpo(overflow); },
+                      {overflow + ":2:4: number 1e400 is out of range; allowed: numbers of magnitude below "
+                                  "1.8e308 (a double)"});
+}
+
 TEST(HouseExpo, BadPlansNameTheFileAndTheJsonPath) {
   expect_config_error([] { (void)load_houseexpo(write_plan("not_json.json", "{\"verts\": [")); },
                       {"not_json.json", "not a valid JSON file"});
