@@ -114,6 +114,35 @@ TEST(Cli, SimWithABeamLidarRecordsItsKeys) {
   std::filesystem::remove_all(out);
 }
 
+TEST(Cli, SimPngScaleOverTheImageLimitIsExit2BeforeAnyOutput) {
+  const std::string out = temp_dir("png_scale");
+  const Outcome huge = fsweep("sim --map free:w=20,h=20 --png-scale 16384 --out " + out);
+  EXPECT_EQ(huge.code, 2) << huge.output;
+  EXPECT_NE(
+      huge.output.find("--png-scale: 16384 pixels per cell on the 20x20 map makes a 327680x327680 image "
+                       "(107374182400 pixels); allowed: at most 16384 pixels per side and 100000000 "
+                       "pixels in all"),
+      std::string::npos)
+      << huge.output;
+  EXPECT_FALSE(std::filesystem::exists(out)) << "nothing is written";
+  // Within the side limit but over the pixel limit: 20 x 819 = 16380 pixels a side, 268 megapixels.
+  const Outcome pixels = fsweep("sim --map free:w=20,h=20 --png-scale 819 --out " + out);
+  EXPECT_EQ(pixels.code, 2) << pixels.output;
+  EXPECT_NE(pixels.output.find("makes a 16380x16380 image (268304400 pixels)"), std::string::npos)
+      << pixels.output;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+TEST(Cli, SimNegativePngScaleIsExit2) {
+  const std::string out = temp_dir("png_negative");
+  const Outcome r = fsweep("sim --map free:w=20,h=20 --png-scale -1 --out " + out);
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find("--png-scale: must be >= 0 pixels per cell (0: automatic), got -1"),
+            std::string::npos)
+      << r.output;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
 TEST(Cli, PlanScenarioReportsZeroMismatches) {
   const std::string data = FSWEEP_TEST_DATA;
   const Outcome r = fsweep("plan --quiet --map " + data + "/arena.map --scen " + data + "/arena.map.scen");
