@@ -143,6 +143,53 @@ TEST(Cli, SimNegativePngScaleIsExit2) {
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 
+/// Runs `fsweep ARGS` and returns what it printed on stderr only (stdout dropped).
+Outcome fsweep_stderr(const std::string& args) {
+  std::string command = "{ ";
+  command += FSWEEP_BINARY_DIR;
+  command += "/bin/fsweep " + args + " 2>&1 >/dev/null; }";
+  return fsweep::testing::run_command(command);
+}
+
+TEST(Cli, PlanEndpointOutsideTheMapOrInAnObstacleIsExit2OnStderr) {
+  const std::string map = std::string(FSWEEP_TEST_DATA) + "/arena.map";  // 49x49, (0, 0) is a tree
+  const std::string outside = " is outside the 49x49 map " + map + "; allowed: 0 <= x < 49, 0 <= y < 49";
+  const std::array<std::array<std::string, 2>, 3> cases{{
+      {"--from 0 0 --to 3 1", "--from: cell (0, 0) is occupied in the map " + map + "; allowed: a free cell"},
+      {"--from 3 1 --to 49 3", "--to: cell (49, 3)" + outside},
+      {"--from 3 -1 --to 3 1", "--from: cell (3, -1)" + outside},
+  }};
+  for (const auto& [endpoints, message] : cases) {
+    const Outcome r = fsweep_stderr("plan --map " + map + " " + endpoints);
+    EXPECT_EQ(r.code, 2) << r.output;
+    EXPECT_NE(r.output.find("fsweep: error: " + message), std::string::npos) << r.output;
+  }
+  EXPECT_EQ(fsweep("plan --map " + map + " --from 0 0 --to 3 1").output.find("status:"), std::string::npos);
+}
+
+TEST(Cli, PlanScenarioCountsQueriesWithInvalidEndpointsOnStderr) {
+  const std::string dir = temp_dir("plan_scen");
+  std::filesystem::create_directories(dir);
+  const std::string scen = dir + "/bad.scen";
+  // A valid query (from arena.map.scen), a start in a tree, a goal in a tree. (A cell outside
+  // the map is refused with the file's line when the .scen is read.)
+  std::ofstream(scen) << "version 1\n"
+                         "0\tarena.map\t49\t49\t1\t11\t1\t12\t1\n"
+                         "0\tarena.map\t49\t49\t0\t0\t3\t1\t3\n"
+                         "0\tarena.map\t49\t49\t3\t1\t0\t1\t3\n";
+  const std::string args =
+      "plan --quiet --map " + std::string(FSWEEP_TEST_DATA) + "/arena.map --scen " + scen;
+  const Outcome err = fsweep_stderr(args);
+  EXPECT_NE(err.output.find("fsweep: warning: " + scen +
+                            ": 2 of 3 queries have a start or goal outside the 49x49 map or occupied "
+                            "(first: query 1: start cell (0, 0) is occupied)"),
+            std::string::npos)
+      << err.output;
+  const Outcome all = fsweep(args);  // the batch itself runs every query, as before
+  EXPECT_NE(all.output.find("total: 3 queries, 1 match, 2 mismatches"), std::string::npos) << all.output;
+  std::filesystem::remove_all(dir);
+}
+
 TEST(Cli, PlanScenarioReportsZeroMismatches) {
   const std::string data = FSWEEP_TEST_DATA;
   const Outcome r = fsweep("plan --quiet --map " + data + "/arena.map --scen " + data + "/arena.map.scen");
