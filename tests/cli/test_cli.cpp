@@ -190,6 +190,54 @@ TEST(Cli, PlanScenarioCountsQueriesWithInvalidEndpointsOnStderr) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(Cli, UnknownCommandIsNamedWithTheCommandsAllowed) {
+  const Outcome r = fsweep("frobnicate");
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(
+      r.output.find("fsweep: error: unknown command 'frobnicate'; allowed: sim, plan, plan-compare, "
+                    "plan-bench, run, expand, aggregate, merge, compare, slurm, plot, report, describe, "
+                    "export-sqlite"),
+      std::string::npos)
+      << r.output;
+  const Outcome none = fsweep("");
+  EXPECT_EQ(none.code, 2) << none.output;
+  EXPECT_NE(none.output.find("fsweep: error: a command is required; allowed: sim, plan,"), std::string::npos)
+      << none.output;
+}
+
+TEST(Cli, BadNumbersNameTheOptionAndWhatIsAllowed) {
+  const std::string out = temp_dir("seed");
+  const Outcome negative = fsweep("sim --map free:w=10,h=10 --seed -1 --out " + out);
+  EXPECT_EQ(negative.code, 2) << negative.output;
+  EXPECT_NE(negative.output.find("fsweep: error: sim: --seed: must be an integer >= 0, got '-1'"),
+            std::string::npos)
+      << negative.output;
+  const Outcome word = fsweep("sim --map free:w=10,h=10 --seed abc --out " + out);
+  EXPECT_EQ(word.code, 2) << word.output;
+  EXPECT_NE(word.output.find("sim: --seed: must be an integer >= 0, got 'abc'"), std::string::npos)
+      << word.output;
+  const Outcome big = fsweep("sim --map free:w=10,h=10 --seed 18446744073709551616 --out " + out);
+  EXPECT_EQ(big.code, 2) << big.output;
+  EXPECT_NE(big.output.find("--seed: must be an integer from 0 to 18446744073709551615 (2^64 - 1), got "
+                            "'18446744073709551616'"),
+            std::string::npos)
+      << big.output;
+  const Outcome scale = fsweep("sim --map free:w=10,h=10 --png-scale two --out " + out);
+  EXPECT_EQ(scale.code, 2) << scale.output;
+  EXPECT_NE(scale.output.find("sim: --png-scale: must be an integer, got 'two'"), std::string::npos)
+      << scale.output;
+  const Outcome tolerance = fsweep("plan --map free:w=10,h=10 --from 1 1 --to 2 2 --tolerance x");
+  EXPECT_EQ(tolerance.code, 2) << tolerance.output;
+  EXPECT_NE(tolerance.output.find("plan: --tolerance: must be a number, got 'x'"), std::string::npos)
+      << tolerance.output;
+  // Before the option's own range check, which would say "Value x could not be converted".
+  const Outcome significance = fsweep("compare /nonexistent /nonexistent2 --significance x");
+  EXPECT_EQ(significance.code, 2) << significance.output;
+  EXPECT_NE(significance.output.find("compare: --significance: must be a number, got 'x'"), std::string::npos)
+      << significance.output;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
 TEST(Cli, PlanScenarioReportsZeroMismatches) {
   const std::string data = FSWEEP_TEST_DATA;
   const Outcome r = fsweep("plan --quiet --map " + data + "/arena.map --scen " + data + "/arena.map.scen");
