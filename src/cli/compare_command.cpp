@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "cli/commands.hpp"
+#include "cli/option_checks.hpp"
 #include "cli/output_dir.hpp"
 #include "report/compare.hpp"
 
@@ -45,11 +46,11 @@ Command add_compare_command(CLI::App& app) {
          "--quality-tolerance", o->compare.quality_tolerance,
          "Relative tolerance on the q25/median/q75 of distance_m, energy, coverage of non-reproducible "
          "configurations")
-      ->check(CLI::NonNegativeNumber)
+      ->check(non_negative())
       ->capture_default_str();
   sub->add_option("--min-runs", o->compare.min_quantile_runs,
                   "Non-reproducible configurations with fewer runs on either side are not judged")
-      ->check(CLI::PositiveNumber)
+      ->check(positive())
       ->capture_default_str();
   sub->add_option("--significance", o->compare.significance,
                   "Quantile shifts beyond the tolerance count only when a one-sided Mann-Whitney test "
@@ -58,7 +59,7 @@ Command add_compare_command(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--speed-tolerance", o->compare.speed_tolerance,
                   "Slower means a time ratio above 1 + this (noise of shared machines)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(non_negative())
       ->capture_default_str();
   sub->add_flag("--strict-speed", o->compare.strict_speed,
                 "Slower fails even when the machines (host, CPU) differ");

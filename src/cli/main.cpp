@@ -8,6 +8,7 @@
 #include <map>
 
 #include "cli/commands.hpp"
+#include "cli/option_checks.hpp"
 #include "core/config_error.hpp"
 
 namespace {
@@ -48,11 +49,18 @@ int main(int argc, char** argv) try {
   commands["report"] = fsweep::cli::add_report_command(app);
   commands["describe"] = fsweep::cli::add_describe_command(app);
   commands["export-sqlite"] = fsweep::cli::add_export_sqlite_command(app);
+  fsweep::cli::check_number_options(app);
   try {
     app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? 0 : 2;
+    std::cerr << fsweep::cli::parse_error_message(app, e) << '\n';
+    return 2;
   }
   try {
     for (const auto& [name, run] : commands) {

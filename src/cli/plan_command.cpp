@@ -29,6 +29,28 @@ struct PlanOptions {
   bool quiet = false;
 };
 
+/// On stderr: how many queries of `scen` had a start or goal outside `map` or occupied (status
+/// StartInvalid or GoalInvalid), and the first of them. Nothing when there are none.
+void report_invalid_endpoints(const std::string& scen, const WorldMap& map, const ScenarioReport& report) {
+  int invalid = 0;
+  std::string first;
+  for (std::size_t i = 0; i < report.queries.size(); ++i) {
+    const ScenarioQueryResult& q = report.queries[i];
+    if (q.status != PlanStatus::StartInvalid && q.status != PlanStatus::GoalInvalid) continue;
+    if (invalid++ == 0) {
+      const bool start = q.status == PlanStatus::StartInvalid;
+      const Cell c = start ? q.query.start : q.query.goal;
+      first = "query " + std::to_string(i) + ": " + (start ? "start" : "goal") + " cell (" +
+              std::to_string(c.x) + ", " + std::to_string(c.y) + ") " +
+              (map.occupied.in_bounds(c) ? "is occupied" : "is outside the map");
+    }
+  }
+  if (invalid == 0) return;
+  std::cerr << "fsweep: warning: " << scen << ": " << invalid << " of " << report.total
+            << (report.total == 1 ? " query has" : " queries have") << " a start or goal outside the "
+            << map.width() << "x" << map.height() << " map or occupied (first: " << first << ")\n";
+}
+
 int run_scenario(const PlanOptions& o, const WorldMap& map, Planner& planner) {
   const ScenarioReport report = check_scenario(map, load_scenario(o.scen), planner, o.tolerance);
   if (!o.quiet) {
@@ -54,7 +76,20 @@ int run_scenario(const PlanOptions& o, const WorldMap& map, Planner& planner) {
       "%.3f s planning, %.3f s wall\n",
       report.total, report.matches, report.mismatches, report.unreachable_expected, planner.name().c_str(),
       report.expansions, report.plan_time_s, report.wall_time_s);
+  report_invalid_endpoints(o.scen, map, report);
   return report.mismatches == 0 ? 0 : 1;
+}
+
+/// Throws ConfigError naming `option` and the cell if `c` is outside `map` or occupied.
+void require_free_endpoint(const WorldMap& map, Cell c, const std::string& option, const std::string& spec) {
+  const std::string cell = "cell (" + std::to_string(c.x) + ", " + std::to_string(c.y) + ")";
+  if (!map.occupied.in_bounds(c)) {
+    throw ConfigError(option, cell + " is outside the " + std::to_string(map.width()) + "x" +
+                                  std::to_string(map.height()) + " map " + spec + "; allowed: 0 <= x < " +
+                                  std::to_string(map.width()) + ", 0 <= y < " + std::to_string(map.height()));
+  }
+  if (!map.is_free(c))
+    throw ConfigError(option, cell + " is occupied in the map " + spec + "; allowed: a free cell");
 }
 
 int run_single(const PlanOptions& o, const WorldMap& map, Planner& planner) {
@@ -64,6 +99,8 @@ int run_single(const PlanOptions& o, const WorldMap& map, Planner& planner) {
   PlanRequest request;
   request.start = Cell{o.from[0], o.from[1]};
   request.goal = Cell{o.to[0], o.to[1]};
+  require_free_endpoint(map, request.start, "--from", o.map);
+  require_free_endpoint(map, request.goal, "--to", o.map);
   const PlanResult r = planner.plan(fully_known(map), request);
   std::cout << "status: " << to_string(r.status) << "\nlength_m: " << format_number(r.length_m)
             << "\nlength_cells: " << format_number(r.length_m / map.resolution_m)

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "cli/commands.hpp"
+#include "cli/option_checks.hpp"
 #include "cli/plotting.hpp"
 #include "report/aggregate.hpp"
 
@@ -42,7 +43,7 @@ Command add_plot_command(CLI::App& app) {
       ->required();
   sub->add_option("--out", o->out, "Directory for the PNGs (default: DIR/plots)");
   sub->add_option("--top", o->top, "Draw the best N configurations (by best.csv)")
-      ->check(CLI::PositiveNumber)
+      ->check(positive())
       ->capture_default_str();
   return [o] { return run_plot(*o); };
 }

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "cli/option_checks.hpp"
 #include "cli/plotting.hpp"
 #include "core/config_error.hpp"
 #include "core/files.hpp"
@@ -138,10 +139,10 @@ Command add_report_command(CLI::App& app) {
       ->required();
   sub->add_option("--out", o->out, "The page's file (default: DIR/report.html)");
   sub->add_option("--top", o->top, "Plot the best N configurations (fsweep plot --top)")
-      ->check(CLI::PositiveNumber)
+      ->check(positive())
       ->capture_default_str();
   sub->add_option("--rows", o->rows, "Rows of each table (best.csv, summary.csv, search_best.csv)")
-      ->check(CLI::PositiveNumber)
+      ->check(positive())
       ->capture_default_str();
   sub->add_flag("!--no-trajectories", o->trajectories,
                 "Do not re-simulate the best and the worst run for their trajectory pictures");

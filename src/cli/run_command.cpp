@@ -117,7 +117,8 @@ Command add_run_command(CLI::App& app) {
                                      "Run a sweep file in parallel, resumably (runs.csv, progress.csv, "
                                      "summary.csv, best.csv, manifest.json)");
   sub->add_option("sweep", o->sweep_file, "Sweep file (JSON)")->required();
-  sub->add_option("--threads", o->threads, "Worker threads (0: all cores)")->capture_default_str();
+  sub->add_option("--threads", o->threads, "Worker threads (0: all cores; at most 4 x the hardware threads)")
+      ->capture_default_str();
   sub->add_flag("--fresh", o->fresh, "Delete previous outputs and start over");
   sub->add_option("--out", o->out, "Output directory (default: the sweep's output.dir or results/<name>)");
   sub->add_flag("--quiet", o->quiet, "No progress on stderr");

@@ -51,6 +51,7 @@ int run_sim(const SimOptions& o) {
   }
   spec.map = std::make_shared<const WorldMap>(std::move(map.map));
 
+  check_trajectory_image(*spec.map, o.png_scale, "--png-scale");  // before the run and any file
   create_output_dir(o.out);  // before the run, so a bad --out costs nothing
   const RunResult result = simulate(spec);
 
@@ -98,7 +99,9 @@ Command add_sim_command(CLI::App& app) {
                   "progress_step_m");
   sub->add_option("--seed", o->seed, "Run seed")->capture_default_str();
   sub->add_option("--out", o->out, "Output directory")->capture_default_str();
-  sub->add_option("--png-scale", o->png_scale, "Pixels per cell in trajectory.png (0: automatic)");
+  sub->add_option("--png-scale", o->png_scale,
+                  "Pixels per cell in trajectory.png (0: automatic; the image at most 16384 pixels a side, "
+                  "100 megapixels)");
   return [o] { return run_sim(*o); };
 }
 

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "core/config_error.hpp"
 #include "core/files.hpp"
 
 namespace fsweep {
@@ -19,8 +20,12 @@ using Rgb = std::array<std::uint8_t, 3>;
 
 class Canvas {
  public:
+  /// `w` x `h` cells of `scale` pixels (check_trajectory_image() bounds the product).
   Canvas(int w, int h, int scale)
-      : w_(w * scale), h_(h * scale), scale_(scale), px_(static_cast<std::size_t>(w_ * h_ * 3)) {}
+      : w_(w * scale),
+        h_(h * scale),
+        scale_(scale),
+        px_(static_cast<std::size_t>(w_) * static_cast<std::size_t>(h_) * 3) {}
   void cell(Cell c, Rgb rgb, int shrink = 0) {
     for (int y = c.y * scale_ + shrink; y < (c.y + 1) * scale_ - shrink; ++y) {
       for (int x = c.x * scale_ + shrink; x < (c.x + 1) * scale_ - shrink; ++x) put(x, y, rgb);
@@ -75,8 +80,30 @@ Rgb time_colour(double t) {
 
 }  // namespace
 
+int trajectory_scale(const WorldMap& map, int scale) {
+  return scale > 0 ? scale : std::clamp(800 / std::max({map.width(), map.height(), 1}), 1, 16);
+}
+
+void check_trajectory_image(const WorldMap& map, int scale, const std::string& option) {
+  if (scale < 0) {
+    throw ConfigError(option, "must be >= 0 pixels per cell (0: automatic), got " + std::to_string(scale));
+  }
+  const std::int64_t s = trajectory_scale(map, scale);
+  const std::int64_t w = s * map.width();
+  const std::int64_t h = s * map.height();
+  if (w > kMaxTrajectoryImageSide || h > kMaxTrajectoryImageSide || w * h > kMaxTrajectoryImagePixels) {
+    throw ConfigError(
+        option, std::to_string(s) + " pixels per cell" + (scale == 0 ? " (automatic)" : "") + " on the " +
+                    std::to_string(map.width()) + "x" + std::to_string(map.height()) + " map makes a " +
+                    std::to_string(w) + "x" + std::to_string(h) + " image (" + std::to_string(w * h) +
+                    " pixels); allowed: at most " + std::to_string(kMaxTrajectoryImageSide) +
+                    " pixels per side and " + std::to_string(kMaxTrajectoryImagePixels) + " pixels in all");
+  }
+}
+
 std::string trajectory_png(const WorldMap& map, const RunResult& result, int scale) {
-  if (scale <= 0) scale = std::clamp(800 / std::max({map.width(), map.height(), 1}), 1, 16);
+  check_trajectory_image(map, scale, "scale");
+  scale = trajectory_scale(map, scale);
   Canvas canvas(map.width(), map.height(), scale);
   const KnownMap& known = result.final_known;
   for (int i = 0; i < map.occupied.size(); ++i) {

@@ -103,9 +103,11 @@ SweepPlan SweepPlan::build(const json& sweep, const std::string& file, std::vect
     problems.push_back("/description: expected a string, got " + value_text(d));
   }
   if (const json& r = get("repetitions"); !r.is_null()) {
-    if (!r.is_number_integer() || r.get<std::int64_t>() < 1 ||
-        r.get<std::int64_t>() > std::numeric_limits<int>::max()) {
-      problems.push_back("/repetitions: value " + value_text(r) + " not allowed; allowed: an integer >= 1");
+    if (!r.is_number_integer() || r.get<std::int64_t>() < 1 || r.get<std::int64_t>() > kMaxRepetitions) {
+      problems.push_back("/repetitions: value " + value_text(r) +
+                         " not allowed; allowed: an integer from 1 to " + std::to_string(kMaxRepetitions) +
+                         " (2^31 - 1, the repetition index is a 32-bit integer), written without a decimal "
+                         "point or exponent");
     } else {
       plan.repetitions_ = r.get<int>();
     }

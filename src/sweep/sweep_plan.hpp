@@ -29,7 +29,7 @@
 ///   A dock must be a free cell of every map.
 /// - `sim`: the sim_params_from_json object (not swept). `progress_step_m` may also be given
 ///   at the top level (as the issue names it), but not in both places.
-/// - `repetitions`: integer >= 1, default 1. `seed`: unsigned integer, default 0.
+/// - `repetitions`: integer from 1 to kMaxRepetitions, default 1. `seed`: unsigned integer, default 0.
 /// - `output`: {"dir": path (default "results/<name>"), "objective": "distance_to_final_
 ///   coverage_m" (default) | "area_per_metre" | "energy"}.
 ///
@@ -83,6 +83,7 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -95,6 +96,10 @@
 
 namespace fsweep {
 inline namespace sweep {
+
+/// The most repetitions a sweep may ask for: the repetition index is an `int`
+/// (RunCoordinates::repetition), so 2^31 - 1.
+inline constexpr std::int64_t kMaxRepetitions = std::numeric_limits<int>::max();
 
 /// The JSON schema version this build reads.
 inline constexpr int kSweepSchemaVersion = 1;

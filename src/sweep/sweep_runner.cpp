@@ -8,12 +8,14 @@
 #include <sys/file.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
+#include <thread>
 
 #include "core/config_error.hpp"
 #include "report/aggregate.hpp"
@@ -154,10 +156,19 @@ struct Job {
 
 }  // namespace
 
+int hardware_threads() { return std::max(1, static_cast<int>(std::thread::hardware_concurrency())); }
+
+int max_threads() { return kThreadsPerHardwareThread * hardware_threads(); }
+
 RunnerReport run_sweep(const SweepPlan& plan, const RunnerOptions& options) {
   // 1. Options, directory, lock, previous outputs.
-  if (options.threads < 0)
-    throw ConfigError("--threads", "must be >= 0 (0: all cores), got " + std::to_string(options.threads));
+  if (options.threads < 0 || options.threads > max_threads()) {
+    throw ConfigError("--threads", "must be 0 (all cores) to " + std::to_string(max_threads()) + " (" +
+                                       std::to_string(kThreadsPerHardwareThread) + " x the " +
+                                       std::to_string(hardware_threads()) +
+                                       " hardware threads of this machine), got " +
+                                       std::to_string(options.threads));
+  }
   if (options.shard_count == 0 || options.shard_index >= options.shard_count) {
     throw ConfigError("--shard", "must be i/n with 0 <= i < n, got " + std::to_string(options.shard_index) +
                                      "/" + std::to_string(options.shard_count));

@@ -84,8 +84,18 @@
 namespace fsweep {
 inline namespace sweep {
 
+/// The bound of RunnerOptions::threads: this many times the machine's hardware threads.
+inline constexpr int kThreadsPerHardwareThread = 4;
+
+/// std::thread::hardware_concurrency(), at least 1 (it may report 0 when unknown).
+[[nodiscard]] int hardware_threads();
+
+/// kThreadsPerHardwareThread x hardware_threads(): the most worker threads a sweep may ask for.
+[[nodiscard]] int max_threads();
+
 struct RunnerOptions {
-  /// Worker threads; 0 = all cores (oneTBB's default concurrency). Negative: ConfigError.
+  /// Worker threads; 0 = all cores (oneTBB's default concurrency). Negative or more than
+  /// max_threads(): ConfigError.
   int threads = 0;
   /// Delete previous outputs (runs.csv, progress.csv, manifest.json, summary.csv,
   /// progress_summary.csv, best.csv; nothing else) and start over.

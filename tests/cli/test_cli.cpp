@@ -114,6 +114,130 @@ TEST(Cli, SimWithABeamLidarRecordsItsKeys) {
   std::filesystem::remove_all(out);
 }
 
+TEST(Cli, SimPngScaleOverTheImageLimitIsExit2BeforeAnyOutput) {
+  const std::string out = temp_dir("png_scale");
+  const Outcome huge = fsweep("sim --map free:w=20,h=20 --png-scale 16384 --out " + out);
+  EXPECT_EQ(huge.code, 2) << huge.output;
+  EXPECT_NE(
+      huge.output.find("--png-scale: 16384 pixels per cell on the 20x20 map makes a 327680x327680 image "
+                       "(107374182400 pixels); allowed: at most 16384 pixels per side and 100000000 "
+                       "pixels in all"),
+      std::string::npos)
+      << huge.output;
+  EXPECT_FALSE(std::filesystem::exists(out)) << "nothing is written";
+  // Within the side limit but over the pixel limit: 20 x 819 = 16380 pixels a side, 268 megapixels.
+  const Outcome pixels = fsweep("sim --map free:w=20,h=20 --png-scale 819 --out " + out);
+  EXPECT_EQ(pixels.code, 2) << pixels.output;
+  EXPECT_NE(pixels.output.find("makes a 16380x16380 image (268304400 pixels)"), std::string::npos)
+      << pixels.output;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+TEST(Cli, SimNegativePngScaleIsExit2) {
+  const std::string out = temp_dir("png_negative");
+  const Outcome r = fsweep("sim --map free:w=20,h=20 --png-scale -1 --out " + out);
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find("--png-scale: must be >= 0 pixels per cell (0: automatic), got -1"),
+            std::string::npos)
+      << r.output;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+/// Runs `fsweep ARGS` and returns what it printed on stderr only (stdout dropped).
+Outcome fsweep_stderr(const std::string& args) {
+  std::string command = "{ ";
+  command += FSWEEP_BINARY_DIR;
+  command += "/bin/fsweep " + args + " 2>&1 >/dev/null; }";
+  return fsweep::testing::run_command(command);
+}
+
+TEST(Cli, PlanEndpointOutsideTheMapOrInAnObstacleIsExit2OnStderr) {
+  const std::string map = std::string(FSWEEP_TEST_DATA) + "/arena.map";  // 49x49, (0, 0) is a tree
+  const std::string outside = " is outside the 49x49 map " + map + "; allowed: 0 <= x < 49, 0 <= y < 49";
+  const std::array<std::array<std::string, 2>, 3> cases{{
+      {"--from 0 0 --to 3 1", "--from: cell (0, 0) is occupied in the map " + map + "; allowed: a free cell"},
+      {"--from 3 1 --to 49 3", "--to: cell (49, 3)" + outside},
+      {"--from 3 -1 --to 3 1", "--from: cell (3, -1)" + outside},
+  }};
+  for (const auto& [endpoints, message] : cases) {
+    const Outcome r = fsweep_stderr("plan --map " + map + " " + endpoints);
+    EXPECT_EQ(r.code, 2) << r.output;
+    EXPECT_NE(r.output.find("fsweep: error: " + message), std::string::npos) << r.output;
+  }
+  EXPECT_EQ(fsweep("plan --map " + map + " --from 0 0 --to 3 1").output.find("status:"), std::string::npos);
+}
+
+TEST(Cli, PlanScenarioCountsQueriesWithInvalidEndpointsOnStderr) {
+  const std::string dir = temp_dir("plan_scen");
+  std::filesystem::create_directories(dir);
+  const std::string scen = dir + "/bad.scen";
+  // A valid query (from arena.map.scen), a start in a tree, a goal in a tree. (A cell outside
+  // the map is refused with the file's line when the .scen is read.)
+  std::ofstream(scen) << "version 1\n"
+                         "0\tarena.map\t49\t49\t1\t11\t1\t12\t1\n"
+                         "0\tarena.map\t49\t49\t0\t0\t3\t1\t3\n"
+                         "0\tarena.map\t49\t49\t3\t1\t0\t1\t3\n";
+  const std::string args =
+      "plan --quiet --map " + std::string(FSWEEP_TEST_DATA) + "/arena.map --scen " + scen;
+  const Outcome err = fsweep_stderr(args);
+  EXPECT_NE(err.output.find("fsweep: warning: " + scen +
+                            ": 2 of 3 queries have a start or goal outside the 49x49 map or occupied "
+                            "(first: query 1: start cell (0, 0) is occupied)"),
+            std::string::npos)
+      << err.output;
+  const Outcome all = fsweep(args);  // the batch itself runs every query, as before
+  EXPECT_NE(all.output.find("total: 3 queries, 1 match, 2 mismatches"), std::string::npos) << all.output;
+  std::filesystem::remove_all(dir);
+}
+
+TEST(Cli, UnknownCommandIsNamedWithTheCommandsAllowed) {
+  const Outcome r = fsweep("frobnicate");
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(
+      r.output.find("fsweep: error: unknown command 'frobnicate'; allowed: sim, plan, plan-compare, "
+                    "plan-bench, run, expand, aggregate, merge, compare, slurm, plot, report, describe, "
+                    "export-sqlite"),
+      std::string::npos)
+      << r.output;
+  const Outcome none = fsweep("");
+  EXPECT_EQ(none.code, 2) << none.output;
+  EXPECT_NE(none.output.find("fsweep: error: a command is required; allowed: sim, plan,"), std::string::npos)
+      << none.output;
+}
+
+TEST(Cli, BadNumbersNameTheOptionAndWhatIsAllowed) {
+  const std::string out = temp_dir("seed");
+  const Outcome negative = fsweep("sim --map free:w=10,h=10 --seed -1 --out " + out);
+  EXPECT_EQ(negative.code, 2) << negative.output;
+  EXPECT_NE(negative.output.find("fsweep: error: sim: --seed: must be an integer >= 0, got '-1'"),
+            std::string::npos)
+      << negative.output;
+  const Outcome word = fsweep("sim --map free:w=10,h=10 --seed abc --out " + out);
+  EXPECT_EQ(word.code, 2) << word.output;
+  EXPECT_NE(word.output.find("sim: --seed: must be an integer >= 0, got 'abc'"), std::string::npos)
+      << word.output;
+  const Outcome big = fsweep("sim --map free:w=10,h=10 --seed 18446744073709551616 --out " + out);
+  EXPECT_EQ(big.code, 2) << big.output;
+  EXPECT_NE(big.output.find("--seed: must be an integer from 0 to 18446744073709551615 (2^64 - 1), got "
+                            "'18446744073709551616'"),
+            std::string::npos)
+      << big.output;
+  const Outcome scale = fsweep("sim --map free:w=10,h=10 --png-scale two --out " + out);
+  EXPECT_EQ(scale.code, 2) << scale.output;
+  EXPECT_NE(scale.output.find("sim: --png-scale: must be an integer, got 'two'"), std::string::npos)
+      << scale.output;
+  const Outcome tolerance = fsweep("plan --map free:w=10,h=10 --from 1 1 --to 2 2 --tolerance x");
+  EXPECT_EQ(tolerance.code, 2) << tolerance.output;
+  EXPECT_NE(tolerance.output.find("plan: --tolerance: must be a number, got 'x'"), std::string::npos)
+      << tolerance.output;
+  // Before the option's own range check, which would say "Value x could not be converted".
+  const Outcome significance = fsweep("compare /nonexistent /nonexistent2 --significance x");
+  EXPECT_EQ(significance.code, 2) << significance.output;
+  EXPECT_NE(significance.output.find("compare: --significance: must be a number, got 'x'"), std::string::npos)
+      << significance.output;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
 TEST(Cli, PlanScenarioReportsZeroMismatches) {
   const std::string data = FSWEEP_TEST_DATA;
   const Outcome r = fsweep("plan --quiet --map " + data + "/arena.map --scen " + data + "/arena.map.scen");

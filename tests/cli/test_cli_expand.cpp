@@ -67,4 +67,35 @@ TEST(CliExpand, WarnsAboutAFreeMapThatClipsTheFreeSpaceOptimum) {
   std::filesystem::remove(path);
 }
 
+TEST(CliExpand, NegativeCountsAreExit2NotWrappedTo2To64) {
+  // CLI11 2.1 reads "-1" into an unsigned option as 2^64 - 1: every unsigned option refuses it.
+  const std::string sweep = FSWEEP_SOURCE_DIR "/sweeps/default.json";
+  for (const char* option : {"--limit", "--from"}) {
+    const Outcome r = fsweep("expand " + sweep + " " + option + " -1");
+    EXPECT_EQ(r.code, 2) << r.output;
+    EXPECT_NE(r.output.find("fsweep: error: expand: " + std::string(option) +
+                            ": must be an integer >= 0, got '-1'"),
+              std::string::npos)
+        << r.output;
+    EXPECT_EQ(r.output.find("18446744073709551615"), std::string::npos) << r.output;
+  }
+  const Outcome rows = fsweep("report /nonexistent --rows -1");
+  EXPECT_EQ(rows.code, 2) << rows.output;
+  EXPECT_NE(rows.output.find("report: --rows: must be an integer >= 0, got '-1'"), std::string::npos)
+      << rows.output;
+  const Outcome runs = fsweep("compare /nonexistent /nonexistent2 --min-runs -1");
+  EXPECT_EQ(runs.code, 2) << runs.output;
+  EXPECT_NE(runs.output.find("compare: --min-runs: must be an integer >= 0, got '-1'"), std::string::npos)
+      << runs.output;
+  const Outcome top = fsweep("plot /nonexistent --top -1");
+  EXPECT_EQ(top.code, 2) << top.output;
+  EXPECT_NE(top.output.find("plot: --top: must be > 0, got '-1'"), std::string::npos) << top.output;
+}
+
+TEST(CliExpand, CountsWithLeadingZerosAreDecimalNotOctal) {
+  const Outcome r = fsweep("expand " FSWEEP_SOURCE_DIR "/sweeps/default.json --from 010 --limit 1");
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find("runs from index 10, 1 run of 90:"), std::string::npos) << r.output;
+}
+
 }  // namespace test_cli_expand

@@ -3,12 +3,14 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <thread>
 
 #include "cli/fsweep_process.hpp"
 
@@ -104,6 +106,29 @@ TEST(CliRun, BadShardAndMissingFileAreExit2) {
   const RunOutcome missing = fsweep_run(dir + "/nonexistent.json --quiet");
   EXPECT_EQ(missing.code, 2);
   EXPECT_NE(missing.output.find("nonexistent.json"), std::string::npos) << missing.output;
+  std::filesystem::remove_all(dir);
+}
+
+TEST(CliRun, ThreadsAboveFourTimesTheHardwareThreadsAreExit2NamingTheBound) {
+  const std::string dir = make_dir("threads");
+  const int hardware = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  const std::string bound = std::to_string(4 * hardware);
+  const std::string hint = "(4 x the " + std::to_string(hardware) + " hardware threads of this machine)";
+  for (const std::string& threads : {std::to_string(4 * hardware + 1), std::string("100000")}) {
+    const RunOutcome r =
+        fsweep_run(write_sweep(dir, 1) + " --quiet --threads " + threads + " --out " + dir + "/r");
+    EXPECT_EQ(r.code, 2) << r.output;
+    EXPECT_NE(r.output.find("--threads: must be 0 (all cores) to " + bound + " " + hint + ", got " + threads),
+              std::string::npos)
+        << r.output;
+    EXPECT_EQ(r.output.find("on " + threads + " threads"), std::string::npos) << r.output;
+    EXPECT_FALSE(std::filesystem::exists(dir + "/r/runs.csv"));
+  }
+  // The bound itself is allowed.
+  const RunOutcome ok =
+      fsweep_run(write_sweep(dir, 1) + " --quiet --threads " + bound + " --out " + dir + "/r");
+  EXPECT_EQ(ok.code, 0) << ok.output;
+  EXPECT_NE(ok.output.find("on " + bound + " threads"), std::string::npos) << ok.output;
   std::filesystem::remove_all(dir);
 }
 

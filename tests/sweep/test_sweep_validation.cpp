@@ -103,6 +103,22 @@ TEST(SweepValidation, ZipGroupsNeedEqualLengthsAndKnownParameters) {
   EXPECT_HAS(m, "/strategies/0/zip/1/0: 'w9' is not a parameter of this entry; allowed: w1, w3");
 }
 
+TEST(SweepValidation, RepetitionsStateTheRealLimit) {
+  // The repetition index is an int: 2^31 - 1 is the most; 1e15 (a JSON float) is refused with
+  // that limit, not as "not an integer >= 1".
+  json s = minimal();
+  s["repetitions"] = 2147483647;
+  EXPECT_EQ(problems_of(s), "");
+  for (const json& bad : {json(2147483648LL), json(1e15), json(2.5)}) {
+    s["repetitions"] = bad;
+    EXPECT_HAS(
+        problems_of(s),
+        "/repetitions: value " + bad.dump() +
+            " not allowed; allowed: an integer from 1 to 2147483647 (2^31 - 1, the repetition index is "
+            "a 32-bit integer), written without a decimal point or exponent");
+  }
+}
+
 TEST(SweepValidation, TopLevelScalars) {
   json s = minimal();
   s.erase("schema_version");
@@ -113,7 +129,7 @@ TEST(SweepValidation, TopLevelScalars) {
   const std::string m = problems_of(s);
   EXPECT_HAS(m, "/schema_version: missing; allowed: 1");
   EXPECT_HAS(m, "/name: value \"my sweep\" not allowed; allowed: a string of letters, digits");
-  EXPECT_HAS(m, "/repetitions: value 0 not allowed; allowed: an integer >= 1");
+  EXPECT_HAS(m, "/repetitions: value 0 not allowed; allowed: an integer from 1 to 2147483647");
   EXPECT_HAS(m, "/seed: value -3 not allowed");
   EXPECT_HAS(m, "/output/format: unknown key 'format'; allowed: dir, objective");
   s["output"] = json{{"objective", "speed"}};
