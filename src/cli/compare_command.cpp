@@ -24,7 +24,7 @@ struct CompareCommandOptions {
 int run_compare(const CompareCommandOptions& o) {
   const CompareReport report = compare_dirs(o.new_dir, o.baseline_dir, o.compare);
   const std::string out = o.out.empty() ? o.new_dir + "/compare" : o.out;
-  create_output_dir(out);
+  create_output_dir(out, OutputKind::Compare, "--out");
   write_compare_outputs(report, out);
   std::cout << format_compare_table(report) << "wrote " << out << "/compare.csv and " << out
             << "/compare.html\n";

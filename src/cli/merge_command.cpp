@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "cli/commands.hpp"
+#include "cli/output_dir.hpp"
 #include "sweep/merge.hpp"
 
 namespace fsweep::cli {
@@ -20,6 +21,7 @@ struct MergeCommandOptions {
 };
 
 int run_merge(const MergeCommandOptions& o) {
+  check_output_dir(o.dir, OutputKind::Sweep, "DIR (and --out of the sharded runs)");
   const MergeReport r = merge_shards(o.dir, o.objective);
   if (!r.written) {
     std::cerr << "fsweep merge: " << o.dir << ": " << r.problems.size() << " problem(s), nothing written ("

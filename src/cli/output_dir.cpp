@@ -1,16 +1,93 @@
 #include "cli/output_dir.hpp"
 
 #include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
 #include <system_error>
+#include <vector>
 
 #include "core/config_error.hpp"
 
 namespace fsweep {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// The files of `names` that exist in `dir`, joined for messages.
+std::string present(const std::string& dir, const std::vector<std::string>& names) {
+  std::vector<std::string> found;
+  for (const std::string& n : names) {
+    std::error_code ec;
+    if (fs::exists(fs::path(dir) / n, ec)) found.push_back(n);
+  }
+  return join_names(found);
+}
+
+bool has(const std::string& dir, const char* name) {
+  std::error_code ec;
+  return fs::exists(fs::path(dir) / name, ec);
+}
+
+/// manifest.json of `dir` when it is a sweep's (an object with a string sweep_hash).
+std::optional<nlohmann::json> sweep_manifest(const std::string& dir) {
+  std::ifstream in(fs::path(dir) / "manifest.json");
+  if (!in) return std::nullopt;
+  nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  if (j.is_discarded() || !j.is_object() || !j.contains("sweep_hash") || !j["sweep_hash"].is_string())
+    return std::nullopt;
+  return j;
+}
+
+}  // namespace
+
+std::optional<OutputDirContents> output_dir_contents(const std::string& dir) {
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) return std::nullopt;
+  const std::optional<nlohmann::json> manifest = sweep_manifest(dir);
+  if (manifest || has(dir, "runs.csv")) {
+    const std::string name = manifest && manifest->contains("name") && (*manifest)["name"].is_string()
+                                 ? " '" + (*manifest)["name"].get<std::string>() + "'"
+                                 : std::string();
+    return OutputDirContents{OutputKind::Sweep, "the results of sweep" + name + " (" +
+                                                    present(dir, {"manifest.json", "runs.csv"}) + ")"};
+  }
+  if (has(dir, "run.csv")) {
+    return OutputDirContents{
+        OutputKind::Sim,
+        "the output of fsweep sim (" + present(dir, {"run.csv", "progress.csv", "trajectory.png"}) + ")"};
+  }
+  if (has(dir, "queries.csv") || has(dir, "ompl_benchmark.log")) {
+    return OutputDirContents{OutputKind::PlanBench,
+                             "the output of fsweep plan-bench (" +
+                                 present(dir, {"queries.csv", "summary.csv", "ompl_benchmark.log"}) + ")"};
+  }
+  if (has(dir, "pairs.csv")) {
+    return OutputDirContents{OutputKind::PlanCompare,
+                             "the output of fsweep plan-compare (" +
+                                 present(dir, {"pairs.csv", "summary.csv", "manifest.json"}) + ")"};
+  }
+  if (has(dir, "compare.csv") || has(dir, "compare.html")) {
+    return OutputDirContents{OutputKind::Compare, "the output of fsweep compare (" +
+                                                      present(dir, {"compare.csv", "compare.html"}) + ")"};
+  }
+  return std::nullopt;
+}
+
+void check_output_dir(const std::string& dir, OutputKind kind, const std::string& option) {
+  const std::optional<OutputDirContents> held = output_dir_contents(dir);
+  if (held && held->kind != kind)
+    throw ConfigError(dir, "holds " + held->description + "; choose another " + option);
+}
 
 void create_output_dir(const std::string& dir) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) throw ConfigError(dir, "cannot create the output directory: " + ec.message());
+}
+
+void create_output_dir(const std::string& dir, OutputKind kind, const std::string& option) {
+  check_output_dir(dir, kind, option);
+  create_output_dir(dir);
 }
 
 }  // namespace fsweep

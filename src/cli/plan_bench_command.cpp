@@ -125,6 +125,7 @@ BenchmarkLogExperiment log_experiment(const PlanBenchOptions& o, const KnownMap&
 
 int run_plan_bench_command(const PlanBenchOptions& o) {
   // 1. Planners (all registered by default) with their parameters, energy model, map, queries.
+  if (!o.out.empty()) check_output_dir(o.out, OutputKind::PlanBench, "--out");  // before the planning
   const std::vector<std::string> names = o.planners.empty() ? planner_names() : o.planners;
   const nlohmann::json params = kv_to_json(o.planner_params, "--planner-param");
   std::set<std::string> seen;
@@ -205,7 +206,7 @@ int run_plan_bench_command(const PlanBenchOptions& o) {
       "(success in %%; len/opt = path length / optimal octile length, mean and quantiles over solved "
       "queries; energy and turns means over solved; time quantiles over all queries)\n");
   if (!o.out.empty()) {
-    create_output_dir(o.out);
+    create_output_dir(o.out, OutputKind::PlanBench, "--out");
     write_queries_csv(o.out + "/queries.csv", names, queries, plans);
     write_bench_summary_csv(o.out + "/summary.csv", names, summaries);
     write_file_atomically(o.out + "/ompl_benchmark.log",

@@ -189,6 +189,7 @@ void write_manifest(const std::string& path, const PlanCompareOptions& o, const 
 
 int run_plan_compare(const PlanCompareOptions& o) {
   // 1. Resolve and check every input before planning.
+  if (!o.out.empty()) check_output_dir(o.out, OutputKind::PlanCompare, "--out");
   if (o.planners.size() < 2) {
     throw ConfigError(
         "--planners",
@@ -226,7 +227,7 @@ int run_plan_compare(const PlanCompareOptions& o) {
   // 3. Outputs.
   print_compare_table(o, known, energy, summary, pairs.size());
   if (!o.out.empty()) {
-    create_output_dir(o.out);
+    create_output_dir(o.out, OutputKind::PlanCompare, "--out");
     write_pairs_csv(o.out + "/pairs.csv", o.planners, pairs, plans);
     write_compare_summary_csv(o.out + "/summary.csv", o.planners, summary);
     write_manifest(o.out + "/manifest.json", o, known, energy, pairs.size());

@@ -11,6 +11,7 @@
 #include <tuple>
 
 #include "cli/commands.hpp"
+#include "cli/output_dir.hpp"
 #include "cli/sweep_warnings.hpp"
 #include "core/config_error.hpp"
 #include "report/sqlite_export.hpp"
@@ -55,6 +56,11 @@ std::pair<std::uint64_t, std::uint64_t> parse_shard(const std::string& s) {
 
 int run_command(const RunCommandOptions& o) {
   const SweepPlan plan = SweepPlan::from_file(o.sweep_file);
+  // The runner refuses a directory of another sweep (manifest.json's sweep_hash); here one of
+  // another command (fsweep sim's progress.csv is not a sweep's).
+  const std::string out = o.out.empty() ? plan.output_dir() : o.out;
+  check_output_dir(out.empty() ? "." : out, OutputKind::Sweep,
+                   o.out.empty() ? "--out (or output.dir)" : "--out");
   print_sweep_warnings(plan, o.sweep_file);
   RunnerOptions options;
   options.threads = o.threads;

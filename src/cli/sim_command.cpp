@@ -52,7 +52,7 @@ int run_sim(const SimOptions& o) {
   spec.map = std::make_shared<const WorldMap>(std::move(map.map));
 
   check_trajectory_image(*spec.map, o.png_scale, "--png-scale");  // before the run and any file
-  create_output_dir(o.out);  // before the run, so a bad --out costs nothing
+  create_output_dir(o.out, OutputKind::Sim, "--out");             // before the run: a bad --out costs nothing
   const RunResult result = simulate(spec);
 
   Columns row = config_columns(spec);
