@@ -35,7 +35,7 @@ struct Shard {
 
 nlohmann::json read_json(const std::string& path) {
   std::ifstream in(path);
-  if (!in) throw ConfigError(path, "cannot open the shard's manifest");
+  if (!in) throw ConfigError(path, "cannot open the manifest");
   nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
   if (j.is_discarded() || !j.is_object() || !j.contains("sweep_hash") || !j["sweep_hash"].is_string()) {
     throw ConfigError(path, "not a sweep manifest (no sweep_hash)");
@@ -47,6 +47,26 @@ std::uint64_t parse_index(const std::string& cell, const CsvReader& r) {
   const auto v = parse_run_index(cell);
   if (!v) throw ConfigError(r.where(), "run_index '" + cell + "' is not a non-negative integer");
   return *v;
+}
+
+/// "sweep 'name' (sweep_hash H)" of a sweep manifest.
+std::string describe_sweep(const nlohmann::json& manifest) {
+  const nlohmann::json* name = manifest.contains("name") ? &manifest["name"] : nullptr;
+  return std::string("sweep ") +
+         (name != nullptr && name->is_string() ? "'" + name->get<std::string>() + "' " : "") +
+         "(sweep_hash " + manifest["sweep_hash"].get<std::string>() + ")";
+}
+
+/// Throws ConfigError when `dir` already holds the merged (or unsharded) results of another sweep
+/// than the shards' (its manifest.json's sweep_hash differs), as an unsharded run refuses.
+void refuse_results_of_another_sweep(const std::string& dir, const Shard& first) {
+  const std::string path = dir + "/manifest.json";
+  if (!fs::exists(path)) return;
+  const nlohmann::json held = read_json(path);
+  if (held["sweep_hash"] == first.manifest["sweep_hash"]) return;
+  throw ConfigError(dir, "holds the results of " + describe_sweep(held) + ", its shards are of " +
+                             describe_sweep(first.manifest) + " (" + first.dir +
+                             "); nothing written: merge the shards of one sweep into its own directory");
 }
 
 }  // namespace
@@ -86,6 +106,7 @@ MergeReport merge_shards(const std::string& dir, const std::string& objective) {
                                  shards.front().dir + ")");
     }
   }
+  refuse_results_of_another_sweep(dir, shards.front());
   {
     std::size_t k = 0;
     for (std::uint64_t i = 0; i < n; ++i) {

@@ -27,8 +27,10 @@ struct MergeReport {
 
 /// Merges the shards under `dir`. Every shard directory (name `shard-<i>-of-<n>`) must have the
 /// same n, a manifest.json with the same sweep_hash and runs.csv / progress.csv with equal
-/// headers; otherwise (or with no shard directory, or malformed files) throws ConfigError naming
-/// the directories or the file and line (exit code 2 in the CLI). The sweep's run count and run
+/// headers, and a manifest.json already in `dir` (an earlier merge or an unsharded run) must have
+/// that sweep_hash too; otherwise (or with no shard directory, or malformed files) throws
+/// ConfigError naming the directories (and both sweeps) or the file and line, before anything is
+/// written (exit code 2 in the CLI). The sweep's run count and run
 /// keys come from the sweep plan rebuilt from the manifest's `sweep` (if that fails, e.g. a map
 /// file is not reachable from the current directory, the total is the sum of the shard
 /// manifests' `runs.total` and keys are not checked). Missing shard directories, run indices

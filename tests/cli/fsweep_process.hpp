@@ -52,6 +52,18 @@ inline std::string fresh_temp_dir(const std::string& tag, const std::string& nam
   return dir.string();
 }
 
+/// A sweep of 2 runs (one generated rooms map, closest_frontier, 2 repetitions) named `name`
+/// with sweep seed `seed`, written to `dir`/`name`.json (`dir` created); returns its path.
+inline std::string write_named_sweep(const std::string& dir, const std::string& name, int seed) {
+  std::filesystem::create_directories(dir);
+  const std::string path = dir + "/" + name + ".json";
+  std::ofstream(path) << R"({"schema_version": 1, "name": ")" << name << R"(",
+    "maps": ["rooms:w=24,h=20,door=2,seed=2"], "strategies": [{"name": "closest_frontier"}],
+    "repetitions": 2, "seed": )"
+                      << seed << "}";
+  return path;
+}
+
 /// The whole file ("" when it cannot be read).
 inline std::string read_all(const std::string& path) {
   std::ifstream in(path, std::ios::binary);

@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
 #include <string>
 
 #include "cli/fsweep_process.hpp"
@@ -15,17 +14,7 @@ namespace {
 namespace fs = std::filesystem;
 using fsweep::testing::read_all;
 using fsweep::testing::run_fsweep;
-
-/// A sweep of 2 runs named `name`, written to `dir`/`name`.json.
-std::string write_sweep(const std::string& dir, const std::string& name, int seed) {
-  fs::create_directories(dir);
-  const std::string path = dir + "/" + name + ".json";
-  std::ofstream(path) << R"({"schema_version": 1, "name": ")" << name << R"(",
-    "maps": ["rooms:w=24,h=20,door=2,seed=2"], "strategies": [{"name": "closest_frontier"}],
-    "repetitions": 2, "seed": )"
-                      << seed << "}";
-  return path;
-}
+using fsweep::testing::write_named_sweep;
 
 bool contains(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;
@@ -35,7 +24,7 @@ const char* const kSim = "sim --map rooms:w=24,h=20,door=2,seed=2 --out ";
 
 TEST(CliOutputDirs, SimRefusesASweepsResultsAndTheSweepStillResumes) {
   const std::string dir = fsweep::testing::fresh_temp_dir("outdirs", "sim_into_sweep");
-  const std::string sweep = write_sweep(dir, "outdirs", 1);
+  const std::string sweep = write_named_sweep(dir, "outdirs", 1);
   const std::string out = dir + "/results";
   ASSERT_EQ(run_fsweep("run " + sweep + " --quiet --out " + out).code, 0);
   const std::string progress = read_all(out + "/progress.csv");
@@ -58,7 +47,7 @@ TEST(CliOutputDirs, SimRefusesASweepsResultsAndTheSweepStillResumes) {
 
 TEST(CliOutputDirs, SimRerunsIntoItsOwnOutputButARunDoesNot) {
   const std::string dir = fsweep::testing::fresh_temp_dir("outdirs", "run_into_sim");
-  const std::string sweep = write_sweep(dir, "outdirs", 1);
+  const std::string sweep = write_named_sweep(dir, "outdirs", 1);
   const std::string out = dir + "/sim";
   ASSERT_EQ(run_fsweep(kSim + out).code, 0);
   const auto rerun = run_fsweep(kSim + out + " --seed 4");
@@ -114,7 +103,7 @@ TEST(CliOutputDirs, PlannerBenchmarksAndCompareRefuseEachOthersDirectories) {
 
 TEST(CliOutputDirs, CompareRefusesAnotherCommandsDirectory) {
   const std::string dir = fsweep::testing::fresh_temp_dir("outdirs", "compare");
-  const std::string sweep = write_sweep(dir, "outdirs", 1);
+  const std::string sweep = write_named_sweep(dir, "outdirs", 1);
   const std::string results = dir + "/results";
   const std::string sim = dir + "/sim";
   ASSERT_EQ(run_fsweep("run " + sweep + " --quiet --out " + results).code, 0);
@@ -131,7 +120,7 @@ TEST(CliOutputDirs, CompareRefusesAnotherCommandsDirectory) {
 
 TEST(CliOutputDirs, MergeRefusesADirectoryOfAnotherCommand) {
   const std::string dir = fsweep::testing::fresh_temp_dir("outdirs", "merge_sim");
-  const std::string sweep = write_sweep(dir, "outdirs", 1);
+  const std::string sweep = write_named_sweep(dir, "outdirs", 1);
   const std::string shards = dir + "/shards";
   const std::string sim = dir + "/sim";
   ASSERT_EQ(run_fsweep(kSim + sim).code, 0);
