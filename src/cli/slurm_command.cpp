@@ -127,6 +127,7 @@ int run_slurm(const SlurmCommandOptions& o) {
   SlurmScriptOptions s;
   s.sweep_file = absolute_path(o.sweep_file);
   s.out_dir = absolute_path(o.out.empty() ? plan.output_dir() : o.out);
+  check_output_dir(s.out_dir, OutputKind::Sweep, "--out");  // the jobs run and merge the sweep there
   s.work_dir = absolute_path(fs::current_path().string());
   s.name = plan.name();
   s.shards = o.tasks;

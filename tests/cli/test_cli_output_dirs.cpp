@@ -1,7 +1,7 @@
 // A command never writes over another command's output directory (issue 18): `sim`, `run`,
-// `merge`, `plan-bench`, `plan-compare` and `compare` recognise what an existing directory
-// holds (cli/output_dir.hpp) and refuse another command's with exit 2, before writing anything;
-// rerunning a command into its own kind of output stays allowed.
+// `merge`, `plan-bench`, `plan-compare` and `compare` (and `slurm`, test_cli_slurm.cpp) recognise what an
+// existing directory holds (cli/output_dir.hpp) and refuse another command's with exit 2, before writing
+// anything; rerunning a command into its own kind of output stays allowed.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -9,7 +9,7 @@
 
 #include "cli/fsweep_process.hpp"
 
-namespace {
+namespace test_cli_output_dirs {  // not anonymous: unity builds put it beside other test files' helpers
 
 namespace fs = std::filesystem;
 using fsweep::testing::read_all;
@@ -137,4 +137,4 @@ TEST(CliOutputDirs, MergeRefusesADirectoryOfAnotherCommand) {
   fs::remove_all(dir);
 }
 
-}  // namespace
+}  // namespace test_cli_output_dirs

@@ -94,6 +94,12 @@ TEST(CliSlurm, BadInputIsExit2AndWritesNothing) {
                  "/out");
   EXPECT_EQ(r.code, 2) << r.output;
   EXPECT_FALSE(fs::exists(dir + "/out"));
+  // The sweep's directory may not hold another command's output (cli/output_dir.hpp).
+  ASSERT_EQ(run_fsweep("sim --map free:w=10,h=10 --out " + dir + "/sim").code, 0);
+  r = run_fsweep("slurm " + sweep + " --tasks 2 --dry-run --out " + dir + "/sim");
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_TRUE(has(r.output, "/sim: holds the output of fsweep sim")) << r.output;
+  EXPECT_FALSE(fs::exists(dir + "/sim/slurm"));
   fs::remove_all(dir);
 }
 
