@@ -299,5 +299,38 @@ TEST(CsvReader, QuoteInsideUnquotedFieldIsAnError) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(CsvReader, DamageIsNamedWithFileLineAndWhatWasExpected) {
+  const auto dir = make_sweep_dir("damaged");
+  const auto message_for = [&](const std::string& text) {
+    write_text(dir / "runs.csv", text);
+    CsvReader in((dir / "runs.csv").string());
+    return config_error([&] {
+      while (in.next()) {
+      }
+    });
+  };
+  const std::string file = (dir / "runs.csv").string();
+  const std::string cr = message_for("a,b\n1,2\n3,4\r5\n");
+  EXPECT_EQ(
+      cr.find(file + ":3: a carriage return (\\r) inside the line, not followed by a line feed: expected "
+                     "each line to end with a line feed (\\n) or \\r\\n (the file is damaged"),
+      0U)
+      << cr;
+  const std::string after_quote = message_for("a,b\n1,\"2\"x\n");
+  EXPECT_EQ(
+      after_quote.find(file + ":2: field 2 has 'x' after its closing quote: expected a comma or the end "
+                              "of the line"),
+      0U)
+      << after_quote;
+  const std::string unclosed = message_for("a,b\n1,2\n\"3,4\n");
+  EXPECT_EQ(unclosed.find(file + ":3: field 1 opens a quote (\") that is never closed: expected a closing "
+                                 "quote before the end of the file"),
+            0U)
+      << unclosed;
+  const std::string fields = message_for("a,b\n1,2,3\n");
+  EXPECT_EQ(fields.find(file + ":2: the line has 3 fields: expected 2, as many as the header"), 0U) << fields;
+  std::filesystem::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace fsweep
