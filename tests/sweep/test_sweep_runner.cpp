@@ -212,6 +212,51 @@ TEST(SweepRunner, ResumeAfterSigkillEqualsUninterrupted) {
   fs::remove_all(killed);
 }
 
+TEST(SweepRunner, DamagedRowsInTheMiddleAreReportedAndRedoneInRunOrder) {
+  const std::string ref = temp_dir("damaged_ref");
+  const std::string dir = temp_dir("damaged");
+  ASSERT_EQ(run(small_sweep(), ref, 2).ran, 48U);
+
+  // runs.csv: run 5's row lost its last 3 fields (line 7), a garbage line follows run 20's row
+  // (line 23), run 30's row has a carriage return in its run_key (line 33). progress.csv whole.
+  const auto run_recs = records(read_file(ref + "/runs.csv"));
+  ASSERT_EQ(run_recs.size(), 49U);
+  std::string runs = run_recs[0] + "\n";
+  for (std::size_t i = 1; i < run_recs.size(); ++i) {
+    std::string rec = run_recs[i];
+    if (i == 6) {
+      auto f = split_csv_line(rec);
+      f.resize(f.size() - 3);
+      rec.clear();
+      for (const auto& cell : f) rec += (rec.empty() ? "" : ",") + csv_field(cell);
+    }
+    if (i == 31) rec.insert(rec.find(',') + 1, "\r");
+    runs += rec + "\n";
+    if (i == 21) runs += "#### not a row ####\n";
+  }
+  write_file(dir + "/runs.csv", runs);
+  fs::copy_file(ref + "/progress.csv", dir + "/progress.csv");
+  fs::copy_file(ref + "/manifest.json", dir + "/manifest.json");
+
+  ::testing::internal::CaptureStderr();
+  const RunnerReport r = run(small_sweep(), dir, 2);
+  const std::string err = ::testing::internal::GetCapturedStderr();
+  EXPECT_EQ(r.skipped, 46U);
+  EXPECT_EQ(r.ran, 2U);
+  expect_same_outputs(ref, dir);  // in run order, each run once
+  for (const std::string& expected :
+       {dir + "/runs.csv:7: the line has " + std::to_string(split_csv_line(run_recs[6]).size() - 3) +
+            " fields, where the header has " + std::to_string(split_csv_line(run_recs[6]).size()),
+        dir + "/runs.csv:23: the line has 1 fields",
+        dir + "/runs.csv:33: a carriage return (\\r) inside the line", std::string("run 5 (run_key "),
+        std::string("run 30 (run_key ")}) {
+    EXPECT_NE(err.find(expected), std::string::npos) << expected << "\nnot in:\n" << err;
+  }
+  EXPECT_NE(err.find(dir + "/progress.csv:"), std::string::npos) << err;
+  fs::remove_all(ref);
+  fs::remove_all(dir);
+}
+
 TEST(SweepRunner, TornLinesAreDroppedAndRedone) {
   const std::string ref = temp_dir("torn_ref");
   const std::string torn = temp_dir("torn");
