@@ -227,7 +227,7 @@ TEST(Malformed, ShortRowNamesFileAndLine) {
              "1,k1,free,closest_frontier,2,complete\n");
   const std::string msg = config_error([&] { aggregate(dir.string(), AggregateOptions{"energy"}); });
   EXPECT_NE(msg.find("runs.csv:3"), std::string::npos) << msg;
-  EXPECT_NE(msg.find("expected 8 fields"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("fields: expected 8, as many as the header"), std::string::npos) << msg;
   std::filesystem::remove_all(dir);
 }
 
@@ -249,7 +249,7 @@ TEST(Malformed, UnclosedQuoteAndTornLastLineNameFileAndLine) {
              "run_index,run_key,distance_m,explored_area_m2\n0,k0,0,1\n0,\"k0,0.75,2\n");
   std::string msg = config_error([&] { aggregate(dir.string(), {}); });
   EXPECT_NE(msg.find("progress.csv:3"), std::string::npos) << msg;
-  EXPECT_NE(msg.find("not closed"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("that is never closed: expected a closing quote"), std::string::npos) << msg;
   std::string runs = testing::kRunsCsv;
   runs.pop_back();  // no final newline: a torn write
   write_text(dir / "runs.csv", runs);
