@@ -34,7 +34,6 @@ class RecordParser {
   /// Feeds one byte; returns true when it completed a record (then fields() and problem() hold
   /// it).
   bool feed(char c) {
-    if (c == '\n') ++lines_;
     if (in_quotes_) {
       if (c == '"') {
         in_quotes_ = false;
@@ -79,8 +78,6 @@ class RecordParser {
   [[nodiscard]] const std::vector<std::string>& fields() const { return fields_; }
   /// Why the completed record is malformed; empty when it is well-formed.
   [[nodiscard]] const std::string& problem() const { return problem_; }
-  /// Line feeds fed so far.
-  [[nodiscard]] std::uint64_t lines() const { return lines_; }
   void next_record() {
     fields_.clear();
     problem_.clear();
@@ -102,7 +99,6 @@ class RecordParser {
   std::vector<std::string> fields_;
   std::string field_;
   std::string problem_;
-  std::uint64_t lines_ = 0;
   bool in_quotes_ = false;
   bool closed_quote_ = false;
   bool field_started_ = false;
@@ -194,22 +190,53 @@ CsvRepairStats CsvJournal::repair(const RecordFilter& keep) {
   const std::uint64_t body = header_.size() + 1;
   std::fseek(f, static_cast<long>(body), SEEK_SET);
 
-  // 1. Scan the records; remember the kept byte ranges (merged) and where dropped ones lie.
+  // 1. Scan the records; remember the kept byte ranges (merged) and where dropped ones lie. A
+  //    dropped record running over several lines (a damaged row's unclosed quote swallows the
+  //    rows after it) costs only its first line: the scan restarts on the next one.
   std::vector<Span> kept{{0, body}};
   bool dropped_before_kept = false;
   bool any_dropped = false;
   RecordParser parser;
   std::uint64_t offset = body;
   std::uint64_t record_begin = body;
-  std::uint64_t record_line = 2;  // the header is line 1
+  std::uint64_t line = 2;         // line of the next byte (the header is line 1)
+  std::uint64_t record_line = 2;  // line where the current record starts
+  std::uint64_t first_break = 0;  // offset past the current record's first line feed; 0: none yet
+  const auto drop_first_line = [&](std::string reason) {
+    ++stats.dropped;
+    any_dropped = true;
+    note_dropped(stats.dropped_lines, record_line, record_line,
+                 std::move(reason) + " (read as one record with the lines up to " + std::to_string(line - 1) +
+                     ", which are read again on their own)");
+    std::fseek(f, static_cast<long>(first_break), SEEK_SET);
+    offset = record_begin = first_break;
+    line = record_line = record_line + 1;
+    first_break = 0;
+    parser = RecordParser();
+  };
   std::array<char, 1 << 16> buf{};
-  std::size_t n = 0;
-  while ((n = std::fread(buf.data(), 1, buf.size(), f)) > 0) {
+  for (;;) {
+    const std::size_t n = std::fread(buf.data(), 1, buf.size(), f);
+    if (n == 0) {
+      if (offset > record_begin && first_break != 0) {  // an unfinished record over several lines
+        stats.torn = true;
+        drop_first_line("a quote opened on this line is not closed before the end of the file");
+        continue;
+      }
+      break;
+    }
     for (std::size_t i = 0; i < n; ++i) {
       ++offset;
+      if (buf[i] == '\n') {
+        ++line;
+        if (first_break == 0) first_break = offset;
+      }
       if (!parser.feed(buf[i])) continue;
       std::string reason = parser.problem().empty() ? keep(parser.fields()) : parser.problem();
-      const std::uint64_t last_line = parser.lines() + 1;  // the line its final newline ends
+      if (!reason.empty() && first_break != offset) {
+        drop_first_line(std::move(reason));
+        break;  // read on from the new offset
+      }
       if (reason.empty()) {
         ++stats.kept;
         if (any_dropped) dropped_before_kept = true;
@@ -221,17 +248,18 @@ CsvRepairStats CsvJournal::repair(const RecordFilter& keep) {
       } else {
         ++stats.dropped;
         any_dropped = true;
-        note_dropped(stats.dropped_lines, record_line, last_line, std::move(reason));
+        note_dropped(stats.dropped_lines, record_line, line - 1, std::move(reason));
       }
       parser.next_record();
       record_begin = offset;
-      record_line = last_line + 1;
+      record_line = line;
+      first_break = 0;
     }
   }
   std::fclose(f);
-  stats.torn = offset > record_begin;
-  if (stats.torn) {
-    note_dropped(stats.dropped_lines, record_line, parser.lines() + 2,
+  if (offset > record_begin) {
+    stats.torn = true;
+    note_dropped(stats.dropped_lines, record_line, line,
                  "the last line is cut short (no final newline: a write torn by a kill)");
   }
 

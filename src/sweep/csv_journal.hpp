@@ -61,9 +61,10 @@ class CsvJournal {
   /// newlines), keeps the complete, well-formed ones `keep` accepts, and cuts off a torn last
   /// record. Malformed records (what CsvReader refuses: a carriage return inside a line, a
   /// quote inside an unquoted field, text after a closing quote) are dropped without asking
-  /// `keep`. When only a tail goes, the file is truncated; when a dropped record is followed by
-  /// a kept one, the file is rewritten through a temp file and rename. Call before the first
-  /// append().
+  /// `keep`. A dropped record over several lines (a damaged row's unclosed quote swallows the
+  /// rows after it) drops only its first line: the scan restarts on the next. When only a tail goes, the file
+  /// is truncated; when a dropped record is followed by a kept one, the file is rewritten through a temp file
+  /// and rename. Call before the first append().
   CsvRepairStats repair(const RecordFilter& keep);
 
   /// Rewrites the file (temp file and rename, so a kill leaves the old or the new file) with

@@ -148,6 +148,33 @@ TEST(CsvJournal, RepairNamesEveryDroppedLineAndWhy) {
   fs::remove(path);
 }
 
+TEST(CsvJournal, ADamagedRowsUnclosedQuoteCostsOnlyItsOwnLine) {
+  const std::string path = temp_file("unclosed");
+  // Line 3's quote is closed on line 5 ("7,"), where 'q' follows it: one malformed record over
+  // lines 3-5, of which only line 3 is damaged.
+  write_file(path, "a,b\n1,2\n3,\"x\n5,6\n7,\"q\"\n9,10\n");
+  CsvJournal j(path, "a,b");
+  const CsvRepairStats s = j.repair(fields_are(2));
+  EXPECT_EQ(s.kept, 4U);
+  EXPECT_EQ(s.dropped, 1U);
+  ASSERT_EQ(s.dropped_lines.size(), 1U);
+  EXPECT_EQ(s.dropped_lines[0].describe("f.csv"),
+            "f.csv:3: field 2 has 'q' after its closing quote, where a comma or the end of the line was "
+            "expected (read as one record with the lines up to 5, which are read again on their own)");
+  EXPECT_EQ(read_file(path), "a,b\n1,2\n5,6\n7,\"q\"\n9,10\n");
+
+  // A quote never closed: the lines after it are not a torn tail.
+  write_file(path, "a,b\n1,2\n3,\"x\n5,6\n7,8\n");
+  const CsvRepairStats t = j.repair(fields_are(2));
+  EXPECT_EQ(t.kept, 3U);
+  EXPECT_TRUE(t.torn);
+  ASSERT_EQ(t.dropped_lines.size(), 1U);
+  EXPECT_EQ(t.dropped_lines[0].first_line, 3U);
+  EXPECT_EQ(t.dropped_lines[0].last_line, 3U);
+  EXPECT_EQ(read_file(path), "a,b\n1,2\n5,6\n7,8\n");
+  fs::remove(path);
+}
+
 TEST(CsvJournal, RewriteInOrderSortsStablyAndMergesInserts) {
   const std::string path = temp_file("order");
   write_file(path, "i,v\n0,a\n4,b\n2,c\n4,d\n");
