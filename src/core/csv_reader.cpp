@@ -121,7 +121,8 @@ bool CsvReader::read_record(std::vector<std::string>& out) {
 bool CsvReader::next() {
   if (!read_record(fields_)) return false;
   if (fields_.size() != header_.size()) {
-    throw ConfigError(where(), "the line has " + std::to_string(fields_.size()) + " fields: expected " +
+    throw ConfigError(where(), "the line has " + std::to_string(fields_.size()) +
+                                   (fields_.size() == 1 ? " field" : " fields") + ": expected " +
                                    std::to_string(header_.size()) + ", as many as the header" + kDamaged);
   }
   return true;

@@ -130,7 +130,8 @@ std::string quoted_cell(std::string_view cell) {
 }
 
 std::string field_count_reason(std::size_t got, std::size_t expected) {
-  return "the line has " + std::to_string(got) + " fields, where the header has " + std::to_string(expected);
+  return "the line has " + std::to_string(got) + (got == 1 ? " field" : " fields") +
+         ", where the header has " + std::to_string(expected);
 }
 
 /// Tells on stderr every line repair() dropped, and why.

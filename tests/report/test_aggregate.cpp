@@ -329,6 +329,8 @@ TEST(CsvReader, DamageIsNamedWithFileLineAndWhatWasExpected) {
       << unclosed;
   const std::string fields = message_for("a,b\n1,2,3\n");
   EXPECT_EQ(fields.find(file + ":2: the line has 3 fields: expected 2, as many as the header"), 0U) << fields;
+  const std::string one = message_for("a,b\n1,2\ngarbage\n");
+  EXPECT_EQ(one.find(file + ":3: the line has 1 field: expected 2, as many as the header"), 0U) << one;
   std::filesystem::remove_all(dir);
 }
 

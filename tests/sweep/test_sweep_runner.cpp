@@ -292,7 +292,7 @@ TEST(SweepRunner, DamagedRowsInTheMiddleAreReportedAndRedoneInRunOrder) {
   for (const std::string& expected :
        {dir + "/runs.csv:7: the line has " + std::to_string(split_csv_line(run_recs[6]).size() - 3) +
             " fields, where the header has " + std::to_string(split_csv_line(run_recs[6]).size()),
-        dir + "/runs.csv:23: the line has 1 fields",
+        dir + "/runs.csv:23: the line has 1 field, where",
         dir + "/runs.csv:33: a carriage return (\\r) inside the line", std::string("run 5 (run_key "),
         std::string("run 30 (run_key ")}) {
     EXPECT_NE(err.find(expected), std::string::npos) << expected << "\nnot in:\n" << err;
