@@ -11,6 +11,19 @@ namespace {
 constexpr std::size_t kBufferSize = std::size_t{1} << 16;
 constexpr int kEnd = -1;
 
+/// What a damaged sweep file's reader can do about it.
+constexpr const char* kDamaged =
+    " (the file is damaged; for a sweep's runs.csv or progress.csv, running the sweep again drops the "
+    "damaged lines, saying which, and redoes their runs)";
+
+/// A character for a message: 'x', or its byte value when it is not printable.
+std::string shown(int c) {
+  if (c >= 0x20 && c < 0x7f) return std::string("'") + static_cast<char>(c) + "'";
+  constexpr const char* kHex = "0123456789abcdef";
+  const auto b = static_cast<unsigned>(c) & 0xffU;
+  return std::string("the byte 0x") + kHex[b >> 4U] + kHex[b & 0xfU];
+}
+
 }  // namespace
 
 CsvReader::CsvReader(const std::string& path, bool require_final_newline)
@@ -56,7 +69,12 @@ bool CsvReader::read_record(std::vector<std::string>& out) {
     if (c == '"') {
       for (;;) {
         c = get();
-        if (c == kEnd) throw ConfigError(where(), "quoted field not closed before the end of the file");
+        if (c == kEnd) {
+          throw ConfigError(where(), "field " + std::to_string(count) +
+                                         " opens a quote (\") that is never closed: expected a closing quote "
+                                         "before the end of the file" +
+                                         kDamaged);
+        }
         if (c == '"') {
           if (peek() != '"') break;
           get();
@@ -65,13 +83,17 @@ bool CsvReader::read_record(std::vector<std::string>& out) {
       }
       c = get();
       if (c != ',' && c != '\n' && c != '\r' && c != kEnd) {
-        throw ConfigError(where(), "unexpected character '" + std::string(1, static_cast<char>(c)) +
-                                       "' after a closing quote (field " + std::to_string(count) + ")");
+        throw ConfigError(where(), "field " + std::to_string(count) + " has " + shown(c) +
+                                       " after its closing quote: expected a comma or the end of the line" +
+                                       kDamaged);
       }
     } else {
       while (c != ',' && c != '\n' && c != '\r' && c != kEnd) {
         if (c == '"') {
-          throw ConfigError(where(), "quote inside an unquoted field (field " + std::to_string(count) + ")");
+          throw ConfigError(where(), "field " + std::to_string(count) +
+                                         " has a quote (\") inside it: expected a field with a quote to be "
+                                         "quoted whole, its quotes doubled (\"a \"\"b\"\"\")" +
+                                         kDamaged);
         }
         field += static_cast<char>(c);
         c = get();
@@ -80,7 +102,12 @@ bool CsvReader::read_record(std::vector<std::string>& out) {
     // 2. What ended the field: a comma (next field), a line break or the end of the file.
     if (c == ',') continue;
     if (c == '\r') {
-      if (peek() != '\n') throw ConfigError(where(), "carriage return not followed by a line feed");
+      if (peek() != '\n') {
+        throw ConfigError(where(),
+                          "a carriage return (\\r) inside the line, not followed by a line feed: "
+                          "expected each line to end with a line feed (\\n) or \\r\\n" +
+                              std::string(kDamaged));
+      }
       get();
     } else if (c == kEnd && require_final_newline_) {
       throw ConfigError(where(),
@@ -94,8 +121,9 @@ bool CsvReader::read_record(std::vector<std::string>& out) {
 bool CsvReader::next() {
   if (!read_record(fields_)) return false;
   if (fields_.size() != header_.size()) {
-    throw ConfigError(where(), "expected " + std::to_string(header_.size()) +
-                                   " fields (as the header), got " + std::to_string(fields_.size()));
+    throw ConfigError(where(), "the line has " + std::to_string(fields_.size()) +
+                                   (fields_.size() == 1 ? " field" : " fields") + ": expected " +
+                                   std::to_string(header_.size()) + ", as many as the header" + kDamaged);
   }
   return true;
 }

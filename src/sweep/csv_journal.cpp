@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <cstdio>
@@ -13,6 +14,7 @@
 
 #include "core/config_error.hpp"
 #include "core/files.hpp"
+#include "sweep/done_runs.hpp"
 
 namespace fsweep {
 inline namespace sweep {
@@ -24,10 +26,13 @@ struct Span {
   std::uint64_t end = 0;
 };
 
-/// Incremental RFC 4180 record parser: feed bytes, get complete records.
+/// Incremental RFC 4180 record parser: feed bytes, get complete records. Strict as CsvReader
+/// is: a record it would refuse is malformed (problem() says why) and ends at the next line
+/// feed outside quotes, so one garbage line does not swallow the records after it.
 class RecordParser {
  public:
-  /// Feeds one byte; returns true when it completed a record (then fields() holds it).
+  /// Feeds one byte; returns true when it completed a record (then fields() and problem() hold
+  /// it).
   bool feed(char c) {
     if (in_quotes_) {
       if (c == '"') {
@@ -39,30 +44,75 @@ class RecordParser {
       return false;
     }
     const bool closed = std::exchange(closed_quote_, false);
-    if (c == '"') {
-      if (closed) field_ += '"';  // "" inside a quoted field
-      in_quotes_ = true;
+    if (c == '\n') {
+      fields_.push_back(std::move(field_));
+      field_.clear();
+      field_started_ = false;
+      return true;
+    }
+    if (!problem_.empty()) return false;  // malformed: skip to the end of the line
+    if (closed && c != '"' && c != ',') {
+      fail("field " + std::to_string(fields_.size() + 1) + " has " + shown(c) +
+           " after its closing quote, where a comma or the end of the line was expected");
+    } else if (c == '"') {
+      if (closed || !field_started_) {
+        if (closed) field_ += '"';  // "" inside a quoted field
+        in_quotes_ = true;
+        field_started_ = true;
+      } else {
+        fail("field " + std::to_string(fields_.size() + 1) +
+             " has a quote (\") inside it but does not start with one");
+      }
     } else if (c == ',') {
       fields_.push_back(std::move(field_));
       field_.clear();
-    } else if (c == '\n') {
-      fields_.push_back(std::move(field_));
-      field_.clear();
-      return true;
+      field_started_ = false;
+    } else if (c == '\r') {
+      fail("a carriage return (\\r) inside the line, where only a line feed (\\n) ends a line");
     } else {
       field_ += c;
+      field_started_ = true;
     }
     return false;
   }
   [[nodiscard]] const std::vector<std::string>& fields() const { return fields_; }
-  void next_record() { fields_.clear(); }
+  /// Why the completed record is malformed; empty when it is well-formed.
+  [[nodiscard]] const std::string& problem() const { return problem_; }
+  void next_record() {
+    fields_.clear();
+    problem_.clear();
+  }
 
  private:
+  static std::string shown(char c) {
+    if (c >= 0x20 && c < 0x7f) return std::string("'") + c + "'";
+    std::array<char, 16> hex{};
+    std::snprintf(hex.data(), hex.size(), "byte 0x%02x",
+                  static_cast<unsigned>(static_cast<unsigned char>(c)));
+    return hex.data();
+  }
+  void fail(std::string why) {
+    problem_ = std::move(why);
+    field_.clear();
+  }
+
   std::vector<std::string> fields_;
   std::string field_;
+  std::string problem_;
   bool in_quotes_ = false;
   bool closed_quote_ = false;
+  bool field_started_ = false;
 };
+
+/// Adds one dropped record to `out`, merged with the previous entry when it continues it.
+void note_dropped(std::vector<CsvDroppedLines>& out, std::uint64_t first, std::uint64_t last,
+                  std::string reason) {
+  if (!out.empty() && out.back().last_line + 1 == first && out.back().reason == reason) {
+    out.back().last_line = last;
+    return;
+  }
+  out.push_back({first, last, std::move(reason)});
+}
 
 void write_all(int fd, std::string_view data, const std::string& path) {
   while (!data.empty()) {
@@ -127,6 +177,12 @@ CsvJournal::~CsvJournal() {
   if (fd_ >= 0) ::close(fd_);
 }
 
+std::string CsvDroppedLines::describe(const std::string& path) const {
+  std::string lines = std::to_string(first_line);
+  if (last_line > first_line) lines += "-" + std::to_string(last_line);
+  return path + ":" + lines + ": " + reason;
+}
+
 CsvRepairStats CsvJournal::repair(const RecordFilter& keep) {
   CsvRepairStats stats;
   std::FILE* f = std::fopen(path_.c_str(), "rb");
@@ -134,20 +190,54 @@ CsvRepairStats CsvJournal::repair(const RecordFilter& keep) {
   const std::uint64_t body = header_.size() + 1;
   std::fseek(f, static_cast<long>(body), SEEK_SET);
 
-  // 1. Scan the records; remember the kept byte ranges (merged) and where rejected ones lie.
+  // 1. Scan the records; remember the kept byte ranges (merged) and where dropped ones lie. A
+  //    dropped record running over several lines (a damaged row's unclosed quote swallows the
+  //    rows after it) costs only its first line: the scan restarts on the next one.
   std::vector<Span> kept{{0, body}};
   bool dropped_before_kept = false;
   bool any_dropped = false;
   RecordParser parser;
   std::uint64_t offset = body;
   std::uint64_t record_begin = body;
+  std::uint64_t line = 2;         // line of the next byte (the header is line 1)
+  std::uint64_t record_line = 2;  // line where the current record starts
+  std::uint64_t first_break = 0;  // offset past the current record's first line feed; 0: none yet
+  const auto drop_first_line = [&](std::string reason) {
+    ++stats.dropped;
+    any_dropped = true;
+    note_dropped(stats.dropped_lines, record_line, record_line,
+                 std::move(reason) + " (read as one record with the lines up to " + std::to_string(line - 1) +
+                     ", which are read again on their own)");
+    std::fseek(f, static_cast<long>(first_break), SEEK_SET);
+    offset = record_begin = first_break;
+    line = record_line = record_line + 1;
+    first_break = 0;
+    parser = RecordParser();
+  };
   std::array<char, 1 << 16> buf{};
-  std::size_t n = 0;
-  while ((n = std::fread(buf.data(), 1, buf.size(), f)) > 0) {
+  for (;;) {
+    const std::size_t n = std::fread(buf.data(), 1, buf.size(), f);
+    if (n == 0) {
+      if (offset > record_begin && first_break != 0) {  // an unfinished record over several lines
+        stats.torn = true;
+        drop_first_line("a quote opened on this line is not closed before the end of the file");
+        continue;
+      }
+      break;
+    }
     for (std::size_t i = 0; i < n; ++i) {
       ++offset;
+      if (buf[i] == '\n') {
+        ++line;
+        if (first_break == 0) first_break = offset;
+      }
       if (!parser.feed(buf[i])) continue;
-      if (keep(parser.fields())) {
+      std::string reason = parser.problem().empty() ? keep(parser.fields()) : parser.problem();
+      if (!reason.empty() && first_break != offset) {
+        drop_first_line(std::move(reason));
+        break;  // read on from the new offset
+      }
+      if (reason.empty()) {
         ++stats.kept;
         if (any_dropped) dropped_before_kept = true;
         if (kept.back().end == record_begin) {
@@ -158,13 +248,20 @@ CsvRepairStats CsvJournal::repair(const RecordFilter& keep) {
       } else {
         ++stats.dropped;
         any_dropped = true;
+        note_dropped(stats.dropped_lines, record_line, line - 1, std::move(reason));
       }
       parser.next_record();
       record_begin = offset;
+      record_line = line;
+      first_break = 0;
     }
   }
   std::fclose(f);
-  stats.torn = offset > record_begin;
+  if (offset > record_begin) {
+    stats.torn = true;
+    note_dropped(stats.dropped_lines, record_line, line,
+                 "the last line is cut short (no final newline: a write torn by a kill)");
+  }
 
   // 2. Cut: truncate when only a tail goes, else rewrite the kept ranges.
   if (!stats.torn && !any_dropped) return stats;
@@ -177,6 +274,69 @@ CsvRepairStats CsvJournal::repair(const RecordFilter& keep) {
     stats.rewritten = true;
   }
   return stats;
+}
+
+void CsvJournal::rewrite_in_order(std::size_t index_field,
+                                  std::vector<std::pair<std::uint64_t, std::string>> inserts) {
+  flush();
+  if (fd_ >= 0) {
+    ::close(fd_);  // the rename replaces the file: append to the new one
+    fd_ = -1;
+  }
+  // 1. The records' byte ranges and numbers, stably sorted by number.
+  struct Record {
+    std::uint64_t index = 0;
+    Span span;
+  };
+  std::vector<Record> records;
+  {
+    std::ifstream in(path_, std::ios::binary);
+    if (!in) throw ConfigError(path_, "cannot open for reading");
+    in.seekg(static_cast<std::streamoff>(header_.size() + 1));
+    RecordParser parser;
+    std::uint64_t offset = header_.size() + 1;
+    std::uint64_t record_begin = offset;
+    std::array<char, 1 << 16> buf{};
+    while (in.read(buf.data(), buf.size()), in.gcount() > 0) {
+      const auto n = static_cast<std::size_t>(in.gcount());
+      for (std::size_t i = 0; i < n; ++i) {
+        ++offset;
+        if (!parser.feed(buf[i])) continue;
+        const auto& fields = parser.fields();
+        const auto index = fields.size() > index_field ? parse_run_index(fields[index_field]) : std::nullopt;
+        records.push_back({index.value_or(UINT64_MAX), {record_begin, offset}});
+        parser.next_record();
+        record_begin = offset;
+      }
+    }
+  }
+  std::stable_sort(records.begin(), records.end(),
+                   [](const Record& a, const Record& b) { return a.index < b.index; });
+  std::stable_sort(inserts.begin(), inserts.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+
+  // 2. Header, then the records merged with the inserts, into a temp file renamed over the file.
+  std::ifstream in(path_, std::ios::binary);
+  const std::string tmp = temp_path(path_);
+  std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+  if (!in || !out) throw ConfigError(path_, "cannot rewrite (putting its rows in run order)");
+  out << header_ << '\n';
+  std::string bytes;
+  auto insert = inserts.begin();
+  for (const Record& r : records) {
+    for (; insert != inserts.end() && insert->first < r.index; ++insert) out << insert->second;
+    bytes.resize(r.span.end - r.span.begin);
+    in.seekg(static_cast<std::streamoff>(r.span.begin));
+    in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    if (in.gcount() != static_cast<std::streamsize>(bytes.size())) {
+      throw ConfigError(path_, "short read while putting its rows in run order");
+    }
+    out << bytes;
+  }
+  for (; insert != inserts.end(); ++insert) out << insert->second;
+  out.close();
+  if (!out) throw ConfigError(tmp, "write failed (putting the rows of " + path_ + " in run order)");
+  std::filesystem::rename(tmp, path_);
 }
 
 void CsvJournal::append(std::string_view records) { buffer_.append(records); }

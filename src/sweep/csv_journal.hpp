@@ -11,6 +11,7 @@
 #include <functional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "core/files.hpp"
@@ -18,20 +19,33 @@
 namespace fsweep {
 inline namespace sweep {
 
+/// Lines repair() dropped for one reason: a record, or consecutive records with the same reason.
+struct CsvDroppedLines {
+  std::uint64_t first_line = 0;  ///< 1-based, the header is line 1
+  std::uint64_t last_line = 0;   ///< last line of the last record (a quoted field may hold newlines)
+  std::string reason;            ///< plain words: what was found and what was expected
+
+  /// "<path>:<first>[-<last>]: <reason>", the line of a report on stderr.
+  [[nodiscard]] std::string describe(const std::string& path) const;
+};
+
 /// What repair() found.
 struct CsvRepairStats {
   std::uint64_t kept = 0;     ///< complete records kept (the header excluded)
-  std::uint64_t dropped = 0;  ///< complete records the filter rejected
+  std::uint64_t dropped = 0;  ///< complete records dropped: malformed or rejected by the filter
   bool torn = false;          ///< a last record without its final newline was cut off
   bool rewritten = false;     ///< the file was rewritten (temp file and rename), not truncated
+  /// Every dropped line with its reason, in file order (the torn last record included).
+  std::vector<CsvDroppedLines> dropped_lines;
 };
 
 /// One CSV file with a fixed header line, appended to record by record.
 class CsvJournal {
  public:
-  /// Decides whether a complete record (its fields, unquoted) stays. Called once per record,
-  /// in file order, so it may collect state.
-  using RecordFilter = std::function<bool(const std::vector<std::string>& fields)>;
+  /// Decides whether a complete, well-formed record (its fields, unquoted) stays: returns an
+  /// empty string to keep it, else the reason it is dropped (plain words). Called once per
+  /// record, in file order, so it may collect state.
+  using RecordFilter = std::function<std::string(const std::vector<std::string>& fields)>;
 
   /// Opens `path` for a header `header` (one line, no newline). A missing file, or one without
   /// a complete first line, is (re)created holding just the header (temp file and rename).
@@ -44,10 +58,21 @@ class CsvJournal {
   ~CsvJournal();
 
   /// Reads every record after the header (RFC 4180: quoted fields may hold commas, quotes and
-  /// newlines), keeps the complete ones `keep` accepts, and cuts off a torn last record. When
-  /// only a tail goes, the file is truncated; when a rejected record is followed by a kept one,
-  /// the file is rewritten through a temp file and rename. Call before the first append().
+  /// newlines), keeps the complete, well-formed ones `keep` accepts, and cuts off a torn last
+  /// record. Malformed records (what CsvReader refuses: a carriage return inside a line, a
+  /// quote inside an unquoted field, text after a closing quote) are dropped without asking
+  /// `keep`. A dropped record over several lines (a damaged row's unclosed quote swallows the
+  /// rows after it) drops only its first line: the scan restarts on the next. When only a tail goes, the file
+  /// is truncated; when a dropped record is followed by a kept one, the file is rewritten through a temp file
+  /// and rename. Call before the first append().
   CsvRepairStats repair(const RecordFilter& keep);
+
+  /// Rewrites the file (temp file and rename, so a kill leaves the old or the new file) with
+  /// its records in ascending order of the decimal number in field `index_field` (stable: equal
+  /// numbers keep their order), merged with `inserts` (number, whole records ending in '\n';
+  /// after the file's records of the same number). Records whose field is not a number go
+  /// last. Call before the first append() (or after a flush(): the file is reopened).
+  void rewrite_in_order(std::size_t index_field, std::vector<std::pair<std::uint64_t, std::string>> inserts);
 
   /// Queues whole records (each ending in '\n'); nothing reaches the file before flush().
   void append(std::string_view records);

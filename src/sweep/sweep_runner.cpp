@@ -115,7 +115,31 @@ std::uint64_t shard_size(std::uint64_t n, std::uint64_t index, std::uint64_t cou
 struct Resumed {
   DoneRuns done;
   std::uint64_t failed = 0;  ///< done rows whose end_reason is `error`
+  /// The largest run_index of a done row; runs below it that are not done fill gaps.
+  std::optional<std::uint64_t> last_index;
+  bool in_order = true;  ///< the done rows are in ascending run_index order
 };
+
+/// A cell quoted in a message: at most 40 characters, non-printable bytes as '?'.
+std::string quoted_cell(std::string_view cell) {
+  constexpr std::size_t kMax = 40;
+  std::string out = "'";
+  for (const char c : cell.substr(0, kMax)) out += (c >= 0x20 && c < 0x7f) ? c : '?';
+  out += cell.size() > kMax ? "...'" : "'";
+  return out;
+}
+
+std::string field_count_reason(std::size_t got, std::size_t expected) {
+  return "the line has " + std::to_string(got) + (got == 1 ? " field" : " fields") +
+         ", where the header has " + std::to_string(expected);
+}
+
+/// Tells on stderr every line repair() dropped, and why.
+void report_dropped(const CsvJournal& journal, const CsvRepairStats& stats, const char* what) {
+  for (const CsvDroppedLines& d : stats.dropped_lines) {
+    std::fprintf(stderr, "fsweep: dropped %s: %s\n", d.describe(journal.path()).c_str(), what);
+  }
+}
 
 Resumed repair_outputs(const SweepTable& table, CsvJournal& runs, CsvJournal& progress) {
   Resumed r;
@@ -126,22 +150,35 @@ Resumed repair_outputs(const SweepTable& table, CsvJournal& runs, CsvJournal& pr
   const std::size_t progress_key_col = SweepTable::progress_column(kRunKeyColumn);
   const std::size_t progress_index_col = SweepTable::progress_column(kRunIndexColumn);
   const std::string error(to_string(EndReason::Error));
-  (void)runs.repair([&](const std::vector<std::string>& f) {
-    if (f.size() != fields) return false;
+  const CsvRepairStats run_stats = runs.repair([&](const std::vector<std::string>& f) -> std::string {
+    if (f.size() != fields) return field_count_reason(f.size(), fields);
     const auto key = parse_run_key(f[key_col]);
+    if (!key) return "its run_key " + quoted_cell(f[key_col]) + " is not 16 hexadecimal digits";
     const auto index = parse_run_index(f[index_col]);
-    if (!key || !index) return false;
+    if (!index) return "its run_index " + quoted_cell(f[index_col]) + " is not a whole number";
     r.done.add(*key, *index);
+    if (r.last_index && *index < *r.last_index) r.in_order = false;
+    r.last_index = std::max(r.last_index.value_or(0), *index);
     if (f[end_col] == error) ++r.failed;
-    return true;
+    return {};
   });
+  report_dropped(runs, run_stats, "its run is done again, in run order");
   r.done.seal();
-  (void)progress.repair([&](const std::vector<std::string>& f) {
-    if (f.size() != SweepTable::kProgressFields) return false;
-    const auto key = parse_run_key(f[progress_key_col]);
-    const auto index = parse_run_index(f[progress_index_col]);
-    return key && index && r.done.contains(*key, *index);
-  });
+  const CsvRepairStats progress_stats =
+      progress.repair([&](const std::vector<std::string>& f) -> std::string {
+        if (f.size() != SweepTable::kProgressFields)
+          return field_count_reason(f.size(), SweepTable::kProgressFields);
+        const auto key = parse_run_key(f[progress_key_col]);
+        if (!key) return "its run_key " + quoted_cell(f[progress_key_col]) + " is not 16 hexadecimal digits";
+        const auto index = parse_run_index(f[progress_index_col]);
+        if (!index) return "its run_index " + quoted_cell(f[progress_index_col]) + " is not a whole number";
+        if (!r.done.contains(*key, *index)) {
+          return "run " + std::to_string(*index) + " (run_key " + f[progress_key_col] +
+                 ") has no complete row in runs.csv (it did not finish, or its row was dropped)";
+        }
+        return {};
+      });
+  report_dropped(progress, progress_stats, "its run's progress is written again with the run");
   return r;
 }
 
@@ -262,12 +299,34 @@ RunnerReport run_sweep(const SweepPlan& plan, const RunnerOptions& options) {
     job.run.reset();  // the resolved run is not needed past the simulation
     return job;
   };
-  auto write = [&](const Job& job) {
-    progress.append(job.rows.progress_rows);
-    runs.append(job.rows.run_row);
+  // Runs below the last done one fill gaps (rows dropped by the repair): they are held and
+  // both files are rewritten in run order (temp file and rename) before the first run past the
+  // done ones is appended, or at the end.
+  const std::size_t index_col = table.column(kRunIndexColumn);
+  const std::size_t progress_index_col = SweepTable::progress_column(kRunIndexColumn);
+  std::vector<std::pair<std::uint64_t, std::string>> held_runs;
+  std::vector<std::pair<std::uint64_t, std::string>> held_progress;
+  bool reorder = !resumed.in_order;
+  const auto put_in_order = [&] {
+    if (!reorder && held_runs.empty()) return;
+    progress.rewrite_in_order(progress_index_col, std::move(held_progress));  // progress first, as always
+    runs.rewrite_in_order(index_col, std::move(held_runs));
+    held_progress.clear();
+    held_runs.clear();
+    reorder = false;
+  };
+  auto write = [&](Job job) {
     ++report.ran;
     if (job.rows.failed) ++report.failed;
-    flush_both();  // two write(2) calls per run: nothing next to a simulation
+    if (resumed.last_index && job.index < *resumed.last_index) {
+      held_progress.emplace_back(job.index, std::move(job.rows.progress_rows));
+      held_runs.emplace_back(job.index, std::move(job.rows.run_row));
+    } else {
+      put_in_order();
+      progress.append(job.rows.progress_rows);
+      runs.append(job.rows.run_row);
+      flush_both();  // two write(2) calls per run: nothing next to a simulation
+    }
     const std::uint64_t s = skipped.load();
     meter.update(s + report.ran, s);
   };
@@ -286,6 +345,7 @@ RunnerReport run_sweep(const SweepPlan& plan, const RunnerOptions& options) {
                                  tbb::make_filter<Job, Job>(tbb::filter_mode::parallel, simulate_run) &
                                  tbb::make_filter<Job, void>(tbb::filter_mode::serial_in_order, write));
     });
+    put_in_order();
     flush_both();
   } catch (...) {
     info.status = "failed";

@@ -52,17 +52,23 @@
 /// runs in flight and leaves at most a torn last record in each file.
 ///
 /// Resume: on start, runs.csv must have this sweep's header (else ConfigError: use `fresh`);
-/// a torn last record (no final newline) and records with the wrong field count are cut off.
-/// The done runs are the (run_key, run_index) pairs of its rows, kept as 16 bytes per row.
-/// progress.csv is cut to complete records and loses the rows of runs without a runs.csv row
+/// a torn last record (no final newline), malformed records (what CsvReader refuses: a
+/// carriage return inside a line, a stray quote) and records with the wrong field count or a
+/// bad run_key or run_index are cut off, each named on stderr with its file, line(s) and
+/// reason. The done runs are the (run_key, run_index) pairs of its rows, kept as 16 bytes per
+/// row. progress.csv is cut the same way and loses the rows of runs without a runs.csv row
 /// (truncated when they form its tail, rewritten through a temp file otherwise). Runs are then
 /// dispatched in index order, skipping a run whose key is among the done ones (each done row
-/// skips one run: a sweep listing the same configuration twice keeps both). Because a sweep is
-/// always written in index order, the done runs form a prefix of the run order and the resumed
-/// files are byte-identical to an uninterrupted run's. Were they not a prefix (rows written by
-/// another tool, or rows of keys this sweep does not have, which are kept), every run would
-/// still appear exactly once but the order of rows would differ. If the sweep file's hash
-/// differs from the manifest's, the runner refuses unless `fresh`.
+/// skips one run: a sweep listing the same configuration twice keeps both). A run below the
+/// largest done run_index fills a gap (a dropped row): its rows are held in memory, and before
+/// the first run past the done ones is written (or at the end, also when interrupted) both
+/// files are rewritten in run_index order with them merged in (progress.csv first, each
+/// through a temp file and rename, so a kill meanwhile leaves complete files that the next
+/// resume repairs; held runs are then simulated again). Done rows out of run_index order are
+/// put in order the same way. So the resumed files are byte-identical to an uninterrupted
+/// run's (timing columns aside). Rows of keys this sweep does not have are kept (in run_index
+/// order). If the sweep file's hash differs from the manifest's, the runner refuses unless
+/// `fresh`.
 ///
 /// Signals: SIGINT/SIGTERM stop dispatching new runs; runs in flight finish and are written,
 /// the files are flushed, the manifest says "interrupted", and run_sweep returns with

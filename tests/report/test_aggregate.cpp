@@ -227,7 +227,7 @@ TEST(Malformed, ShortRowNamesFileAndLine) {
              "1,k1,free,closest_frontier,2,complete\n");
   const std::string msg = config_error([&] { aggregate(dir.string(), AggregateOptions{"energy"}); });
   EXPECT_NE(msg.find("runs.csv:3"), std::string::npos) << msg;
-  EXPECT_NE(msg.find("expected 8 fields"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("fields: expected 8, as many as the header"), std::string::npos) << msg;
   std::filesystem::remove_all(dir);
 }
 
@@ -249,7 +249,7 @@ TEST(Malformed, UnclosedQuoteAndTornLastLineNameFileAndLine) {
              "run_index,run_key,distance_m,explored_area_m2\n0,k0,0,1\n0,\"k0,0.75,2\n");
   std::string msg = config_error([&] { aggregate(dir.string(), {}); });
   EXPECT_NE(msg.find("progress.csv:3"), std::string::npos) << msg;
-  EXPECT_NE(msg.find("not closed"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("that is never closed: expected a closing quote"), std::string::npos) << msg;
   std::string runs = testing::kRunsCsv;
   runs.pop_back();  // no final newline: a torn write
   write_text(dir / "runs.csv", runs);
@@ -296,6 +296,41 @@ TEST(CsvReader, QuoteInsideUnquotedFieldIsAnError) {
   ASSERT_TRUE(in.next());
   const std::string msg = config_error([&] { (void)in.next(); });
   EXPECT_NE(msg.find("q.csv:3"), std::string::npos) << msg;
+  std::filesystem::remove_all(dir);
+}
+
+TEST(CsvReader, DamageIsNamedWithFileLineAndWhatWasExpected) {
+  const auto dir = make_sweep_dir("damaged");
+  const auto message_for = [&](const std::string& text) {
+    write_text(dir / "runs.csv", text);
+    CsvReader in((dir / "runs.csv").string());
+    return config_error([&] {
+      while (in.next()) {
+      }
+    });
+  };
+  const std::string file = (dir / "runs.csv").string();
+  const std::string cr = message_for("a,b\n1,2\n3,4\r5\n");
+  EXPECT_EQ(
+      cr.find(file + ":3: a carriage return (\\r) inside the line, not followed by a line feed: expected "
+                     "each line to end with a line feed (\\n) or \\r\\n (the file is damaged"),
+      0U)
+      << cr;
+  const std::string after_quote = message_for("a,b\n1,\"2\"x\n");
+  EXPECT_EQ(
+      after_quote.find(file + ":2: field 2 has 'x' after its closing quote: expected a comma or the end "
+                              "of the line"),
+      0U)
+      << after_quote;
+  const std::string unclosed = message_for("a,b\n1,2\n\"3,4\n");
+  EXPECT_EQ(unclosed.find(file + ":3: field 1 opens a quote (\") that is never closed: expected a closing "
+                                 "quote before the end of the file"),
+            0U)
+      << unclosed;
+  const std::string fields = message_for("a,b\n1,2,3\n");
+  EXPECT_EQ(fields.find(file + ":2: the line has 3 fields: expected 2, as many as the header"), 0U) << fields;
+  const std::string one = message_for("a,b\n1,2\ngarbage\n");
+  EXPECT_EQ(one.find(file + ":3: the line has 1 field: expected 2, as many as the header"), 0U) << one;
   std::filesystem::remove_all(dir);
 }
 

@@ -25,7 +25,9 @@ using testing::read_file;
 using testing::write_file;
 
 CsvJournal::RecordFilter fields_are(std::size_t n) {
-  return [n](const std::vector<std::string>& f) { return f.size() == n; };
+  return [n](const std::vector<std::string>& f) {
+    return f.size() == n ? std::string() : std::to_string(f.size()) + " fields";
+  };
 }
 
 TEST(CsvJournal, MissingFileGetsTheHeader) {
@@ -84,7 +86,7 @@ TEST(CsvJournal, TornInsideAQuotedNewlineIsStillTorn) {
   std::vector<std::string> second;
   const CsvRepairStats s = j.repair([&](const std::vector<std::string>& f) {
     second = f;
-    return f.size() == 2;
+    return f.size() == 2 ? "" : "not 2 fields";
   });
   EXPECT_EQ(s.kept, 1U);
   EXPECT_TRUE(s.torn);
@@ -97,7 +99,8 @@ TEST(CsvJournal, RejectedTailIsTruncated) {
   const std::string path = temp_file("tail");
   write_file(path, "a,b\n1,2\n3,4\n5,6\n");
   CsvJournal j(path, "a,b");
-  const CsvRepairStats s = j.repair([](const std::vector<std::string>& f) { return f[0] == "1"; });
+  const CsvRepairStats s =
+      j.repair([](const std::vector<std::string>& f) { return f[0] == "1" ? "" : "not run 1"; });
   EXPECT_EQ(s.kept, 1U);
   EXPECT_EQ(s.dropped, 2U);
   EXPECT_FALSE(s.rewritten);
@@ -118,6 +121,72 @@ TEST(CsvJournal, RejectedRecordBeforeAKeptOneRewrites) {
   j.append("7,8\n");
   j.flush();
   EXPECT_EQ(read_file(path), "a,b\n1,2\n3,4\n7,8\n");
+  fs::remove(path);
+}
+
+TEST(CsvJournal, RepairNamesEveryDroppedLineAndWhy) {
+  const std::string path = temp_file("reasons");
+  // Line 3 is garbage; 4 and 5 are one reason (merged); 6 has a stray quote, which must not
+  // swallow line 7; 8 has a bare carriage return; 9 has text after a closing quote; 11 is torn.
+  write_file(path, "a,b\n1,2\ngarbage\nx\ny\n3,4\"\n5,6\n7,\r8\n\"9\"z,1\n10,11\n12,1");
+  CsvJournal j(path, "a,b");
+  const CsvRepairStats s = j.repair(fields_are(2));
+  EXPECT_EQ(s.kept, 3U);
+  EXPECT_EQ(s.dropped, 6U);
+  ASSERT_EQ(s.dropped_lines.size(), 5U);
+  EXPECT_EQ(s.dropped_lines[0].describe("f.csv"), "f.csv:3-5: 1 fields");
+  EXPECT_EQ(s.dropped_lines[1].describe("f.csv"),
+            "f.csv:6: field 2 has a quote (\") inside it but does not start with one");
+  EXPECT_EQ(s.dropped_lines[2].describe("f.csv"),
+            "f.csv:8: a carriage return (\\r) inside the line, where only a line feed (\\n) ends a line");
+  EXPECT_EQ(
+      s.dropped_lines[3].describe("f.csv"),
+      "f.csv:9: field 1 has 'z' after its closing quote, where a comma or the end of the line was expected");
+  EXPECT_EQ(s.dropped_lines[4].describe("f.csv"),
+            "f.csv:11: the last line is cut short (no final newline: a write torn by a kill)");
+  EXPECT_EQ(read_file(path), "a,b\n1,2\n5,6\n10,11\n");
+  fs::remove(path);
+}
+
+TEST(CsvJournal, ADamagedRowsUnclosedQuoteCostsOnlyItsOwnLine) {
+  const std::string path = temp_file("unclosed");
+  // Line 3's quote is closed on line 5 ("7,"), where 'q' follows it: one malformed record over
+  // lines 3-5, of which only line 3 is damaged.
+  write_file(path, "a,b\n1,2\n3,\"x\n5,6\n7,\"q\"\n9,10\n");
+  CsvJournal j(path, "a,b");
+  const CsvRepairStats s = j.repair(fields_are(2));
+  EXPECT_EQ(s.kept, 4U);
+  EXPECT_EQ(s.dropped, 1U);
+  ASSERT_EQ(s.dropped_lines.size(), 1U);
+  EXPECT_EQ(s.dropped_lines[0].describe("f.csv"),
+            "f.csv:3: field 2 has 'q' after its closing quote, where a comma or the end of the line was "
+            "expected (read as one record with the lines up to 5, which are read again on their own)");
+  EXPECT_EQ(read_file(path), "a,b\n1,2\n5,6\n7,\"q\"\n9,10\n");
+
+  // A quote never closed: the lines after it are not a torn tail.
+  write_file(path, "a,b\n1,2\n3,\"x\n5,6\n7,8\n");
+  const CsvRepairStats t = j.repair(fields_are(2));
+  EXPECT_EQ(t.kept, 3U);
+  EXPECT_TRUE(t.torn);
+  ASSERT_EQ(t.dropped_lines.size(), 1U);
+  EXPECT_EQ(t.dropped_lines[0].first_line, 3U);
+  EXPECT_EQ(t.dropped_lines[0].last_line, 3U);
+  EXPECT_EQ(read_file(path), "a,b\n1,2\n5,6\n7,8\n");
+  fs::remove(path);
+}
+
+TEST(CsvJournal, RewriteInOrderSortsStablyAndMergesInserts) {
+  const std::string path = temp_file("order");
+  write_file(path, "i,v\n0,a\n4,b\n2,c\n4,d\n");
+  CsvJournal j(path, "i,v");
+  (void)j.repair(fields_are(2));
+  j.append("5,e\n");
+  j.flush();  // the rewrite must reopen the file it appends to
+  j.rewrite_in_order(0, {{3, "3,x\n"}, {1, "1,y\n1,z\n"}, {4, "4,w\n"}});
+  EXPECT_EQ(read_file(path), "i,v\n0,a\n1,y\n1,z\n2,c\n3,x\n4,b\n4,d\n4,w\n5,e\n");
+  j.append("6,f\n");
+  j.flush();
+  EXPECT_EQ(read_file(path), "i,v\n0,a\n1,y\n1,z\n2,c\n3,x\n4,b\n4,d\n4,w\n5,e\n6,f\n");
   fs::remove(path);
 }
 

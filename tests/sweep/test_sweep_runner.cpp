@@ -180,28 +180,42 @@ TEST(SweepRunner, ThreadsDoNotChangeOutputs) {
   fs::remove_all(two);
 }
 
-TEST(SweepRunner, ResumeAfterSigkillEqualsUninterrupted) {
-  const json sweep = long_sweep();
-  const std::string ref = temp_dir("sigkill_ref");
-  const std::string killed = temp_dir("sigkill");
-  ASSERT_EQ(run(sweep, ref, 2).ran, 96U);
-
-  const std::string sweep_file = killed + "/sweep.json";
+/// Starts `sweep` writing to `dir` in a child process and kills it (SIGKILL) once runs.csv has
+/// 3 rows; returns the rows it had then.
+std::size_t kill_mid_sweep(const json& sweep, const std::string& dir) {
+  const std::string sweep_file = dir + "/sweep.json";
   write_file(sweep_file, sweep.dump(2));
-  const pid_t pid = spawn_child(sweep_file, killed);
-  ASSERT_GT(pid, 0);
+  const pid_t pid = spawn_child(sweep_file, dir);
+  EXPECT_GT(pid, 0);
+  if (pid <= 0) return 0;
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
   while (std::chrono::steady_clock::now() < deadline) {
-    if (fs::exists(killed + "/runs.csv") && data_rows(killed + "/runs.csv") >= 3) break;
+    if (fs::exists(dir + "/runs.csv") && data_rows(dir + "/runs.csv") >= 3) break;
     std::this_thread::sleep_for(std::chrono::microseconds(500));
   }
   ::kill(pid, SIGKILL);
   int status = 0;
   ::waitpid(pid, &status, 0);
-  ASSERT_TRUE(WIFSIGNALED(status)) << "the child finished before it could be killed";
-  const std::size_t done_at_kill = data_rows(killed + "/runs.csv");
-  ASSERT_LT(done_at_kill, 96U);
-  EXPECT_EQ(nlohmann::json::parse(read_file(killed + "/manifest.json"))["status"], "running");
+  EXPECT_TRUE(WIFSIGNALED(status)) << "the child finished before it could be killed";
+  EXPECT_EQ(nlohmann::json::parse(read_file(dir + "/manifest.json"))["status"], "running");
+  return data_rows(dir + "/runs.csv");
+}
+
+/// Cuts the file in the middle of its last record, as a kill during its write(2) would.
+void tear_last_line(const std::string& path) {
+  const std::string text = read_file(path);
+  const std::string last = records(text).back();
+  const std::size_t start = text.size() - (text.ends_with('\n') ? 1 : 0) - last.size();
+  ASSERT_GT(last.size(), 1U);
+  fs::resize_file(path, start + last.size() / 2);
+}
+
+TEST(SweepRunner, ResumeAfterSigkillEqualsUninterrupted) {
+  const json sweep = long_sweep();
+  const std::string ref = temp_dir("sigkill_ref");
+  const std::string killed = temp_dir("sigkill");
+  ASSERT_EQ(run(sweep, ref, 2).ran, 96U);
+  ASSERT_LT(kill_mid_sweep(sweep, killed), 96U);
 
   const RunnerReport r = run(sweep, killed, 2);
   EXPECT_EQ(r.skipped + r.ran, 96U);
@@ -210,6 +224,82 @@ TEST(SweepRunner, ResumeAfterSigkillEqualsUninterrupted) {
   EXPECT_EQ(nlohmann::json::parse(read_file(killed + "/manifest.json"))["status"], "complete");
   fs::remove_all(ref);
   fs::remove_all(killed);
+}
+
+// A kill rarely lands inside a write(2); this one is made to: both files end mid-line.
+TEST(SweepRunner, ResumeAfterSigkillThatTornTheLastLinesEqualsUninterrupted) {
+  const json sweep = long_sweep();
+  const std::string ref = temp_dir("sigkill_torn_ref");
+  const std::string killed = temp_dir("sigkill_torn");
+  ASSERT_EQ(run(sweep, ref, 2).ran, 96U);
+  const std::size_t done_at_kill = kill_mid_sweep(sweep, killed);
+  ASSERT_LT(done_at_kill, 96U);
+  ASSERT_GE(done_at_kill, 3U);
+  tear_last_line(killed + "/runs.csv");
+  tear_last_line(killed + "/progress.csv");
+  ASSERT_NE(read_file(killed + "/runs.csv").back(), '\n');
+  ASSERT_NE(read_file(killed + "/progress.csv").back(), '\n');
+
+  ::testing::internal::CaptureStderr();
+  const RunnerReport r = run(sweep, killed, 2);
+  const std::string err = ::testing::internal::GetCapturedStderr();
+  EXPECT_EQ(r.skipped, done_at_kill - 1);  // the torn row's run is done again
+  EXPECT_EQ(r.skipped + r.ran, 96U);
+  EXPECT_NE(err.find("runs.csv:" + std::to_string(done_at_kill + 1) + ": the last line is cut short"),
+            std::string::npos)
+      << err;
+  // Nothing lost, nothing twice, in run order (and the same bytes as an uninterrupted sweep).
+  const auto index = column(read_file(killed + "/runs.csv"), "run_index");
+  ASSERT_EQ(index.size(), 96U);
+  for (std::size_t i = 0; i < index.size(); ++i) EXPECT_EQ(index[i], std::to_string(i));
+  expect_same_outputs(ref, killed);
+  fs::remove_all(ref);
+  fs::remove_all(killed);
+}
+
+TEST(SweepRunner, DamagedRowsInTheMiddleAreReportedAndRedoneInRunOrder) {
+  const std::string ref = temp_dir("damaged_ref");
+  const std::string dir = temp_dir("damaged");
+  ASSERT_EQ(run(small_sweep(), ref, 2).ran, 48U);
+
+  // runs.csv: run 5's row lost its last 3 fields (line 7), a garbage line follows run 20's row
+  // (line 23), run 30's row has a carriage return in its run_key (line 33). progress.csv whole.
+  const auto run_recs = records(read_file(ref + "/runs.csv"));
+  ASSERT_EQ(run_recs.size(), 49U);
+  std::string runs = run_recs[0] + "\n";
+  for (std::size_t i = 1; i < run_recs.size(); ++i) {
+    std::string rec = run_recs[i];
+    if (i == 6) {
+      auto f = split_csv_line(rec);
+      f.resize(f.size() - 3);
+      rec.clear();
+      for (const auto& cell : f) rec += (rec.empty() ? "" : ",") + csv_field(cell);
+    }
+    if (i == 31) rec.insert(rec.find(',') + 1, "\r");
+    runs += rec + "\n";
+    if (i == 21) runs += "#### not a row ####\n";
+  }
+  write_file(dir + "/runs.csv", runs);
+  fs::copy_file(ref + "/progress.csv", dir + "/progress.csv");
+  fs::copy_file(ref + "/manifest.json", dir + "/manifest.json");
+
+  ::testing::internal::CaptureStderr();
+  const RunnerReport r = run(small_sweep(), dir, 2);
+  const std::string err = ::testing::internal::GetCapturedStderr();
+  EXPECT_EQ(r.skipped, 46U);
+  EXPECT_EQ(r.ran, 2U);
+  expect_same_outputs(ref, dir);  // in run order, each run once
+  for (const std::string& expected :
+       {dir + "/runs.csv:7: the line has " + std::to_string(split_csv_line(run_recs[6]).size() - 3) +
+            " fields, where the header has " + std::to_string(split_csv_line(run_recs[6]).size()),
+        dir + "/runs.csv:23: the line has 1 field, where",
+        dir + "/runs.csv:33: a carriage return (\\r) inside the line", std::string("run 5 (run_key "),
+        std::string("run 30 (run_key ")}) {
+    EXPECT_NE(err.find(expected), std::string::npos) << expected << "\nnot in:\n" << err;
+  }
+  EXPECT_NE(err.find(dir + "/progress.csv:"), std::string::npos) << err;
+  fs::remove_all(ref);
+  fs::remove_all(dir);
 }
 
 TEST(SweepRunner, TornLinesAreDroppedAndRedone) {
