@@ -15,7 +15,7 @@
 /// Checked against OpenCV 4.6's cv2.drawContours (Debian's python3-opencv): identical on 2,000
 /// random polygons (3 to 9 vertices in 41x41, self-intersecting ones included) and on both
 /// HouseExpo plans of tests/data at 4, 5, 10, 20 and 25 cells per metre
-/// (tests/world/test_houseexpo.cpp holds those counts).
+/// (tests/world/test_houseexpo.cpp holds those counts; tools/opencv_fill_check/ repeats the check).
 
 #include <cstdint>
 #include <vector>
