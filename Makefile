@@ -2,12 +2,14 @@
 #   make run       - install what is missing, build the fsweep executable (Release), run
 #                    sweeps/default.json and plot it
 #   make test      - install what is missing, build, run the whole test suite (unit tests, the
-#                    single-node Slurm integration test, and a sanitizer pass)
+#                    single-node Slurm integration test, and a sanitizer pass that also fuzzes
+#                    every input parser for a few seconds)
+#   make fuzz      - fuzz every input parser longer (FUZZ_SECONDS each, default 300; fuzz/README.md)
 # and the nightly regression job (README, "Nightly regression checks"):
 #   make nightly   - build, run sweeps/nightly.json and the micro-benchmarks into results/nightly/,
 #                    compare them with results/baseline/nightly/ (exit 1 on a regression)
 #   make baseline  - the same suite and benchmarks, copied over results/baseline/nightly/
-.PHONY: run test build bench nightly baseline clean
+.PHONY: run test build bench fuzz nightly baseline clean
 
 FSWEEP := build/release/bin/fsweep
 
@@ -25,6 +27,11 @@ test:
 	cd build/release && ctest --output-on-failure -L slurm
 	@scripts/bootstrap asan
 	cd build/asan && ctest --output-on-failure -j 2 -L sanitize
+
+FUZZ_SECONDS ?= 300
+fuzz:
+	@scripts/bootstrap asan
+	scripts/fuzz $(FUZZ_SECONDS)
 
 bench: build
 	build/release/bin/fsweep_bench

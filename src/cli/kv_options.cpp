@@ -1,6 +1,7 @@
 #include "cli/kv_options.hpp"
 
 #include "core/config_error.hpp"
+#include "core/json_text.hpp"
 
 namespace fsweep {
 
@@ -14,7 +15,7 @@ nlohmann::json kv_to_json(const std::vector<std::string>& items, const std::stri
     }
     const std::string key = item.substr(0, eq);
     const std::string text = item.substr(eq + 1);
-    nlohmann::json value = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
+    nlohmann::json value = parse_json_or_discard(text);
     if (value.is_discarded()) value = text;
     nlohmann::json* node = &out;
     std::size_t start = 0;

@@ -1,12 +1,15 @@
 #include "cli/output_dir.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <regex>
 #include <system_error>
 #include <vector>
 
 #include "core/config_error.hpp"
+#include "core/json_text.hpp"
 
 namespace fsweep {
 namespace {
@@ -32,10 +35,23 @@ bool has(const std::string& dir, const char* name) {
 std::optional<nlohmann::json> sweep_manifest(const std::string& dir) {
   std::ifstream in(fs::path(dir) / "manifest.json");
   if (!in) return std::nullopt;
-  nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  nlohmann::json j = parse_json_or_discard(read_rest(in));
   if (j.is_discarded() || !j.is_object() || !j.contains("sweep_hash") || !j["sweep_hash"].is_string())
     return std::nullopt;
   return j;
+}
+
+/// The `shard-<i>-of-<n>` folders of `dir` (a sharded sweep's), sorted, for messages.
+std::vector<std::string> shard_folders(const std::string& dir) {
+  static const std::regex kShard(R"(shard-\d+-of-\d+)");
+  std::vector<std::string> out;
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(dir, ec)) {
+    const std::string name = e.path().filename().string();
+    if (e.is_directory(ec) && std::regex_match(name, kShard)) out.push_back(name);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
 }
 
 }  // namespace
@@ -69,6 +85,13 @@ std::optional<OutputDirContents> output_dir_contents(const std::string& dir) {
   if (has(dir, "compare.csv") || has(dir, "compare.html")) {
     return OutputDirContents{OutputKind::Compare, "the output of fsweep compare (" +
                                                       present(dir, {"compare.csv", "compare.html"}) + ")"};
+  }
+  if (const std::vector<std::string> shards = shard_folders(dir); !shards.empty()) {
+    return OutputDirContents{OutputKind::Sweep, "the shards of a sweep (" + join_names(shards) + ")"};
+  }
+  if (has(dir, "progress.png") || has(dir, "metrics.png")) {
+    return OutputDirContents{OutputKind::Plots, "the plots of fsweep plot (" +
+                                                    present(dir, {"progress.png", "metrics.png"}) + ")"};
   }
   return std::nullopt;
 }

@@ -16,7 +16,11 @@ enum class OutputKind {
   PlanBench,    ///< `fsweep plan-bench --out`: queries.csv, summary.csv, ompl_benchmark.log
   PlanCompare,  ///< `fsweep plan-compare --out`: pairs.csv, summary.csv, manifest.json
   Compare,      ///< `fsweep compare --out`: compare.csv, compare.html
+  Plots,        ///< `fsweep plot --out`: progress.png, metrics.png, heat maps
 };
+
+/// A directory holding `shard-<i>-of-<n>` folders (a sharded sweep's --out) and no other
+/// command's files is a Sweep's.
 
 /// What an existing directory holds: its kind and, for messages, e.g. "the results of sweep
 /// 'default' (manifest.json, runs.csv)" (the files found that show the kind).

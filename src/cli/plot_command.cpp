@@ -9,6 +9,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/option_checks.hpp"
+#include "cli/output_dir.hpp"
 #include "cli/plotting.hpp"
 #include "report/aggregate.hpp"
 
@@ -22,6 +23,8 @@ struct PlotOptions {
 };
 
 int run_plot(const PlotOptions& o) {
+  const std::string out = o.out.empty() ? o.dir + "/plots" : o.out;
+  check_output_dir(out, OutputKind::Plots, "--out");  // the PNGs never go over another command's files
   for (const char* name : {"summary.csv", "progress_summary.csv", "best.csv"}) {
     if (!std::filesystem::exists(o.dir + "/" + name)) {
       std::cout << o.dir << " has no " << name << ": aggregating first\n";
@@ -29,7 +32,7 @@ int run_plot(const PlotOptions& o) {
       break;
     }
   }
-  return draw_plots(o.dir, o.out.empty() ? o.dir + "/plots" : o.out, o.top, ChildOutput::All);
+  return draw_plots(o.dir, out, o.top, ChildOutput::All);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -18,6 +19,7 @@
 #include "cli/plotting.hpp"
 #include "core/config_error.hpp"
 #include "core/files.hpp"
+#include "report/html.hpp"
 #include "report/report_page.hpp"
 #include "sweep/replay.hpp"
 
@@ -103,7 +105,32 @@ void add_trajectories(ReportPage& page) {
   }
 }
 
+/// Refuses an --out that is a directory, or an existing file other than a page this command
+/// wrote (its generator tag, html.hpp, or the title of pages from before the tag): the page
+/// never replaces another command's file.
+void check_report_out(const std::string& out) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (fs::is_directory(out, ec)) {
+    throw ConfigError("--out", out + " is a directory; give the page's file, e.g. " + out + "/report.html");
+  }
+  if (!fs::exists(out, ec)) return;
+  std::ifstream in(out, std::ios::binary);
+  std::string head(512, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  if (head.find(html_generator_tag(kReportGenerator)) == std::string::npos &&
+      head.find("<title>fsweep report: ") == std::string::npos) {
+    throw ConfigError("--out",
+                      out +
+                          " exists and is not a page fsweep report wrote; choose a new file or an earlier "
+                          "report page");
+  }
+}
+
 int run_report(const ReportOptions& o) {
+  const std::string out = o.out.empty() ? o.dir + "/report.html" : o.out;
+  check_report_out(out);  // before the plots are drawn
   ReportPage page;
   page.result = read_result_dir(o.dir, o.rows);
   {
@@ -119,7 +146,6 @@ int run_report(const ReportOptions& o) {
   } else {
     add_trajectories(page);
   }
-  const std::string out = o.out.empty() ? o.dir + "/report.html" : o.out;
   write_file_atomically(out, report_html(page));
   std::size_t drawn = 0;
   for (const auto& t : page.trajectories) drawn += t.replay ? 1 : 0;

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <iterator>
+
+#include "core/config_error.hpp"
 
 namespace fsweep {
 inline namespace core {
@@ -77,6 +80,25 @@ std::size_t first_too_deep_opening(std::string_view text, int max_depth) {
     return true;
   });
   return found;
+}
+
+nlohmann::json parse_json_or_discard(std::string_view text) {
+  if (first_too_deep_opening(text, kMaxJsonNesting) < text.size()) return nlohmann::json::value_t::discarded;
+  return nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
+}
+
+nlohmann::json parse_json_bounded(std::string_view text, const std::string& path) {
+  if (const std::size_t at = first_too_deep_opening(text, kMaxJsonNesting); at < text.size()) {
+    throw ConfigError(text_position(path, text, at), "JSON nested deeper than " +
+                                                         std::to_string(kMaxJsonNesting) +
+                                                         " levels (arrays and objects); allowed: at most " +
+                                                         std::to_string(kMaxJsonNesting));
+  }
+  return nlohmann::json::parse(text);
+}
+
+std::string read_rest(std::istream& in) {
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 }  // namespace core

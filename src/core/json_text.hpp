@@ -4,12 +4,32 @@
 /// offset (parse errors) or none at all (a number beyond a double, out_of_range 406).
 
 #include <cstddef>
+#include <istream>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
 #include <utility>
 
 namespace fsweep {
 inline namespace core {
+
+/// The deepest nesting of arrays and objects in JSON the engine reads besides sweep files
+/// (sweep_json_reader.hpp) and HouseExpo plans: manifests (a sweep of up to 64 levels inside),
+/// searches.json, bench.json, journal lines, key=value option values. nlohmann's parser does
+/// not recurse, but copying, comparing or dumping a value does, once per level (100,000 levels
+/// overflow the stack), so deeper text is refused before it is parsed.
+inline constexpr int kMaxJsonNesting = 128;
+
+/// json::parse(text, nullptr, false), and a discarded value too for text nested deeper than
+/// kMaxJsonNesting.
+[[nodiscard]] nlohmann::json parse_json_or_discard(std::string_view text);
+
+/// json::parse(text) (nlohmann's parse_error for text that is not JSON), after a ConfigError
+/// "<path>:<line>:<column>: JSON nested deeper than 128 levels" for too deep text.
+[[nodiscard]] nlohmann::json parse_json_bounded(std::string_view text, const std::string& path);
+
+/// The rest of `in` as text (a whole file opened for reading).
+[[nodiscard]] std::string read_rest(std::istream& in);
 
 /// "<path>:<line>:<column>" of byte `offset` of `text` (both counted from 1; an offset past the
 /// end is the end).

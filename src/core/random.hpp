@@ -23,9 +23,12 @@ constexpr std::uint64_t mix64(std::uint64_t z) {
   return z ^ (z >> 31U);
 }
 
-/// FNV-1a hash of a string (64 bit), stable across platforms.
-constexpr std::uint64_t fnv1a(std::string_view s) {
-  std::uint64_t h = 0xCBF29CE484222325ULL;
+/// FNV-1a's 64-bit offset basis: the hash of the empty string.
+inline constexpr std::uint64_t kFnv1aBasis = 0xCBF29CE484222325ULL;
+
+/// FNV-1a hash of a string (64 bit), stable across platforms. `h` continues a hash: the hash of
+/// a + b is fnv1a(b, fnv1a(a)).
+constexpr std::uint64_t fnv1a(std::string_view s, std::uint64_t h = kFnv1aBasis) {
   for (const char c : s) {
     h ^= static_cast<unsigned char>(c);
     h *= 0x100000001B3ULL;

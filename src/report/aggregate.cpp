@@ -15,6 +15,7 @@
 #include "core/config_error.hpp"
 #include "core/csv_format.hpp"
 #include "core/csv_reader.hpp"
+#include "core/json_text.hpp"
 #include "core/statistics.hpp"
 #include "report/runs_schema.hpp"
 #include "sim/run_result.hpp"
@@ -316,7 +317,7 @@ const Objective& choose_objective(const std::string& dir, const std::string& req
   const std::string manifest_path = dir + "/manifest.json";
   if (name.empty() && std::filesystem::exists(manifest_path)) {
     std::ifstream f(manifest_path);
-    const auto manifest = nlohmann::json::parse(f, nullptr, false);
+    const auto manifest = parse_json_or_discard(read_rest(f));
     if (manifest.is_discarded()) throw ConfigError(manifest_path, "not valid JSON");
     // The sweep file's choice, else the runner's resolved one (manifest.hpp).
     for (const char* key : {"/sweep/output/objective", "/objective"}) {

@@ -197,7 +197,8 @@ std::string png_cell(const std::string& path) {
 std::string compare_html(const CompareReport& r) {
   std::ostringstream out;
   out << html_page_start("fsweep compare",
-                         "tr.fail{background:#fdd}.verdict{font-size:1.3em;font-weight:bold}");
+                         "tr.fail{background:#fdd}.verdict{font-size:1.3em;font-weight:bold}",
+                         "fsweep compare");
   out << "<h1>fsweep compare</h1>\n<p>new: <code>" << html_escape(r.new_dir) << "</code><br>baseline: <code>"
       << html_escape(r.baseline_dir) << "</code></p>\n";
   out << "<p class='verdict' style='color:" << (r.regressions ? "#c00" : "#080") << "'>"

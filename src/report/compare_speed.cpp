@@ -8,6 +8,7 @@
 
 #include "core/config_error.hpp"
 #include "core/csv_format.hpp"
+#include "core/json_text.hpp"
 
 namespace fsweep {
 inline namespace report {
@@ -20,7 +21,7 @@ json read_json_file(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw ConfigError(path, "cannot be read (missing?)");
   try {
-    return json::parse(in);
+    return parse_json_bounded(read_rest(in), path);
   } catch (const json::parse_error& e) {
     throw ConfigError(path, std::string("not valid JSON: ") + e.what());
   }

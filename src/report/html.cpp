@@ -77,9 +77,13 @@ std::string html_table(const std::vector<std::string>& header,
   return out;
 }
 
-std::string html_page_start(std::string_view title, std::string_view css) {
-  std::string out =
-      "<!DOCTYPE html>\n<html><head><meta charset='utf-8'><link rel='icon' href='data:,'><title>";
+std::string html_generator_tag(std::string_view generator) {
+  return "<meta name='generator' content='" + html_escape(generator) + "'>";
+}
+
+std::string html_page_start(std::string_view title, std::string_view css, std::string_view generator) {
+  std::string out = "<!DOCTYPE html>\n<html><head><meta charset='utf-8'>" + html_generator_tag(generator) +
+                    "<link rel='icon' href='data:,'><title>";
   out += html_escape(title);
   out +=
       "</title><style>"

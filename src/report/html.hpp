@@ -30,8 +30,14 @@ inline namespace report {
 
 /// The start of a page up to and including <body>: doctype, UTF-8, an empty icon (so a browser
 /// asks for no icon file), the title (escaped) and one inline style sheet: the pages' common
-/// rules followed by `css`.
-[[nodiscard]] std::string html_page_start(std::string_view title, std::string_view css);
+/// rules followed by `css`, and a generator meta tag naming the command that wrote the page
+/// (`<meta name='generator' content='GENERATOR'>`: how `fsweep report --out` recognises a page
+/// it may replace).
+[[nodiscard]] std::string html_page_start(std::string_view title, std::string_view css,
+                                          std::string_view generator);
+
+/// The generator meta tag html_page_start() writes for `generator`.
+[[nodiscard]] std::string html_generator_tag(std::string_view generator);
 
 }  // namespace report
 }  // namespace fsweep

@@ -322,7 +322,8 @@ std::string report_html(const ReportPage& page) {
       "figure{margin:1em 0}figcaption{font-size:13px;color:#333;max-width:1100px}"
       ".scroll{overflow-x:auto}.same{font-size:13px;color:#333}pre{background:#f4f4f4;padding:6px}"
       "figure img{max-width:100%;border:1px solid #ddd}.gallery{display:flex;flex-wrap:wrap;gap:0 2em}"
-      ".gallery figure{flex:1 1 420px;max-width:640px}.gallery h3{font-size:15px}");
+      ".gallery figure{flex:1 1 420px;max-width:640px}.gallery h3{font-size:15px}",
+      kReportGenerator);
   out << "<h1>fsweep report: " << html_escape(name) << "</h1>\n";
   if (const std::string d = field(r.manifest, "/sweep/description"); !d.empty())
     out << "<p>" << html_escape(d) << "</p>\n";

@@ -73,6 +73,9 @@ struct ReportPage {
 /// Arguments are quoted for a POSIX shell where needed.
 [[nodiscard]] std::vector<std::string> reproduce_commands(const ResultDir& r);
 
+/// The generator the page names in its meta tag (html_page_start()).
+inline constexpr char kReportGenerator[] = "fsweep report";
+
 /// The page (file comment).
 [[nodiscard]] std::string report_html(const ReportPage& page);
 

@@ -8,6 +8,7 @@
 
 #include "core/config_error.hpp"
 #include "core/csv_reader.hpp"
+#include "core/json_text.hpp"
 #include "report/aggregate.hpp"
 
 namespace fsweep {
@@ -53,7 +54,7 @@ nlohmann::json read_manifest(const std::string& dir) {
                     "manifest.json, runs.csv and the summaries)") +
             (shards ? "; it holds shard directories: join them with `fsweep merge " + dir + "` first" : ""));
   }
-  nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  nlohmann::json j = parse_json_or_discard(read_rest(in));
   if (j.is_discarded() || !j.is_object() || !j.contains("sweep") || !j["sweep"].is_object()) {
     throw ConfigError(path, "not a sweep manifest (a JSON object with the sweep, as fsweep run writes)");
   }
@@ -172,7 +173,7 @@ void read_searches(ResultDir& r) {
     }
   }
   nlohmann::json records;
-  if (std::ifstream in(dir + "/searches.json"); in) records = nlohmann::json::parse(in, nullptr, false);
+  if (std::ifstream in(dir + "/searches.json"); in) records = parse_json_or_discard(read_rest(in));
   const std::vector<std::string>& h = r.search_best->header;
   const auto objective = std::find(h.begin(), h.end(), std::string("objective"));
   const std::vector<std::string> weight_names(objective == h.end() ? h.end() : objective + 1, h.end());

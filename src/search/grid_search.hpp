@@ -444,6 +444,8 @@ SearchOutcome BestFirstSearchT<Cost, P>::expand(Env& env, const SearchLimits& li
       Node& n = nodes[idx(next)];
       if constexpr (!kDijkstra) {
         if (n.pass == pass) return;
+      } else {
+        (void)pass;  // captured for the A* branch only
       }
       const Cost g_next = g_top + cost;
       const double g_next_value = cost_value(g_next);

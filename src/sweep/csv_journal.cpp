@@ -183,7 +183,7 @@ std::string CsvDroppedLines::describe(const std::string& path) const {
   return path + ":" + lines + ": " + reason;
 }
 
-CsvRepairStats CsvJournal::repair(const RecordFilter& keep) {
+CsvRepairStats CsvJournal::repair(const RecordFilter& keep, const std::function<void()>& before_changes) {
   CsvRepairStats stats;
   std::FILE* f = std::fopen(path_.c_str(), "rb");
   if (f == nullptr) throw ConfigError(path_, "cannot open for reading");
@@ -264,6 +264,7 @@ CsvRepairStats CsvJournal::repair(const RecordFilter& keep) {
   }
 
   // 2. Cut: truncate when only a tail goes, else rewrite the kept ranges.
+  if (before_changes) before_changes();
   if (!stats.torn && !any_dropped) return stats;
   if (!dropped_before_kept) {
     std::error_code ec;

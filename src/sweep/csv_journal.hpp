@@ -64,8 +64,9 @@ class CsvJournal {
   /// `keep`. A dropped record over several lines (a damaged row's unclosed quote swallows the
   /// rows after it) drops only its first line: the scan restarts on the next. When only a tail goes, the file
   /// is truncated; when a dropped record is followed by a kept one, the file is rewritten through a temp file
-  /// and rename. Call before the first append().
-  CsvRepairStats repair(const RecordFilter& keep);
+  /// and rename. `before_changes`, when given, runs after the scan and before the file is
+  /// touched: if it throws, the file is left as it was. Call before the first append().
+  CsvRepairStats repair(const RecordFilter& keep, const std::function<void()>& before_changes = {});
 
   /// Rewrites the file (temp file and rename, so a kill leaves the old or the new file) with
   /// its records in ascending order of the decimal number in field `index_field` (stable: equal

@@ -16,29 +16,27 @@ std::optional<std::uint64_t> parse_u64(std::string_view s, int base) {
 
 }  // namespace
 
-void DoneRuns::add(std::uint64_t key, std::uint64_t index) { rows_.push_back({key, index}); }
+void DoneRuns::add(std::uint64_t key, std::uint64_t index) { rows_.push_back({index, key}); }
 
-void DoneRuns::seal() {
-  std::sort(rows_.begin(), rows_.end());
-  taken_.assign(rows_.size(), false);
-  taken_count_ = 0;
+void DoneRuns::seal() { std::sort(rows_.begin(), rows_.end()); }
+
+namespace {
+
+auto find_index(const std::vector<DoneRuns::Row>& rows, std::uint64_t index) {
+  return std::lower_bound(rows.begin(), rows.end(), index,
+                          [](const DoneRuns::Row& r, std::uint64_t i) { return r.index < i; });
 }
+
+}  // namespace
 
 bool DoneRuns::contains(std::uint64_t key, std::uint64_t index) const {
-  return std::binary_search(rows_.begin(), rows_.end(), Row{key, index});
+  const auto it = find_index(rows_, index);
+  return it != rows_.end() && it->index == index && it->key == key;
 }
 
-bool DoneRuns::take(std::uint64_t key) {
-  auto it = std::lower_bound(rows_.begin(), rows_.end(), Row{key, 0});
-  for (; it != rows_.end() && it->key == key; ++it) {
-    const auto i = static_cast<std::size_t>(it - rows_.begin());
-    if (!taken_[i]) {
-      taken_[i] = true;
-      ++taken_count_;
-      return true;
-    }
-  }
-  return false;
+bool DoneRuns::has(std::uint64_t index) const {
+  const auto it = find_index(rows_, index);
+  return it != rows_.end() && it->index == index;
 }
 
 std::optional<std::uint64_t> parse_run_key(std::string_view s) {

@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "core/host_info.hpp"
+#include "core/json_text.hpp"
 #include "core/random.hpp"
 #include "sweep/csv_journal.hpp"
 #include "sweep/sweep_plan.hpp"
@@ -61,6 +62,10 @@ nlohmann::json manifest_json(const SweepPlan& plan, const ManifestInfo& info) {
   j["seed"] = plan.seed();
   j["repetitions"] = plan.repetitions();
   j["warnings"] = sweep_warnings(plan);
+  j["maps"] = nlohmann::json::array();
+  for (const SweepMap& m : plan.maps()) {
+    j["maps"].push_back({{"label", m.label}, {"source", m.map->source}, {"content_hash", m.content_hash}});
+  }
   j["skipped_maps"] = nlohmann::json::array();
   for (const SkippedMap& m : plan.skipped_maps()) {
     j["skipped_maps"].push_back({{"where", m.where}, {"file", m.file}, {"reason", m.reason}});
@@ -88,14 +93,46 @@ void write_manifest(const std::string& path, const nlohmann::json& manifest) {
   write_file_atomically(path, manifest.dump(2) + "\n");
 }
 
-std::optional<std::string> read_manifest_hash(const std::string& path) {
+std::optional<nlohmann::json> read_manifest(const std::string& path) {
   std::ifstream in(path);
   if (!in) return std::nullopt;
-  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  nlohmann::json j = parse_json_or_discard(read_rest(in));
   if (j.is_discarded() || !j.is_object() || !j.contains("sweep_hash") || !j["sweep_hash"].is_string()) {
     return std::nullopt;
   }
-  return j["sweep_hash"].get<std::string>();
+  return j;
+}
+
+std::optional<std::string> read_manifest_hash(const std::string& path) {
+  const auto j = read_manifest(path);
+  if (!j) return std::nullopt;
+  return (*j)["sweep_hash"].get<std::string>();
+}
+
+std::vector<std::string> changed_maps(const nlohmann::json& manifest, const SweepPlan& plan) {
+  std::vector<std::string> out;
+  const nlohmann::json* recorded = manifest.contains("maps") ? &manifest["maps"] : nullptr;
+  if (recorded == nullptr || !recorded->is_array()) {
+    out.emplace_back("manifest.json does not record the maps' content (written by an older fsweep)");
+    return out;
+  }
+  const auto& maps = plan.maps();
+  for (std::size_t i = 0; i < std::max(maps.size(), recorded->size()); ++i) {
+    const nlohmann::json* was = i < recorded->size() ? &(*recorded)[i] : nullptr;
+    const std::string was_label = was != nullptr ? was->value("label", std::string()) : std::string();
+    const std::string was_hash = was != nullptr ? was->value("content_hash", std::string()) : std::string();
+    if (i >= maps.size()) {
+      out.push_back("map '" + was_label + "' is no longer in the sweep");
+    } else if (was == nullptr) {
+      out.push_back("map '" + maps[i].label + "' is new in the sweep");
+    } else if (was_label != maps[i].label) {
+      out.push_back("map " + std::to_string(i) + " was '" + was_label + "', now '" + maps[i].label + "'");
+    } else if (was_hash != maps[i].content_hash) {
+      out.push_back("map '" + maps[i].label + "' (" + maps[i].map->source + ") changed: content hash " +
+                    was_hash + " then, " + maps[i].content_hash + " now");
+    }
+  }
+  return out;
 }
 
 }  // namespace sweep

@@ -44,7 +44,8 @@ struct ManifestInfo {
 [[nodiscard]] std::string utc_now_iso8601();
 
 /// The manifest's JSON: sweep (the file's JSON), sweep_file, sweep_hash, name, objective, seed,
-/// repetitions, warnings (sweep_warnings(): what the CLI printed), skipped_maps [{where, file,
+/// repetitions, warnings (sweep_warnings(): what the CLI printed), maps [{label, source,
+/// content_hash}] (each map as loaded; run keys cover the hash), skipped_maps [{where, file,
 /// reason}] (dataset plans left out by "on_bad_map": "skip"), runs {total, done, skipped,
 /// ran, failed}, shard {index, count}, git_revision, compiler, libraries {oneTBB, nlohmann_json}, host,
 /// cpu_model, threads, start_utc, end_utc (null while running), wall_s, runs_per_s, status.
@@ -52,6 +53,14 @@ struct ManifestInfo {
 
 /// Writes `manifest` to `path` (temp file and rename: never torn).
 void write_manifest(const std::string& path, const nlohmann::json& manifest);
+
+/// The manifest at `path`; nullopt when the file is missing, unreadable or has no sweep_hash.
+[[nodiscard]] std::optional<nlohmann::json> read_manifest(const std::string& path);
+
+/// How the maps `manifest` records ("maps": label, source, content_hash, in plan order) differ
+/// from `plan`'s: one line per changed, added or removed map (a dataset plan that now loads or
+/// no longer does), or one line when the manifest records none. Empty when they agree.
+[[nodiscard]] std::vector<std::string> changed_maps(const nlohmann::json& manifest, const SweepPlan& plan);
 
 /// The sweep_hash of the manifest at `path`; nullopt when the file is missing or unreadable.
 [[nodiscard]] std::optional<std::string> read_manifest_hash(const std::string& path);

@@ -12,6 +12,7 @@
 #include "core/config_error.hpp"
 #include "core/csv_format.hpp"
 #include "core/csv_reader.hpp"
+#include "core/json_text.hpp"
 #include "report/aggregate.hpp"
 #include "report/runs_schema.hpp"
 #include "sweep/csv_journal.hpp"
@@ -36,7 +37,12 @@ struct Shard {
 nlohmann::json read_json(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw ConfigError(path, "cannot open the manifest");
-  nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  nlohmann::json j;
+  try {
+    j = parse_json_bounded(read_rest(in), path);
+  } catch (const nlohmann::json::exception&) {
+    j = nlohmann::json::value_t::discarded;
+  }
   if (j.is_discarded() || !j.is_object() || !j.contains("sweep_hash") || !j["sweep_hash"].is_string()) {
     throw ConfigError(path, "not a sweep manifest (no sweep_hash)");
   }
@@ -55,6 +61,22 @@ std::string describe_sweep(const nlohmann::json& manifest) {
   return std::string("sweep ") +
          (name != nullptr && name->is_string() ? "'" + name->get<std::string>() + "' " : "") +
          "(sweep_hash " + manifest["sweep_hash"].get<std::string>() + ")";
+}
+
+/// The first map whose label or content_hash differs between two shards' manifests ("map 'L':
+/// content hash A, B"); empty when their "maps" agree.
+std::string first_map_difference(const nlohmann::json& a, const nlohmann::json& b) {
+  const nlohmann::json none = nlohmann::json::array();
+  const nlohmann::json& ma = a.contains("maps") ? a["maps"] : none;
+  const nlohmann::json& mb = b.contains("maps") ? b["maps"] : none;
+  if (ma == mb) return {};
+  for (std::size_t i = 0; i < std::min(ma.size(), mb.size()); ++i) {
+    if (ma[i] == mb[i]) continue;
+    return "map '" + ma[i].value("label", std::string()) + "': content hash " +
+           ma[i].value("content_hash", std::string("none")) + ", " +
+           mb[i].value("content_hash", std::string("none"));
+  }
+  return "the lists of maps (" + std::to_string(ma.size()) + " and " + std::to_string(mb.size()) + " maps)";
 }
 
 /// Throws ConfigError when `dir` already holds the merged (or unsharded) results of another sweep
@@ -104,6 +126,15 @@ MergeReport merge_shards(const std::string& dir, const std::string& objective) {
                                  s.manifest["sweep_hash"].get<std::string>() + " in " + s.dir + ", " +
                                  shards.front().manifest["sweep_hash"].get<std::string>() + " in " +
                                  shards.front().dir + ")");
+    }
+  }
+  for (const Shard& s : shards) {
+    const std::string differs = first_map_difference(shards.front().manifest, s.manifest);
+    if (!differs.empty()) {
+      throw ConfigError(dir,
+                        "shards of the same sweep file run on different map contents (" + differs + " in " +
+                            shards.front().dir + " and " + s.dir +
+                            "; was a map file edited between them?): rerun one of them on the other's maps");
     }
   }
   refuse_results_of_another_sweep(dir, shards.front());

@@ -3,7 +3,6 @@
 /// the canonical spec that run keys hash.
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -22,40 +21,6 @@ namespace sweep_detail {
 namespace {
 
 using nlohmann::json;
-
-/// A spec option's value as map_spec.cpp reads it: an integer, a number, true/false, or text.
-json parse_option_value(const std::string& text) {
-  const char* begin = text.data();
-  const char* end = text.data() + text.size();
-  std::uint64_t as_uint = 0;
-  if (auto r = std::from_chars(begin, end, as_uint); r.ec == std::errc() && r.ptr == end) return as_uint;
-  std::int64_t as_int = 0;
-  if (auto r = std::from_chars(begin, end, as_int); r.ec == std::errc() && r.ptr == end) return as_int;
-  double as_double = 0.0;
-  if (auto r = std::from_chars(begin, end, as_double); r.ec == std::errc() && r.ptr == end) return as_double;
-  if (text == "true") return true;
-  if (text == "false") return false;
-  return text;
-}
-
-/// The JSON object form of a SPEC string (map_spec.hpp), for run keys only: loading goes
-/// through load_map_spec, which reports malformed specs.
-json spec_to_object(const std::string& spec) {
-  const std::size_t colon = spec.find(':');
-  const std::string head = spec.substr(0, colon);
-  json j = json::object();
-  j[head.find_first_of("./") != std::string::npos ? "file" : "generator"] = head;
-  if (colon == std::string::npos) return j;
-  std::size_t begin = colon + 1;
-  while (begin <= spec.size()) {
-    const std::size_t comma = std::min(spec.find(',', begin), spec.size());
-    const std::string option = spec.substr(begin, comma - begin);
-    const std::size_t eq = option.find('=');
-    if (eq != std::string::npos) j[option.substr(0, eq)] = parse_option_value(option.substr(eq + 1));
-    begin = comma + 1;
-  }
-  return j;
-}
 
 /// Canonical form for run keys: integral floats become integers, file paths are lexically
 /// normal, so equal maps written differently hash alike.
@@ -124,6 +89,13 @@ std::vector<std::uint64_t> parse_seeds(const json& item, const std::string& wher
 std::shared_ptr<const std::array<Grid<std::uint8_t>, 2>> start_regions_of(const WorldMap& map) {
   return std::make_shared<const std::array<Grid<std::uint8_t>, 2>>(
       std::array<Grid<std::uint8_t>, 2>{largest_free_region(map, false), largest_free_region(map, true)});
+}
+
+/// Puts a loaded map into `m`: the map, its content hash and, for a random start, its regions.
+void take_loaded(SweepMap& m, RunMap loaded) {
+  if (loaded.random_start) m.start_regions = start_regions_of(loaded.map);
+  m.content_hash = hex64(content_hash(loaded.map));
+  m.map = std::make_shared<const WorldMap>(std::move(loaded.map));
 }
 
 /// Keys of a dataset item (besides `dataset`).
@@ -265,9 +237,7 @@ void parse_dataset(const json& item, const std::string& where, std::vector<Sweep
     source["file"] = file;
     SweepMap m;
     try {
-      RunMap loaded = load_run_map_json(source, where);
-      if (loaded.random_start) m.start_regions = start_regions_of(loaded.map);
-      m.map = std::make_shared<const WorldMap>(std::move(loaded.map));
+      take_loaded(m, load_run_map_json(source, where));
     } catch (const ConfigError& e) {
       const std::string reason = strip_path(e.what(), where);
       if (skip) {
@@ -350,7 +320,14 @@ std::vector<SweepMap> parse_maps(const json& maps, std::vector<std::string>& pro
         }
       }
     }
-    if (!spec_string.empty()) base = spec_to_object(spec_string);
+    if (!spec_string.empty()) {
+      try {
+        base = map_spec_object(spec_string);
+      } catch (const ConfigError& e) {
+        problems.push_back(where + ": " + e.what());
+        continue;
+      }
+    }
 
     // 2. Seeds: one map per seed, generators only.
     std::vector<std::uint64_t> seeds;
@@ -378,9 +355,7 @@ std::vector<SweepMap> parse_maps(const json& maps, std::vector<std::string>& pro
       }
       SweepMap m;
       try {
-        RunMap loaded = spec_k.empty() ? load_run_map_json(source, where) : load_run_map_spec(spec_k);
-        if (loaded.random_start) m.start_regions = start_regions_of(loaded.map);
-        m.map = std::make_shared<const WorldMap>(std::move(loaded.map));
+        take_loaded(m, spec_k.empty() ? load_run_map_json(source, where) : load_run_map_spec(spec_k));
       } catch (const ConfigError& e) {
         const std::string what = e.what();
         const std::string seed_note = has_seeds ? " (seed " + std::to_string(seeds[k]) + ")" : "";

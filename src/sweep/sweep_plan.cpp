@@ -289,6 +289,7 @@ json SweepPlan::key_json_of(const RunCoordinates& c, const RunSpec& spec) const 
   json robot = spec.robot;
   if (!spec.robot.dock) robot["dock"] = json{spec.map->start.x, spec.map->start.y};
   return json{{"map", maps_[c.map].spec},
+              {"map_content", maps_[c.map].content_hash},
               {"strategy", spec.strategy.name},
               {"strategy_params", recorded_strategy_params(spec)},
               {"planner", spec.planner.name},

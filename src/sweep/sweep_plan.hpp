@@ -79,7 +79,9 @@
 /// to_json(RobotParams) with the dock resolved to the map's start, "sim", "seed"}. The map's
 /// canonical spec is its JSON object form (a SPEC string is parsed into the same object as the
 /// equivalent JSON item; integral floats become integers; file paths are lexically normalised),
-/// without `label`/`seeds`. Same configuration, map and seed: same key, in any sweep.
+/// without `label`/`seeds`. "map_content" is the loaded map's content_hash() (world_map.hpp), so
+/// an edited map file changes its runs' keys. Same configuration, map content and seed: same
+/// key, in any sweep.
 
 #include <array>
 #include <cstdint>
@@ -130,6 +132,9 @@ struct SweepMap {
   /// Canonical JSON object of the source (what the run key hashes; see above).
   nlohmann::json spec;
   std::shared_ptr<const WorldMap> map;
+  /// content_hash() of `map` as 16 hex digits: run keys cover it, so an edited map file changes
+  /// its runs' keys; manifest.json records it per map ("maps") and a resume refuses a change.
+  std::string content_hash;
   /// True for the `free` generator (the star-pattern optimum of docs/architecture.md, "Sweeps, keys, shards
   /// and the weight search" applies).
   bool free_space = false;

@@ -1,8 +1,10 @@
 #include "sweep/sweep_runner.hpp"
 
 #include <fcntl.h>
+#include <oneapi/tbb/blocked_range.h>
 #include <oneapi/tbb/global_control.h>
 #include <oneapi/tbb/info.h>
+#include <oneapi/tbb/parallel_for.h>
 #include <oneapi/tbb/parallel_pipeline.h>
 #include <oneapi/tbb/task_arena.h>
 #include <sys/file.h>
@@ -14,10 +16,12 @@
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <optional>
 #include <thread>
 
 #include "core/config_error.hpp"
+#include "core/random.hpp"
 #include "report/aggregate.hpp"
 #include "report/runs_schema.hpp"
 #include "sweep/csv_journal.hpp"
@@ -141,7 +145,42 @@ void report_dropped(const CsvJournal& journal, const CsvRepairStats& stats, cons
   }
 }
 
-Resumed repair_outputs(const SweepTable& table, CsvJournal& runs, CsvJournal& progress) {
+/// Refuses done rows whose run_key is not the key `plan` gives their run_index: their inputs
+/// changed since they ran (a map file edited: run keys cover the map's content; or keys of
+/// another fsweep version), so they are not this sweep's results. Keys are computed in parallel.
+void verify_done_keys(const SweepPlan& plan, const DoneRuns& done, const std::string& runs_path) {
+  const std::vector<DoneRuns::Row>& rows = done.rows();
+  std::vector<std::uint64_t> expected(rows.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rows.size()), [&](const auto& range) {
+    for (std::size_t i = range.begin(); i != range.end(); ++i) {
+      expected[i] = parse_run_key(plan.run_key(rows[i].index)).value_or(0);
+    }
+  });
+  std::size_t stale = 0;
+  std::string examples;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (rows[i].key == expected[i]) continue;
+    if (++stale <= 3) {
+      examples += (stale > 1 ? "; run " : "run ") + std::to_string(rows[i].index) + ": " +
+                  hex64(rows[i].key) + " in the file, " + hex64(expected[i]) + " now";
+    }
+  }
+  if (stale == 0) return;
+  throw ConfigError(runs_path, std::to_string(stale) + " of its " + std::to_string(rows.size()) +
+                                   " runs have another run_key than this sweep gives them (" + examples +
+                                   "): their inputs changed since they ran (an edited map file, or keys of "
+                                   "another fsweep version); use --fresh to start over, or another output "
+                                   "directory");
+}
+
+/// The shard a runner writes: runs i with i % count == index.
+struct ShardOf {
+  std::uint64_t index = 0;
+  std::uint64_t count = 1;
+};
+
+Resumed repair_outputs(const SweepPlan& plan, ShardOf shard, const SweepTable& table, CsvJournal& runs,
+                       CsvJournal& progress) {
   Resumed r;
   const std::size_t fields = table.columns().size();
   const std::size_t key_col = table.column(kRunKeyColumn);
@@ -150,20 +189,37 @@ Resumed repair_outputs(const SweepTable& table, CsvJournal& runs, CsvJournal& pr
   const std::size_t progress_key_col = SweepTable::progress_column(kRunKeyColumn);
   const std::size_t progress_index_col = SweepTable::progress_column(kRunIndexColumn);
   const std::string error(to_string(EndReason::Error));
-  const CsvRepairStats run_stats = runs.repair([&](const std::vector<std::string>& f) -> std::string {
-    if (f.size() != fields) return field_count_reason(f.size(), fields);
-    const auto key = parse_run_key(f[key_col]);
-    if (!key) return "its run_key " + quoted_cell(f[key_col]) + " is not 16 hexadecimal digits";
-    const auto index = parse_run_index(f[index_col]);
-    if (!index) return "its run_index " + quoted_cell(f[index_col]) + " is not a whole number";
-    r.done.add(*key, *index);
-    if (r.last_index && *index < *r.last_index) r.in_order = false;
-    r.last_index = std::max(r.last_index.value_or(0), *index);
-    if (f[end_col] == error) ++r.failed;
-    return {};
-  });
-  report_dropped(runs, run_stats, "its run is done again, in run order");
-  r.done.seal();
+  std::vector<bool> seen;  // by run_index: a row for it was kept
+  const CsvRepairStats run_stats = runs.repair(
+      [&](const std::vector<std::string>& f) -> std::string {
+        if (f.size() != fields) return field_count_reason(f.size(), fields);
+        const auto key = parse_run_key(f[key_col]);
+        if (!key) return "its run_key " + quoted_cell(f[key_col]) + " is not 16 hexadecimal digits";
+        const auto index = parse_run_index(f[index_col]);
+        if (!index) return "its run_index " + quoted_cell(f[index_col]) + " is not a whole number";
+        if (*index >= plan.run_count()) {
+          return "its run_index " + f[index_col] + " is not below the sweep's " +
+                 std::to_string(plan.run_count()) + " runs";
+        }
+        if (*index % shard.count != shard.index) {
+          return "its run_index " + f[index_col] + " is not of shard " + std::to_string(shard.index) + "/" +
+                 std::to_string(shard.count);
+        }
+        const auto slot = static_cast<std::size_t>(*index / shard.count);
+        if (slot >= seen.size()) seen.resize(slot + 1, false);
+        if (seen[slot]) return "run " + f[index_col] + " has a row earlier in the file";
+        seen[slot] = true;
+        r.done.add(*key, *index);
+        if (r.last_index && *index < *r.last_index) r.in_order = false;
+        r.last_index = std::max(r.last_index.value_or(0), *index);
+        if (f[end_col] == error) ++r.failed;
+        return {};
+      },
+      [&] {
+        r.done.seal();
+        verify_done_keys(plan, r.done, runs.path());  // refuses before runs.csv is touched
+      });
+  report_dropped(runs, run_stats, "its run is done again (if it is this sweep's), in run order");
   const CsvRepairStats progress_stats =
       progress.repair([&](const std::vector<std::string>& f) -> std::string {
         if (f.size() != SweepTable::kProgressFields)
@@ -182,12 +238,16 @@ Resumed repair_outputs(const SweepTable& table, CsvJournal& runs, CsvJournal& pr
   return r;
 }
 
+/// True when the CSV file at `path` has a line after its header.
+bool has_rows(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  return std::getline(in, line) && std::getline(in, line);
+}
+
 /// One run moving through the pipeline.
 struct Job {
   std::uint64_t index = 0;
-  /// The run resolved once (plan.run()): by the dispatcher while resuming (its key decides
-  /// whether the run is done), else by the worker.
-  std::shared_ptr<const SweepRun> run;
   RunRows rows;
 };
 
@@ -230,15 +290,24 @@ RunnerReport run_sweep(const SweepPlan& plan, const RunnerOptions& options) {
   const std::string hash = sweep_hash(plan.source());
   if (options.fresh) {
     for (const char* f : kOutputFiles) fs::remove(dir + "/" + f);
-  } else if (const auto old = read_manifest_hash(manifest_path); old && *old != hash) {
-    throw ConfigError(dir, "holds the outputs of a different sweep file (hash " + *old + ", this one " +
-                               hash + "); use --fresh to start over, or another output directory");
+  } else if (const auto old = read_manifest(manifest_path)) {
+    const std::string old_hash = (*old)["sweep_hash"].get<std::string>();
+    if (old_hash != hash) {
+      throw ConfigError(dir, "holds the outputs of a different sweep file (hash " + old_hash + ", this one " +
+                                 hash + "); use --fresh to start over, or another output directory");
+    }
+    if (const auto changed = changed_maps(*old, plan); !changed.empty() && has_rows(dir + "/runs.csv")) {
+      std::string list;
+      for (const std::string& c : changed) list += (list.empty() ? "" : "; ") + c;
+      throw ConfigError(dir, "holds the results of other maps than this sweep's (" + list +
+                                 "); use --fresh to start over, or another output directory");
+    }
   }
 
   const SweepTable table(plan);
   CsvJournal runs(dir + "/runs.csv", table.header());
   CsvJournal progress(dir + "/progress.csv", SweepTable::progress_header());
-  Resumed resumed = repair_outputs(table, runs, progress);
+  Resumed resumed = repair_outputs(plan, {options.shard_index, options.shard_count}, table, runs, progress);
 
   ManifestInfo info;
   info.sweep_file = options.sweep_file;
@@ -282,21 +351,15 @@ RunnerReport run_sweep(const SweepPlan& plan, const RunnerOptions& options) {
       Job job;
       job.index = next;
       next += options.shard_count;
-      if (resumed.done.untaken() > 0) {  // run keys in this serial stage only while resuming
-        job.run = std::make_shared<const SweepRun>(plan.run(job.index));
-        const auto key = parse_run_key(job.run->key);
-        if (key && resumed.done.take(*key)) {
-          skipped.fetch_add(1);
-          continue;
-        }
+      if (resumed.done.has(job.index)) {  // its row's key was verified against the plan's
+        skipped.fetch_add(1);
+        continue;
       }
       return job;
     }
   };
   auto simulate_run = [&](Job job) -> Job {
-    if (!job.run) job.run = std::make_shared<const SweepRun>(plan.run(job.index));
-    job.rows = table.run(plan, *job.run);
-    job.run.reset();  // the resolved run is not needed past the simulation
+    job.rows = table.run(plan, plan.run(job.index));
     return job;
   };
   // Runs below the last done one fill gaps (rows dropped by the repair): they are held and

@@ -20,6 +20,7 @@
 #include "core/csv_format.hpp"
 #include "core/csv_reader.hpp"
 #include "core/files.hpp"
+#include "core/json_text.hpp"
 #include "core/random.hpp"
 #include "core/statistics.hpp"
 #include "report/runs_schema.hpp"
@@ -367,7 +368,7 @@ class SearchWriter {
       json j;
       try {
         if (in.eof()) throw std::runtime_error("no newline");
-        j = json::parse(line);
+        j = parse_json_bounded(line, path);
         if (j.at("key").get<std::string>() == key) {
           Found f;
           for (const json& b : j.at("boxes")) {
@@ -911,7 +912,7 @@ SearchRunReport merge_weight_searches(const SweepPlan& plan, const std::string& 
     }
     json shard;
     try {
-      shard = json::parse(in);
+      shard = parse_json_bounded(read_rest(in), path);
       const json& list = shard.at("searches");
       if (list.size() != units.size()) {
         throw std::runtime_error("has " + std::to_string(list.size()) + " searches, the sweep " +

@@ -8,6 +8,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <limits>
 #include <memory>
@@ -54,15 +55,25 @@ struct PnmHeader {
   std::size_t data_offset = 0;
 };
 
-/// The header of `bytes` if they start a binary PGM/PPM with a complete header; nullopt otherwise
-/// (stb_image then reports what is wrong).
-std::optional<PnmHeader> read_pnm_header(const std::string& bytes) {
+/// The header of `bytes` if they start with a binary PGM/PPM's magic ("P5"/"P6"); nullopt for
+/// other formats (stb_image reads them). A malformed header is a ConfigError naming `path`: stb_image
+/// would read some of them its own way (a field ended by a stray byte) and take a few bytes for
+/// an image of 10^8 pixels.
+std::optional<PnmHeader> read_pnm_header(const std::string& bytes, const std::string& path) {
   if (bytes.size() < 2 || bytes[0] != 'P' || (bytes[1] != '5' && bytes[1] != '6')) return std::nullopt;
   PnmHeader h;
   h.channels = bytes[1] == '5' ? 1 : 3;
   std::size_t i = 2;
   std::array<std::int64_t, 3> fields{};  // width, height, maxval
-  for (auto& field : fields) {
+  constexpr std::array<const char*, 3> kNames{"width", "height", "maxval"};
+  const auto malformed = [&](std::size_t k, const std::string& what) {
+    return ConfigError(path, std::string("the P") + bytes[1] + " header is malformed: its " + kNames.at(k) +
+                                 " " + what +
+                                 "; allowed: P5 or P6, then width, height and maxval (1 to 65535) as decimal "
+                                 "numbers separated by whitespace or # comments, then one whitespace byte");
+  };
+  for (std::size_t k = 0; k < fields.size(); ++k) {
+    std::int64_t& field = fields.at(k);
     while (i < bytes.size() && (std::isspace(static_cast<unsigned char>(bytes[i])) != 0 || bytes[i] == '#')) {
       if (bytes[i] == '#') {
         while (i < bytes.size() && bytes[i] != '\n') ++i;
@@ -76,10 +87,21 @@ std::optional<PnmHeader> read_pnm_header(const std::string& bytes) {
       field = field * 10 + (bytes[i] - '0');
       ++i;
     }
-    if (i == begin || i >= bytes.size() || std::isspace(static_cast<unsigned char>(bytes[i])) == 0) {
-      return std::nullopt;
+    if (i == begin) {
+      throw malformed(k, i < bytes.size() ? "is missing (byte " + std::to_string(i) + " is not a digit)"
+                                          : "is missing (the file ends)");
+    }
+    if (i >= bytes.size()) throw malformed(k, "is the end of the file");
+    if (std::isdigit(static_cast<unsigned char>(bytes[i])) != 0)
+      throw malformed(k, "has more than 12 digits");
+    if (std::isspace(static_cast<unsigned char>(bytes[i])) == 0) {
+      char hex[8];
+      std::snprintf(hex, sizeof(hex), "0x%02x", static_cast<unsigned>(static_cast<unsigned char>(bytes[i])));
+      throw malformed(k, "is followed by byte " + std::string(hex) + " at offset " + std::to_string(i) +
+                             ", not whitespace");
     }
   }
+  if (fields[2] < 1 || fields[2] > 65535) throw malformed(2, "is " + std::to_string(fields[2]));
   h.width = fields[0];
   h.height = fields[1];
   h.bytes_per_sample = fields[2] < 256 ? 1 : 2;
@@ -94,7 +116,7 @@ GreyImage load_grey_image(const std::string& path) {
   const std::string bytes = read_whole_file(path, "cannot read the image: cannot open the file");
   const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
   const int length = static_cast<int>(std::min<std::size_t>(bytes.size(), std::numeric_limits<int>::max()));
-  if (const std::optional<PnmHeader> pnm = read_pnm_header(bytes)) {
+  if (const std::optional<PnmHeader> pnm = read_pnm_header(bytes, path)) {
     require_map_size(pnm->width, pnm->height, path);
     const auto expected = static_cast<std::size_t>(pnm->width * pnm->height) *
                           static_cast<std::size_t>(pnm->channels * pnm->bytes_per_sample);

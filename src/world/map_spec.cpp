@@ -342,6 +342,8 @@ Where spec_where(const std::string& spec) { return Where{"map spec '" + spec + "
 
 }  // namespace
 
+nlohmann::json map_spec_object(const std::string& spec) { return spec_object(spec, spec_where(spec)); }
+
 WorldMap load_map_spec(const std::string& spec) {
   const Where where = spec_where(spec);
   return build(spec_object(spec, where), where);

@@ -41,6 +41,12 @@ inline namespace world {
 /// the cell.
 [[nodiscard]] WorldMap load_map_spec(const std::string& spec);
 
+/// The JSON object form of a SPEC string, as load_map_spec() reads it: "file" (a source with '.'
+/// or '/') or "generator" is the part before the first ':', then one key per key=value option,
+/// its value an integer, a number, true/false or else the text. Throws ConfigError naming the
+/// spec for an empty source, an option without '=' or a repeated or reserved key.
+[[nodiscard]] nlohmann::json map_spec_object(const std::string& spec);
+
 /// The same from a JSON object (sweep files); `where` is its JSON path for messages.
 [[nodiscard]] WorldMap load_map_json(const nlohmann::json& j, const std::string& where);
 

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdio>
 #include <limits>
+#include <string_view>
 #include <vector>
 
 #include "core/random.hpp"
@@ -12,6 +14,16 @@ inline namespace world {
 
 int WorldMap::free_count() const {
   return static_cast<int>(std::count(occupied.data().begin(), occupied.data().end(), std::uint8_t{0}));
+}
+
+std::uint64_t content_hash(const WorldMap& map) {
+  char head[96];
+  const int n = std::snprintf(head, sizeof(head), "%d %d %.17g %d %d", map.width(), map.height(),
+                              map.resolution_m, map.start.x, map.start.y);
+  const auto& cells = map.occupied.data();
+  // NOLINTNEXTLINE(cppcoreguidelines-pro-type-reinterpret-cast): the cells' bytes, read as chars
+  const std::string_view bytes(reinterpret_cast<const char*>(cells.data()), cells.size());
+  return fnv1a(bytes, fnv1a(std::string_view(head, static_cast<std::size_t>(n))));
 }
 
 namespace {

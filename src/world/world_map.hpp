@@ -29,6 +29,12 @@ struct WorldMap {
   [[nodiscard]] int free_count() const;
 };
 
+/// FNV-1a 64 (core/random.hpp) of what a run sees of the map: the text "W H RESOLUTION X Y"
+/// (size, resolution_m with 17 significant digits, start), then one byte per cell, row-major
+/// (1 = occupied). Not the source: the same grid from another file or spec hashes the same, an
+/// edited file differently. Run keys cover it (sweep_plan.hpp).
+[[nodiscard]] std::uint64_t content_hash(const WorldMap& map);
+
 /// Free cells reachable from `from` by 8-connected moves (no corner cutting unless
 /// `allow_corner_cutting`). Result: 1 for reachable cells, 0 otherwise. `from` must be free
 /// (an occupied or outside `from` gives an all-zero grid).

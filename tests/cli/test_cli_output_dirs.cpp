@@ -137,4 +137,42 @@ TEST(CliOutputDirs, MergeRefusesADirectoryOfAnotherCommand) {
   fs::remove_all(dir);
 }
 
+TEST(CliOutputDirs, ADirectoryOfShardsIsASweepsAndPlotAndReportKeepOffOtherFiles) {
+  const std::string dir = fsweep::testing::fresh_temp_dir("outdirs", "shards_plots");
+  const std::string sweep = write_named_sweep(dir, "outdirs", 1);
+  const std::string shards = dir + "/shards";
+  const std::string results = dir + "/results";
+  const std::string sim = dir + "/sim";
+  ASSERT_EQ(run_fsweep("run " + sweep + " --quiet --out " + shards + " --shard 0/2").code, 0);
+  const auto into_shards = run_fsweep(kSim + shards);
+  EXPECT_EQ(into_shards.code, 2) << into_shards.output;
+  EXPECT_TRUE(contains(into_shards.output, shards + ": holds the shards of a sweep (shard-0-of-2)"))
+      << into_shards.output;
+  EXPECT_FALSE(fs::exists(shards + "/run.csv"));
+
+  ASSERT_EQ(run_fsweep("run " + sweep + " --quiet --out " + results).code, 0);
+  ASSERT_EQ(run_fsweep(kSim + sim).code, 0);
+  const std::string runs = read_all(results + "/runs.csv");
+  // plot --out: not into another command's directory.
+  const auto plot = run_fsweep("plot " + results + " --out " + sim);
+  EXPECT_EQ(plot.code, 2) << plot.output;
+  EXPECT_TRUE(contains(plot.output, sim + ": holds the output of fsweep sim")) << plot.output;
+  EXPECT_FALSE(fs::exists(sim + "/metrics.png"));
+  // report --out: a new file or an earlier page, never another file or a directory.
+  const auto over_runs = run_fsweep("report " + results + " --out " + results + "/runs.csv");
+  EXPECT_EQ(over_runs.code, 2) << over_runs.output;
+  EXPECT_TRUE(contains(over_runs.output,
+                       "--out: " + results + "/runs.csv exists and is not a page fsweep report wrote"))
+      << over_runs.output;
+  EXPECT_EQ(read_all(results + "/runs.csv"), runs);
+  const auto into_dir = run_fsweep("report " + results + " --out " + sim);
+  EXPECT_EQ(into_dir.code, 2) << into_dir.output;
+  EXPECT_TRUE(contains(into_dir.output, "--out: " + sim + " is a directory")) << into_dir.output;
+  const std::string page = dir + "/page.html";
+  ASSERT_EQ(run_fsweep("report " + results + " --no-trajectories --out " + page).code, 0);
+  const auto again = run_fsweep("report " + results + " --no-trajectories --out " + page);  // its own page
+  EXPECT_EQ(again.code, 0) << again.output;
+  fs::remove_all(dir);
+}
+
 }  // namespace test_cli_output_dirs

@@ -6,21 +6,22 @@
 namespace fsweep {
 namespace {
 
-TEST(DoneRuns, EachRowSkipsOneRun) {
+TEST(DoneRuns, FindsRowsByRunIndex) {
   DoneRuns d;
-  d.add(7, 3);
   d.add(7, 9);
+  d.add(7, 3);
   d.add(2, 1);
   d.seal();
   EXPECT_TRUE(d.contains(7, 9));
+  EXPECT_TRUE(d.contains(2, 1));
   EXPECT_FALSE(d.contains(7, 4));
-  EXPECT_EQ(d.untaken(), 3U);
-  EXPECT_TRUE(d.take(7));
-  EXPECT_TRUE(d.take(7));
-  EXPECT_FALSE(d.take(7));
-  EXPECT_TRUE(d.take(2));
-  EXPECT_FALSE(d.take(5));
-  EXPECT_EQ(d.untaken(), 0U);
+  EXPECT_FALSE(d.contains(2, 9));  // run 9 is done, with another key
+  EXPECT_TRUE(d.has(3));
+  EXPECT_FALSE(d.has(2));
+  EXPECT_FALSE(d.has(10));
+  ASSERT_EQ(d.size(), 3U);
+  EXPECT_EQ(d.rows().front().index, 1U);
+  EXPECT_EQ(d.rows().back().index, 9U);
 }
 
 TEST(DoneRuns, ParsesKeysAndIndices) {

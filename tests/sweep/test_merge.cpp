@@ -204,5 +204,29 @@ TEST_F(MergeTest, MismatchedShardCountsAndSweepsAreErrors) {
   fs::remove_all(fs::temp_directory_path() / ("fsweep_merge_empty_" + std::to_string(::getpid())));
 }
 
+TEST_F(MergeTest, ShardsRunOnDifferentMapContentsAreRefused) {
+  const std::string dir = temp_dir("edited_map");
+  const std::string map_path = dir + "/m.txt";  // beside the shards: merge looks at shard-* only
+  write_file(map_path, "########\n#......#\n#......#\n#......#\n########\n");
+  json sweep = tiny_sweep();
+  sweep["maps"] = json::array({json{{"file", map_path}, {"start", "1;1"}}});
+  run(sweep, dir, 0, 2);
+  write_file(map_path, "########\n#......#\n#..#...#\n#......#\n########\n");  // one cell more wall
+  run(sweep, dir, 1, 2);
+  try {
+    (void)merge_shards(dir);
+    ADD_FAILURE() << "shards of two map contents were merged";
+  } catch (const ConfigError& e) {
+    const std::string what = e.what();
+    for (const std::string& part :
+         {std::string("different map contents"), map_path + ":start=1;1': content hash",
+          std::string("shard-0-of-2"), std::string("shard-1-of-2")}) {
+      EXPECT_NE(what.find(part), std::string::npos) << part << "\nnot in: " << what;
+    }
+  }
+  EXPECT_FALSE(fs::exists(dir + "/runs.csv"));
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace fsweep

@@ -204,7 +204,7 @@ TEST(SweepPlan, ProgressStepMayBeGivenAtTheTopLevel) {
 // (FNV-1a 64 of the canonical JSON documented in sweep_plan.hpp).
 TEST(SweepPlan, RunKeyGolden) {
   const SweepPlan plan = SweepPlan::from_json(minimal(), "s.json");
-  EXPECT_EQ(plan.run_key(0), "6ac3e10ce1b340f0");
+  EXPECT_EQ(plan.run_key(0), "7d398fd7110be79c");
   EXPECT_EQ(plan.run_key(0).size(), 16U);
 }
 

@@ -91,6 +91,13 @@ std::vector<std::string> records(const std::string& text) {
   return out;
 }
 
+/// The records as CSV text again, one per line.
+std::string joined_records(const std::vector<std::string>& recs) {
+  std::string out;
+  for (const auto& r : recs) out += r + "\n";
+  return out;
+}
+
 /// The CSV text with the columns named `*_time_s` removed: they measure the machine, so they
 /// are the only cells allowed to differ between equivalent runs.
 std::string without_timing(const std::string& text) {
@@ -411,6 +418,128 @@ TEST(SweepRunner, ChangedSweepRefusesWithoutFresh) {
   json other = small_sweep();
   other["strategies"] = json::parse(R"([{"name": "closest_frontier"}])");
   EXPECT_THROW((void)run(other, dir, 2), ConfigError);
+  fs::remove_all(dir);
+}
+
+/// A 12x10 MovingAI map: walls around, free inside, start (2, 2).
+std::string small_movingai_map() {
+  std::string text = "type octile\nheight 10\nwidth 12\nmap\n";
+  for (int y = 0; y < 10; ++y) {
+    for (int x = 0; x < 12; ++x) text += (x == 0 || y == 0 || x == 11 || y == 9) ? '@' : '.';
+    text += '\n';
+  }
+  return text;
+}
+
+TEST(SweepRunner, AnEditedMapFileIsRefusedAndNothingIsTouched) {
+  const std::string dir = temp_dir("edited_map");
+  const std::string map_dir = temp_dir("edited_map_files");
+  const std::string map_path = map_dir + "/m.map";
+  write_file(map_path, small_movingai_map());
+  json sweep = small_sweep();
+  sweep["maps"] = json::array({json{{"file", map_path}, {"start", "2;2"}}});
+  ASSERT_EQ(run(sweep, dir, 2).ran, 24U);
+  // The same file content again: every run is done.
+  EXPECT_EQ(run(sweep, dir, 2).skipped, 24U);
+  const auto manifest = json::parse(read_file(dir + "/manifest.json"));
+  ASSERT_EQ(manifest["maps"].size(), 1U);
+  EXPECT_EQ(manifest["maps"][0]["content_hash"].get<std::string>().size(), 16U);
+  const std::string runs = read_file(dir + "/runs.csv");
+  const std::string progress = read_file(dir + "/progress.csv");
+  const std::vector<std::string> keys = column(runs, "run_key");
+
+  // One cell of the file becomes a wall: same sweep file, same path, other map.
+  std::string edited = small_movingai_map();
+  edited[edited.find("map\n") + 4 + 5 * 13 + 6] = '@';  // row 5, column 6
+  write_file(map_path, edited);
+  try {
+    (void)run(sweep, dir, 2);
+    FAIL() << "results of the old map content were resumed";
+  } catch (const ConfigError& e) {
+    const std::string what = e.what();
+    for (const std::string& part : {dir + ": holds the results of other maps", std::string(map_path),
+                                    std::string("changed: content hash"), std::string("--fresh")}) {
+      EXPECT_NE(what.find(part), std::string::npos) << part << "\nnot in: " << what;
+    }
+  }
+  EXPECT_EQ(read_file(dir + "/runs.csv"), runs);  // nothing touched
+  EXPECT_EQ(read_file(dir + "/progress.csv"), progress);
+  EXPECT_EQ(json::parse(read_file(dir + "/manifest.json")), manifest);
+
+  // Every run of the edited map has another key.
+  ASSERT_EQ(run(sweep, dir, 2, true).ran, 24U);
+  const std::vector<std::string> new_keys = column(read_file(dir + "/runs.csv"), "run_key");
+  ASSERT_EQ(new_keys.size(), keys.size());
+  for (std::size_t i = 0; i < keys.size(); ++i) EXPECT_NE(new_keys[i], keys[i]) << i;
+  fs::remove_all(dir);
+  fs::remove_all(map_dir);
+}
+
+TEST(SweepRunner, RowsWhoseKeyIsNotTheSweepsAreRefused) {
+  const std::string dir = temp_dir("stale_keys");
+  ASSERT_EQ(run(small_sweep(), dir, 2).ran, 48U);
+  auto recs = records(read_file(dir + "/runs.csv"));
+  // Run 7's row with another valid key, as results of other inputs or another fsweep have.
+  auto f = split_csv_line(recs[8]);
+  ASSERT_EQ(f[0], "7");
+  const std::string old_key = f[1];
+  f[1] = old_key == "0123456789abcdef" ? "fedcba9876543210" : "0123456789abcdef";
+  recs[8] = csv_record(f);
+  const std::string runs = joined_records(recs);
+  write_file(dir + "/runs.csv", runs);
+  const std::string progress = read_file(dir + "/progress.csv");
+  try {
+    (void)run(small_sweep(), dir, 2);
+    FAIL() << "a row of other inputs was accepted";
+  } catch (const ConfigError& e) {
+    const std::string what = e.what();
+    for (const std::string& part :
+         {dir + "/runs.csv: 1 of its 48 runs have another run_key",
+          "run 7: " + f[1] + " in the file, " + old_key + " now", std::string("--fresh")}) {
+      EXPECT_NE(what.find(part), std::string::npos) << part << "\nnot in: " << what;
+    }
+  }
+  EXPECT_EQ(read_file(dir + "/runs.csv"), runs);  // nothing touched
+  EXPECT_EQ(read_file(dir + "/progress.csv"), progress);
+
+  // A manifest of an fsweep that did not record the maps' content: refused, since keys changed.
+  json manifest = json::parse(read_file(dir + "/manifest.json"));
+  manifest.erase("maps");
+  write_file(dir + "/manifest.json", manifest.dump(2));
+  try {
+    (void)run(small_sweep(), dir, 2);
+    FAIL() << "a manifest without map contents was resumed";
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("does not record the maps' content"), std::string::npos) << e.what();
+  }
+  fs::remove_all(dir);
+}
+
+TEST(SweepRunner, RepeatedAndForeignRowsAreDroppedAndReported) {
+  const std::string ref = temp_dir("repeated_ref");
+  const std::string dir = temp_dir("repeated");
+  ASSERT_EQ(run(small_sweep(), ref, 2).ran, 48U);
+  const auto recs = records(read_file(ref + "/runs.csv"));
+  std::string runs = joined_records(recs);
+  runs += recs[11] + "\n";  // run 10 again
+  auto f = split_csv_line(recs[12]);
+  f[0] = "4800";  // beyond the sweep
+  runs += csv_record(f) + "\n";
+  write_file(dir + "/runs.csv", runs);
+  fs::copy_file(ref + "/progress.csv", dir + "/progress.csv");
+  fs::copy_file(ref + "/manifest.json", dir + "/manifest.json");
+  ::testing::internal::CaptureStderr();
+  const RunnerReport r = run(small_sweep(), dir, 2);
+  const std::string err = ::testing::internal::GetCapturedStderr();
+  EXPECT_EQ(r.skipped, 48U);
+  EXPECT_EQ(r.ran, 0U);
+  expect_same_outputs(ref, dir);
+  for (const std::string& expected :
+       {dir + "/runs.csv:50: run 10 has a row earlier in the file",
+        dir + "/runs.csv:51: its run_index 4800 is not below the sweep's 48 runs"}) {
+    EXPECT_NE(err.find(expected), std::string::npos) << expected << "\nnot in:\n" << err;
+  }
+  fs::remove_all(ref);
   fs::remove_all(dir);
 }
 

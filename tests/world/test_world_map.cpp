@@ -2,6 +2,7 @@
 // fully known map.
 #include <gtest/gtest.h>
 
+#include "core/random.hpp"
 #include "world/known_map.hpp"
 #include "world/map_loaders.hpp"
 #include "world/world_map.hpp"
@@ -13,6 +14,27 @@ int count(const Grid<std::uint8_t>& g) {
   int n = 0;
   for (const auto v : g.data()) n += v;
   return n;
+}
+
+TEST(WorldMap, ContentHashCoversCellsSizeResolutionAndStartButNotTheSource) {
+  const WorldMap base = parse_ascii_map("#..\n.#.\n");
+  WorldMap same = parse_ascii_map("#..\n.#.\n");
+  same.source = "another file";
+  EXPECT_EQ(content_hash(base), content_hash(same));
+  // The layout: FNV-1a 64 of "W H RES X Y" then one byte per cell, 1 = occupied.
+  ASSERT_EQ(base.start, (Cell{1, 0}));
+  std::string text = "3 2 1 1 0";
+  text += std::string("\x01\x00\x00\x00\x01\x00", 6);
+  EXPECT_EQ(content_hash(base), fnv1a(text));
+  WorldMap cell = base;
+  cell.occupied.at(Cell{2, 1}) = 1;
+  WorldMap resolution = base;
+  resolution.resolution_m = 0.05;
+  WorldMap start = base;
+  start.start = Cell{2, 1};
+  WorldMap shape = parse_ascii_map("#.\n..\n#.\n");  // the same bytes, 2x3
+  for (const WorldMap* m : {&cell, &resolution, &start, &shape})
+    EXPECT_NE(content_hash(*m), content_hash(base));
 }
 
 TEST(WorldMap, FreeCountCountsFreeCells) { EXPECT_EQ(parse_ascii_map("#..\n.#.\n").free_count(), 4); }
