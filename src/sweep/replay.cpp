@@ -68,7 +68,8 @@ Replay replay(const SweepPlan& plan, const ShownRun& run) {
     if (sweep_run.key != run.run_key) {
       throw ConfigError("run " + std::to_string(*run.run_index),
                         "the sweep's run key is " + sweep_run.key + ", runs.csv recorded " + run.run_key +
-                            ": the sweep in manifest.json is not the one that ran");
+                            ": the sweep in manifest.json is not the one that ran (or a map file it names "
+                            "was edited since)");
     }
     out.map = plan.maps().at(sweep_run.at.map).label;
     result = simulate(sweep_run.spec);
