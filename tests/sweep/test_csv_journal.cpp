@@ -124,6 +124,28 @@ TEST(CsvJournal, RejectedRecordBeforeAKeptOneRewrites) {
   fs::remove(path);
 }
 
+TEST(CsvJournal, ACheckThrowingBeforeTheCutLeavesTheFileAsItWas) {
+  const std::string path = temp_file("before_changes");
+  const std::string text = "a,b\n1,2\nbad\n3,4\n5";  // a dropped line and a torn tail
+  write_file(path, text);
+  CsvJournal j(path, "a,b");
+  std::size_t rows_seen = 0;
+  std::size_t rows_seen_at_check = 0;
+  const auto keep = [&](const std::vector<std::string>& f) -> std::string {
+    ++rows_seen;
+    return f.size() == 2 ? "" : "wrong field count";
+  };
+  EXPECT_THROW((void)j.repair(keep,
+                              [&] {
+                                rows_seen_at_check = rows_seen;
+                                throw ConfigError(path, "refused");
+                              }),
+               ConfigError);
+  EXPECT_EQ(rows_seen_at_check, 3U);  // after the whole scan (the torn tail is not a row)
+  EXPECT_EQ(read_file(path), text);
+  fs::remove(path);
+}
+
 TEST(CsvJournal, RepairNamesEveryDroppedLineAndWhy) {
   const std::string path = temp_file("reasons");
   // Line 3 is garbage; 4 and 5 are one reason (merged); 6 has a stray quote, which must not
