@@ -296,6 +296,12 @@ RunnerReport run_sweep(const SweepPlan& plan, const RunnerOptions& options) {
       throw ConfigError(dir, "holds the outputs of a different sweep file (hash " + old_hash + ", this one " +
                                  hash + "); use --fresh to start over, or another output directory");
     }
+    if (!old->contains("maps") && has_rows(dir + "/runs.csv")) {
+      throw ConfigError(dir,
+                        "holds the results of an older fsweep: its manifest.json does not record the maps' "
+                        "content, and its run keys differ from this version's; use --fresh to start over, or "
+                        "another output directory");
+    }
     if (const auto changed = changed_maps(*old, plan); !changed.empty() && has_rows(dir + "/runs.csv")) {
       std::string list;
       for (const std::string& c : changed) list += (list.empty() ? "" : "; ") + c;
