@@ -4,12 +4,13 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <regex>
 #include <system_error>
 #include <vector>
 
 #include "core/config_error.hpp"
 #include "core/json_text.hpp"
+#include "sweep/manifest.hpp"
+#include "sweep/merge.hpp"
 
 namespace fsweep {
 namespace {
@@ -31,26 +32,10 @@ bool has(const std::string& dir, const char* name) {
   return fs::exists(fs::path(dir) / name, ec);
 }
 
-/// manifest.json of `dir` when it is a sweep's (an object with a string sweep_hash).
-std::optional<nlohmann::json> sweep_manifest(const std::string& dir) {
-  std::ifstream in(fs::path(dir) / "manifest.json");
-  if (!in) return std::nullopt;
-  nlohmann::json j = parse_json_or_discard(read_rest(in));
-  if (j.is_discarded() || !j.is_object() || !j.contains("sweep_hash") || !j["sweep_hash"].is_string())
-    return std::nullopt;
-  return j;
-}
-
-/// The `shard-<i>-of-<n>` folders of `dir` (a sharded sweep's), sorted, for messages.
+/// The names of the shard folders of `dir` (a sharded sweep's), for messages.
 std::vector<std::string> shard_folders(const std::string& dir) {
-  static const std::regex kShard(R"(shard-\d+-of-\d+)");
   std::vector<std::string> out;
-  std::error_code ec;
-  for (const auto& e : fs::directory_iterator(dir, ec)) {
-    const std::string name = e.path().filename().string();
-    if (e.is_directory(ec) && std::regex_match(name, kShard)) out.push_back(name);
-  }
-  std::sort(out.begin(), out.end());
+  for (const ShardDir& d : shard_dirs(dir)) out.push_back(fs::path(d.path).filename().string());
   return out;
 }
 
@@ -59,7 +44,7 @@ std::vector<std::string> shard_folders(const std::string& dir) {
 std::optional<OutputDirContents> output_dir_contents(const std::string& dir) {
   std::error_code ec;
   if (!fs::is_directory(dir, ec)) return std::nullopt;
-  const std::optional<nlohmann::json> manifest = sweep_manifest(dir);
+  const std::optional<nlohmann::json> manifest = read_manifest((fs::path(dir) / "manifest.json").string());
   if (manifest || has(dir, "runs.csv")) {
     const std::string name = manifest && manifest->contains("name") && (*manifest)["name"].is_string()
                                  ? " '" + (*manifest)["name"].get<std::string>() + "'"

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <iterator>
 
 #include "core/config_error.hpp"
 
@@ -95,10 +94,6 @@ nlohmann::json parse_json_bounded(std::string_view text, const std::string& path
                                                          std::to_string(kMaxJsonNesting));
   }
   return nlohmann::json::parse(text);
-}
-
-std::string read_rest(std::istream& in) {
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 }  // namespace core

@@ -4,7 +4,6 @@
 /// offset (parse errors) or none at all (a number beyond a double, out_of_range 406).
 
 #include <cstddef>
-#include <istream>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
@@ -27,9 +26,6 @@ inline constexpr int kMaxJsonNesting = 128;
 /// json::parse(text) (nlohmann's parse_error for text that is not JSON), after a ConfigError
 /// "<path>:<line>:<column>: JSON nested deeper than 128 levels" for too deep text.
 [[nodiscard]] nlohmann::json parse_json_bounded(std::string_view text, const std::string& path);
-
-/// The rest of `in` as text (a whole file opened for reading).
-[[nodiscard]] std::string read_rest(std::istream& in);
 
 /// "<path>:<line>:<column>" of byte `offset` of `text` (both counted from 1; an offset past the
 /// end is the end).

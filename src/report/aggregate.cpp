@@ -15,6 +15,7 @@
 #include "core/config_error.hpp"
 #include "core/csv_format.hpp"
 #include "core/csv_reader.hpp"
+#include "core/files.hpp"
 #include "core/json_text.hpp"
 #include "core/statistics.hpp"
 #include "report/runs_schema.hpp"
@@ -316,8 +317,7 @@ const Objective& choose_objective(const std::string& dir, const std::string& req
   std::string where = "--objective";
   const std::string manifest_path = dir + "/manifest.json";
   if (name.empty() && std::filesystem::exists(manifest_path)) {
-    std::ifstream f(manifest_path);
-    const auto manifest = parse_json_or_discard(read_rest(f));
+    const auto manifest = parse_json_or_discard(read_file(manifest_path).value_or(""));
     if (manifest.is_discarded()) throw ConfigError(manifest_path, "not valid JSON");
     // The sweep file's choice, else the runner's resolved one (manifest.hpp).
     for (const char* key : {"/sweep/output/objective", "/objective"}) {

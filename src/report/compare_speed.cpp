@@ -8,6 +8,7 @@
 
 #include "core/config_error.hpp"
 #include "core/csv_format.hpp"
+#include "core/files.hpp"
 #include "core/json_text.hpp"
 
 namespace fsweep {
@@ -18,10 +19,10 @@ using nlohmann::json;
 
 /// The whole JSON file; ConfigError naming it when missing or malformed.
 json read_json_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw ConfigError(path, "cannot be read (missing?)");
+  const std::optional<std::string> text = read_file(path);
+  if (!text) throw ConfigError(path, "cannot be read (missing?)");
   try {
-    return parse_json_bounded(read_rest(in), path);
+    return parse_json_bounded(*text, path);
   } catch (const json::parse_error& e) {
     throw ConfigError(path, std::string("not valid JSON: ") + e.what());
   }

@@ -8,6 +8,7 @@
 
 #include "core/config_error.hpp"
 #include "core/csv_reader.hpp"
+#include "core/files.hpp"
 #include "core/json_text.hpp"
 #include "report/aggregate.hpp"
 
@@ -41,8 +42,8 @@ void aggregate_if_stale(ResultDir& r) {
 
 nlohmann::json read_manifest(const std::string& dir) {
   const std::string path = dir + "/manifest.json";
-  std::ifstream in(path);
-  if (!in) {
+  const std::optional<std::string> text = read_file(path);
+  if (!text) {
     bool shards = false;
     std::error_code ec;
     for (const auto& e : fs::directory_iterator(dir, ec)) {
@@ -54,7 +55,7 @@ nlohmann::json read_manifest(const std::string& dir) {
                     "manifest.json, runs.csv and the summaries)") +
             (shards ? "; it holds shard directories: join them with `fsweep merge " + dir + "` first" : ""));
   }
-  nlohmann::json j = parse_json_or_discard(read_rest(in));
+  nlohmann::json j = parse_json_or_discard(*text);
   if (j.is_discarded() || !j.is_object() || !j.contains("sweep") || !j["sweep"].is_object()) {
     throw ConfigError(path, "not a sweep manifest (a JSON object with the sweep, as fsweep run writes)");
   }
@@ -173,7 +174,7 @@ void read_searches(ResultDir& r) {
     }
   }
   nlohmann::json records;
-  if (std::ifstream in(dir + "/searches.json"); in) records = parse_json_or_discard(read_rest(in));
+  if (const auto text = read_file(dir + "/searches.json")) records = parse_json_or_discard(*text);
   const std::vector<std::string>& h = r.search_best->header;
   const auto objective = std::find(h.begin(), h.end(), std::string("objective"));
   const std::vector<std::string> weight_names(objective == h.end() ? h.end() : objective + 1, h.end());

@@ -5,6 +5,7 @@
 #include <ctime>
 #include <fstream>
 
+#include "core/files.hpp"
 #include "core/host_info.hpp"
 #include "core/json_text.hpp"
 #include "core/random.hpp"
@@ -94,9 +95,9 @@ void write_manifest(const std::string& path, const nlohmann::json& manifest) {
 }
 
 std::optional<nlohmann::json> read_manifest(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) return std::nullopt;
-  nlohmann::json j = parse_json_or_discard(read_rest(in));
+  const std::optional<std::string> text = read_file(path);
+  if (!text) return std::nullopt;
+  nlohmann::json j = parse_json_or_discard(*text);
   if (j.is_discarded() || !j.is_object() || !j.contains("sweep_hash") || !j["sweep_hash"].is_string()) {
     return std::nullopt;
   }

@@ -6,12 +6,13 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
-#include <regex>
+#include <string_view>
 #include <unordered_map>
 
 #include "core/config_error.hpp"
 #include "core/csv_format.hpp"
 #include "core/csv_reader.hpp"
+#include "core/files.hpp"
 #include "core/json_text.hpp"
 #include "report/aggregate.hpp"
 #include "report/runs_schema.hpp"
@@ -34,12 +35,26 @@ struct Shard {
   nlohmann::json manifest;
 };
 
+/// "<i>-of-<n>" after "shard-" as two whole numbers.
+std::optional<std::pair<std::uint64_t, std::uint64_t>> shard_numbers(std::string_view name) {
+  constexpr std::string_view kPrefix = "shard-";
+  constexpr std::string_view kOf = "-of-";
+  if (!name.starts_with(kPrefix)) return std::nullopt;
+  name.remove_prefix(kPrefix.size());
+  const std::size_t of = name.find(kOf);
+  if (of == std::string_view::npos) return std::nullopt;
+  const auto index = parse_run_index(name.substr(0, of));
+  const auto count = parse_run_index(name.substr(of + kOf.size()));
+  if (!index || !count) return std::nullopt;
+  return std::pair{*index, *count};
+}
+
 nlohmann::json read_json(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw ConfigError(path, "cannot open the manifest");
+  const std::optional<std::string> text = read_file(path);
+  if (!text) throw ConfigError(path, "cannot open the manifest");
   nlohmann::json j;
   try {
-    j = parse_json_bounded(read_rest(in), path);
+    j = parse_json_bounded(*text, path);
   } catch (const nlohmann::json::exception&) {
     j = nlohmann::json::value_t::discarded;
   }
@@ -93,21 +108,30 @@ void refuse_results_of_another_sweep(const std::string& dir, const Shard& first)
 
 }  // namespace
 
+std::string shard_dir_name(std::uint64_t index, std::uint64_t count) {
+  return "shard-" + std::to_string(index) + "-of-" + std::to_string(count);
+}
+
+std::vector<ShardDir> shard_dirs(const std::string& dir) {
+  std::vector<ShardDir> out;
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(dir, ec)) {
+    const auto numbers = shard_numbers(entry.path().filename().string());
+    if (numbers && entry.is_directory(ec))
+      out.push_back({numbers->first, numbers->second, entry.path().string()});
+  }
+  std::sort(out.begin(), out.end(), [](const ShardDir& a, const ShardDir& b) {
+    return a.count != b.count ? a.count < b.count : a.index < b.index;
+  });
+  return out;
+}
+
 MergeReport merge_shards(const std::string& dir, const std::string& objective) {
   MergeReport report;
   if (!fs::is_directory(dir)) throw ConfigError(dir, "not a directory");
-  static const std::regex kShardName(R"(shard-(\d+)-of-(\d+))");
   std::vector<Shard> shards;
-  for (const auto& entry : fs::directory_iterator(dir)) {
-    std::smatch m;
-    const std::string name = entry.path().filename().string();
-    if (!entry.is_directory() || !std::regex_match(name, m, kShardName)) continue;
-    shards.push_back({std::stoull(m[1].str()), std::stoull(m[2].str()), entry.path().string(), {}});
-  }
+  for (ShardDir& d : shard_dirs(dir)) shards.push_back({d.index, d.count, std::move(d.path), {}});
   if (shards.empty()) throw ConfigError(dir, "no shard directories (shard-<i>-of-<n>) to merge");
-  std::sort(shards.begin(), shards.end(), [](const Shard& a, const Shard& b) {
-    return a.count != b.count ? a.count < b.count : a.index < b.index;
-  });
   if (shards.front().count != shards.back().count) {
     throw ConfigError(dir, "shards of different shard counts: " + shards.front().dir + " and " +
                                shards.back().dir + " (merge the shards of one --shard i/N split only)");
@@ -144,8 +168,7 @@ MergeReport merge_shards(const std::string& dir, const std::string& objective) {
       if (k < shards.size() && shards[k].index == i) {
         ++k;
       } else {
-        report.problems.push_back("missing shard directory " + dir + "/shard-" + std::to_string(i) + "-of-" +
-                                  std::to_string(n));
+        report.problems.push_back("missing shard directory " + dir + "/" + shard_dir_name(i, n));
       }
     }
   }

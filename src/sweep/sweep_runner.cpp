@@ -27,6 +27,7 @@
 #include "sweep/csv_journal.hpp"
 #include "sweep/done_runs.hpp"
 #include "sweep/manifest.hpp"
+#include "sweep/merge.hpp"
 #include "sweep/progress_meter.hpp"
 #include "sweep/sweep_table.hpp"
 #include "sweep/weight_search_runner.hpp"
@@ -101,7 +102,7 @@ std::string output_directory(const SweepPlan& plan, const RunnerOptions& o) {
   std::string dir = o.out_dir.empty() ? plan.output_dir() : o.out_dir;
   if (dir.empty()) dir = ".";
   if (o.shard_count > 1) {
-    dir += "/shard-" + std::to_string(o.shard_index) + "-of-" + std::to_string(o.shard_count);
+    dir += "/" + shard_dir_name(o.shard_index, o.shard_count);
   }
   std::error_code ec;
   fs::create_directories(dir, ec);

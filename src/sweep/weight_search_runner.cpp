@@ -904,15 +904,15 @@ SearchRunReport merge_weight_searches(const SweepPlan& plan, const std::string& 
   std::vector<std::vector<json>> records(units.size());
   for (const std::string& dir : shard_dirs) {
     const std::string path = dir + "/searches.json";
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
+    const std::optional<std::string> text = read_file(path);
+    if (!text) {
       throw ConfigError(path,
                         "missing: the shard's weight searches did not finish; rerun `fsweep run --shard` "
                         "for it (it resumes from its search_journal.jsonl)");
     }
     json shard;
     try {
-      shard = parse_json_bounded(read_rest(in), path);
+      shard = parse_json_bounded(*text, path);
       const json& list = shard.at("searches");
       if (list.size() != units.size()) {
         throw std::runtime_error("has " + std::to_string(list.size()) + " searches, the sweep " +
