@@ -31,6 +31,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "core/always_inline.hpp"
 #include "search/indexed_heap.hpp"
 #include "search/stop_condition.hpp"
 #include "world/grid.hpp"
@@ -353,6 +354,16 @@ class BestFirstSearchT {
       return Node{g, run, 0};
     }
   }
+  /// The relaxation's update: `node` (of `state`) reached in run `run` at the cheaper `g` from
+  /// `parent`, and opened. A function of its own, not lines of the relaxation: GCC 12 then
+  /// inlines the whole opening (heuristic, entry, sift-up) at every successor call, in every
+  /// translation unit, which it did not for the same lines in the lambda (measured 4-8% per A*
+  /// query); forcing each step inline measured slower than either.
+  template <typename Env>
+  void improve(const Env& env, Node& node, int state, Cost g, int parent, std::uint16_t run, bool reached) {
+    node = make_node(g, parent, run);
+    open(env, state, g, reached);
+  }
   static std::size_t idx(int state) { return static_cast<std::size_t>(state); }
   [[nodiscard]] bool in_range(int state) const { return state >= 0 && idx(state) < nodes_.size(); }
 
@@ -440,21 +451,23 @@ SearchOutcome BestFirstSearchT<Cost, P>::expand(Env& env, const SearchLimits& li
     const Cost g_top = node.g;
     const int from = top.state;
     Node* const nodes = nodes_.data();
-    env.for_each_successor(from, [this, &env, nodes, g_top, from, g_limit, run, pass](int next, Cost cost) {
-      Node& n = nodes[idx(next)];
-      if constexpr (!kDijkstra) {
-        if (n.pass == pass) return;
-      } else {
-        (void)pass;  // captured for the A* branch only
-      }
-      const Cost g_next = g_top + cost;
-      const double g_next_value = cost_value(g_next);
-      if (g_next_value > g_limit) return;
-      const bool reached = n.run == run;
-      if (reached && cost_value(n.g) <= g_next_value) return;
-      n = make_node(g_next, from, run);
-      open(env, next, g_next, reached);
-    });
+    // The relaxation is inlined into each of the environment's successor calls: GCC otherwise
+    // calls it there, and the call's register saves cost more than the usual early return.
+    env.for_each_successor(
+        from, [this, &env, nodes, g_top, from, g_limit, run, pass](int next, Cost cost) FSWEEP_ALWAYS_INLINE {
+          Node& n = nodes[idx(next)];
+          if constexpr (!kDijkstra) {
+            if (n.pass == pass) return;
+          } else {
+            (void)pass;  // captured for the A* branch only
+          }
+          const Cost g_next = g_top + cost;
+          const double g_next_value = cost_value(g_next);
+          if (g_next_value > g_limit) return;
+          const bool reached = n.run == run;
+          if (reached && cost_value(n.g) <= g_next_value) return;
+          improve(env, n, next, g_next, from, run, reached);
+        });
   }
   return outcome;
 }
