@@ -155,5 +155,12 @@ std::optional<double> parse_number(std::string_view text) {
   return value;
 }
 
+std::optional<std::uint64_t> parse_unsigned(std::string_view text, int base) {
+  std::uint64_t value = 0;
+  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value, base);
+  if (text.empty() || ec != std::errc() || ptr != text.data() + text.size()) return std::nullopt;
+  return value;
+}
+
 }  // namespace core
 }  // namespace fsweep

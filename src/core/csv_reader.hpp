@@ -8,6 +8,7 @@
 /// at `<file>:<line>` (the line where the offending record starts, 1-based).
 
 #include <cstddef>
+#include <cstdint>
 #include <fstream>
 #include <optional>
 #include <string>
@@ -63,6 +64,10 @@ class CsvReader {
 /// Parses a whole CSV cell as a number ("inf", "nan" and exponents allowed); nullopt if it is not
 /// one (empty, trailing characters, ...).
 [[nodiscard]] std::optional<double> parse_number(std::string_view text);
+
+/// Parses a whole text as an unsigned 64-bit number in `base` (digits only: no sign, no space);
+/// nullopt if it is not one (empty, trailing characters, out of range).
+[[nodiscard]] std::optional<std::uint64_t> parse_unsigned(std::string_view text, int base = 10);
 
 }  // namespace core
 }  // namespace fsweep

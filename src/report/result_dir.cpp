@@ -10,6 +10,7 @@
 #include "core/csv_reader.hpp"
 #include "core/files.hpp"
 #include "core/json_text.hpp"
+#include "core/shard_dirs.hpp"
 #include "report/aggregate.hpp"
 
 namespace fsweep {
@@ -44,11 +45,7 @@ nlohmann::json read_manifest(const std::string& dir) {
   const std::string path = dir + "/manifest.json";
   const std::optional<std::string> text = read_file(path);
   if (!text) {
-    bool shards = false;
-    std::error_code ec;
-    for (const auto& e : fs::directory_iterator(dir, ec)) {
-      shards = shards || (e.is_directory() && e.path().filename().string().starts_with("shard-"));
-    }
+    const bool shards = !shard_dirs(dir).empty();
     throw ConfigError(
         path,
         std::string("not found: not a sweep result directory (fsweep run writes "

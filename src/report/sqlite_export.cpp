@@ -19,6 +19,7 @@
 #include "core/config_error.hpp"
 #include "core/csv_reader.hpp"
 #include "core/files.hpp"
+#include "core/shard_dirs.hpp"
 #include "report/runs_schema.hpp"
 
 namespace fsweep {
@@ -239,14 +240,11 @@ void check_result_dir(const std::string& dir) {
     }
     return;
   }
-  bool shards = false;
-  for (const auto& entry : fs::directory_iterator(dir, ec)) {
-    shards = shards || entry.path().filename().string().starts_with("shard-");
-  }
   throw ConfigError(dir, std::string("not a result directory: no runs.csv") +
-                             (shards ? " (a sharded run's results are in its shard-i-of-n/ directories until "
-                                       "`fsweep merge`)"
-                                     : ""));
+                             (!shard_dirs(dir).empty()
+                                  ? " (a sharded run's results are in its shard-i-of-n/ directories until "
+                                    "`fsweep merge`)"
+                                  : ""));
 }
 
 /// Fills `runs` and `configurations` from runs.csv (the second pass); returns the counts.

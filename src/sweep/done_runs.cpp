@@ -1,20 +1,11 @@
 #include "sweep/done_runs.hpp"
 
 #include <algorithm>
-#include <charconv>
+
+#include "core/csv_reader.hpp"
 
 namespace fsweep {
 inline namespace sweep {
-namespace {
-
-std::optional<std::uint64_t> parse_u64(std::string_view s, int base) {
-  std::uint64_t v = 0;
-  const auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), v, base);
-  if (ec != std::errc() || ptr != s.data() + s.size() || s.empty()) return std::nullopt;
-  return v;
-}
-
-}  // namespace
 
 void DoneRuns::add(std::uint64_t key, std::uint64_t index) { rows_.push_back({index, key}); }
 
@@ -41,10 +32,10 @@ bool DoneRuns::has(std::uint64_t index) const {
 
 std::optional<std::uint64_t> parse_run_key(std::string_view s) {
   if (s.size() != 16) return std::nullopt;
-  return parse_u64(s, 16);
+  return parse_unsigned(s, 16);
 }
 
-std::optional<std::uint64_t> parse_run_index(std::string_view s) { return parse_u64(s, 10); }
+std::optional<std::uint64_t> parse_run_index(std::string_view s) { return parse_unsigned(s); }
 
 }  // namespace sweep
 }  // namespace fsweep

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "core/shard_dirs.hpp"
+
 namespace fsweep {
 inline namespace sweep {
 
@@ -24,20 +26,6 @@ struct MergeReport {
   /// Exact weight searches merged (merge_weight_searches(), weight_search_runner.hpp).
   std::size_t searches = 0;
 };
-
-/// The folder of shard `index` of `count` in a sweep's output directory: "shard-<i>-of-<n>".
-[[nodiscard]] std::string shard_dir_name(std::uint64_t index, std::uint64_t count);
-
-/// A shard folder found in a sweep's output directory.
-struct ShardDir {
-  std::uint64_t index = 0;
-  std::uint64_t count = 0;
-  std::string path;
-};
-
-/// The folders of `dir` named as shard_dir_name() names them (any i and n that are whole
-/// numbers), ordered by n, then i; empty when there are none or `dir` cannot be read.
-[[nodiscard]] std::vector<ShardDir> shard_dirs(const std::string& dir);
 
 /// Merges the shards under `dir`. Every shard directory (name `shard-<i>-of-<n>`) must have the
 /// same n, a manifest.json with the same sweep_hash and runs.csv / progress.csv with equal

@@ -115,6 +115,12 @@ TEST(CliReport, NotAResultDirectoryIsExit2NamingTheFile) {
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.output.find(dir + ": not a directory"), std::string::npos) << r.output;
 
+  fs::create_directories(dir + "/shard-notes");  // not a shard folder: no merge hint
+  r = run_fsweep("report " + dir);
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.output.find("not a sweep result directory"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("fsweep merge"), std::string::npos) << r.output;
+
   fs::create_directories(dir + "/shard-0-of-2");
   r = run_fsweep("report " + dir);
   EXPECT_EQ(r.code, 2);

@@ -197,6 +197,8 @@ TEST(SqliteExport, BadInputIsOneLineNamingTheFile) {
     return e;
   };
   EXPECT_NE(error(d + "/missing").find("/missing: no such result directory"), std::string::npos);
+  fs::create_directories(d + "/empty/shard-notes");  // not a shard folder: no hint
+  EXPECT_EQ(error(d + "/empty").find("sharded"), std::string::npos);
   fs::create_directories(d + "/empty/shard-0-of-2");
   EXPECT_NE(error(d + "/empty").find("empty: not a result directory: no runs.csv (a sharded run"),
             std::string::npos);

@@ -31,6 +31,11 @@ TEST(DoneRuns, ParsesKeysAndIndices) {
   EXPECT_EQ(parse_run_index("42"), 42U);
   EXPECT_FALSE(parse_run_index(""));
   EXPECT_FALSE(parse_run_index("4x"));
+  EXPECT_FALSE(parse_run_index("-1"));
+  EXPECT_FALSE(parse_run_index("+1"));
+  EXPECT_FALSE(parse_run_index(" 1"));
+  EXPECT_FALSE(parse_run_index("18446744073709551616"));  // 2^64
+  EXPECT_EQ(parse_run_index("18446744073709551615"), 18446744073709551615ULL);
 }
 
 }  // namespace

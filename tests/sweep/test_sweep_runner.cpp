@@ -139,6 +139,23 @@ void expect_same_outputs(const std::string& a, const std::string& b) {
 
 std::size_t data_rows(const std::string& path) { return records(read_file(path)).size() - 1; }
 
+/// What a resumed small_sweep() reported and printed on stderr.
+struct Resumed {
+  RunnerReport report;
+  std::string err;
+};
+
+/// Resumes small_sweep() in `dir` with `runs` as its runs.csv and the progress.csv and
+/// manifest.json of `ref`, a finished run of it (a damaged or edited journal).
+Resumed resume_with_runs(const std::string& ref, const std::string& dir, const std::string& runs) {
+  write_file(dir + "/runs.csv", runs);
+  fs::copy_file(ref + "/progress.csv", dir + "/progress.csv");
+  fs::copy_file(ref + "/manifest.json", dir + "/manifest.json");
+  ::testing::internal::CaptureStderr();
+  const RunnerReport r = run(small_sweep(), dir, 2);
+  return {r, ::testing::internal::GetCapturedStderr()};
+}
+
 /// Starts this test binary again running only SweepRunnerChild (the sweep named by the
 /// environment): a fresh process, as fork() would not be safe after oneTBB started threads.
 pid_t spawn_child(const std::string& sweep_file, const std::string& out) {
@@ -279,20 +296,13 @@ TEST(SweepRunner, DamagedRowsInTheMiddleAreReportedAndRedoneInRunOrder) {
     if (i == 6) {
       auto f = split_csv_line(rec);
       f.resize(f.size() - 3);
-      rec.clear();
-      for (const auto& cell : f) rec += (rec.empty() ? "" : ",") + csv_field(cell);
+      rec = csv_record(f);
     }
     if (i == 31) rec.insert(rec.find(',') + 1, "\r");
     runs += rec + "\n";
     if (i == 21) runs += "#### not a row ####\n";
   }
-  write_file(dir + "/runs.csv", runs);
-  fs::copy_file(ref + "/progress.csv", dir + "/progress.csv");
-  fs::copy_file(ref + "/manifest.json", dir + "/manifest.json");
-
-  ::testing::internal::CaptureStderr();
-  const RunnerReport r = run(small_sweep(), dir, 2);
-  const std::string err = ::testing::internal::GetCapturedStderr();
+  const auto [r, err] = resume_with_runs(ref, dir, runs);
   EXPECT_EQ(r.skipped, 46U);
   EXPECT_EQ(r.ran, 2U);
   expect_same_outputs(ref, dir);  // in run order, each run once
@@ -525,12 +535,7 @@ TEST(SweepRunner, RepeatedAndForeignRowsAreDroppedAndReported) {
   auto f = split_csv_line(recs[12]);
   f[0] = "4800";  // beyond the sweep
   runs += csv_record(f) + "\n";
-  write_file(dir + "/runs.csv", runs);
-  fs::copy_file(ref + "/progress.csv", dir + "/progress.csv");
-  fs::copy_file(ref + "/manifest.json", dir + "/manifest.json");
-  ::testing::internal::CaptureStderr();
-  const RunnerReport r = run(small_sweep(), dir, 2);
-  const std::string err = ::testing::internal::GetCapturedStderr();
+  const auto [r, err] = resume_with_runs(ref, dir, runs);
   EXPECT_EQ(r.skipped, 48U);
   EXPECT_EQ(r.ran, 0U);
   expect_same_outputs(ref, dir);
