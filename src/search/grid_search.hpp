@@ -355,10 +355,12 @@ class BestFirstSearchT {
     }
   }
   /// The relaxation's update: `node` (of `state`) reached in run `run` at the cheaper `g` from
-  /// `parent`, and opened. A function of its own, not lines of the relaxation: GCC 12 then
-  /// inlines the whole opening (heuristic, entry, sift-up) at every successor call, in every
-  /// translation unit, which it did not for the same lines in the lambda (measured 4-8% per A*
-  /// query); forcing each step inline measured slower than either.
+  /// `parent`, and opened. A function of its own, not lines of the relaxation: with it GCC 12
+  /// inlines the whole opening (heuristic, entry, sift-up) at the successor calls of
+  /// grid_planner.cpp, which it did not for the same lines in the lambda (`astar` 4-7% faster a
+  /// query than before; that variant kept its old time). Forcing every step of the opening inline
+  /// measured slower than this (0.98-1.00x the old time). GCC may still choose otherwise in
+  /// another translation unit (bench_planners.cpp keeps one out-of-line copy of open_item()).
   template <typename Env>
   void improve(const Env& env, Node& node, int state, Cost g, int parent, std::uint16_t run, bool reached) {
     node = make_node(g, parent, run);
