@@ -138,7 +138,7 @@ bool Simulation::step() {
   return step_with([this](const Observation& obs, int /*call*/) { return strategy_->decide(obs); });
 }
 
-const Candidates* Simulation::choice(std::span<const double> w_lo, std::span<const double> w_hi) {
+const Candidates* Simulation::choice(const WeightBounds& bounds) {
   pending_.reset();
   auto* linear = dynamic_cast<LinearScoredStrategy*>(strategy_.get());
   if (linear == nullptr || recorder_.ended() || recorder_.metrics().steps >= setup_->max_steps)
@@ -151,7 +151,7 @@ const Candidates* Simulation::choice(std::span<const double> w_lo, std::span<con
       [&](const Observation& obs, int call) {
         chose = false;
         if (std::optional<Decision> fixed = linear->fixed_decision(obs)) return std::move(*fixed);
-        Candidates c = linear->candidates_within(obs, w_lo, w_hi);
+        Candidates c = linear->candidates_within(obs, bounds);
         chose = !c.cells.empty();
         if (!chose) return linear->on_no_candidate(obs);
         found = PendingChoice{std::move(c), call};

@@ -84,14 +84,14 @@ class Simulation {
   ///
   /// choice(): when the run's strategy is linear-scored (LinearScoredStrategy) and the next step()
   /// chooses by its weights, the candidates of that choice, as
-  /// LinearScoredStrategy::candidates_within(w_lo, w_hi) gives them for the weight vectors the
+  /// LinearScoredStrategy::candidates_within(bounds) gives them for the weight vectors the
   /// caller asks about (segment restriction included; possibly just one). Null when the next
   /// step's decision does not depend on the weights: the run ended or is at its step cap, the stop
   /// cell, a decision the strategy makes without its weights (fixed_decision()), no candidate, another
   /// kind of strategy. Changes nothing in the run's result (its
   /// searches warm the distance caches). The candidates stay valid until the next call of a
   /// non-const member.
-  [[nodiscard]] const Candidates* choice(std::span<const double> w_lo, std::span<const double> w_hi);
+  [[nodiscard]] const Candidates* choice(const WeightBounds& bounds);
   /// step(), with the strategy's choice replaced by candidate `candidate` of the candidates the last
   /// choice() returned (on this simulation or on the one it was copied from since): the step a run
   /// whose weights make argmin_linear() choose that candidate takes. Throws std::logic_error

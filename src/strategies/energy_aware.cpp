@@ -106,11 +106,10 @@ Candidates EnergyAware::candidates(const Observation& obs) {
   return candidates_among(with_clusters(obs, cells));
 }
 
-Candidates EnergyAware::candidates_within(const Observation& obs, std::span<const double> w_lo,
-                                          std::span<const double> w_hi) {
-  if (params_.goal != "cell") return candidates_within_among(obs, w_lo, w_hi);
+Candidates EnergyAware::candidates_within(const Observation& obs, const WeightBounds& bounds) {
+  if (params_.goal != "cell") return candidates_within_among(obs, bounds);
   const std::vector<FrontierCluster> cells = cell_clusters(obs);
-  return candidates_within_among(with_clusters(obs, cells), w_lo, w_hi);
+  return candidates_within_among(with_clusters(obs, cells), bounds);
 }
 
 EnergyAware::EnergyAware(std::string name, const EnergyAwareParams& params)
@@ -356,30 +355,47 @@ class WatchedChoice final : public RepresentativeWatch {
 
 namespace {
 
-/// The representatives that may win somewhere in a box of weight vectors, found while the search
-/// from the robot grows (SettleWatcher): WatchedChoice for a box. A reached representative that
-/// passes eq. 7 is kept with its exact length; one not yet reached closes once its lowest cost in
-/// the box (at max(radius, its lower bound), theta_rel at 0) is above the highest cost in the
-/// box of a kept one (or equal, and it comes later), since it then loses at every vector of the
-/// box. The costs at the box's corners bound the costs inside (linear_cost rounds monotonically
-/// in each weight, by the sign of its feature).
+/// The energy-aware choice for every weight vector of a region (WeightBounds), made while the
+/// search from the robot grows (SettleWatcher): WatchedChoice for a box. A reached
+/// representative that passes eq. 7 is kept with its exact length; one not yet reached closes
+/// once it loses at every vector of the region by either of two proofs, both at
+/// max(radius, its lower bound) with theta_rel at 0 (its cost only grows with either):
+/// - the box: its lowest cost in the box is above the highest cost in the box of a kept one (or
+///   equal, and it comes later). The costs at the box's corners bound the costs inside
+///   (linear_cost rounds monotonically in each weight, by the sign of its feature).
+/// - the directions: it costs more than the kept one that is cheapest at the middle of the
+///   region's directions, at every direction of them (costs_more_at_every_direction()). A
+///   narrow region of a wide box (a cone through the origin) closes much sooner so.
 class BoxWatch final : public RepresentativeWatch {
  public:
-  BoxWatch(const EnergyAware::Terms& terms, std::span<const double> w_lo, std::span<const double> w_hi,
-           std::vector<double> lower_bound_m)
+  BoxWatch(const EnergyAware::Terms& terms, const WeightBounds& bounds, std::vector<double> lower_bound_m)
       : RepresentativeWatch(terms, std::move(lower_bound_m)),
-        w_lo_(w_lo),
-        w_hi_(w_hi),
-        d_g_(terms.reps.size(), std::numeric_limits<double>::infinity()) {}
+        w_lo_(bounds.lo),
+        w_hi_(bounds.hi),
+        directions_(bounds.directions),
+        // At the zero vector every cost ties; the directions say nothing of who wins there.
+        by_direction_(!bounds.directions.zero && bounds.directions.nonzero),
+        d_g_(terms.reps.size(), std::numeric_limits<double>::infinity()) {
+    for (std::size_t k = 0; k < middle_.size(); ++k)
+      middle_[k] = 0.5 * (directions_.lo[k] + directions_.hi[k]);
+  }
 
   void settled(std::size_t i, double d_g) override {
     if (!reach(i, d_g)) return;
     d_g_[i] = d_g;
-    const double ceiling = corner_cost(terms_.features(i, d_g), true);
+    const auto row = terms_.features(i, d_g);
+    const double ceiling = corner_cost(row, true);
     if (best_ < 0 || ceiling < ceiling_ || (ceiling == ceiling_ && i < static_cast<std::size_t>(best_))) {
       best_ = static_cast<int>(i);
       ceiling_ = ceiling;
       next_ = -std::numeric_limits<double>::infinity();  // the representatives may close sooner now
+    }
+    const double middle = linear_cost(middle_, row);
+    if (by_direction_ && (middle_best_ < 0 || middle < middle_cost_)) {
+      middle_best_ = static_cast<int>(i);
+      middle_cost_ = middle;
+      middle_row_ = row;
+      next_ = -std::numeric_limits<double>::infinity();
     }
   }
 
@@ -392,16 +408,23 @@ class BoxWatch final : public RepresentativeWatch {
     for (std::size_t i = 0; i < open_.size(); ++i) {
       if (open_[i] == 0) continue;
       const double d_g = std::max(radius_m, lower_bound_m_[i]);
-      const double lowest = corner_cost(terms_.features_without_theta(i, d_g), false);
-      if (!terms_.feasible(i, d_g) || loses(i, lowest)) {
+      const auto row = terms_.features_without_theta(i, d_g);
+      const double lowest = corner_cost(row, false);
+      if (!terms_.feasible(i, d_g) || loses(i, lowest) ||
+          (middle_best_ >= 0 && costs_more_at_every_direction(row, middle_row_, directions_))) {
         open_[i] = 0;
         continue;
       }
       any_open = true;
-      // About where it closes (eq. 7, or its lowest cost passing the ceiling): an estimate, as
-      // go_on_until decides on the exact bounds when asked there.
+      // About where it closes (eq. 7, or its lowest cost passing the ceiling, or its cost
+      // passing the middle's best at every direction): an estimate, as go_on_until decides on
+      // the exact bounds when asked there.
       double r = terms_.d_l - terms_.d_gb[i];
       if (best_ >= 0 && w1 > 0.0) r = std::min(r, d_g + (ceiling_ - lowest) / w1 * terms_.unit_m);
+      if (middle_best_ >= 0 && directions_.lo[0] > 0.0) {
+        // The difference at the middle grows by at least lo[0] per unit of d_g.
+        r = std::min(r, d_g + (middle_cost_ - linear_cost(middle_, row)) / directions_.lo[0] * terms_.unit_m);
+      }
       next = std::min(next, r);
     }
     if (!any_open) return -std::numeric_limits<double>::infinity();
@@ -426,25 +449,33 @@ class BoxWatch final : public RepresentativeWatch {
 
   std::span<const double> w_lo_;
   std::span<const double> w_hi_;
+  const WeightDirections& directions_;
+  bool by_direction_;
+  std::array<double, EnergyAware::kFeatures> middle_{};
   std::vector<double> d_g_;
   int best_ = -1;
   double ceiling_ = 0.0;
-  /// The radius below which no representative closes (until the ceiling drops).
+  /// The kept representative cheapest at the middle direction, its cost there and its features.
+  int middle_best_ = -1;
+  double middle_cost_ = 0.0;
+  std::array<double, EnergyAware::kFeatures> middle_row_{};
+  /// The radius below which no representative closes (until a best changes).
   double next_ = -std::numeric_limits<double>::infinity();
 };
 
 }  // namespace
 
-Candidates EnergyAware::candidates_within_among(const Observation& obs, std::span<const double> w_lo,
-                                                std::span<const double> w_hi) {
+Candidates EnergyAware::candidates_within_among(const Observation& obs, const WeightBounds& bounds) {
   if (params_.distance != "path" || obs.clusters.empty()) return candidates_among(obs);
+  const std::span<const double> w_lo = bounds.lo;
+  const std::span<const double> w_hi = bounds.hi;
   if (w_lo.size() != kFeatures || w_hi.size() != kFeatures) {
     throw std::invalid_argument(name_ + ": candidates_within needs " + std::to_string(kFeatures) +
                                 " weights");
   }
   // The dock terms count if any vector of the box weighs them.
   const Terms t = terms(obs, w_hi[1] != 0.0 || w_hi[2] != 0.0);
-  BoxWatch watch(t, w_lo, w_hi, obs.distances.lower_bounds_from_robot(t.reps));
+  BoxWatch watch(t, bounds, obs.distances.lower_bounds_from_robot(t.reps));
   obs.distances.watch_from_robot(t.reps, t.d_l, watch);
   Candidates out;
   out.feature_count = kFeatures;

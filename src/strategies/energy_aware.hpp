@@ -87,8 +87,7 @@ class EnergyAware final : public LinearScoredStrategy {
   /// With path distances, the search from the robot stops once no representative it has not
   /// reached can win anywhere in the weight box (its lowest cost there, at its distance bound,
   /// above the highest cost there of one it reached), as decide() does for one weight vector.
-  [[nodiscard]] Candidates candidates_within(const Observation& obs, std::span<const double> w_lo,
-                                             std::span<const double> w_hi) override;
+  [[nodiscard]] Candidates candidates_within(const Observation& obs, const WeightBounds& bounds) override;
   [[nodiscard]] std::span<const double> weights() const override { return weights_; }
   [[nodiscard]] std::vector<std::string> weight_names() const override { return {"w1", "w2", "w3", "w4"}; }
   void set_weights(std::span<const double> weights) override;
@@ -114,8 +113,7 @@ class EnergyAware final : public LinearScoredStrategy {
   /// decide(), candidates() and candidates_within() over obs.clusters as given.
   [[nodiscard]] Decision decide_among(const Observation& obs);
   [[nodiscard]] Candidates candidates_among(const Observation& obs);
-  [[nodiscard]] Candidates candidates_within_among(const Observation& obs, std::span<const double> w_lo,
-                                                   std::span<const double> w_hi);
+  [[nodiscard]] Candidates candidates_within_among(const Observation& obs, const WeightBounds& bounds);
 
   std::string name_;
   EnergyAwareParams params_;

@@ -23,6 +23,41 @@ std::optional<double> DistanceOracle::probe_from_robot(int cell, double bound_m,
   return from_robot(one, bound_m).front();
 }
 
+bool costs_more_at_every_direction(std::span<const double> f_j, std::span<const double> f_i,
+                                   const WeightDirections& directions) {
+  const std::size_t n = f_j.size();
+  if (f_i.size() != n || n > WeightDirections::kMaxWeights) return false;
+  // a_k <= (f_j - f_i) - 4.5e-16 (|f_j| + |f_i|) for each feature k, so a . u > 0 at every
+  // direction u of the box proves the claim.
+  constexpr double kMargin = 1e-12;
+  std::array<double, WeightDirections::kMaxWeights> a{};
+  for (std::size_t k = 0; k < n; ++k) {
+    if (!std::isfinite(f_j[k]) || !std::isfinite(f_i[k])) return false;
+    a[k] = (f_j[k] - f_i[k]) - kMargin * (std::abs(f_j[k]) + std::abs(f_i[k]));
+  }
+  // Directions sum to 1, so for any lambda, a . u = lambda + sum_k (a_k - lambda) u_k, which
+  // is at least lambda + sum_k (a_k - lambda) * (lo_k or hi_k, whichever is lower): a lower
+  // bound of the minimum over the box's directions, which one of lambda = 0, a_1, ..., a_n
+  // attains (the breakpoint where the box's mass runs out). Each bound must be positive beyond
+  // its own rounding (at most a few 1e-16 of the sum of its terms' sizes).
+  const auto proven_with = [&](double lambda) {
+    double lowest = lambda;
+    double size = std::abs(lambda);
+    for (std::size_t k = 0; k < n; ++k) {
+      const double c = a[k] - lambda;
+      const double u = c >= 0.0 ? directions.lo[k] : directions.hi[k];
+      lowest += c * u;
+      size += std::abs(c) * u;
+    }
+    return lowest > 2e-15 * size;
+  };
+  if (proven_with(0.0)) return true;
+  for (std::size_t k = 0; k < n; ++k) {
+    if (proven_with(a[k])) return true;
+  }
+  return false;
+}
+
 namespace {
 
 /// The argmin over the candidates `index(0..n-1)` (ascending indices): argmin_linear()'s rule.

@@ -2,6 +2,7 @@
 /// @file strategy.hpp
 /// The strategy plugin edge: an Observation in, a Decision out.
 
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <memory>
@@ -158,6 +159,41 @@ struct Candidates {
 [[nodiscard]] int argmin_linear_among(const Candidates& c, std::span<const double> weights,
                                       std::span<const int> among);
 
+/// Where the directions w / (w_1 + ... + w_n) of some weight vectors (each weight >= 0) lie:
+/// per weight, in [lo, hi], for each of them but the zero vector. Costs scale with w, so a
+/// choice depends on the direction alone, up to rounding. The exact weight search describes its
+/// regions so (WeightGrid::directions()); the default describes every vector.
+struct WeightDirections {
+  static constexpr std::size_t kMaxWeights = 4;
+  std::array<double, kMaxWeights> lo{0.0, 0.0, 0.0, 0.0};
+  std::array<double, kMaxWeights> hi{1.0, 1.0, 1.0, 1.0};
+  /// The vectors include the zero vector, and one other than it.
+  bool zero = true;
+  bool nonzero = true;
+};
+
+/// True when a candidate of features `f_j` costs more than one of features `f_i` (as
+/// linear_cost() computes both, so argmin_linear() never chooses the former when the latter is
+/// among the candidates) at every weight vector other than zero whose direction lies in
+/// `directions`. Proven, without visiting vectors, when
+///   w . (f_j - f_i) > 1e-12 * sum_k w_k (|f_jk| + |f_ik|)
+/// at every direction w of the box (summing to 1; bounded below by linear-programming duality):
+/// the right side bounds the rounding of both costs (linear_cost() sums at most four products
+/// from 0.0, off by at most 4.5e-16 * sum_k w_k |f_k| each) with room for the rounding of this
+/// test. False when that is not proven, when a feature is not finite, or when there are more
+/// than four features. Lower bounds of f_j's features keep it sound (the test only tightens as
+/// f_j grows).
+[[nodiscard]] bool costs_more_at_every_direction(std::span<const double> f_j, std::span<const double> f_i,
+                                                 const WeightDirections& directions);
+
+/// The weight vectors a caller asks about at once: each weight in [lo, hi], with directions in
+/// `directions`.
+struct WeightBounds {
+  std::span<const double> lo;
+  std::span<const double> hi;
+  WeightDirections directions;
+};
+
 /// A frontier-selection strategy. Instances may keep state between decisions (a seeded
 /// generator, the previous goal); clone() copies that state exactly.
 class Strategy {
@@ -179,15 +215,14 @@ class LinearScoredStrategy : public Strategy {
   /// The candidates of this decision, after any feasibility filter.
   [[nodiscard]] virtual Candidates candidates(const Observation& obs) = 0;
   /// The candidates of this decision that argmin_linear() may choose for some weight vector w
-  /// with w_lo <= w <= w_hi (each weight), in the order of candidates(), with the same features:
-  /// candidates() with some of those left out that lose at every such w (cost above another's,
-  /// or equal and later), so that argmin_linear() over them chooses the same cell as over
-  /// candidates() at every such w. The exact weight search asks this with its region's bounds;
-  /// a strategy may compute less for it. The default is candidates().
-  [[nodiscard]] virtual Candidates candidates_within(const Observation& obs, std::span<const double> w_lo,
-                                                     std::span<const double> w_hi) {
-    (void)w_lo;
-    (void)w_hi;
+  /// of `bounds` (bounds.lo <= w <= bounds.hi, each weight, with its direction in
+  /// bounds.directions), in the order of candidates(), with the same features: candidates()
+  /// with some of those left out that lose at every such w (cost above another's, or equal and
+  /// later), so that argmin_linear() over them chooses the same cell as over candidates() at
+  /// every such w. The exact weight search asks this with its region's bounds; a strategy may
+  /// compute less for it. The default is candidates().
+  [[nodiscard]] virtual Candidates candidates_within(const Observation& obs, const WeightBounds& bounds) {
+    (void)bounds;
     return candidates(obs);
   }
   [[nodiscard]] virtual std::span<const double> weights() const = 0;

@@ -17,6 +17,15 @@ void set_bit(BlockBits& bits, int bit) {
   bits[static_cast<std::size_t>(bit) / 64] |= std::uint64_t{1} << (static_cast<unsigned>(bit) % 64);
 }
 
+/// True when a block holds few enough of its points that summing each point's costs whole
+/// beats the row-by-row partial sums over all of its points.
+bool sparse(const BlockBits& bits) {
+  constexpr int kMostPoints = 1024;  // a quarter of a block of 8^4
+  int n = 0;
+  for (const std::uint64_t word : bits) n += std::popcount(word);
+  return n <= kMostPoints;
+}
+
 }  // namespace
 
 WeightGrid::WeightGrid(std::vector<std::vector<double>> values) : values_(std::move(values)) {
@@ -84,9 +93,16 @@ int WeightGrid::bit_of(const std::array<int, kMaxWeights>& local) {
 }
 
 BlockBits WeightGrid::all_bits(const BlockSpan& span) const {
+  // A word holds the 64 points of one (local[0], local[1]): 8 per local[2], one per local[3].
+  static_assert(kBlockEdge == 8);
+  std::uint64_t word = 0;
+  const std::uint64_t row = (std::uint64_t{1} << static_cast<unsigned>(span.extent[3])) - 1;
+  for (int l2 = 0; l2 < span.extent[2]; ++l2) word |= row << static_cast<unsigned>(8 * l2);
   BlockBits bits{};
-  for_each_in_block(span,
-                    [&bits](int bit, const std::array<int, kMaxWeights>& /*at*/) { set_bit(bits, bit); });
+  const auto edge = static_cast<std::size_t>(kBlockEdge);
+  for (std::size_t l0 = 0; l0 < static_cast<std::size_t>(span.extent[0]); ++l0) {
+    for (std::size_t l1 = 0; l1 < static_cast<std::size_t>(span.extent[1]); ++l1) bits[l0 * edge + l1] = word;
+  }
   return bits;
 }
 
@@ -127,13 +143,13 @@ std::array<int, WeightGrid::kMaxWeights> WeightGrid::lexmin(const WeightRegion& 
   };
   for (const WeightRegion::Box& box : region.whole) offer(span_of(box).first);
   for (const WeightRegion::Part& part : region.parts) {
-    bool done = false;
-    for_each_in_block(span_of(part.block), [&](int bit, const std::array<int, kMaxWeights>& at) {
-      if (!done && has_point(part.bits, bit)) {
-        offer(at);
-        done = true;
-      }
-    });
+    const auto word =
+        std::find_if(part.bits.begin(), part.bits.end(), [](std::uint64_t w) { return w != 0; });
+    if (word == part.bits.end()) continue;
+    BlockBits first{};
+    first[static_cast<std::size_t>(word - part.bits.begin())] = *word & (~*word + 1);  // its lowest bit
+    for_each_member(span_of(part.block), first,
+                    [&](int /*bit*/, const std::array<int, kMaxWeights>& at) { offer(at); });
   }
   return best;
 }
@@ -156,9 +172,8 @@ std::array<std::array<int, 2>, WeightGrid::kMaxWeights> WeightGrid::bounds(const
     offer(span.first, hi);
   }
   for (const WeightRegion::Part& part : region.parts) {
-    for_each_in_block(span_of(part.block), [&](int bit, const std::array<int, kMaxWeights>& at) {
-      if (has_point(part.bits, bit)) offer(at, at);
-    });
+    for_each_member(span_of(part.block), part.bits,
+                    [&](int /*bit*/, const std::array<int, kMaxWeights>& at) { offer(at, at); });
   }
   return box;
 }
@@ -310,6 +325,87 @@ WeightRegion WeightGrid::without(const WeightRegion& region, const PointsByBlock
   return out;
 }
 
+WeightDirections WeightGrid::directions(const WeightRegion& region) const {
+  const std::size_t n = values_.size();
+  WeightDirections d;
+  d.lo.fill(1.0);
+  d.hi.fill(0.0);
+  d.zero = false;
+  d.nonzero = false;
+  // The directions of a box of values lo..hi per weight: w_k / (w_k + rest) grows with w_k and
+  // falls with each other weight, so its extremes are at corners.
+  const auto offer_box = [&](const std::array<double, kMaxWeights>& lo,
+                             const std::array<double, kMaxWeights>& hi) {
+    const bool zero = std::all_of(lo.begin(), lo.begin() + static_cast<std::ptrdiff_t>(n),
+                                  [](double v) { return v == 0.0; });
+    d.zero = d.zero || zero;
+    if (zero && lo == hi) return;  // the zero vector alone
+    d.nonzero = true;
+    for (std::size_t k = 0; k < n; ++k) {
+      // The other weights' sums, added directly (a difference of sums could cancel).
+      double others_lo = 0.0;
+      double others_hi = 0.0;
+      for (std::size_t j = 0; j < n; ++j) {
+        if (j == k) continue;
+        others_lo += lo[j];
+        others_hi += hi[j];
+      }
+      const double low = lo[k] == 0.0 ? 0.0 : lo[k] / (lo[k] + others_hi);
+      const double high = hi[k] == 0.0 ? 0.0 : hi[k] / (hi[k] + others_lo);
+      d.lo[k] = std::min(d.lo[k], low);
+      d.hi[k] = std::max(d.hi[k], high);
+    }
+  };
+  std::array<double, kMaxWeights> lo{};
+  std::array<double, kMaxWeights> hi{};
+  for (const WeightRegion::Box& box : region.whole) {
+    const BlockSpan span = span_of(box);
+    for (std::size_t k = 0; k < n; ++k) {
+      lo[k] = values_[k][static_cast<std::size_t>(span.first[k])];
+      hi[k] = values_[k][static_cast<std::size_t>(span.first[k] + span.extent[k] - 1)];
+    }
+    offer_box(lo, hi);
+  }
+  for (const WeightRegion::Part& part : region.parts) {
+    for_each_member(span_of(part.block), part.bits, [&](int /*bit*/, const std::array<int, kMaxWeights>& at) {
+      for (std::size_t k = 0; k < n; ++k) lo[k] = values_[k][static_cast<std::size_t>(at[k])];
+      offer_box(lo, lo);
+    });
+  }
+  for (std::size_t k = 0; k < n; ++k) {
+    d.lo[k] = std::max(0.0, d.lo[k] - 1e-14);
+    d.hi[k] = std::min(1.0, d.hi[k] + 1e-14);
+  }
+  return d;
+}
+
+int WeightGrid::sole_choice(const WeightDirections& directions, const Candidates& candidates) const {
+  const auto k = static_cast<std::size_t>(candidates.feature_count);
+  const std::size_t n = candidates.cells.size();
+  if (n == 0 || candidates.feature_count != weights() || candidates.features.size() != n * k) {
+    throw std::invalid_argument("weight grid sole_choice: candidates do not match the grid's weights");
+  }
+  if (!directions.nonzero) return directions.zero ? 0 : -1;
+  // The candidate that wins at the middle of the direction box is the only one that can win
+  // everywhere.
+  std::vector<double> middle(k);
+  for (std::size_t j = 0; j < k; ++j) middle[j] = 0.5 * (directions.lo[j] + directions.hi[j]);
+  const int winner = argmin_linear(candidates, middle);
+  if (directions.zero && winner != 0) return -1;
+  const std::span<const double> features(candidates.features);
+  const std::span<const double> fi = features.subspan(static_cast<std::size_t>(winner) * k, k);
+  for (std::size_t other = 0; other < n; ++other) {
+    if (other == static_cast<std::size_t>(winner)) continue;
+    const std::span<const double> fj = features.subspan(other * k, k);
+    if (std::equal(fj.begin(), fj.end(), fi.begin())) {
+      if (other < static_cast<std::size_t>(winner)) return -1;  // it would win every tie
+    } else if (!costs_more_at_every_direction(fj, fi, directions)) {
+      return -1;
+    }
+  }
+  return winner;
+}
+
 std::vector<WeightGrid::Share> WeightGrid::split(const WeightRegion& region,
                                                  const Candidates& candidates) const {
   const auto n = static_cast<int>(candidates.cells.size());
@@ -380,6 +476,20 @@ std::vector<WeightGrid::Share> WeightGrid::split(const WeightRegion& region,
   // added per point: the same operations on the same doubles, in the same order.
   std::array<std::vector<double>, kWeights + 1> partial;
   std::vector<double> among_features;
+  // The shares of a block decided point by point, to the candidates' regions.
+  const auto emit = [&](std::uint32_t block, const BlockBits* member, const WeightRegion::Box* box,
+                        const std::vector<int>& among, const BlockSpan& span) {
+    const BlockBits full = member == nullptr ? all_bits(span) : *member;
+    for (const int i : among) {
+      if (touched[static_cast<std::size_t>(i)] == 0) continue;
+      WeightRegion& to = won[static_cast<std::size_t>(i)];
+      if (shares[static_cast<std::size_t>(i)] == full && box != nullptr) {
+        to.whole.push_back(*box);
+      } else {
+        to.parts.push_back({block, shares[static_cast<std::size_t>(i)]});
+      }
+    }
+  };
   const auto decide_points = [&](std::uint32_t block, const BlockBits* member, const WeightRegion::Box* box,
                                  const std::vector<int>& among) {
     const BlockSpan span = span_of(block);
@@ -391,6 +501,30 @@ std::vector<WeightGrid::Share> WeightGrid::split(const WeightRegion& region,
       for (std::size_t j = 0; j < k; ++j) {
         among_features[j * m + c] = features[static_cast<std::size_t>(among[c]) * k + j];
       }
+    }
+    const auto decided = [&](int bit, std::size_t best) {
+      const auto winner = static_cast<std::size_t>(among[best]);
+      set_bit(shares[winner], bit);
+      touched[winner] = 1;
+    };
+    if (member != nullptr && sparse(*member)) {
+      // Few points: each cost summed whole, as linear_cost() sums it.
+      std::array<double, kWeights> w{};
+      for_each_member(span, *member, [&](int bit, const std::array<int, kMaxWeights>& at) {
+        for (std::size_t j = 0; j < k; ++j) w[j] = values_[j][static_cast<std::size_t>(at[j])];
+        std::size_t best = 0;
+        double best_cost = 0.0;
+        for (std::size_t c = 0; c < m; ++c) {
+          double cost = 0.0;
+          for (std::size_t j = 0; j < k; ++j) cost += w[j] * among_features[j * m + c];
+          if (c == 0 || cost < best_cost) {  // argmin_linear_among()'s strict '<'
+            best = c;
+            best_cost = cost;
+          }
+        }
+        decided(bit, best);
+      });
+      return emit(block, member, box, among, span);
     }
     for (auto& p : partial) p.assign(m, 0.0);
     // partial[j + 1] = partial[j] + w * F_j, for each candidate (feature j unused: unchanged).
@@ -410,6 +544,36 @@ std::vector<WeightGrid::Share> WeightGrid::split(const WeightRegion& region,
         add_term(1, span.first[1] + local[1]);
         for (local[2] = 0; local[2] < span.extent[2]; ++local[2]) {
           add_term(2, span.first[2] + local[2]);
+          if (k == kWeights) {
+            // The row of (up to) 8 points along the last weight at once: candidate by candidate,
+            // each point's running best, with the same sums and comparisons as below, in an
+            // order the compiler can vectorise.
+            std::array<double, kBlockEdge> w{};
+            const std::span<const double> last(values_[3]);
+            const std::span<const double> row = last.subspan(static_cast<std::size_t>(span.first[3]),
+                                                             static_cast<std::size_t>(span.extent[3]));
+            std::copy(row.begin(), row.end(), w.begin());
+            const double* base = partial[3].data();
+            const double* f = &among_features[3 * m];
+            std::array<double, kBlockEdge> best_cost{};
+            std::array<double, kBlockEdge> best_at{};  // candidate positions, exact as doubles
+            for (std::size_t p = 0; p < kBlockEdge; ++p) best_cost[p] = base[0] + w[p] * f[0];
+            for (std::size_t c = 1; c < m; ++c) {
+              const double at = static_cast<double>(c);
+              for (std::size_t p = 0; p < kBlockEdge; ++p) {
+                const double cost = base[c] + w[p] * f[c];
+                const bool better = cost < best_cost[p];  // strict: a tie keeps the earlier one
+                best_cost[p] = better ? cost : best_cost[p];
+                best_at[p] = better ? at : best_at[p];
+              }
+            }
+            for (local[3] = 0; local[3] < span.extent[3]; ++local[3]) {
+              const int bit = bit_of(local);
+              if (member != nullptr && !has_point(*member, bit)) continue;
+              decided(bit, static_cast<std::size_t>(best_at[static_cast<std::size_t>(local[3])]));
+            }
+            continue;
+          }
           for (local[3] = 0; local[3] < span.extent[3]; ++local[3]) {
             const int bit = bit_of(local);
             if (member != nullptr && !has_point(*member, bit)) continue;
@@ -420,23 +584,12 @@ std::vector<WeightGrid::Share> WeightGrid::split(const WeightRegion& region,
             for (std::size_t c = 1; c < m; ++c) {
               if (cost[c] < cost[best]) best = c;
             }
-            const auto winner = static_cast<std::size_t>(among[best]);
-            set_bit(shares[winner], bit);
-            touched[winner] = 1;
+            decided(bit, best);
           }
         }
       }
     }
-    const BlockBits full = member == nullptr ? all_bits(span) : *member;
-    for (const int i : among) {
-      if (touched[static_cast<std::size_t>(i)] == 0) continue;
-      WeightRegion& to = won[static_cast<std::size_t>(i)];
-      if (shares[static_cast<std::size_t>(i)] == full && box != nullptr) {
-        to.whole.push_back(*box);
-      } else {
-        to.parts.push_back({block, shares[static_cast<std::size_t>(i)]});
-      }
-    }
+    emit(block, member, box, among, span);
   };
 
   // A box of whole blocks: whole to one candidate if one wins everywhere in it, else its two

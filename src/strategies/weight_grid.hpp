@@ -16,6 +16,7 @@
 /// bit for bit. A block that no candidate wins whole is decided point by point.
 
 #include <array>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -110,6 +111,19 @@ class WeightGrid {
   /// The weight vector of the point of indices `at`.
   [[nodiscard]] std::vector<double> weights_at(const std::array<int, kMaxWeights>& at) const;
 
+  /// The directions of a region's points (WeightDirections), their bounds widened outward by
+  /// 1e-14 so that they hold the exact ratios, which rounding may miss by a few units in the
+  /// last place.
+  [[nodiscard]] WeightDirections directions(const WeightRegion& region) const;
+  /// The candidate argmin_linear() chooses at every point of a region whose directions are
+  /// `directions`, when that can be proven without visiting its points: each other candidate
+  /// costs more at every direction (costs_more_at_every_direction()) or has exactly its
+  /// features and comes later (an exact tie, which the first wins); at the zero vector every
+  /// cost is 0 and the first candidate wins. -1 otherwise (the region may still have one
+  /// choice: split() tells). `candidates` must have at least one candidate and weights()
+  /// features.
+  [[nodiscard]] int sole_choice(const WeightDirections& directions, const Candidates& candidates) const;
+
   /// One part of a split: the points where candidate `candidate` is argmin_linear's choice.
   struct Share {
     int candidate = 0;
@@ -140,6 +154,10 @@ class WeightGrid {
   /// Calls `f(bit, indices)` for every grid point of block `span`, lexicographically.
   template <typename F>
   void for_each_in_block(const BlockSpan& span, F&& f) const;
+  /// Calls `f(bit, indices)` for every point of `bits` in block `span`, in bit order (which is
+  /// lexicographic), visiting only those points.
+  template <typename F>
+  void for_each_member(const BlockSpan& span, const BlockBits& bits, F&& f) const;
   /// The bits of every grid point of a block.
   [[nodiscard]] BlockBits all_bits(const BlockSpan& span) const;
 
@@ -169,6 +187,21 @@ void WeightGrid::for_each_in_block(const BlockSpan& span, F&& f) const {
 }
 
 template <typename F>
+void WeightGrid::for_each_member(const BlockSpan& span, const BlockBits& bits, F&& f) const {
+  std::array<int, kMaxWeights> at{};
+  const auto n = static_cast<std::size_t>(weights());
+  for (std::size_t word = 0; word < bits.size(); ++word) {
+    for (std::uint64_t rest = bits[word]; rest != 0; rest &= rest - 1) {
+      const int bit = static_cast<int>(word * 64) + std::countr_zero(rest);
+      // bit_of()'s inverse: kBlockEdge = 8, three bits per weight, weight 0 most significant.
+      const std::array<int, kMaxWeights> local{bit >> 9, (bit >> 6) & 7, (bit >> 3) & 7, bit & 7};
+      for (std::size_t k = 0; k < n; ++k) at[k] = span.first[k] + local[k];
+      f(bit, at);
+    }
+  }
+}
+
+template <typename F>
 void WeightGrid::for_each_block(const WeightRegion::Box& box, F&& f) const {
   std::array<std::uint32_t, kMaxWeights> c{};
   for (c[0] = box.lo[0]; c[0] < box.hi[0]; ++c[0]) {
@@ -188,10 +221,8 @@ void WeightGrid::for_each_point(const WeightRegion& region, F&& f) const {
     });
   }
   for (const WeightRegion::Part& part : region.parts) {
-    const BlockBits& bits = part.bits;
-    for_each_in_block(span_of(part.block), [&](int bit, const std::array<int, kMaxWeights>& at) {
-      if (has_point(bits, bit)) f(at);
-    });
+    for_each_member(span_of(part.block), part.bits,
+                    [&](int /*bit*/, const std::array<int, kMaxWeights>& at) { f(at); });
   }
 }
 
@@ -206,9 +237,8 @@ void WeightGrid::for_each_projection(const WeightRegion& region, int a, int b, F
     }
   }
   for (const WeightRegion::Part& part : region.parts) {
-    for_each_in_block(span_of(part.block), [&](int bit, const std::array<int, kMaxWeights>& at) {
-      if (has_point(part.bits, bit)) f(at[ua], at[ub]);
-    });
+    for_each_member(span_of(part.block), part.bits,
+                    [&](int /*bit*/, const std::array<int, kMaxWeights>& at) { f(at[ua], at[ub]); });
   }
 }
 

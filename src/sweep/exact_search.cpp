@@ -33,6 +33,7 @@ struct Branch {
   /// split.
   std::optional<std::array<std::array<int, 2>, WeightGrid::kMaxWeights>> box;
   std::optional<std::uint64_t> vectors;
+  std::optional<WeightDirections> directions;
 };
 
 class Explorer {
@@ -75,13 +76,21 @@ class Explorer {
         w_lo[at] = grid_.values(k)[static_cast<std::size_t>(box[at][0])];
         w_hi[at] = grid_.values(k)[static_cast<std::size_t>(box[at][1])];
       }
-      const Candidates* candidates = sim.choice(w_lo, w_hi);
+      if (!b.directions) b.directions = grid_.directions(b.region);
+      const Candidates* candidates = sim.choice(WeightBounds{w_lo, w_hi, *b.directions});
       if (candidates == nullptr) {  // a decision no weight changes
         (void)sim.step();
         continue;
       }
       if (candidates->cells.size() == 1) {  // the only candidate any weight vector here may choose
         (void)sim.step_choosing(0);
+        continue;
+      }
+      // Most decisions of a narrow region do not split it, though several candidates can win
+      // in its bounding box: its directions prove that without visiting its points.
+      const int sole = grid_.sole_choice(*b.directions, *candidates);
+      if (sole >= 0) {
+        (void)sim.step_choosing(sole);
         continue;
       }
       std::vector<WeightGrid::Share> shares = grid_.split(b.region, *candidates);
@@ -91,7 +100,7 @@ class Explorer {
       }
       for (std::size_t s = 0; s + 1 < shares.size(); ++s) {
         auto fork = std::make_shared<Branch>(
-            Branch{b.sims, std::move(shares[s].region), b.choices, std::nullopt, std::nullopt});
+            Branch{b.sims, std::move(shares[s].region), b.choices, std::nullopt, std::nullopt, std::nullopt});
         fork->choices.push_back(shares[s].candidate);
         const int candidate = shares[s].candidate;
         tasks_.run([this, fork, candidate, instance] {
@@ -105,6 +114,7 @@ class Explorer {
       if (shares.size() > 1) {
         b.box.reset();
         b.vectors.reset();
+        b.directions.reset();
       }
       (void)sim.step_choosing(last.candidate);
     }
@@ -223,7 +233,8 @@ ExactSearchStats exact_search(std::span<const RunSpec> instances, const WeightGr
     WeightRegion everything = within != nullptr ? *within : grid.everything();
     if (!everything.empty()) {
       tasks.run([&] {
-        explorer.explore(Branch{std::move(roots), std::move(everything), {}, std::nullopt, std::nullopt});
+        explorer.explore(
+            Branch{std::move(roots), std::move(everything), {}, std::nullopt, std::nullopt, std::nullopt});
       });
     }
     tasks.wait();

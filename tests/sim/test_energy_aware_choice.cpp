@@ -2,6 +2,7 @@
 // full computation (candidates() and argmin_linear), on the engine's own distance oracle.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <limits>
@@ -150,6 +151,41 @@ TEST(EnergyAwareChoice, BoundedSearchChoosesExactlyTheFullArgmin) {
   EXPECT_LT(bounded_work, full_work / 2);
 }
 
+/// A decision's candidates() by `reference` (weighing every term) and candidates_within(bounds)
+/// by `ea`, each on its own oracle, with the work of each.
+struct KeptAndAll {
+  Candidates all;
+  Candidates kept;
+  long full_work = 0;
+  long within_work = 0;
+};
+KeptAndAll kept_and_all(RandomDecision& d, EnergyAware& ea, EnergyAware& reference,
+                        const WeightBounds& bounds) {
+  KeptAndAll out;
+  DistanceScratch scratch;
+  DockField full_dock = d.dock_field;
+  GridDistanceOracle full_oracle(d.known, d.robot, d.dock, d.corner_cutting, &full_dock, scratch);
+  out.all = reference.candidates(d.observe(full_oracle));
+  out.full_work = full_oracle.expansions();
+  DockField dock = d.dock_field;
+  GridDistanceOracle oracle(d.known, d.robot, d.dock, d.corner_cutting, &dock, scratch);
+  out.kept = ea.candidates_within(d.observe(oracle), bounds);
+  out.within_work = oracle.expansions();
+  return out;
+}
+
+/// argmin_linear over `kept` chooses the cell argmin_linear over `all` chooses at `w`.
+::testing::AssertionResult same_choice(const Candidates& all, const Candidates& kept,
+                                       const std::array<double, 4>& w) {
+  const int a = argmin_linear(all, w);
+  const int b = argmin_linear(kept, w);
+  if (b >= 0 && all.cells[static_cast<std::size_t>(a)] == kept.cells[static_cast<std::size_t>(b)]) {
+    return ::testing::AssertionSuccess();
+  }
+  return ::testing::AssertionFailure()
+         << "another choice at w (" << w[0] << ", " << w[1] << ", " << w[2] << ", " << w[3] << ")";
+}
+
 TEST(EnergyAwareChoice, CandidatesWithinABoxChooseAsAllCandidatesAtEveryVectorOfIt) {
   // candidates_within(lo, hi) may leave candidates out, but at every weight vector of the box
   // argmin_linear over what it keeps chooses the cell argmin_linear over candidates() chooses
@@ -177,17 +213,13 @@ TEST(EnergyAwareChoice, CandidatesWithinABoxChooseAsAllCandidatesAtEveryVectorOf
           round % 2 == 0 ? std::array<double, 4>{10, 0, 9, 20} : std::array<double, 4>{1, 0, 0, 0},
           unit_of(seed));
       EnergyAware reference = energy_aware({1, 1, 1, 1}, unit_of(seed));
-      DistanceScratch scratch;
-      DockField full_dock = d.dock_field;
-      GridDistanceOracle full_oracle(d.known, d.robot, d.dock, d.corner_cutting, &full_dock, scratch);
-      const Candidates all = reference.candidates(d.observe(full_oracle));
-      DockField dock = d.dock_field;
-      GridDistanceOracle oracle(d.known, d.robot, d.dock, d.corner_cutting, &dock, scratch);
-      const Candidates kept = ea.candidates_within(d.observe(oracle), lo, hi);
+      const KeptAndAll c = kept_and_all(d, ea, reference, WeightBounds{lo, hi, {}});
+      const Candidates& all = c.all;
+      const Candidates& kept = c.kept;
       ASSERT_EQ(all.cells.empty(), kept.cells.empty()) << "seed " << seed << " round " << round;
       left_out += static_cast<int>(all.cells.size() - kept.cells.size());
-      within_work += oracle.expansions();
-      full_work += full_oracle.expansions();
+      within_work += c.within_work;
+      full_work += c.full_work;
       if (all.cells.empty()) continue;
       // Every integer vector of a box of at most 4,096, else its corners and 400 samples.
       std::uint64_t size = 1;
@@ -203,12 +235,7 @@ TEST(EnergyAwareChoice, CandidatesWithinABoxChooseAsAllCandidatesAtEveryVectorOf
           rest /= span;
           w[k] = lo[k] + static_cast<double>(offset);
         }
-        const int a = argmin_linear(all, w);
-        const int b = argmin_linear(kept, w);
-        ASSERT_GE(b, 0);
-        ASSERT_EQ(all.cells[static_cast<std::size_t>(a)], kept.cells[static_cast<std::size_t>(b)])
-            << "seed " << seed << " round " << round << " w (" << w[0] << ", " << w[1] << ", " << w[2] << ", "
-            << w[3] << ")";
+        ASSERT_TRUE(same_choice(all, kept, w)) << "seed " << seed << " round " << round;
         ++compared;
       }
     }
@@ -216,6 +243,65 @@ TEST(EnergyAwareChoice, CandidatesWithinABoxChooseAsAllCandidatesAtEveryVectorOf
   EXPECT_GT(compared, 100000);
   EXPECT_GT(left_out, 100);  // narrow boxes do leave candidates out
   EXPECT_LT(within_work, full_work);
+}
+
+TEST(EnergyAwareChoice, CandidatesWithinNarrowDirectionsChooseAsAllCandidatesThere) {
+  // The exact weight search's regions are narrow cones through the origin: a wide box, narrow
+  // directions. candidates_within() may close representatives by the directions; at every
+  // integer vector of [0, 30]^4 whose direction is in them, argmin_linear over what it keeps
+  // chooses the cell argmin_linear over candidates() chooses.
+  int compared = 0;
+  int left_out = 0;
+  for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+    RandomDecision d(seed, seed % 3 == 0 ? 0.05 : 1.0);
+    Rng rng = make_rng(seed, "cones");
+    for (int round = 0; round < 6; ++round) {
+      // A ray (w1 > 0, so that d_g counts) and the directions within `width` of its own.
+      std::array<double, 4> ray{};
+      ray[0] = 1.0 + static_cast<double>(uniform_below(rng, 20));
+      for (std::size_t k = 1; k < 4; ++k) ray[k] = static_cast<double>(uniform_below(rng, 21));
+      const double sum = ray[0] + ray[1] + ray[2] + ray[3];
+      const double width = round < 3 ? 0.01 : 0.05;
+      WeightDirections cone;
+      cone.zero = false;
+      for (std::size_t k = 0; k < 4; ++k) {
+        cone.lo[k] = std::max(0.0, ray[k] / sum - width);
+        cone.hi[k] = std::min(1.0, ray[k] / sum + width);
+      }
+      std::vector<std::array<double, 4>> vectors;
+      std::array<double, 4> lo{30, 30, 30, 30};
+      std::array<double, 4> hi{};
+      for (int i = 0; i < 31 * 31 * 31 * 31; ++i) {
+        const std::array<double, 4> w{double(i % 31), double(i / 31 % 31), double(i / 961 % 31),
+                                      double(i / 29791)};
+        const double s = w[0] + w[1] + w[2] + w[3];
+        bool inside = s > 0.0;
+        for (std::size_t k = 0; k < 4 && inside; ++k)
+          inside = cone.lo[k] <= w[k] / s && w[k] / s <= cone.hi[k];
+        if (!inside) continue;
+        vectors.push_back(w);
+        for (std::size_t k = 0; k < 4; ++k) {
+          lo[k] = std::min(lo[k], w[k]);
+          hi[k] = std::max(hi[k], w[k]);
+        }
+      }
+      ASSERT_FALSE(vectors.empty());
+      EnergyAware ea = energy_aware({1, 0, 0, 0}, unit_of(seed));
+      EnergyAware reference = energy_aware({1, 1, 1, 1}, unit_of(seed));
+      const KeptAndAll c = kept_and_all(d, ea, reference, WeightBounds{lo, hi, cone});
+      const Candidates& all = c.all;
+      const Candidates& kept = c.kept;
+      ASSERT_EQ(all.cells.empty(), kept.cells.empty()) << "seed " << seed << " round " << round;
+      if (all.cells.empty()) continue;
+      left_out += static_cast<int>(all.cells.size() - kept.cells.size());
+      for (const std::array<double, 4>& w : vectors) {
+        ASSERT_TRUE(same_choice(all, kept, w)) << "seed " << seed << " round " << round;
+        ++compared;
+      }
+    }
+  }
+  EXPECT_GT(compared, 10000);
+  EXPECT_GT(left_out, 1000);  // the directions close representatives (about 10x the box alone)
 }
 
 TEST(EnergyAwareChoice, LowerBoundsNeverExceedTheSearchedDistances) {

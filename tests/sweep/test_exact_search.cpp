@@ -287,7 +287,7 @@ TEST(SimulationChoice, MisusesAreRefused) {
   EXPECT_THROW((void)sim.step_choosing(0), std::logic_error);
   const std::array<double, 4> lo{0, 0, 0, 0};
   const std::array<double, 4> hi{250, 250, 250, 250};
-  const Candidates* c = sim.choice(lo, hi);
+  const Candidates* c = sim.choice(WeightBounds{lo, hi, {}});
   ASSERT_NE(c, nullptr);
   EXPECT_THROW((void)sim.step_choosing(static_cast<int>(c->cells.size())), std::logic_error);
   EXPECT_THROW(sim.set_weights(std::array<double, 4>{1, 2, 3, 300}), std::invalid_argument);
@@ -295,7 +295,7 @@ TEST(SimulationChoice, MisusesAreRefused) {
   RunSpec other = spec_on("office:w=32,h=32,seed=3", 120.0);
   other.strategy = configure_strategy("random_frontier", nullptr);
   Simulation random(other);
-  EXPECT_EQ(random.choice(lo, hi), nullptr);
+  EXPECT_EQ(random.choice(WeightBounds{lo, hi, {}}), nullptr);
   EXPECT_THROW(random.set_weights(std::array<double, 4>{1, 0, 0, 0}), std::logic_error);
 }
 
