@@ -202,16 +202,6 @@ bool WeightGrid::contains(const WeightRegion& region, const std::array<int, kMax
   return has_point(part->bits, bit_of(local));
 }
 
-void WeightGrid::add_points(PointsByBlock& points, const WeightRegion& region) const {
-  for (const WeightRegion::Box& box : region.whole) {
-    for_each_block(box, [&](std::uint32_t block) { points[block] = all_bits(span_of(block)); });
-  }
-  for (const WeightRegion::Part& part : region.parts) {
-    BlockBits& bits = points[part.block];
-    for (std::size_t i = 0; i < bits.size(); ++i) bits[i] |= part.bits[i];
-  }
-}
-
 WeightRegion WeightGrid::shard(std::uint64_t index, std::uint64_t count) const {
   if (count == 0 || index >= count) {
     throw std::invalid_argument("WeightGrid::shard: shard " + std::to_string(index) + " of " +
@@ -256,73 +246,6 @@ WeightRegion WeightGrid::united(const WeightRegion& a, const WeightRegion& b) {
   std::inplace_merge(
       out.parts.begin(), out.parts.begin() + static_cast<std::ptrdiff_t>(a.parts.size()), out.parts.end(),
       [](const WeightRegion::Part& x, const WeightRegion::Part& y) { return x.block < y.block; });
-  return out;
-}
-
-WeightRegion WeightGrid::without(const WeightRegion& region, const PointsByBlock& points) const {
-  WeightRegion out;
-  const auto coordinates = [&](std::uint32_t block) {
-    std::array<std::uint32_t, kMaxWeights> c{};
-    for (std::size_t k = kWeights; k-- > 0;) {
-      c[k] = block % blocks_[k];
-      block /= blocks_[k];
-    }
-    return c;
-  };
-  const auto blocks_in = [](const WeightRegion::Box& box) {
-    std::uint64_t n = 1;
-    for (std::size_t k = 0; k < kWeights; ++k) n *= box.hi[k] - box.lo[k];
-    return n;
-  };
-  // True when some block of `box` has points in `points` (scanning the smaller of the two).
-  const auto touched = [&](const WeightRegion::Box& box) {
-    if (blocks_in(box) <= points.size()) {
-      bool any = false;
-      for_each_block(box, [&](std::uint32_t block) { any = any || points.count(block) > 0; });
-      return any;
-    }
-    for (const auto& [block, bits] : points) {
-      const auto c = coordinates(block);
-      bool inside = true;
-      for (std::size_t k = 0; k < kWeights; ++k) inside = inside && box.lo[k] <= c[k] && c[k] < box.hi[k];
-      if (inside) return true;
-    }
-    return false;
-  };
-  const auto keep_part = [&](std::uint32_t block, BlockBits bits) {
-    const auto it = points.find(block);
-    bool empty = true;
-    for (std::size_t i = 0; i < bits.size(); ++i) {
-      if (it != points.end()) bits[i] &= ~it->second[i];
-      empty = empty && bits[i] == 0;
-    }
-    if (!empty) out.parts.push_back({block, bits});
-  };
-  const auto keep_box = [&](const auto& self, const WeightRegion::Box& box) -> void {
-    if (!touched(box)) {
-      out.whole.push_back(box);
-      return;
-    }
-    std::size_t widest = 0;
-    for (std::size_t j = 1; j < kWeights; ++j) {
-      if (box.hi[j] - box.lo[j] > box.hi[widest] - box.lo[widest]) widest = j;
-    }
-    const std::uint32_t width = box.hi[widest] - box.lo[widest];
-    if (width == 1) {
-      const std::uint32_t block = block_at(box.lo);
-      return keep_part(block, all_bits(span_of(block)));
-    }
-    WeightRegion::Box low = box;
-    WeightRegion::Box high = box;
-    low.hi[widest] = box.lo[widest] + width / 2;
-    high.lo[widest] = low.hi[widest];
-    self(self, low);
-    self(self, high);
-  };
-  for (const WeightRegion::Box& box : region.whole) keep_box(keep_box, box);
-  for (const WeightRegion::Part& part : region.parts) keep_part(part.block, part.bits);
-  std::sort(out.parts.begin(), out.parts.end(),
-            [](const WeightRegion::Part& a, const WeightRegion::Part& b) { return a.block < b.block; });
   return out;
 }
 

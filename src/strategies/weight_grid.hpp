@@ -20,7 +20,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
-#include <unordered_map>
 #include <vector>
 
 #include "strategies/strategy.hpp"
@@ -54,10 +53,6 @@ struct WeightRegion {
   std::vector<Part> parts;
   [[nodiscard]] bool empty() const { return whole.empty() && parts.empty(); }
 };
-
-/// Points of a WeightGrid given per block as bits (a block absent: none of its points), e.g. the
-/// vectors of the behaviours a killed search had finished.
-using PointsByBlock = std::unordered_map<std::uint32_t, BlockBits>;
 
 /// The product of sorted value lists, one per weight (1 to 4 weights).
 class WeightGrid {
@@ -104,10 +99,6 @@ class WeightGrid {
   /// The union of regions that share no block (e.g. of different shards); their boxes, then
   /// their parts in block order.
   [[nodiscard]] static WeightRegion united(const WeightRegion& a, const WeightRegion& b);
-  /// Adds the points of `region` to `points`.
-  void add_points(PointsByBlock& points, const WeightRegion& region) const;
-  /// The points of `region` that are not in `points`.
-  [[nodiscard]] WeightRegion without(const WeightRegion& region, const PointsByBlock& points) const;
   /// The weight vector of the point of indices `at`.
   [[nodiscard]] std::vector<double> weights_at(const std::array<int, kMaxWeights>& at) const;
 

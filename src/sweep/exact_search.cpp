@@ -23,12 +23,24 @@ namespace fsweep {
 inline namespace sweep {
 namespace {
 
-/// One node of the region tree being explored: one simulation per instance and the weight
+/// A node of the region tree (the stretch of a branch between two splits), kept while some of
+/// its subtree is unfinished: what its finished leaves resolved, and how many parts of it are
+/// still going (its own stretch until it splits, then its unfinished children).
+struct Node {
+  std::uint64_t id = 0;
+  std::shared_ptr<Node> parent;
+  int pending = 1;
+  bool split = false;
+  SubtreeTally tally;
+};
+
+/// One branch of the region tree being explored: one simulation per instance and the weight
 /// vectors they stand for.
 struct Branch {
   std::vector<Simulation> sims;
   WeightRegion region;
   std::vector<int> choices;
+  std::shared_ptr<Node> node;
   /// The region's bounds (WeightGrid::bounds) and size, once computed: they change only at a
   /// split.
   std::optional<std::array<std::array<int, 2>, WeightGrid::kMaxWeights>> box;
@@ -39,9 +51,28 @@ struct Branch {
 class Explorer {
  public:
   Explorer(const WeightGrid& grid, tbb::task_group& tasks,
-           const std::function<void(Behaviour&&)>& on_behaviour, const BranchAndBound* bnb)
-      : grid_(grid), tasks_(tasks), on_behaviour_(on_behaviour), bnb_(bnb) {
+           const std::function<void(Behaviour&&)>& on_behaviour, const BranchAndBound* bnb,
+           const SubtreeJournal* journal)
+      : grid_(grid), tasks_(tasks), on_behaviour_(on_behaviour), bnb_(bnb), journal_(journal) {
     if (bnb_ != nullptr) best_.store(bnb_->incumbent);
+  }
+
+  /// True (and counted) when the journal holds node `id` finished: its subtree is not searched.
+  bool skipped(std::uint64_t id, const std::shared_ptr<Node>& parent) {
+    if (journal_ == nullptr || journal_->done == nullptr) return false;
+    const auto it = journal_->done->find(id);
+    if (it == journal_->done->end()) return false;
+    const SubtreeTally& t = it->second;
+    behaviours_.fetch_add(t.behaviours, std::memory_order_relaxed);
+    pruned_regions_.fetch_add(t.pruned_regions, std::memory_order_relaxed);
+    pruned_vectors_.fetch_add(t.pruned_vectors, std::memory_order_relaxed);
+    lower_to(smallest_pruned_bound_, t.smallest_pruned_bound);
+    if (parent != nullptr) {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      parent->tally.add(t);
+    }
+    if (journal_->on_skipped) journal_->on_skipped(t.vectors);
+    return true;
   }
 
   /// Follows `b` to the end of its runs, forking a task for every share but the last at each
@@ -94,13 +125,31 @@ class Explorer {
         continue;
       }
       std::vector<WeightGrid::Share> shares = grid_.split(b.region, *candidates);
-      if (shares.size() > 1) {
-        splits_.fetch_add(1, std::memory_order_relaxed);
-        forks_.fetch_add(shares.size() - 1, std::memory_order_relaxed);
+      if (shares.size() == 1) {
+        (void)sim.step_choosing(shares.front().candidate);
+        continue;
+      }
+      splits_.fetch_add(1, std::memory_order_relaxed);
+      forks_.fetch_add(shares.size() - 1, std::memory_order_relaxed);
+      // A child node per share, but for those the journal holds finished. The parent's count of
+      // unfinished parts grows by the children before its own stretch ends.
+      std::vector<std::shared_ptr<Node>> children(shares.size());
+      {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        b.node->split = true;
+      }
+      for (std::size_t s = 0; s < shares.size(); ++s) {
+        const std::uint64_t id = subtree_child(b.node->id, shares[s].candidate);
+        if (skipped(id, b.node)) continue;
+        children[s] = std::make_shared<Node>(Node{id, b.node, 1, false, {}});
+        const std::lock_guard<std::mutex> lock(mutex_);
+        ++b.node->pending;
       }
       for (std::size_t s = 0; s + 1 < shares.size(); ++s) {
-        auto fork = std::make_shared<Branch>(
-            Branch{b.sims, std::move(shares[s].region), b.choices, std::nullopt, std::nullopt, std::nullopt});
+        if (children[s] == nullptr) continue;
+        auto fork = std::make_shared<Branch>(Branch{b.sims, std::move(shares[s].region), b.choices,
+                                                    std::move(children[s]), std::nullopt, std::nullopt,
+                                                    std::nullopt});
         fork->choices.push_back(shares[s].candidate);
         const int candidate = shares[s].candidate;
         tasks_.run([this, fork, candidate, instance] {
@@ -108,14 +157,15 @@ class Explorer {
           explore(std::move(*fork));
         });
       }
+      release(b.node);
+      if (children.back() == nullptr) return;
       WeightGrid::Share& last = shares.back();
-      if (shares.size() > 1) b.choices.push_back(last.candidate);
+      b.choices.push_back(last.candidate);
+      b.node = std::move(children.back());
       b.region = std::move(last.region);
-      if (shares.size() > 1) {
-        b.box.reset();
-        b.vectors.reset();
-        b.directions.reset();
-      }
+      b.box.reset();
+      b.vectors.reset();
+      b.directions.reset();
       (void)sim.step_choosing(last.candidate);
     }
   }
@@ -142,7 +192,29 @@ class Explorer {
     pruned_vectors_.fetch_add(*b.vectors, std::memory_order_relaxed);
     lower_to(smallest_pruned_bound_, bound);
     if (bnb_->on_pruned) bnb_->on_pruned(*b.vectors);
+    SubtreeTally leaf;
+    leaf.vectors = *b.vectors;
+    leaf.pruned_regions = 1;
+    leaf.pruned_vectors = *b.vectors;
+    leaf.smallest_pruned_bound = bound;
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      b.node->tally.add(leaf);
+    }
+    release(b.node);
     return true;
+  }
+
+  /// Ends one unfinished part of `node` (its own stretch, or a child's subtree). A node left with
+  /// none is finished: the journal learns of it (if it split: a leaf is journaled as its
+  /// behaviour, or not at all), and its parent of its tally.
+  void release(std::shared_ptr<Node> node) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    while (node != nullptr && --node->pending == 0) {
+      if (node->split && journal_ != nullptr && journal_->on_done) journal_->on_done(node->id, node->tally);
+      if (node->parent != nullptr) node->parent->tally.add(node->tally);
+      node = node->parent;
+    }
   }
 
   /// value = min(value, v), atomically.
@@ -165,14 +237,25 @@ class Explorer {
       out.results.push_back(std::move(sim).result());
     }
     behaviours_.fetch_add(1, std::memory_order_relaxed);
+    SubtreeTally leaf;
+    leaf.vectors = out.vectors;
+    leaf.behaviours = 1;
+    const std::shared_ptr<Node> node = std::move(b.node);
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      node->tally.add(leaf);
+    }
     if (bnb_ != nullptr) {
       const double objective = bnb_->objective(out.results);
-      if (std::isnan(objective)) return;
-      lower_to(best_, objective);
-      if (objective > best_.load()) return;  // a better behaviour is known: this one is not optimal
+      if (!std::isnan(objective)) lower_to(best_, objective);
+      // No value, or a better behaviour is known: this one is not optimal.
+      if (std::isnan(objective) || objective > best_.load()) return release(node);
     }
-    const std::lock_guard<std::mutex> lock(mutex_);
-    on_behaviour_(std::move(out));
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      on_behaviour_(std::move(out));
+    }
+    release(node);
   }
 
   const WeightGrid& grid_;
@@ -183,6 +266,7 @@ class Explorer {
   std::atomic<std::uint64_t> splits_{0};
   std::atomic<std::uint64_t> forks_{0};
   const BranchAndBound* bnb_;
+  const SubtreeJournal* journal_;
   std::atomic<std::uint64_t> pruned_regions_{0};
   std::atomic<std::uint64_t> pruned_vectors_{0};
   std::atomic<double> smallest_pruned_bound_{std::numeric_limits<double>::infinity()};
@@ -191,9 +275,42 @@ class Explorer {
 
 }  // namespace
 
+void SubtreeTally::add(const SubtreeTally& other) {
+  vectors += other.vectors;
+  behaviours += other.behaviours;
+  pruned_regions += other.pruned_regions;
+  pruned_vectors += other.pruned_vectors;
+  smallest_pruned_bound = std::min(smallest_pruned_bound, other.smallest_pruned_bound);
+}
+
+std::uint64_t subtree_root(const WeightRegion& root) {
+  std::uint64_t h = mix64(0x5EA5C4);
+  const auto take = [&](std::uint64_t v) { h = mix64(h ^ v); };
+  for (const WeightRegion::Box& box : root.whole) {
+    for (std::size_t k = 0; k < box.lo.size(); ++k) {
+      take(box.lo[k]);
+      take(box.hi[k]);
+    }
+  }
+  for (const WeightRegion::Part& part : root.parts) {
+    take(part.block);
+    for (const std::uint64_t word : part.bits) take(word);
+  }
+  return h;
+}
+
+std::uint64_t subtree_child(std::uint64_t parent, int choice) {
+  return mix64(parent ^ mix64(static_cast<std::uint64_t>(choice) + 1));
+}
+
+std::uint64_t subtree_of(std::uint64_t root, std::span<const int> choices) {
+  for (const int c : choices) root = subtree_child(root, c);
+  return root;
+}
+
 ExactSearchStats exact_search(std::span<const RunSpec> instances, const WeightGrid& grid, int threads,
                               const std::function<void(Behaviour&&)>& on_behaviour, const BranchAndBound* bnb,
-                              const WeightRegion* within) {
+                              const WeightRegion* within, const SubtreeJournal* journal) {
   if (threads < 1) throw std::invalid_argument("exact_search: threads must be >= 1");
   if (instances.empty()) throw std::invalid_argument("exact_search: no instance to search");
   std::vector<Simulation> roots;
@@ -228,13 +345,19 @@ ExactSearchStats exact_search(std::span<const RunSpec> instances, const WeightGr
   tbb::task_arena arena(threads);
   arena.execute([&] {
     tbb::task_group tasks;
-    Explorer explorer(grid, tasks, on_behaviour, bnb);
-    // A shard or a resumed search: the root's region is a part of the grid, and so every share.
+    Explorer explorer(grid, tasks, on_behaviour, bnb, journal);
+    // A shard: the root's region is a part of the grid, and so every share.
     WeightRegion everything = within != nullptr ? *within : grid.everything();
-    if (!everything.empty()) {
+    const std::uint64_t root = subtree_root(everything);
+    if (!everything.empty() && !explorer.skipped(root, nullptr)) {
       tasks.run([&] {
-        explorer.explore(
-            Branch{std::move(roots), std::move(everything), {}, std::nullopt, std::nullopt, std::nullopt});
+        explorer.explore(Branch{std::move(roots),
+                                std::move(everything),
+                                {},
+                                std::make_shared<Node>(Node{root, nullptr, 1, false, {}}),
+                                std::nullopt,
+                                std::nullopt,
+                                std::nullopt});
       });
     }
     tasks.wait();

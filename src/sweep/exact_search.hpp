@@ -20,6 +20,7 @@
 #include <functional>
 #include <limits>
 #include <span>
+#include <unordered_map>
 #include <vector>
 
 #include "sim/run_result.hpp"
@@ -85,6 +86,41 @@ struct ExactSearchStats {
   double best = std::numeric_limits<double>::infinity();
 };
 
+/// What a finished subtree of the region tree resolved: the counts of its leaves.
+struct SubtreeTally {
+  /// Weight vectors in it.
+  std::uint64_t vectors = 0;
+  /// Finished behaviours (every one; in mode best also those a better one beat).
+  std::uint64_t behaviours = 0;
+  /// Branch and bound: pruned regions, their vectors and their smallest lower bound.
+  std::uint64_t pruned_regions = 0;
+  std::uint64_t pruned_vectors = 0;
+  double smallest_pruned_bound = std::numeric_limits<double>::infinity();
+  void add(const SubtreeTally& other);
+};
+
+/// The id of the region tree's root for a search of `root` (a hash of its boxes and parts), and
+/// of the node reached from node `parent` by choosing `choice` at a decision that split it (a
+/// 64-bit hash of the path from the root, so a node has the same id in every search of the same
+/// root: the tree is a function of the root and the instances).
+[[nodiscard]] std::uint64_t subtree_root(const WeightRegion& root);
+[[nodiscard]] std::uint64_t subtree_child(std::uint64_t parent, int choice);
+/// The id of the node reached from the root `root` by the choices `choices` (Behaviour::choices).
+[[nodiscard]] std::uint64_t subtree_of(std::uint64_t root, std::span<const int> choices);
+
+/// Resuming a killed search without visiting what it finished: the subtrees it finished are
+/// skipped, whole, the moment a split creates them.
+struct SubtreeJournal {
+  /// The finished subtrees of a killed search of the same root, by id: leaves (its behaviours)
+  /// and nodes whose every leaf had finished or been pruned.
+  const std::unordered_map<std::uint64_t, SubtreeTally>* done = nullptr;
+  /// Called when a node that split has finished, with its id and what its leaves resolved (as
+  /// on_behaviour, from any thread but never at once with another call of either); may be empty.
+  std::function<void(std::uint64_t, const SubtreeTally&)> on_done;
+  /// Called with the vector count of each skipped subtree (progress); may be empty.
+  std::function<void(std::uint64_t)> on_skipped;
+};
+
 /// Searches `grid` for the class `instances` (at least one), whose strategies must be
 /// linear-scored with grid.weights() features (their own weights do not matter). Calls `on_behaviour` once
 /// per behaviour, from any thread but never two at once, in an order that depends on the threads (sort by
@@ -98,13 +134,17 @@ struct ExactSearchStats {
 /// far (the caller keeps those equal to the final ExactSearchStats::best; ties are all kept),
 /// and a region is pruned, without finishing its runs, when bnb->lower_bound exceeds that best.
 ///
-/// With `within`, only its vectors are searched (a shard, WeightGrid::shard(); or, resuming a
-/// killed search, the vectors not in the regions of the behaviours it finished): a behaviour
+/// With `within`, only its vectors are searched (a shard, WeightGrid::shard()): a behaviour
 /// found then has the part of the whole search's behaviour that lies in `within` (the same
 /// runs and trace).
+///
+/// With `journal`, the subtrees in journal->done are skipped: their behaviours are not
+/// reported again, and their tallies count in the returned stats (behaviours, pruned regions
+/// and vectors, smallest pruned bound; not splits and forks, which count this search's work).
 ExactSearchStats exact_search(std::span<const RunSpec> instances, const WeightGrid& grid, int threads,
                               const std::function<void(Behaviour&&)>& on_behaviour,
-                              const BranchAndBound* bnb = nullptr, const WeightRegion* within = nullptr);
+                              const BranchAndBound* bnb = nullptr, const WeightRegion* within = nullptr,
+                              const SubtreeJournal* journal = nullptr);
 
 }  // namespace sweep
 }  // namespace fsweep

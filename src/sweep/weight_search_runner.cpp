@@ -13,6 +13,7 @@
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -49,6 +50,13 @@ struct Found {
   /// Per instance and metric column, the value (NaN: none).
   std::vector<std::vector<double>> values;
   double objective = kNoValue;
+};
+
+/// What a search's journal holds: its behaviours, and the subtrees of its region tree whose
+/// every leaf had finished or been pruned (by id, SubtreeJournal).
+struct Journal {
+  std::vector<Found> found;
+  std::unordered_map<std::uint64_t, SubtreeTally> done;
 };
 
 /// A metric cell's number (NaN: empty, or not a number).
@@ -161,19 +169,32 @@ class SearchWriter {
     Searched out;
     std::vector<Found>& found = out.found;
     const std::string key = unit_key(specs.size());
-    found = read_journal(key, out_dir_, true);
-    PointsByBlock done;
+    Journal journaled = read_journal(key, out_dir_, true);
+    found = std::move(journaled.found);
+    // The subtrees the journal holds finished: its nodes, and its behaviours as leaves.
+    const std::uint64_t root_id = subtree_root(root);
+    std::unordered_map<std::uint64_t, SubtreeTally>& done = journaled.done;
     const double sign = direction_sign();
     double incumbent = std::numeric_limits<double>::infinity();
     for (const Found& f : found) {
-      grid_.add_points(done, f.behaviour.region);
-      on_vectors(f.behaviour.vectors);
+      SubtreeTally leaf;
+      leaf.vectors = f.behaviour.vectors;
+      leaf.behaviours = 1;
+      done.emplace(subtree_of(root_id, f.behaviour.choices), leaf);
       if (!std::isnan(f.objective)) incumbent = std::min(incumbent, sign * f.objective);
     }
     out.resumed = found.size();
-    const WeightRegion within = done.empty() ? root : grid_.without(root, done);
     std::ofstream journal(journal_path(out_dir_), std::ios::app | std::ios::binary);
     if (!journal) throw ConfigError(journal_path(out_dir_), "cannot open for appending");
+    const auto append = [&](const std::string& line) {
+      journal << line << '\n';
+      journal.flush();
+      if (!journal) throw ConfigError(journal_path(out_dir_), "write error");
+    };
+    SubtreeJournal subtrees;
+    subtrees.done = &done;
+    subtrees.on_done = [&](std::uint64_t id, const SubtreeTally& t) { append(done_line(key, id, t)); };
+    subtrees.on_skipped = on_vectors;
     const auto keep = [&](Behaviour&& b) {
       on_vectors(b.vectors);
       Found f;
@@ -183,15 +204,11 @@ class SearchWriter {
       }
       f.behaviour.results.clear();  // formatted; the runs' trajectories are not kept
       f.objective = objective_of(f.cells);
-      journal << journal_line(key, f) << '\n';
-      journal.flush();
-      if (!journal) throw ConfigError(journal_path(out_dir_), "write error");
+      append(journal_line(key, f));
       found.push_back(std::move(f));
     };
-    if (within.empty()) {
-      out.stats.best = incumbent;
-    } else if (search_.mode == WeightSearch::Mode::All) {
-      out.stats = exact_search(specs, grid_, threads, keep, nullptr, &within);
+    if (search_.mode == WeightSearch::Mode::All) {
+      out.stats = exact_search(specs, grid_, threads, keep, nullptr, &root, &subtrees);
     } else {
       BranchAndBound bnb;
       bnb.objective = [&](const std::vector<RunResult>& results) {
@@ -200,7 +217,7 @@ class SearchWriter {
       bnb.lower_bound = [&](std::span<const Simulation> sims) { return class_lower_bound(sims, objective_); };
       bnb.on_pruned = on_vectors;
       bnb.incumbent = incumbent;
-      out.stats = exact_search(specs, grid_, threads, keep, &bnb, &within);
+      out.stats = exact_search(specs, grid_, threads, keep, &bnb, &root, &subtrees);
     }
     out.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return out;
@@ -252,7 +269,7 @@ class SearchWriter {
     const std::string key = unit_key(instance_count());
     std::map<std::uint64_t, std::size_t> by_trace;
     for (const std::string& dir : dirs) {
-      for (Found& f : read_journal(key, dir, false)) {
+      for (Found& f : read_journal(key, dir, false).found) {
         const auto [at, is_new] = by_trace.emplace(f.behaviour.trace, out.found.size());
         if (is_new) {
           out.found.push_back(std::move(f));
@@ -303,12 +320,15 @@ class SearchWriter {
   }
 
   /// What a journal line must match to be this search's: its instances (every resolved
-  /// parameter), box and objective.
+  /// parameter), box, objective and mode, and the journal's format (2: with finished subtrees;
+  /// a journal of format 1 is not read, and its search is redone).
   [[nodiscard]] std::string unit_key(std::size_t instances) const {
     json key = json::array();
     for (std::size_t i = 0; i < instances; ++i) key.push_back(plan_.search_instance_json(unit_, i));
     key.push_back(search_.values);
     key.push_back(std::string(objective_.name));
+    key.push_back(search_.mode == WeightSearch::Mode::All ? "all" : "best");
+    key.push_back("journal 2");
     return sweep_hash(key);  // the FNV-1a 64 of its dump, as the manifest's hash of a sweep
   }
 
@@ -346,14 +366,28 @@ class SearchWriter {
         .dump();
   }
 
-  /// This search's behaviours in the journal of `dir`. A line that does not parse (the torn last
-  /// line of a killed search) ends the reading. `repair` (a search about to append): the file is
+  /// The journal line of a finished subtree: its id and tally (the bound signed as the search
+  /// minimises it).
+  [[nodiscard]] static std::string done_line(const std::string& key, std::uint64_t id,
+                                             const SubtreeTally& t) {
+    return json{{"key", key},
+                {"done", hex64(id)},
+                {"vectors", t.vectors},
+                {"behaviours", t.behaviours},
+                {"pruned_regions", t.pruned_regions},
+                {"pruned_vectors", t.pruned_vectors},
+                {"smallest_pruned_bound",
+                 std::isfinite(t.smallest_pruned_bound) ? json(t.smallest_pruned_bound) : json(nullptr)}}
+        .dump();
+  }
+
+  /// This search's behaviours and finished subtrees in the journal of `dir`. A line that does not parse (the
+  /// torn last line of a killed search) ends the reading. `repair` (a search about to append): the file is
   /// cut to the lines before it, so that new lines follow complete ones. Otherwise (a merge reads
   /// a finished shard, whose journal must be whole) it is a ConfigError naming the line, and the
   /// file is left as it is.
-  [[nodiscard]] std::vector<Found> read_journal(const std::string& key, const std::string& dir,
-                                                bool repair) const {
-    std::vector<Found> out;
+  [[nodiscard]] Journal read_journal(const std::string& key, const std::string& dir, bool repair) const {
+    Journal out;
     const std::string path = journal_path(dir);
     std::ifstream in(path, std::ios::binary);
     if (!in) return out;
@@ -369,7 +403,18 @@ class SearchWriter {
       try {
         if (in.eof()) throw std::runtime_error("no newline");
         j = parse_json_bounded(line, path);
-        if (j.at("key").get<std::string>() == key) {
+        if (j.at("key").get<std::string>() == key && j.contains("done")) {
+          const std::string id = j.at("done").get<std::string>();
+          if (id.size() != 16) throw std::runtime_error("bad subtree id");
+          SubtreeTally t;
+          t.vectors = j.at("vectors").get<std::uint64_t>();
+          t.behaviours = j.at("behaviours").get<std::uint64_t>();
+          t.pruned_regions = j.at("pruned_regions").get<std::uint64_t>();
+          t.pruned_vectors = j.at("pruned_vectors").get<std::uint64_t>();
+          const json& bound = j.at("smallest_pruned_bound");
+          if (!bound.is_null()) t.smallest_pruned_bound = bound.get<double>();
+          out.done.emplace(std::stoull(id, nullptr, 16), t);
+        } else if (j.at("key").get<std::string>() == key) {
           Found f;
           for (const json& b : j.at("boxes")) {
             WeightRegion::Box box;
@@ -408,7 +453,7 @@ class SearchWriter {
           f.behaviour.representative = grid_.lexmin(f.behaviour.region);
           f.behaviour.bounds = grid_.bounds(f.behaviour.region);
           f.objective = objective_of(f.cells);
-          out.push_back(std::move(f));
+          out.found.push_back(std::move(f));
         }
       } catch (const std::exception& e) {
         if (!repair) {

@@ -15,6 +15,7 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -252,6 +253,69 @@ TEST(ExactSearch, AnIncumbentPrunesEverythingWorseFromTheStart) {
   for (const double o : warm_found) EXPECT_EQ(o, cold.best);
   EXPECT_EQ(warm_found.size(), static_cast<std::size_t>(std::count(first.begin(), first.end(), cold.best)));
   EXPECT_LT(warm.behaviours, cold.behaviours);
+}
+
+TEST(ExactSearch, SkippingFinishedSubtreesResumesWithTheRestOfTheBehaviours) {
+  // A whole search journals its finished subtrees (nodes that split) and behaviours (leaves).
+  // A rerun given some of them, as a killed search leaves them, skips those subtrees whole:
+  // what it reports and what it skipped make up the whole search, each vector once.
+  const RunSpec spec = spec_on("office:w=32,h=32,seed=3", 120.0);
+  const WeightGrid grid({integers(0, 3), integers(0, 2), integers(0, 5), integers(0, 2)});
+  const std::uint64_t root = subtree_root(grid.everything());
+  std::vector<Behaviour> whole;
+  std::vector<std::pair<std::uint64_t, SubtreeTally>> nodes;  // in the order they finished
+  SubtreeJournal recording;
+  recording.on_done = [&](std::uint64_t id, const SubtreeTally& t) { nodes.emplace_back(id, t); };
+  const ExactSearchStats full = exact_search(
+      std::span<const RunSpec>(&spec, 1), grid, 2, [&](Behaviour&& b) { whole.push_back(std::move(b)); },
+      nullptr, nullptr, &recording);
+  ASSERT_GE(nodes.size(), 4U);
+  ASSERT_EQ(nodes.back().first, root) << "the root finishes last";
+  EXPECT_EQ(nodes.back().second.vectors, grid.size());
+  EXPECT_EQ(nodes.back().second.behaviours, whole.size());
+  std::map<std::uint64_t, const Behaviour*> by_trace;
+  for (const Behaviour& b : whole) by_trace[b.trace] = &b;
+
+  for (const std::size_t kept : {std::size_t{0}, nodes.size() / 3, nodes.size() - 1, nodes.size()}) {
+    // The first `kept` nodes to finish, and the behaviours of every other third.
+    std::unordered_map<std::uint64_t, SubtreeTally> done(nodes.begin(),
+                                                         nodes.begin() + static_cast<std::ptrdiff_t>(kept));
+    for (std::size_t i = 0; i < whole.size(); i += 3) {
+      SubtreeTally leaf;
+      leaf.vectors = whole[i].vectors;
+      leaf.behaviours = 1;
+      done.emplace(subtree_of(root, whole[i].choices), leaf);
+    }
+    SubtreeJournal resume;
+    resume.done = &done;
+    std::uint64_t skipped = 0;
+    resume.on_skipped = [&](std::uint64_t v) { skipped += v; };
+    std::uint64_t reported = 0;
+    std::set<std::uint64_t> seen;
+    const ExactSearchStats again = exact_search(
+        std::span<const RunSpec>(&spec, 1), grid, 2,
+        [&](Behaviour&& b) {
+          reported += b.vectors;
+          EXPECT_TRUE(seen.insert(b.trace).second) << "a behaviour reported twice";
+          const Behaviour& w = *by_trace.at(b.trace);
+          EXPECT_EQ(b.vectors, w.vectors);
+          EXPECT_EQ(b.choices, w.choices);
+          EXPECT_EQ(subtree_of(root, b.choices), subtree_of(root, w.choices));
+          EXPECT_FALSE(done.contains(subtree_of(root, b.choices))) << "a journaled behaviour found again";
+        },
+        nullptr, nullptr, &resume);
+    EXPECT_EQ(reported + skipped, grid.size()) << kept;
+    EXPECT_EQ(again.behaviours, full.behaviours) << kept << ": journaled behaviours count as finished";
+    if (kept == nodes.size()) {
+      EXPECT_EQ(skipped, grid.size());
+      EXPECT_EQ(again.forks, 0U) << "the root is journaled: nothing to search";
+    } else if (kept == 0) {
+      EXPECT_GT(reported, 0U);
+      EXPECT_EQ(again.forks, full.forks) << "leaves alone are skipped where they are forked";
+    } else {
+      EXPECT_LT(again.forks, full.forks) << kept;
+    }
+  }
 }
 
 /// The message of the std::invalid_argument that exact_search throws for `spec` over `grid`.

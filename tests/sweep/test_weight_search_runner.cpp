@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -311,6 +312,24 @@ TEST(WeightSearchRunner, ShardsMergeIntoExactlyTheFilesOfOneSearch) {
   }
 }
 
+/// The lines of a journal, each with its newline; `behaviours`: how many hold a behaviour (the
+/// others a finished subtree).
+std::vector<std::string> journal_lines(const std::string& journal, std::size_t* behaviours = nullptr) {
+  std::vector<std::string> lines;
+  for (std::size_t at = 0; at < journal.size();) {
+    const std::size_t end = journal.find('\n', at);
+    lines.push_back(journal.substr(at, end - at + 1));
+    at = end + 1;
+  }
+  if (behaviours != nullptr) {
+    *behaviours =
+        static_cast<std::size_t>(std::count_if(lines.begin(), lines.end(), [](const std::string& l) {
+          return l.find("\"done\"") == std::string::npos;
+        }));
+  }
+  return lines;
+}
+
 TEST(WeightSearchRunner, AKilledBestSearchResumesWithItsJournalAsIncumbent) {
   // Mode best journals the behaviours it finishes; a rerun after the files are lost keeps them,
   // starts from the best of them and writes the same optimal behaviours.
@@ -322,21 +341,42 @@ TEST(WeightSearchRunner, AKilledBestSearchResumesWithItsJournalAsIncumbent) {
   const std::string dir = run(sweep, "best_resume");
   const std::string behaviours = testing::read_file(dir + "/behaviours.csv");
   const std::string best = testing::read_file(dir + "/search_best.csv");
-  const std::string journal = testing::read_file(dir + "/search_journal.jsonl");
-  ASSERT_GE(std::count(journal.begin(), journal.end(), '\n'), 2);
-  // Keep the first journaled behaviour only, as a kill soon after it would.
-  testing::write_file(dir + "/search_journal.jsonl", journal.substr(0, journal.find('\n') + 1));
-  for (const char* f : {"behaviours.csv", "search_best.csv", "searches.json"})
-    std::filesystem::remove(dir + "/" + f);
-  RunnerOptions o;
-  o.threads = 2;
-  o.out_dir = dir;
-  o.progress = false;
-  (void)run_sweep(SweepPlan::from_json(sweep, "search.json"), o);
-  EXPECT_EQ(testing::read_file(dir + "/behaviours.csv"), behaviours);
-  EXPECT_EQ(testing::read_file(dir + "/search_best.csv"), best);
-  const json resumed = json::parse(testing::read_file(dir + "/searches.json"))["searches"][0];
-  EXPECT_EQ(resumed["resumed_behaviours"], 1);
+  const json record = json::parse(testing::read_file(dir + "/searches.json"))["searches"][0];
+  std::size_t journaled = 0;
+  const std::vector<std::string> lines =
+      journal_lines(testing::read_file(dir + "/search_journal.jsonl"), &journaled);
+  ASSERT_GE(journaled, 2U);
+  ASSERT_GE(lines.size() - journaled, 2U) << "no finished subtree journaled";
+  // Kills soon after the first journaled behaviour, and halfway (finished subtrees kept: the
+  // rerun skips them, with their pruned regions, and still finds every optimal behaviour).
+  const std::size_t first = static_cast<std::size_t>(
+      std::find_if(lines.begin(), lines.end(),
+                   [](const std::string& l) { return l.find("\"done\"") == std::string::npos; }) -
+      lines.begin());
+  for (const std::size_t cut : {first + 1, lines.size() / 2}) {
+    std::string kept;
+    for (std::size_t i = 0; i < cut; ++i) kept += lines[i];
+    std::size_t kept_behaviours = 0;
+    (void)journal_lines(kept, &kept_behaviours);
+    testing::write_file(dir + "/search_journal.jsonl", kept);
+    for (const char* f : {"behaviours.csv", "search_best.csv", "searches.json"})
+      std::filesystem::remove(dir + "/" + f);
+    RunnerOptions o;
+    o.threads = 2;
+    o.out_dir = dir;
+    o.progress = false;
+    (void)run_sweep(SweepPlan::from_json(sweep, "search.json"), o);
+    EXPECT_EQ(testing::read_file(dir + "/behaviours.csv"), behaviours) << cut;
+    EXPECT_EQ(testing::read_file(dir + "/search_best.csv"), best) << cut;
+    const json resumed = json::parse(testing::read_file(dir + "/searches.json"))["searches"][0];
+    EXPECT_EQ(resumed["resumed_behaviours"], kept_behaviours) << cut;
+    const json& c = resumed["certificate"];
+    EXPECT_EQ(c["optimum"], record["certificate"]["optimum"]) << cut;
+    EXPECT_GT(c["smallest_pruned_bound"].get<double>(), c["optimum"].get<double>()) << cut;
+    if (cut > first + 1) {
+      EXPECT_LT(resumed["forks"], record["forks"]) << cut;
+    }
+  }
 }
 
 TEST(WeightSearchRunner, AMapClassIsSearchedJointlyByItsMean) {
@@ -403,8 +443,8 @@ TEST(WeightSearchRunner, BestModeFindsTheBruteForceOptimumWithEveryTieAndPrunes)
 
 TEST(WeightSearchRunner, AKilledSearchResumesFromItsJournalWithTheSameFiles) {
   // A whole search of a map class, then its journal cut to its first lines and a torn one (as
-  // a kill leaves it) and its files deleted: the rerun keeps the journaled behaviours, searches
-  // only the other vectors and writes the same files.
+  // a kill leaves it) and its files deleted: the rerun keeps the journaled behaviours, skips the
+  // journaled subtrees, searches only the rest and writes the same files.
   const json box = {{"w1", {0, 1, 2}}, {"w2", {0, 2}}, {"w3", {0, 1, 2}}, {"w4", {0, 2}}};
   const json maps = json::array({{{"generator", "office"}, {"w", 32}, {"h", 32}, {"seeds", {3, 4}}}});
   json sweep = search_and_grid(maps, box, {{1, 0, 2, 0}});
@@ -414,20 +454,20 @@ TEST(WeightSearchRunner, AKilledSearchResumesFromItsJournalWithTheSameFiles) {
                                        "search_ranks.csv", "search_heatmaps.csv", "vectors.csv"};
   std::map<std::string, std::string> first;
   for (const auto& f : files) first[f] = testing::read_file(dir + "/" + f);
-  const std::string journal = testing::read_file(dir + "/search_journal.jsonl");
-  std::vector<std::string> lines;
-  for (std::size_t at = 0; at < journal.size();) {
-    const std::size_t end = journal.find('\n', at);
-    lines.push_back(journal.substr(at, end - at + 1));
-    at = end + 1;
-  }
+  std::size_t behaviours = 0;
+  const std::vector<std::string> lines =
+      journal_lines(testing::read_file(dir + "/search_journal.jsonl"), &behaviours);
   const json record = json::parse(testing::read_file(dir + "/searches.json"))["searches"][0];
-  ASSERT_EQ(lines.size(), record["behaviours"].get<std::size_t>());
-  ASSERT_GE(lines.size(), 6U);
-  const std::size_t kept = lines.size() / 2;
+  ASSERT_EQ(behaviours, record["behaviours"].get<std::size_t>());
+  ASSERT_GE(behaviours, 6U);
+  ASSERT_GE(lines.size() - behaviours, 3U) << "no finished subtree journaled";
   std::string cut;
-  for (std::size_t i = 0; i < kept; ++i) cut += lines[i];
-  cut += lines[kept].substr(0, lines[kept].size() / 2);  // torn
+  for (std::size_t i = 0; i < lines.size() / 2; ++i) cut += lines[i];
+  std::size_t kept = 0;
+  (void)journal_lines(cut, &kept);
+  ASSERT_LT(kept, lines.size() / 2) << "the kept lines hold a finished subtree";
+  const std::string& torn = lines[lines.size() / 2];
+  cut += torn.substr(0, torn.size() / 2);
   testing::write_file(dir + "/search_journal.jsonl", cut);
   for (const auto& f : files) std::filesystem::remove(dir + "/" + f);
   std::filesystem::remove(dir + "/searches.json");
@@ -437,14 +477,18 @@ TEST(WeightSearchRunner, AKilledSearchResumesFromItsJournalWithTheSameFiles) {
   o.out_dir = dir;
   o.progress = false;
   const RunnerReport again = run_sweep(SweepPlan::from_json(sweep, "search.json"), o);
-  EXPECT_EQ(again.searches.behaviours, lines.size());
+  EXPECT_EQ(again.searches.behaviours, behaviours);
   const json resumed = json::parse(testing::read_file(dir + "/searches.json"))["searches"][0];
   EXPECT_EQ(resumed["resumed_behaviours"].get<std::size_t>(), kept);
   EXPECT_LT(resumed["forks"].get<std::size_t>(), record["forks"].get<std::size_t>());
   for (const auto& f : files) EXPECT_EQ(testing::read_file(dir + "/" + f), first[f]) << f;
   // The journal holds every behaviour again, each once.
-  std::string rejournal = testing::read_file(dir + "/search_journal.jsonl");
-  EXPECT_EQ(static_cast<std::size_t>(std::count(rejournal.begin(), rejournal.end(), '\n')), lines.size());
+  std::size_t rejournaled = 0;
+  const std::vector<std::string> relines =
+      journal_lines(testing::read_file(dir + "/search_journal.jsonl"), &rejournaled);
+  EXPECT_EQ(rejournaled, behaviours);
+  std::set<std::string> distinct(relines.begin(), relines.end());
+  EXPECT_EQ(distinct.size(), relines.size()) << "a line journaled twice";
 }
 
 /// The message of the ConfigError for `sweep`.
