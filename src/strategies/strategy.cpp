@@ -23,18 +23,46 @@ std::optional<double> DistanceOracle::probe_from_robot(int cell, double bound_m,
   return from_robot(one, bound_m).front();
 }
 
-bool costs_more_at_every_direction(std::span<const double> f_j, std::span<const double> f_i,
-                                   const WeightDirections& directions) {
+namespace {
+
+/// a_k <= (f_j - f_i) - 4.5e-16 (|f_j| + |f_i|) for each feature k, so a . w > 0 at a weight
+/// vector w proves that f_j costs more there (costs_more_at_every_direction()). False when the
+/// sizes do not fit or a feature is not finite.
+bool margin_differences(std::span<const double> f_j, std::span<const double> f_i,
+                        std::array<double, WeightDirections::kMaxWeights>& a) {
   const std::size_t n = f_j.size();
   if (f_i.size() != n || n > WeightDirections::kMaxWeights) return false;
-  // a_k <= (f_j - f_i) - 4.5e-16 (|f_j| + |f_i|) for each feature k, so a . u > 0 at every
-  // direction u of the box proves the claim.
   constexpr double kMargin = 1e-12;
-  std::array<double, WeightDirections::kMaxWeights> a{};
   for (std::size_t k = 0; k < n; ++k) {
     if (!std::isfinite(f_j[k]) || !std::isfinite(f_i[k])) return false;
     a[k] = (f_j[k] - f_i[k]) - kMargin * (std::abs(f_j[k]) + std::abs(f_i[k]));
   }
+  return true;
+}
+
+}  // namespace
+
+bool costs_more_at_every_weight(std::span<const double> f_j, std::span<const double> f_i,
+                                std::span<const double> lo, std::span<const double> hi) {
+  std::array<double, WeightDirections::kMaxWeights> a{};
+  if (!margin_differences(f_j, f_i, a) || lo.size() != f_j.size() || hi.size() != f_j.size()) return false;
+  // The lowest a . w over the box, at the corner with lo_k where a_k >= 0 and hi_k elsewhere,
+  // positive beyond its own rounding.
+  double lowest = 0.0;
+  double size = 0.0;
+  for (std::size_t k = 0; k < f_j.size(); ++k) {
+    const double w = a[k] >= 0.0 ? lo[k] : hi[k];
+    lowest += a[k] * w;
+    size += std::abs(a[k]) * w;
+  }
+  return lowest > 2e-15 * size;
+}
+
+bool costs_more_at_every_direction(std::span<const double> f_j, std::span<const double> f_i,
+                                   const WeightDirections& directions) {
+  const std::size_t n = f_j.size();
+  std::array<double, WeightDirections::kMaxWeights> a{};
+  if (!margin_differences(f_j, f_i, a)) return false;
   // Directions sum to 1, so for any lambda, a . u = lambda + sum_k (a_k - lambda) u_k, which
   // is at least lambda + sum_k (a_k - lambda) * (lo_k or hi_k, whichever is lower): a lower
   // bound of the minimum over the box's directions, which one of lambda = 0, a_1, ..., a_n

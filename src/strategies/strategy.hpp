@@ -186,6 +186,13 @@ struct WeightDirections {
 [[nodiscard]] bool costs_more_at_every_direction(std::span<const double> f_j, std::span<const double> f_i,
                                                  const WeightDirections& directions);
 
+/// The same claim at every weight vector w with lo_k <= w_k <= hi_k (0 <= lo_k <= hi_k, finite):
+/// proven when w . (f_j - f_i) > 1e-12 * sum_k w_k (|f_jk| + |f_ik|) at the box's lowest
+/// corner for that linear function. Never proven for a box that holds the zero vector (there
+/// every cost is 0).
+[[nodiscard]] bool costs_more_at_every_weight(std::span<const double> f_j, std::span<const double> f_i,
+                                              std::span<const double> lo, std::span<const double> hi);
+
 /// The weight vectors a caller asks about at once: each weight in [lo, hi], with directions in
 /// `directions`.
 struct WeightBounds {

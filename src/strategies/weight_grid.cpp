@@ -75,6 +75,42 @@ WeightGrid::BlockSpan WeightGrid::span_of(const WeightRegion::Box& box) const {
   return span;
 }
 
+WeightGrid::BlockSpan WeightGrid::span_of(std::uint32_t block, const BlockBits& bits) const {
+  // bit_of(): a word holds the 64 points of one (l0, l1) = (word / 8, word % 8), bit 8 l2 + l3.
+  int lo0 = kBlockEdge;
+  int hi0 = -1;
+  int lo1 = kBlockEdge;
+  int hi1 = -1;
+  std::uint64_t any = 0;
+  for (std::size_t word = 0; word < bits.size(); ++word) {
+    if (bits[word] == 0) continue;
+    const auto l0 = static_cast<int>(word / kBlockEdge);
+    const auto l1 = static_cast<int>(word % kBlockEdge);
+    lo0 = std::min(lo0, l0);
+    hi0 = std::max(hi0, l0);
+    lo1 = std::min(lo1, l1);
+    hi1 = std::max(hi1, l1);
+    any |= bits[word];
+  }
+  if (any == 0) throw std::invalid_argument("the span of an empty part of a weight region");
+  std::uint64_t bytes = 0;    // bit l2: some point has that l2
+  std::uint64_t columns = 0;  // bit l3: some point has that l3
+  for (int l2 = 0; l2 < kBlockEdge; ++l2) {
+    const std::uint64_t row = (any >> (kBlockEdge * l2)) & 0xFFU;
+    if (row != 0) bytes |= std::uint64_t{1} << l2;
+    columns |= row;
+  }
+  const std::array<int, kMaxWeights> lo{lo0, lo1, std::countr_zero(bytes), std::countr_zero(columns)};
+  const std::array<int, kMaxWeights> hi{hi0, hi1, 63 - std::countl_zero(bytes),
+                                        63 - std::countl_zero(columns)};
+  BlockSpan span = span_of(block);
+  for (std::size_t k = 0; k < kWeights; ++k) {
+    span.first[k] += lo[k];
+    span.extent[k] = hi[k] - lo[k] + 1;
+  }
+  return span;
+}
+
 std::uint32_t WeightGrid::block_at(const std::array<std::uint32_t, kMaxWeights>& c) const {
   std::uint32_t block = 0;
   for (std::size_t k = 0; k < kWeights; ++k) block = block * blocks_[k] + c[k];
@@ -173,8 +209,10 @@ std::array<std::array<int, 2>, WeightGrid::kMaxWeights> WeightGrid::bounds(const
     offer(span.first, hi);
   }
   for (const WeightRegion::Part& part : region.parts) {
-    for_each_member(span_of(part.block), part.bits,
-                    [&](int /*bit*/, const std::array<int, kMaxWeights>& at) { offer(at, at); });
+    const BlockSpan span = span_of(part.block, part.bits);
+    std::array<int, kMaxWeights> hi{};
+    for (std::size_t k = 0; k < kWeights; ++k) hi[k] = span.first[k] + span.extent[k] - 1;
+    offer(span.first, hi);
   }
   return box;
 }
@@ -390,6 +428,33 @@ std::vector<WeightGrid::Share> WeightGrid::split(const WeightRegion& region,
     return whole ? first : -1;
   };
 
+  // Drops from `among` (ascending) every candidate that provably costs more than another of
+  // `among` at every weight vector of `span` (costs_more_at_every_weight()), or has exactly the
+  // features of an earlier one. argmin_linear() chooses none of them there: at each point the
+  // dropped candidate's cost is above, or equal to and after, another's, which holds along
+  // chains, so argmin_linear() over the rest chooses what it chooses over all. Unlike
+  // corner_test(), which compares each candidate's whole range of costs over the span, this
+  // compares the difference of two costs, which stays positive along a narrow cone.
+  const auto prune = [&](const BlockSpan& span, std::vector<int>& among) {
+    if (!bounded || among.size() < 2) return;
+    for (std::size_t j = 0; j < k; ++j) {
+      w_lo[j] = values_[j][static_cast<std::size_t>(span.first[j])];
+      w_hi[j] = values_[j][static_cast<std::size_t>(span.first[j] + span.extent[j] - 1)];
+    }
+    std::vector<int> kept;
+    for (const int j : among) {
+      const std::span<const double> fj = features.subspan(static_cast<std::size_t>(j) * k, k);
+      const bool beaten = std::any_of(among.begin(), among.end(), [&](int i) {
+        if (i == j) return false;
+        const std::span<const double> fi = features.subspan(static_cast<std::size_t>(i) * k, k);
+        if (std::equal(fj.begin(), fj.end(), fi.begin())) return i < j;
+        return costs_more_at_every_weight(fj, fi, w_lo, w_hi);
+      });
+      if (!beaten) kept.push_back(j);
+    }
+    among = std::move(kept);
+  };
+
   // Block `block` (its member points `member`, all when null, and then `box` is the block as a
   // box), point by point by argmin_linear's own rule over the candidates `among`. (Deciding its
   // cubes of 4^4 and 2^4 points by corner tests first took twice as long on the free-space
@@ -516,7 +581,12 @@ std::vector<WeightGrid::Share> WeightGrid::split(const WeightRegion& region,
   const auto decide_box = [&](const auto& self, const WeightRegion::Box& box,
                               const std::vector<int>& pool) -> void {
     std::vector<int> among;
-    const int winner = corner_test(span_of(box), pool, among);
+    const BlockSpan span = span_of(box);
+    int winner = corner_test(span, pool, among);
+    if (winner < 0) {
+      prune(span, among);
+      if (among.size() == 1) winner = among.front();
+    }
     if (winner >= 0) {
       won[static_cast<std::size_t>(winner)].whole.push_back(box);
       return;
@@ -540,7 +610,12 @@ std::vector<WeightGrid::Share> WeightGrid::split(const WeightRegion& region,
   for (const WeightRegion::Box& box : region.whole) decide_box(decide_box, box, everyone);
   std::vector<int> among;
   for (const WeightRegion::Part& part : region.parts) {
-    const int winner = corner_test(span_of(part.block), everyone, among);
+    const BlockSpan span = span_of(part.block, part.bits);
+    int winner = corner_test(span, everyone, among);
+    if (winner < 0) {
+      prune(span, among);
+      if (among.size() == 1) winner = among.front();
+    }
     if (winner >= 0) {
       won[static_cast<std::size_t>(winner)].parts.push_back(part);
     } else {

@@ -13,7 +13,9 @@
 /// all of them: with finite features, each product w_k * F_k rounds monotonically in w_k
 /// (increasing for F_k >= 0, decreasing for F_k < 0) and so does each sum, so linear_cost() over a
 /// block lies between its values at two corners of the block (chosen per feature by its sign),
-/// bit for bit. A block that no candidate wins whole is decided point by point.
+/// bit for bit. Candidates that provably cost more than another over a block or a partial
+/// block's span (costs_more_at_every_weight(), the box form of the proofs by direction) are
+/// left out of it. A block that no candidate wins whole is decided point by point.
 
 #include <array>
 #include <bit>
@@ -134,6 +136,9 @@ class WeightGrid {
   };
   [[nodiscard]] BlockSpan span_of(std::uint32_t block) const;
   [[nodiscard]] BlockSpan span_of(const WeightRegion::Box& box) const;
+  /// The smallest span holding the points `bits` (at least one) of block `block`, from the
+  /// bits' words without visiting the points.
+  [[nodiscard]] BlockSpan span_of(std::uint32_t block, const BlockBits& bits) const;
   /// The block of block coordinates `c`.
   [[nodiscard]] std::uint32_t block_at(const std::array<std::uint32_t, kMaxWeights>& c) const;
   /// Calls `f(block)` for every block of `box`.

@@ -69,6 +69,24 @@ TEST(WeightDirections, ANearTieIsNeverClaimed) {
   EXPECT_TRUE(costs_more_at_every_direction(Row{0.1, 0.2001, 0.0, 0.0}, b, diagonal));
 }
 
+/// Features of both signs for a claim test; every fourth pair (by `trial`) nearly tied: the
+/// second a rounding away, or a sum of fractions that ties in exact arithmetic on w0 = w1.
+void random_pair(Rng& rng, int trial, Row& fi, Row& fj) {
+  for (std::size_t k = 0; k < 4; ++k) {
+    fi[k] = (static_cast<double>(uniform_below(rng, 2001)) - 1000.0) / 7.0;
+    fj[k] = (static_cast<double>(uniform_below(rng, 2001)) - 1000.0) / 7.0;
+  }
+  if (trial % 4 == 1) {
+    fj = fi;
+    const std::size_t k = uniform_below(rng, 4);
+    fj[k] = std::nextafter(fj[k], 1e300);
+  } else if (trial % 4 == 3) {
+    fj = fi;
+    fj[0] = fi[0] + fi[1];
+    fj[1] = 0.0;
+  }
+}
+
 TEST(WeightDirections, AClaimHoldsAtEveryVectorOfTheDirections) {
   Rng rng = make_rng(11, "weight_directions");
   int claims = 0;
@@ -82,23 +100,9 @@ TEST(WeightDirections, AClaimHoldsAtEveryVectorOfTheDirections) {
       d.lo[k] = static_cast<double>(uniform_below(rng, 100)) / 100.0 * (1.0 - width);
       d.hi[k] = d.lo[k] + width;
     }
-    // Features of both signs; every fourth pair nearly tied (the second a rounding away, or a
-    // sum of fractions that ties in exact arithmetic).
     Row fi{};
     Row fj{};
-    for (std::size_t k = 0; k < 4; ++k) {
-      fi[k] = (static_cast<double>(uniform_below(rng, 2001)) - 1000.0) / 7.0;
-      fj[k] = (static_cast<double>(uniform_below(rng, 2001)) - 1000.0) / 7.0;
-    }
-    if (trial % 4 == 1) {
-      fj = fi;
-      const std::size_t k = uniform_below(rng, 4);
-      fj[k] = std::nextafter(fj[k], 1e300);
-    } else if (trial % 4 == 3) {
-      fj = fi;
-      fj[0] = fi[0] + fi[1];
-      fj[1] = 0.0;  // (f0 + f1) w0 against f0 w0 + f1 w1: equal on w0 = w1
-    }
+    random_pair(rng, trial, fi, fj);
     if (!costs_more_at_every_direction(fj, fi, d)) {
       ++refusals;
       continue;
@@ -110,6 +114,54 @@ TEST(WeightDirections, AClaimHoldsAtEveryVectorOfTheDirections) {
   }
   EXPECT_GT(claims, 40);  // the test checks claims, not only refusals
   EXPECT_GT(refusals, 40);
+}
+
+TEST(WeightDirections, AClaimOverABoxHoldsAtEveryVectorOfIt) {
+  // costs_more_at_every_weight() over random integer boxes, narrow and wide, some holding the
+  // zero vector: every claim is checked at every integer vector of its box.
+  Rng rng = make_rng(14, "weight_directions");
+  int claims = 0;
+  int refusals = 0;
+  for (int trial = 0; trial < 800; ++trial) {
+    Row lo{};
+    Row hi{};
+    const int width = trial % 2 == 0 ? 2 : 9;
+    for (std::size_t k = 0; k < 4; ++k) {
+      lo[k] = static_cast<double>(trial % 8 == 0 ? 0 : uniform_below(rng, 12));
+      hi[k] = lo[k] + static_cast<double>(uniform_below(rng, static_cast<std::uint64_t>(width) + 1));
+    }
+    Row fi{};
+    Row fj{};
+    random_pair(rng, trial, fi, fj);
+    if (!costs_more_at_every_weight(fj, fi, lo, hi)) {
+      ++refusals;
+      continue;
+    }
+    ++claims;
+    EXPECT_FALSE(lo == Row{}) << "a box with the zero vector, where every cost is 0, was claimed";
+    for (double a = lo[0]; a <= hi[0]; ++a) {
+      for (double b = lo[1]; b <= hi[1]; ++b) {
+        for (double c = lo[2]; c <= hi[2]; ++c) {
+          for (double e = lo[3]; e <= hi[3]; ++e) {
+            const Row w{a, b, c, e};
+            ASSERT_GT(linear_cost(w, fj), linear_cost(w, fi)) << "trial " << trial;
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(claims, 80);
+  EXPECT_GT(refusals, 80);
+  // The near-tie along the diagonal is never claimed, however narrow the box around it.
+  for (double t = 1; t <= 250; t += 7) {
+    const Row at{t, t, 0.0, 0.0};
+    EXPECT_FALSE(costs_more_at_every_weight(Row{0.1, 0.2, 0, 0}, Row{0.3, 0, 0, 0}, at, at));
+    EXPECT_FALSE(costs_more_at_every_weight(Row{0.3, 0, 0, 0}, Row{0.1, 0.2, 0, 0}, at, at));
+    EXPECT_TRUE(costs_more_at_every_weight(Row{0.1, 0.2001, 0, 0}, Row{0.3, 0, 0, 0}, at, at));
+  }
+  const double inf = std::numeric_limits<double>::infinity();
+  EXPECT_FALSE(
+      costs_more_at_every_weight(Row{inf, 1, 1, 1}, Row{0, 0, 0, 0}, Row{1, 1, 1, 1}, Row{2, 2, 2, 2}));
 }
 
 TEST(WeightDirections, NonFiniteFeaturesAreNeverClaimed) {
@@ -200,6 +252,45 @@ TEST(WeightGrid, SoleChoiceIsArgminLinearsChoiceAtEveryPoint) {
   }
   EXPECT_GT(named, 30);         // narrow regions are proven whole
   EXPECT_GT(one_share, named);  // ... but not every region with one choice
+}
+
+TEST(WeightGrid, SplitOfNarrowRegionsWithNearTiesIsArgminLinearsChoice) {
+  // Narrow regions far from the origin (shares of shares), where split() decides partial blocks
+  // by comparing candidates over their points' span, asked about candidates that nearly tie
+  // there (features a rounding apart, and sums of fractions equal in exact arithmetic on
+  // w0 = w1): every point goes to argmin_linear()'s choice.
+  Rng rng = make_rng(15, "weight_directions");
+  std::vector<double> v;
+  for (int i = 0; i < 24; ++i) v.push_back(40 + i);
+  const WeightGrid grid({v, v, v, v});
+  int points = 0;
+  for (int trial = 0; trial < 12; ++trial) {
+    for (const WeightGrid::Share& first : grid.split(grid.everything(), random_candidates(rng))) {
+      for (const WeightGrid::Share& share : grid.split(first.region, random_candidates(rng))) {
+        Candidates c = random_candidates(rng);
+        const std::size_t n = c.cells.size();
+        Row fi{};
+        Row fj{};
+        random_pair(rng, 1 + 2 * static_cast<int>(uniform_below(rng, 2)), fi, fj);
+        for (const Row& f : {fi, fj, Row{0.1, 0.2, fi[2], fi[3]}, Row{0.3, 0.0, fi[2], fi[3]}}) {
+          c.cells.push_back(Cell{static_cast<int>(c.cells.size()), 0});
+          c.features.insert(c.features.end(), f.begin(), f.end());
+        }
+        std::vector<int> owner(static_cast<std::size_t>(grid.size()), -1);
+        const auto slot = [](const Point& at) { return ((at[0] * 24 + at[1]) * 24 + at[2]) * 24 + at[3]; };
+        for (const WeightGrid::Share& s : grid.split(share.region, c)) {
+          grid.for_each_point(
+              s.region, [&](const Point& at) { owner[static_cast<std::size_t>(slot(at))] = s.candidate; });
+        }
+        grid.for_each_point(share.region, [&](const Point& at) {
+          ++points;
+          ASSERT_EQ(owner[static_cast<std::size_t>(slot(at))], argmin_linear(c, grid.weights_at(at)))
+              << "trial " << trial << ", " << n << " random candidates";
+        });
+      }
+    }
+  }
+  EXPECT_GT(points, 1000000);
 }
 
 TEST(WeightGrid, SoleChoiceAtTheZeroVectorIsTheFirstCandidate) {
