@@ -295,14 +295,12 @@ WeightDirections WeightGrid::directions(const WeightRegion& region) const {
   d.zero = false;
   d.nonzero = false;
   // The directions of a box of values lo..hi per weight: w_k / (w_k + rest) grows with w_k and
-  // falls with each other weight, so its extremes are at corners.
-  const auto offer_box = [&](const std::array<double, kMaxWeights>& lo,
-                             const std::array<double, kMaxWeights>& hi) {
-    const bool zero = std::all_of(lo.begin(), lo.begin() + static_cast<std::ptrdiff_t>(n),
-                                  [](double v) { return v == 0.0; });
-    d.zero = d.zero || zero;
-    if (zero && lo == hi) return;  // the zero vector alone
-    d.nonzero = true;
+  // falls with each other weight, so its extremes are at corners. Returns whether the box holds
+  // the zero vector.
+  std::array<double, kMaxWeights> low{};
+  std::array<double, kMaxWeights> high{};
+  const auto box_directions = [&](const std::array<double, kMaxWeights>& lo,
+                                  const std::array<double, kMaxWeights>& hi) {
     for (std::size_t k = 0; k < n; ++k) {
       // The other weights' sums, added directly (a difference of sums could cancel).
       double others_lo = 0.0;
@@ -312,26 +310,64 @@ WeightDirections WeightGrid::directions(const WeightRegion& region) const {
         others_lo += lo[j];
         others_hi += hi[j];
       }
-      const double low = lo[k] == 0.0 ? 0.0 : lo[k] / (lo[k] + others_hi);
-      const double high = hi[k] == 0.0 ? 0.0 : hi[k] / (hi[k] + others_lo);
-      d.lo[k] = std::min(d.lo[k], low);
-      d.hi[k] = std::max(d.hi[k], high);
+      low[k] = lo[k] == 0.0 ? 0.0 : lo[k] / (lo[k] + others_hi);
+      high[k] = hi[k] == 0.0 ? 0.0 : hi[k] / (hi[k] + others_lo);
     }
+    return std::all_of(lo.begin(), lo.begin() + static_cast<std::ptrdiff_t>(n),
+                       [](double v) { return v == 0.0; });
   };
   std::array<double, kMaxWeights> lo{};
   std::array<double, kMaxWeights> hi{};
-  for (const WeightRegion::Box& box : region.whole) {
-    const BlockSpan span = span_of(box);
+  const auto values_of = [&](const BlockSpan& span) {
     for (std::size_t k = 0; k < n; ++k) {
       lo[k] = values_[k][static_cast<std::size_t>(span.first[k])];
       hi[k] = values_[k][static_cast<std::size_t>(span.first[k] + span.extent[k] - 1)];
     }
-    offer_box(lo, hi);
+  };
+  for (const WeightRegion::Box& box : region.whole) {
+    values_of(span_of(box));
+    const bool zero = box_directions(lo, hi);
+    d.zero = d.zero || zero;
+    if (zero && lo == hi) continue;  // the zero vector alone
+    d.nonzero = true;
+    for (std::size_t k = 0; k < n; ++k) {
+      d.lo[k] = std::min(d.lo[k], low[k]);
+      d.hi[k] = std::max(d.hi[k], high[k]);
+    }
   }
+  // A part whose members' span has its directions (and its zero vector, if any) within those
+  // found so far cannot widen them: its points are not visited. In a large region, its boxes'
+  // directions hold most of its parts'.
+  const auto within_so_far = [&](const WeightRegion::Part& part) {
+    if (!d.nonzero) return false;
+    values_of(span_of(part.block, part.bits));
+    if (box_directions(lo, hi) && !d.zero) return false;
+    for (std::size_t k = 0; k < n; ++k) {
+      if (low[k] < d.lo[k] || high[k] > d.hi[k]) return false;
+    }
+    return true;
+  };
+  // A point's direction: one division, then products (within two units in the last place of
+  // the ratios, well inside the widening below).
   for (const WeightRegion::Part& part : region.parts) {
+    if (within_so_far(part)) continue;
     for_each_member(span_of(part.block), part.bits, [&](int /*bit*/, const std::array<int, kMaxWeights>& at) {
-      for (std::size_t k = 0; k < n; ++k) lo[k] = values_[k][static_cast<std::size_t>(at[k])];
-      offer_box(lo, lo);
+      double sum = 0.0;
+      for (std::size_t k = 0; k < n; ++k) {
+        lo[k] = values_[k][static_cast<std::size_t>(at[k])];
+        sum += lo[k];
+      }
+      if (sum == 0.0) {
+        d.zero = true;
+        return;
+      }
+      d.nonzero = true;
+      const double inverse = 1.0 / sum;
+      for (std::size_t k = 0; k < n; ++k) {
+        const double ratio = lo[k] * inverse;
+        d.lo[k] = std::min(d.lo[k], ratio);
+        d.hi[k] = std::max(d.hi[k], ratio);
+      }
     });
   }
   for (std::size_t k = 0; k < n; ++k) {
@@ -386,6 +422,8 @@ std::vector<WeightGrid::Share> WeightGrid::split(const WeightRegion& region,
   std::vector<double> hi_cost(static_cast<std::size_t>(n));
   std::vector<double> w_lo(k);
   std::vector<double> w_hi(k);
+  std::vector<double> w_mid(k);
+  std::vector<std::pair<double, int>> by_middle;
   std::vector<BlockBits> shares(static_cast<std::size_t>(n));
   std::vector<std::uint8_t> touched(static_cast<std::size_t>(n));
 
@@ -441,17 +479,30 @@ std::vector<WeightGrid::Share> WeightGrid::split(const WeightRegion& region,
       w_lo[j] = values_[j][static_cast<std::size_t>(span.first[j])];
       w_hi[j] = values_[j][static_cast<std::size_t>(span.first[j] + span.extent[j] - 1)];
     }
+    // Each candidate is compared with those cheaper at the span's middle, cheapest first: only
+    // they can cost less all over it, and the cheapest mostly does. (Which pairs are compared
+    // only decides how many candidates go; each one that goes is proven.)
+    for (std::size_t j = 0; j < k; ++j) w_mid[j] = 0.5 * (w_lo[j] + w_hi[j]);
+    by_middle.clear();
+    for (const int i : among) {
+      by_middle.emplace_back(linear_cost(w_mid, features.subspan(static_cast<std::size_t>(i) * k, k)), i);
+    }
+    std::sort(by_middle.begin(), by_middle.end());
     std::vector<int> kept;
-    for (const int j : among) {
+    for (std::size_t at = 0; at < by_middle.size(); ++at) {
+      const int j = by_middle[at].second;
       const std::span<const double> fj = features.subspan(static_cast<std::size_t>(j) * k, k);
-      const bool beaten = std::any_of(among.begin(), among.end(), [&](int i) {
-        if (i == j) return false;
-        const std::span<const double> fi = features.subspan(static_cast<std::size_t>(i) * k, k);
-        if (std::equal(fj.begin(), fj.end(), fi.begin())) return i < j;
-        return costs_more_at_every_weight(fj, fi, w_lo, w_hi);
-      });
+      const bool beaten = std::any_of(by_middle.begin(), by_middle.begin() + static_cast<std::ptrdiff_t>(at),
+                                      [&](const std::pair<double, int>& cheaper) {
+                                        const int i = cheaper.second;
+                                        const std::span<const double> fi =
+                                            features.subspan(static_cast<std::size_t>(i) * k, k);
+                                        if (std::equal(fj.begin(), fj.end(), fi.begin())) return i < j;
+                                        return costs_more_at_every_weight(fj, fi, w_lo, w_hi);
+                                      });
       if (!beaten) kept.push_back(j);
     }
+    std::sort(kept.begin(), kept.end());
     among = std::move(kept);
   };
 
