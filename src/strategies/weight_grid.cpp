@@ -413,6 +413,8 @@ std::vector<WeightGrid::Share> WeightGrid::split(const WeightRegion& region,
     throw std::invalid_argument("weight grid split: candidates do not match the grid's weights");
   }
   const std::span<const double> features(candidates.features);
+  // Candidate i's features.
+  const auto features_of = [&](int i) { return features.subspan(static_cast<std::size_t>(i) * k, k); };
   const bool bounded =
       std::all_of(features.begin(), features.end(), [](double f) { return std::isfinite(f); });
 
@@ -441,7 +443,7 @@ std::vector<WeightGrid::Share> WeightGrid::split(const WeightRegion& region,
     }
     int first = pool.front();
     for (const int i : pool) {
-      const std::span<const double> f = features.subspan(static_cast<std::size_t>(i) * k, k);
+      const std::span<const double> f = features_of(i);
       for (std::size_t j = 0; j < k; ++j) {
         const double lo = values_[j][static_cast<std::size_t>(span.first[j])];
         const double hi = values_[j][static_cast<std::size_t>(span.first[j] + span.extent[j] - 1)];
@@ -485,18 +487,17 @@ std::vector<WeightGrid::Share> WeightGrid::split(const WeightRegion& region,
     for (std::size_t j = 0; j < k; ++j) w_mid[j] = 0.5 * (w_lo[j] + w_hi[j]);
     by_middle.clear();
     for (const int i : among) {
-      by_middle.emplace_back(linear_cost(w_mid, features.subspan(static_cast<std::size_t>(i) * k, k)), i);
+      by_middle.emplace_back(linear_cost(w_mid, features_of(i)), i);
     }
     std::sort(by_middle.begin(), by_middle.end());
     std::vector<int> kept;
     for (std::size_t at = 0; at < by_middle.size(); ++at) {
       const int j = by_middle[at].second;
-      const std::span<const double> fj = features.subspan(static_cast<std::size_t>(j) * k, k);
+      const std::span<const double> fj = features_of(j);
       const bool beaten = std::any_of(by_middle.begin(), by_middle.begin() + static_cast<std::ptrdiff_t>(at),
                                       [&](const std::pair<double, int>& cheaper) {
                                         const int i = cheaper.second;
-                                        const std::span<const double> fi =
-                                            features.subspan(static_cast<std::size_t>(i) * k, k);
+                                        const std::span<const double> fi = features_of(i);
                                         if (std::equal(fj.begin(), fj.end(), fi.begin())) return i < j;
                                         return costs_more_at_every_weight(fj, fi, w_lo, w_hi);
                                       });

@@ -134,16 +134,17 @@ class Explorer {
       // A child node per share, but for those the journal holds finished. The parent's count of
       // unfinished parts grows by the children before its own stretch ends.
       std::vector<std::shared_ptr<Node>> children(shares.size());
-      {
-        const std::lock_guard<std::mutex> lock(mutex_);
-        b.node->split = true;
-      }
+      int created = 0;
       for (std::size_t s = 0; s < shares.size(); ++s) {
         const std::uint64_t id = subtree_child(b.node->id, shares[s].candidate);
         if (skipped(id, b.node)) continue;
         children[s] = std::make_shared<Node>(Node{id, b.node, 1, false, {}});
+        ++created;
+      }
+      {
         const std::lock_guard<std::mutex> lock(mutex_);
-        ++b.node->pending;
+        b.node->split = true;
+        b.node->pending += created;
       }
       for (std::size_t s = 0; s + 1 < shares.size(); ++s) {
         if (children[s] == nullptr) continue;

@@ -159,9 +159,9 @@ class SearchWriter {
         objective_(objective) {}
 
   /// Searches `root` (everything, or a shard: WeightGrid::shard()) and formats what it finds.
-  /// `on_vectors(n)`: n more vectors resolved. Every behaviour found goes to the journal at once;
-  /// those a killed search of the same key journaled are kept and their vectors left out (mode
-  /// best: the best of them is the incumbent to beat).
+  /// `on_vectors(n)`: n more vectors resolved. Every behaviour found and every finished subtree
+  /// goes to the journal at once; those a killed search of the same key journaled are kept and
+  /// skipped (mode best: the best journaled behaviour is the incumbent to beat).
   Searched search(int threads, const std::function<void(std::uint64_t)>& on_vectors,
                   const WeightRegion& root) {
     const std::vector<RunSpec> specs = instance_specs();

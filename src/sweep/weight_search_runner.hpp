@@ -9,11 +9,13 @@
 ///
 /// Resume: every finished behaviour (mode best: every one that was at most the best known
 /// when it finished) is appended to `search_journal.jsonl` as one JSON line (its search's key,
-/// trace, region, choices and metric cells per instance), flushed at once. A rerun reads the
-/// lines of its search's key (instances, box and objective), keeps those behaviours and leaves
-/// their vectors out of the search (exact_search's `within`; mode best starts with the best of
-/// them as its incumbent): the CSV files are the same as an uninterrupted search's. A line that does not
-/// parse (torn by a kill) and every line after it are dropped (stderr says so) and the file is cut there.
+/// trace, region, choices and metric cells per instance), and so is every finished subtree of
+/// the region tree (its id and SubtreeTally), each flushed at once. A rerun reads the lines of
+/// its search's key (instances, box, objective, mode and journal format), keeps those
+/// behaviours and skips the journaled subtrees and behaviours where its tree reaches them
+/// (exact_search's `journal`; mode best starts with the best of them as its incumbent): the
+/// CSV files are the same as an uninterrupted search's. A line that does not parse (torn by a
+/// kill) and every line after it are dropped (stderr says so) and the file is cut there.
 ///
 /// Files, written after the search through temp files (a killed search leaves none of them
 /// half written):
