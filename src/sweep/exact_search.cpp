@@ -52,8 +52,8 @@ class Explorer {
  public:
   Explorer(const WeightGrid& grid, tbb::task_group& tasks,
            const std::function<void(Behaviour&&)>& on_behaviour, const BranchAndBound* bnb,
-           const SubtreeJournal* journal)
-      : grid_(grid), tasks_(tasks), on_behaviour_(on_behaviour), bnb_(bnb), journal_(journal) {
+           const SubtreeJournal* journal, const std::atomic<bool>* stop)
+      : grid_(grid), tasks_(tasks), on_behaviour_(on_behaviour), bnb_(bnb), journal_(journal), stop_(stop) {
     if (bnb_ != nullptr) best_.store(bnb_->incumbent);
   }
 
@@ -77,11 +77,13 @@ class Explorer {
 
   /// Follows `b` to the end of its runs, forking a task for every share but the last at each
   /// split (the last goes on in this one). The instances advance one at a time: the first
-  /// that has not ended runs until its next choice that depends on the weights.
+  /// that has not ended runs until its next choice that depends on the weights. A stopped
+  /// search leaves `b` at its next decision or step, unfinished (its node is never released).
   void explore(Branch b) {
     std::vector<double> w_lo(static_cast<std::size_t>(grid_.weights()));
     std::vector<double> w_hi(w_lo.size());
     for (;;) {
+      if (stopping()) return;
       const auto open =
           std::find_if(b.sims.begin(), b.sims.end(), [](const Simulation& s) { return !s.ended(); });
       if (open == b.sims.end()) return finish(std::move(b));
@@ -95,7 +97,7 @@ class Explorer {
         for (Simulation& s : b.sims) {
           s.set_weights(weights);
           while (s.step()) {
-            if (pruned(b)) return;
+            if (stopping() || pruned(b)) return;
           }
         }
         return finish(std::move(b));
@@ -180,10 +182,18 @@ class Explorer {
     s.pruned_vectors = pruned_vectors_.load();
     s.smallest_pruned_bound = smallest_pruned_bound_.load();
     s.best = best_.load();
+    s.stopped = stopped_.load();
     return s;
   }
 
  private:
+  /// True (and remembered) once the caller's stop flag is set.
+  bool stopping() {
+    if (stop_ == nullptr || !stop_->load(std::memory_order_relaxed)) return false;
+    stopped_.store(true, std::memory_order_relaxed);
+    return true;
+  }
+
   /// Branch and bound: true (and counted) when `b`'s lower bound exceeds the best objective found.
   bool pruned(const Branch& b) {
     if (bnb_ == nullptr) return false;
@@ -268,6 +278,8 @@ class Explorer {
   std::atomic<std::uint64_t> forks_{0};
   const BranchAndBound* bnb_;
   const SubtreeJournal* journal_;
+  const std::atomic<bool>* stop_;
+  std::atomic<bool> stopped_{false};
   std::atomic<std::uint64_t> pruned_regions_{0};
   std::atomic<std::uint64_t> pruned_vectors_{0};
   std::atomic<double> smallest_pruned_bound_{std::numeric_limits<double>::infinity()};
@@ -311,7 +323,8 @@ std::uint64_t subtree_of(std::uint64_t root, std::span<const int> choices) {
 
 ExactSearchStats exact_search(std::span<const RunSpec> instances, const WeightGrid& grid, int threads,
                               const std::function<void(Behaviour&&)>& on_behaviour, const BranchAndBound* bnb,
-                              const WeightRegion* within, const SubtreeJournal* journal) {
+                              const WeightRegion* within, const SubtreeJournal* journal,
+                              const std::atomic<bool>* stop) {
   if (threads < 1) throw std::invalid_argument("exact_search: threads must be >= 1");
   if (instances.empty()) throw std::invalid_argument("exact_search: no instance to search");
   std::vector<Simulation> roots;
@@ -346,7 +359,7 @@ ExactSearchStats exact_search(std::span<const RunSpec> instances, const WeightGr
   tbb::task_arena arena(threads);
   arena.execute([&] {
     tbb::task_group tasks;
-    Explorer explorer(grid, tasks, on_behaviour, bnb, journal);
+    Explorer explorer(grid, tasks, on_behaviour, bnb, journal, stop);
     // A shard: the root's region is a part of the grid, and so every share.
     WeightRegion everything = within != nullptr ? *within : grid.everything();
     const std::uint64_t root = subtree_root(everything);

@@ -16,6 +16,7 @@
 /// is one run per instance, all produced by the same weight vectors.
 
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <limits>
@@ -84,6 +85,10 @@ struct ExactSearchStats {
   std::uint64_t pruned_vectors = 0;
   double smallest_pruned_bound = std::numeric_limits<double>::infinity();
   double best = std::numeric_limits<double>::infinity();
+  /// True when `stop` ended the search early: the behaviours it reported and the subtrees it
+  /// journaled are finished, the rest of the grid is not resolved (a rerun with the journal
+  /// searches it).
+  bool stopped = false;
 };
 
 /// What a finished subtree of the region tree resolved: the counts of its leaves.
@@ -141,10 +146,15 @@ struct SubtreeJournal {
 /// With `journal`, the subtrees in journal->done are skipped: their behaviours are not
 /// reported again, and their tallies count in the returned stats (behaviours, pruned regions
 /// and vectors, smallest pruned bound; not splits and forks, which count this search's work).
+///
+/// With `stop`, the search ends soon after *stop becomes true (e.g. set by a signal handler):
+/// every branch returns at its next decision or step without finishing, so its node and their
+/// ancestors are neither finished nor journaled, and ExactSearchStats::stopped says so.
 ExactSearchStats exact_search(std::span<const RunSpec> instances, const WeightGrid& grid, int threads,
                               const std::function<void(Behaviour&&)>& on_behaviour,
                               const BranchAndBound* bnb = nullptr, const WeightRegion* within = nullptr,
-                              const SubtreeJournal* journal = nullptr);
+                              const SubtreeJournal* journal = nullptr,
+                              const std::atomic<bool>* stop = nullptr);
 
 }  // namespace sweep
 }  // namespace fsweep

@@ -401,8 +401,10 @@ RunnerReport run_sweep(const SweepPlan& plan, const RunnerOptions& options) {
     meter.update(s + report.ran, s);
   };
 
+  // Only while dispatching and searching: Ctrl-C during the aggregation kills.
+  std::optional<StopSignals> signals;
+  signals.emplace();
   try {
-    const StopSignals signals;  // only while dispatching: Ctrl-C during aggregation kills
     // More threads than cores: oneTBB caps its workers at the core count unless told.
     std::optional<tbb::global_control> allow;
     if (threads > tbb::info::default_concurrency()) {
@@ -451,14 +453,17 @@ RunnerReport run_sweep(const SweepPlan& plan, const RunnerOptions& options) {
     } else {
       info.status = "running";
       write_manifest(manifest_path, manifest_json(plan, info));
-      report.searches =
-          run_weight_searches(plan, dir, threads, options.progress, options.shard_index, options.shard_count);
-      info.status = "complete";
+      // A stop after the last run was dispatched ends the searches at once (nothing searched).
+      report.searches = run_weight_searches(plan, dir, threads, options.progress, options.shard_index,
+                                            options.shard_count, &stop_requested);
+      report.interrupted = report.searches.interrupted;
+      info.status = report.interrupted ? "interrupted" : "complete";
       info.end_utc = utc_now_iso8601();
       report.wall_s = std::chrono::duration<double>(Clock::now() - wall_start).count();
       info.wall_s = report.wall_s;
     }
   }
+  signals.reset();
   write_manifest(manifest_path, manifest_json(plan, info));
 
   if (!report.interrupted && options.shard_count == 1) aggregate(dir, {});

@@ -72,9 +72,11 @@
 ///
 /// Signals: SIGINT/SIGTERM stop dispatching new runs; runs in flight finish and are written,
 /// the files are flushed, the manifest says "interrupted", and run_sweep returns with
-/// `interrupted` set. A second SIGINT/SIGTERM kills the process (default action; the files stay
-/// repairable). The previous handlers are restored on return. Not reentrant: one run_sweep per
-/// process at a time.
+/// `interrupted` set. During the exact weight searches they stop the search at each branch's
+/// next decision (run_weight_searches' `stop`): its journal keeps what finished, no other search
+/// file is written, and the same holds. A second SIGINT/SIGTERM kills the process (default action; the files
+/// stay repairable). The previous handlers are restored on return. Not reentrant: one run_sweep per process
+/// at a time.
 ///
 /// Sharding (docs/architecture.md, "Sweeps, keys, shards and the weight search"): shard i of n runs the
 /// indices with index % n == i and writes to
@@ -129,7 +131,7 @@ struct RunnerReport {
   double wall_s = 0.0;
   double runs_per_s = 0.0;  ///< ran / wall_s
   std::string out_dir;      ///< where the files are (with the shard subdirectory)
-  /// The sweep's exact weight searches, run after its runs (unsharded, not interrupted).
+  /// The sweep's exact weight searches, run after its runs (when those were not interrupted).
   SearchRunReport searches;
   /// Their files were already there (searches.json), so they were not run again.
   bool searches_done_before = false;

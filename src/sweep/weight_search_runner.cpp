@@ -3,6 +3,7 @@
 #include <oneapi/tbb/info.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -162,8 +163,8 @@ class SearchWriter {
   /// `on_vectors(n)`: n more vectors resolved. Every behaviour found and every finished subtree
   /// goes to the journal at once; those a killed search of the same key journaled are kept and
   /// skipped (mode best: the best journaled behaviour is the incumbent to beat).
-  Searched search(int threads, const std::function<void(std::uint64_t)>& on_vectors,
-                  const WeightRegion& root) {
+  Searched search(int threads, const std::function<void(std::uint64_t)>& on_vectors, const WeightRegion& root,
+                  const std::atomic<bool>* stop) {
     const std::vector<RunSpec> specs = instance_specs();
     const auto start = std::chrono::steady_clock::now();
     Searched out;
@@ -208,7 +209,7 @@ class SearchWriter {
       found.push_back(std::move(f));
     };
     if (search_.mode == WeightSearch::Mode::All) {
-      out.stats = exact_search(specs, grid_, threads, keep, nullptr, &root, &subtrees);
+      out.stats = exact_search(specs, grid_, threads, keep, nullptr, &root, &subtrees, stop);
     } else {
       BranchAndBound bnb;
       bnb.objective = [&](const std::vector<RunResult>& results) {
@@ -217,7 +218,7 @@ class SearchWriter {
       bnb.lower_bound = [&](std::span<const Simulation> sims) { return class_lower_bound(sims, objective_); };
       bnb.on_pruned = on_vectors;
       bnb.incumbent = incumbent;
-      out.stats = exact_search(specs, grid_, threads, keep, &bnb, &root, &subtrees);
+      out.stats = exact_search(specs, grid_, threads, keep, &bnb, &root, &subtrees, stop);
     }
     out.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return out;
@@ -885,7 +886,8 @@ void write_search_files(const SweepPlan& plan, const std::vector<SearchUnit>& un
 }  // namespace
 
 SearchRunReport run_weight_searches(const SweepPlan& plan, const std::string& out_dir, int threads,
-                                    bool progress, std::uint64_t shard_index, std::uint64_t shard_count) {
+                                    bool progress, std::uint64_t shard_index, std::uint64_t shard_count,
+                                    const std::atomic<bool>* stop) {
   SearchRunReport report;
   const Objective* objective = nullptr;
   const std::vector<SearchUnit> units = checked_units(plan, objective);
@@ -917,7 +919,16 @@ SearchRunReport run_weight_searches(const SweepPlan& plan, const std::string& ou
           done += n;
           meter.update(done, 0);
         },
-        roots[id]);
+        roots[id], stop);
+    if (searched.stats.stopped) {
+      meter.finish(done, 0);
+      if (progress) {
+        std::fputs("fsweep: weight search stopped; what it finished is in search_journal.jsonl\n", stderr);
+      }
+      report.interrupted = true;
+      report.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      return report;
+    }
     if (shard_count > 1) {
       shard_records.push_back(writer.shard_record(searched, shard_index, shard_count));
     } else {

@@ -46,6 +46,7 @@
 /// - `vectors.csv` (write_vectors): `search_id`, one column per weight, `behaviour_id`, every
 ///   vector of the box in lexicographic order.
 
+#include <atomic>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -64,6 +65,8 @@ struct SearchRunReport {
   double wall_s = 0.0;
   /// The files written, in the order above.
   std::vector<std::string> files;
+  /// Stopped by `stop` before every search finished: no file but the journal was written.
+  bool interrupted = false;
 };
 
 /// Runs every search of `plan` (none: returns at once, writing nothing) on `threads` worker
@@ -73,9 +76,13 @@ struct SearchRunReport {
 /// Shard `shard_index` of `shard_count` > 1 searches only its part of each box
 /// (WeightGrid::shard(): contiguous runs of blocks, deterministic) and writes only its journal
 /// and a searches.json of its records (with "shard"); merge_weight_searches() joins the shards.
+///
+/// `stop` (e.g. set by SIGINT): once it is true the search in progress ends at the next decision
+/// of each branch (exact_search), nothing else is searched or written, and the report says
+/// `interrupted`. What finished is in the journal, flushed line by line, so a rerun resumes.
 SearchRunReport run_weight_searches(const SweepPlan& plan, const std::string& out_dir, int threads,
                                     bool progress, std::uint64_t shard_index = 0,
-                                    std::uint64_t shard_count = 1);
+                                    std::uint64_t shard_count = 1, const std::atomic<bool>* stop = nullptr);
 
 /// Joins the searches of `plan` run as shards into `shard_dirs` (each with its searches.json and
 /// a journal without a damaged line, else ConfigError naming the file or line; the shards' files

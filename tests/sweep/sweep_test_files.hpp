@@ -1,13 +1,19 @@
 #pragma once
 /// @file sweep_test_files.hpp
-/// Scratch files for the sweep tests: fresh temp directories and whole-file reads and writes.
+/// Scratch files for the sweep tests: fresh temp directories and whole-file reads and writes;
+/// a SIGINT sent when the files say so (the Ctrl-C tests).
 
+#include <signal.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <string>
+#include <thread>
+#include <utility>
 
 namespace fsweep::testing {
 
@@ -33,5 +39,37 @@ inline void write_file(const std::string& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
   out << text;
 }
+
+/// Sends this process SIGINT once `ready()` holds (polled every 0.5 ms; after 60 s without it,
+/// anyway), from a thread started by the constructor. Meanwhile SIGINT's own handler ignores it,
+/// so a late signal (after the code under test restored its handlers) does not end the test;
+/// join() waits for the thread and restores the previous handler.
+class InterruptWhen {
+ public:
+  explicit InterruptWhen(std::function<bool()> ready) {
+    struct sigaction ignore {};
+    ignore.sa_handler = [](int) {};
+    ::sigaction(SIGINT, &ignore, &previous_);
+    thread_ = std::thread([ready = std::move(ready)] {
+      const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+      while (std::chrono::steady_clock::now() < deadline && !ready()) {
+        std::this_thread::sleep_for(std::chrono::microseconds(500));
+      }
+      ::kill(::getpid(), SIGINT);
+    });
+  }
+  InterruptWhen(const InterruptWhen&) = delete;
+  InterruptWhen& operator=(const InterruptWhen&) = delete;
+  ~InterruptWhen() { join(); }
+  void join() {
+    if (!thread_.joinable()) return;
+    thread_.join();
+    ::sigaction(SIGINT, &previous_, nullptr);
+  }
+
+ private:
+  struct sigaction previous_ {};
+  std::thread thread_;
+};
 
 }  // namespace fsweep::testing

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <iostream>
 #include <limits>
 #include <map>
@@ -255,6 +256,27 @@ TEST(ExactSearch, AnIncumbentPrunesEverythingWorseFromTheStart) {
   EXPECT_LT(warm.behaviours, cold.behaviours);
 }
 
+/// Journals behaviour `b` of the search of `root` as a finished leaf in `done`.
+void journal_leaf(std::unordered_map<std::uint64_t, SubtreeTally>& done, std::uint64_t root,
+                  const Behaviour& b) {
+  SubtreeTally leaf;
+  leaf.vectors = b.vectors;
+  leaf.behaviours = 1;
+  done.emplace(subtree_of(root, b.choices), leaf);
+}
+
+/// A resume from the finished subtrees `done`, counting the vectors it skips.
+struct Resume {
+  explicit Resume(const std::unordered_map<std::uint64_t, SubtreeTally>& done) {
+    journal.done = &done;
+    journal.on_skipped = [this](std::uint64_t v) { skipped += v; };
+  }
+  Resume(const Resume&) = delete;
+  Resume& operator=(const Resume&) = delete;
+  SubtreeJournal journal;
+  std::uint64_t skipped = 0;
+};
+
 TEST(ExactSearch, SkippingFinishedSubtreesResumesWithTheRestOfTheBehaviours) {
   // A whole search journals its finished subtrees (nodes that split) and behaviours (leaves).
   // A rerun given some of them, as a killed search leaves them, skips those subtrees whole:
@@ -280,16 +302,9 @@ TEST(ExactSearch, SkippingFinishedSubtreesResumesWithTheRestOfTheBehaviours) {
     // The first `kept` nodes to finish, and the behaviours of every other third.
     std::unordered_map<std::uint64_t, SubtreeTally> done(nodes.begin(),
                                                          nodes.begin() + static_cast<std::ptrdiff_t>(kept));
-    for (std::size_t i = 0; i < whole.size(); i += 3) {
-      SubtreeTally leaf;
-      leaf.vectors = whole[i].vectors;
-      leaf.behaviours = 1;
-      done.emplace(subtree_of(root, whole[i].choices), leaf);
-    }
-    SubtreeJournal resume;
-    resume.done = &done;
-    std::uint64_t skipped = 0;
-    resume.on_skipped = [&](std::uint64_t v) { skipped += v; };
+    for (std::size_t i = 0; i < whole.size(); i += 3) journal_leaf(done, root, whole[i]);
+    Resume resume(done);
+    const std::uint64_t& skipped = resume.skipped;
     std::uint64_t reported = 0;
     std::set<std::uint64_t> seen;
     const ExactSearchStats again = exact_search(
@@ -303,7 +318,7 @@ TEST(ExactSearch, SkippingFinishedSubtreesResumesWithTheRestOfTheBehaviours) {
           EXPECT_EQ(subtree_of(root, b.choices), subtree_of(root, w.choices));
           EXPECT_FALSE(done.contains(subtree_of(root, b.choices))) << "a journaled behaviour found again";
         },
-        nullptr, nullptr, &resume);
+        nullptr, nullptr, &resume.journal);
     EXPECT_EQ(reported + skipped, grid.size()) << kept;
     EXPECT_EQ(again.behaviours, full.behaviours) << kept << ": journaled behaviours count as finished";
     if (kept == nodes.size()) {
@@ -316,6 +331,76 @@ TEST(ExactSearch, SkippingFinishedSubtreesResumesWithTheRestOfTheBehaviours) {
       EXPECT_LT(again.forks, full.forks) << kept;
     }
   }
+}
+
+TEST(ExactSearch, AStoppedSearchLeavesFinishedPartsOnlyAndResumesWithTheRest) {
+  // The stop flag, set as the third behaviour is reported (as SIGINT sets it), ends the search
+  // with part of the grid unresolved; what it reported and journaled is what the whole search
+  // reports and journals there, and a rerun given that journal finds exactly the rest.
+  const RunSpec spec = spec_on("office:w=32,h=32,seed=3", 120.0);
+  const WeightGrid grid({integers(0, 3), integers(0, 2), integers(0, 5), integers(0, 2)});
+  const std::uint64_t root = subtree_root(grid.everything());
+  std::map<std::uint64_t, SubtreeTally> whole_nodes;
+  SubtreeJournal recording;
+  recording.on_done = [&](std::uint64_t id, const SubtreeTally& t) { whole_nodes.emplace(id, t); };
+  std::map<std::uint64_t, std::uint64_t> whole;  // trace -> vectors
+  const ExactSearchStats full = exact_search(
+      std::span<const RunSpec>(&spec, 1), grid, 2, [&](Behaviour&& b) { whole.emplace(b.trace, b.vectors); },
+      nullptr, nullptr, &recording);
+  ASSERT_FALSE(full.stopped);
+  ASSERT_GE(whole.size(), 10U);
+
+  std::atomic<bool> stop{false};
+  std::unordered_map<std::uint64_t, SubtreeTally> done;
+  SubtreeJournal journal;
+  journal.on_done = [&](std::uint64_t id, const SubtreeTally& t) { done.emplace(id, t); };
+  std::vector<Behaviour> first;
+  const ExactSearchStats stopped = exact_search(
+      std::span<const RunSpec>(&spec, 1), grid, 2,
+      [&](Behaviour&& b) {
+        first.push_back(std::move(b));
+        if (first.size() == 3) stop.store(true);
+      },
+      nullptr, nullptr, &journal, &stop);
+  EXPECT_TRUE(stopped.stopped);
+  EXPECT_LT(first.size(), whole.size()) << "the stop did not end the search early";
+  EXPECT_FALSE(done.contains(root)) << "a stopped search finished its root";
+  for (const Behaviour& b : first) EXPECT_EQ(whole.at(b.trace), b.vectors);
+  for (const auto& [id, t] : done) {
+    ASSERT_TRUE(whole_nodes.contains(id)) << "journaled a node the whole search never finished";
+    EXPECT_EQ(t.vectors, whole_nodes.at(id).vectors);
+    EXPECT_EQ(t.behaviours, whole_nodes.at(id).behaviours);
+  }
+
+  for (const Behaviour& b : first) journal_leaf(done, root, b);
+  Resume resume(done);
+  const std::uint64_t& skipped = resume.skipped;
+  std::uint64_t reported = 0;
+  std::set<std::uint64_t> seen;
+  for (const Behaviour& b : first) seen.insert(b.trace);
+  const std::atomic<bool> never{false};
+  const ExactSearchStats rest = exact_search(
+      std::span<const RunSpec>(&spec, 1), grid, 2,
+      [&](Behaviour&& b) {
+        reported += b.vectors;
+        EXPECT_TRUE(seen.insert(b.trace).second) << "a behaviour found twice";
+        EXPECT_EQ(whole.at(b.trace), b.vectors);
+      },
+      nullptr, nullptr, &resume.journal, &never);
+  EXPECT_FALSE(rest.stopped);
+  EXPECT_EQ(reported + skipped, grid.size());
+  EXPECT_EQ(seen.size(), whole.size());
+  EXPECT_EQ(rest.behaviours, full.behaviours);
+
+  // Stopped before it starts: nothing reported, nothing journaled.
+  std::size_t any = 0;
+  done.clear();
+  const ExactSearchStats none = exact_search(
+      std::span<const RunSpec>(&spec, 1), grid, 2, [&](Behaviour&&) { ++any; }, nullptr, nullptr, &journal,
+      &stop);
+  EXPECT_TRUE(none.stopped);
+  EXPECT_EQ(any, 0U);
+  EXPECT_TRUE(done.empty());
 }
 
 /// The message of the std::invalid_argument that exact_search throws for `spec` over `grid`.

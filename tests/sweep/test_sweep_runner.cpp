@@ -361,22 +361,10 @@ TEST(SweepRunner, InterruptStopsAfterFlushingAndResumes) {
   const std::string dir = temp_dir("sigint");
   ASSERT_EQ(run(sweep, ref, 2).ran, 96U);
 
-  // A late SIGINT (after run_sweep restored the handlers) must not end the test process.
-  struct sigaction ignore {};
-  struct sigaction previous {};
-  ignore.sa_handler = [](int) {};
-  ::sigaction(SIGINT, &ignore, &previous);
-  std::thread interrupter([&] {
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-    while (std::chrono::steady_clock::now() < deadline) {
-      if (fs::exists(dir + "/runs.csv") && data_rows(dir + "/runs.csv") >= 3) break;
-      std::this_thread::sleep_for(std::chrono::microseconds(500));
-    }
-    ::kill(::getpid(), SIGINT);
-  });
+  testing::InterruptWhen interrupter(
+      [&] { return fs::exists(dir + "/runs.csv") && data_rows(dir + "/runs.csv") >= 3; });
   const RunnerReport first = run(sweep, dir, 2);
   interrupter.join();
-  ::sigaction(SIGINT, &previous, nullptr);
   ASSERT_TRUE(first.interrupted) << "the sweep finished before the interrupt";
   EXPECT_LT(first.ran, 96U);
   // Everything that ran was flushed: one complete row per run.

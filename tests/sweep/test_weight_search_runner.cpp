@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <csignal>
 #include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -489,6 +490,52 @@ TEST(WeightSearchRunner, AKilledSearchResumesFromItsJournalWithTheSameFiles) {
   EXPECT_EQ(rejournaled, behaviours);
   std::set<std::string> distinct(relines.begin(), relines.end());
   EXPECT_EQ(distinct.size(), relines.size()) << "a line journaled twice";
+}
+
+TEST(WeightSearchRunner, InterruptStopsTheSearchAndTheRerunResumesIt) {
+  // SIGINT during a search (after the runs) stops it: the manifest says "interrupted", no search
+  // file but the journal is written, the journal keeps what finished, and the same command
+  // then resumes and writes the files of an uninterrupted search.
+  const json box = {{"w1", {{"range", {0, 4}}, {"step", 1}}},
+                    {"w2", {{"range", {0, 4}}, {"step", 1}}},
+                    {"w3", {{"range", {0, 4}}, {"step", 1}}},
+                    {"w4", {{"range", {0, 4}}, {"step", 1}}}};
+  json sweep = search_and_grid(json::array({"office:w=32,h=32,seed=3"}), box, json::array());
+  sweep["strategies"].erase(1);
+  const std::string ref = run(sweep, "sigint_ref");
+  const std::string dir = testing::fresh_dir("search", "sigint");
+  const std::string journal = dir + "/search_journal.jsonl";
+
+  testing::InterruptWhen interrupter([&] {
+    return std::filesystem::exists(journal) && journal_lines(testing::read_file(journal)).size() >= 4;
+  });
+  RunnerOptions o;
+  o.threads = 2;
+  o.out_dir = dir;
+  o.progress = false;
+  const RunnerReport first = run_sweep(SweepPlan::from_json(sweep, "search.json"), o);
+  interrupter.join();
+  ASSERT_TRUE(first.interrupted) << "the search finished before the interrupt";
+  EXPECT_TRUE(first.searches.interrupted);
+  EXPECT_EQ(json::parse(testing::read_file(dir + "/manifest.json"))["status"], "interrupted");
+  for (const char* f : {"searches.json", "behaviours.csv", "search_best.csv", "vectors.csv", "summary.csv"}) {
+    EXPECT_FALSE(std::filesystem::exists(dir + "/" + f)) << f;
+  }
+  const std::string kept = testing::read_file(journal);
+  ASSERT_FALSE(kept.empty());
+  EXPECT_EQ(kept.back(), '\n') << "a journal line was left torn";
+
+  const RunnerReport second = run_sweep(SweepPlan::from_json(sweep, "search.json"), o);
+  EXPECT_FALSE(second.interrupted);
+  EXPECT_EQ(json::parse(testing::read_file(dir + "/manifest.json"))["status"], "complete");
+  const json record = json::parse(testing::read_file(dir + "/searches.json"))["searches"][0];
+  EXPECT_GT(record["resumed_behaviours"].get<std::size_t>(), 0U);
+  for (const char* f :
+       {"behaviours.csv", "search_summary.csv", "search_best.csv", "search_heatmaps.csv", "vectors.csv"}) {
+    EXPECT_EQ(testing::read_file(dir + "/" + f), testing::read_file(ref + "/" + f)) << f;
+  }
+  std::filesystem::remove_all(ref);
+  std::filesystem::remove_all(dir);
 }
 
 /// The message of the ConfigError for `sweep`.
