@@ -402,8 +402,7 @@ RunnerReport run_sweep(const SweepPlan& plan, const RunnerOptions& options) {
   };
 
   // Only while dispatching and searching: Ctrl-C during the aggregation kills.
-  std::optional<StopSignals> signals;
-  signals.emplace();
+  std::optional<StopSignals> signals(std::in_place);
   try {
     // More threads than cores: oneTBB caps its workers at the core count unless told.
     std::optional<tbb::global_control> allow;
