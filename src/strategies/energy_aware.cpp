@@ -410,8 +410,7 @@ class BoxWatch final : public RepresentativeWatch {
       const double d_g = std::max(radius_m, lower_bound_m_[i]);
       const auto row = terms_.features_without_theta(i, d_g);
       const double lowest = corner_cost(row, false);
-      if (!terms_.feasible(i, d_g) || loses(i, lowest) ||
-          (middle_best_ >= 0 && costs_more_at_every_direction(row, middle_row_, directions_))) {
+      if (closes(i, d_g, row, lowest)) {
         open_[i] = 0;
         continue;
       }
@@ -435,7 +434,33 @@ class BoxWatch final : public RepresentativeWatch {
   /// The exact length of representative i if it was reached and passes eq. 7, else +infinity.
   [[nodiscard]] double d_g(std::size_t i) const { return d_g_[i]; }
 
+  /// Closes representative i, not yet reached, when it already loses by either proof at its
+  /// lower bound (or fails eq. 7 there); true when it is closed.
+  bool close_at_bound(std::size_t i) {
+    if (open_[i] == 0) return true;
+    const double d_g = lower_bound_m_[i];
+    const auto row = terms_.features_without_theta(i, d_g);
+    if (!closes(i, d_g, row, corner_cost(row, false))) return false;
+    open_[i] = 0;
+    return true;
+  }
+  /// The order in which probes measure the representatives: cost at its lower bound (theta_rel
+  /// at 0) at the middle direction, where the proof by direction compares, else at the box's
+  /// lowest corner. Only an order: which representatives it settles first, not what is chosen.
+  [[nodiscard]] double probe_key(std::size_t i) const {
+    const auto row = terms_.features_without_theta(i, lower_bound_m_[i]);
+    return by_direction_ ? linear_cost(middle_, row) : corner_cost(row, false);
+  }
+
  private:
+  /// True when representative i, at distance d_g (not below its length) with row `row` (theta_rel
+  /// at 0) and lowest cost `lowest` in the box, fails eq. 7 or loses at every vector by either proof.
+  [[nodiscard]] bool closes(std::size_t i, double d_g, const std::array<double, EnergyAware::kFeatures>& row,
+                            double lowest) const {
+    return !terms_.feasible(i, d_g) || loses(i, lowest) ||
+           (middle_best_ >= 0 && costs_more_at_every_direction(row, middle_row_, directions_));
+  }
+
   /// linear_cost of `row` at the box's corner where it is highest (`highest`) or lowest.
   [[nodiscard]] double corner_cost(const std::array<double, EnergyAware::kFeatures>& row,
                                    bool highest) const {
@@ -464,30 +489,6 @@ class BoxWatch final : public RepresentativeWatch {
 };
 
 }  // namespace
-
-Candidates EnergyAware::candidates_within_among(const Observation& obs, const WeightBounds& bounds) {
-  if (params_.distance != "path" || obs.clusters.empty()) return candidates_among(obs);
-  const std::span<const double> w_lo = bounds.lo;
-  const std::span<const double> w_hi = bounds.hi;
-  if (w_lo.size() != kFeatures || w_hi.size() != kFeatures) {
-    throw std::invalid_argument(name_ + ": candidates_within needs " + std::to_string(kFeatures) +
-                                " weights");
-  }
-  // The dock terms count if any vector of the box weighs them.
-  const Terms t = terms(obs, w_hi[1] != 0.0 || w_hi[2] != 0.0);
-  BoxWatch watch(t, bounds, obs.distances.lower_bounds_from_robot(t.reps));
-  obs.distances.watch_from_robot(t.reps, t.d_l, watch);
-  Candidates out;
-  out.feature_count = kFeatures;
-  for (std::size_t i = 0; i < t.reps.size(); ++i) {
-    const double d_g = watch.d_g(i);
-    if (!std::isfinite(d_g)) continue;
-    out.cells.push_back(obs.known.cell(t.reps[i]));
-    const auto row = t.features(i, d_g);
-    out.features.insert(out.features.end(), row.begin(), row.end());
-  }
-  return out;
-}
 
 bool octile_path_known_free(const KnownMap& known, Cell from, Cell to) {
   const int sx = to.x > from.x ? 1 : (to.x < from.x ? -1 : 0);
@@ -522,6 +523,25 @@ constexpr int kMaxProbes = 8;
 constexpr long kProbeCellsPerStep = 16;
 constexpr long kProbeCellsExtra = 64;
 
+/// The exact length of representative i from the robot without a search from it (+infinity
+/// beyond d_l, as from_robot() reads it): its octile length when a known free path of that length
+/// shows it exact (octile_path_known_free), else a point search, while `probes` stays below
+/// `max_probes`. nullopt when the probes ran out or the point search hit its budget.
+std::optional<double> probe_length(const Observation& obs, const EnergyAware::Terms& t, std::size_t i,
+                                   int& probes, int max_probes) {
+  const Cell goal = obs.known.cell(t.reps[i]);
+  const double octile = octile_distance(obs.robot, goal);
+  if (octile_path_known_free(obs.known, obs.robot, goal)) {
+    // The octile length is exact: the value a point search returns (its length is computed the
+    // same way from the same step counts), read against the bound d_l as it reads it.
+    const double d = octile * obs.known.resolution_m();
+    return d <= t.d_l ? d : std::numeric_limits<double>::infinity();
+  }
+  if (probes++ == max_probes) return std::nullopt;
+  const auto steps = static_cast<long>(std::ceil(octile));
+  return obs.distances.probe_from_robot(t.reps[i], t.d_l, kProbeCellsExtra + kProbeCellsPerStep * steps);
+}
+
 /// Exact lengths for the representatives with the lowest cost bounds, best bound first, by
 /// point searches (or without one where a known free path of octile length shows that length
 /// exact, octile_path_known_free), until the best one found is certified (every other bound loses; in open
@@ -552,26 +572,59 @@ bool choose_by_probes(const Observation& obs, const EnergyAware::Terms& t, Watch
     // In bound order: once one is beaten, so is every later one (ties: by index, too).
     if (choice.beaten(i)) return true;
     if (choice.beaten_with_theta(i)) continue;  // its turn makes it lose: no need to measure it
-    const Cell goal = obs.known.cell(t.reps[i]);
-    const double octile = octile_distance(obs.robot, goal);
-    if (octile_path_known_free(obs.known, obs.robot, goal)) {
-      // The octile length is exact: the value a point search returns (its length is computed
-      // the same way from the same step counts), read against the bound d_l as it reads it.
-      const double d = octile * obs.known.resolution_m();
-      choice.settled(i, d <= t.d_l ? d : std::numeric_limits<double>::infinity());
-      continue;
-    }
-    if (probes++ == kMaxProbes) return false;
-    const auto steps = static_cast<long>(std::ceil(octile));
-    const std::optional<double> d =
-        obs.distances.probe_from_robot(t.reps[i], t.d_l, kProbeCellsExtra + kProbeCellsPerStep * steps);
+    const std::optional<double> d = probe_length(obs, t, i, probes, kMaxProbes);
     if (!d) return false;
     choice.settled(i, *d);
   }
   return true;
 }
 
+/// choose_by_probes() for a weight box: exact lengths, best probe_key() first, for every
+/// representative that does not already lose at its lower bound (BoxWatch::close_at_bound()),
+/// until none is left open. False when the probes ran out first: `watch` holds what they found
+/// and a search from the robot must finish it.
+bool settle_by_probes(const Observation& obs, const EnergyAware::Terms& t, BoxWatch& watch) {
+  std::vector<std::pair<double, std::size_t>> order;
+  order.reserve(t.reps.size());
+  for (std::size_t i = 0; i < t.reps.size(); ++i) {
+    if (watch.open(i)) order.emplace_back(watch.probe_key(i), i);
+  }
+  std::sort(order.begin(), order.end());
+  int probes = 0;
+  for (const auto& [key, i] : order) {
+    if (watch.close_at_bound(i)) continue;
+    const std::optional<double> d = probe_length(obs, t, i, probes, 0);
+    if (!d) return false;
+    watch.settled(i, *d);
+  }
+  return true;
+}
+
 }  // namespace
+
+Candidates EnergyAware::candidates_within_among(const Observation& obs, const WeightBounds& bounds) {
+  if (params_.distance != "path" || obs.clusters.empty()) return candidates_among(obs);
+  const std::span<const double> w_lo = bounds.lo;
+  const std::span<const double> w_hi = bounds.hi;
+  if (w_lo.size() != kFeatures || w_hi.size() != kFeatures) {
+    throw std::invalid_argument(name_ + ": candidates_within needs " + std::to_string(kFeatures) +
+                                " weights");
+  }
+  // The dock terms count if any vector of the box weighs them.
+  const Terms t = terms(obs, w_hi[1] != 0.0 || w_hi[2] != 0.0);
+  BoxWatch watch(t, bounds, obs.distances.lower_bounds_from_robot(t.reps));
+  if (!settle_by_probes(obs, t, watch)) obs.distances.watch_from_robot(t.reps, t.d_l, watch);
+  Candidates out;
+  out.feature_count = kFeatures;
+  for (std::size_t i = 0; i < t.reps.size(); ++i) {
+    const double d_g = watch.d_g(i);
+    if (!std::isfinite(d_g)) continue;
+    out.cells.push_back(obs.known.cell(t.reps[i]));
+    const auto row = t.features(i, d_g);
+    out.features.insert(out.features.end(), row.begin(), row.end());
+  }
+  return out;
+}
 
 Decision EnergyAware::decide_among(const Observation& obs) {
   if (params_.distance != "path") return LinearScoredStrategy::decide(obs);

@@ -84,9 +84,14 @@ class EnergyAware final : public LinearScoredStrategy {
   /// (ascending index, so ties go to the lowest cell index).
   [[nodiscard]] Decision decide(const Observation& obs) override;
   [[nodiscard]] Candidates candidates(const Observation& obs) override;
-  /// With path distances, the search from the robot stops once no representative it has not
-  /// reached can win anywhere in the weight box (its lowest cost there, at its distance bound,
-  /// above the highest cost there of one it reached), as decide() does for one weight vector.
+  /// With path distances, the representatives are first measured without a search, in the
+  /// order in which they most likely close the others (a known free path of octile length makes
+  /// that length exact: octile_path_known_free), until every other one loses at its lower bound;
+  /// only when one that may still win has no such path does a search from the robot finish the
+  /// choice. It stops once no representative it has not reached can win anywhere in the weight
+  /// box (its lowest cost there, at its distance bound, above the highest cost there of one
+  /// reached), as decide() does for one weight vector. Which losing representatives are kept
+  /// depends on the way taken; the argmin at every vector of the box does not.
   [[nodiscard]] Candidates candidates_within(const Observation& obs, const WeightBounds& bounds) override;
   [[nodiscard]] std::span<const double> weights() const override { return weights_; }
   [[nodiscard]] std::vector<std::string> weight_names() const override { return {"w1", "w2", "w3", "w4"}; }

@@ -329,7 +329,7 @@ class SearchWriter {
     key.push_back(search_.values);
     key.push_back(std::string(objective_.name));
     key.push_back(search_.mode == WeightSearch::Mode::All ? "all" : "best");
-    key.push_back("journal 2");
+    key.push_back("journal 3");
     return sweep_hash(key);  // the FNV-1a 64 of its dump, as the manifest's hash of a sweep
   }
 

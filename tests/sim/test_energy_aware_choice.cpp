@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <iostream>
 #include <limits>
 #include <string>
 #include <vector>
@@ -21,9 +22,9 @@ namespace test_energy_aware_choice {  // not anonymous: unity builds put it besi
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-/// A random decision: a map partly known (blobs of known cells, some occupied), its frontier
-/// clusters, robot, dock, where the robot came from, a battery and a dock field brought up to
-/// date in two stages (as in a run).
+/// A random decision: a map partly known (blobs of known cells, a share `occupied` of them
+/// occupied), its frontier clusters, robot, dock, where the robot came from, a battery and a dock
+/// field brought up to date in two stages (as in a run).
 struct RandomDecision {
   KnownMap known;
   FrontierMap frontiers;
@@ -36,10 +37,11 @@ struct RandomDecision {
   bool corner_cutting = false;
   SensorParams sensor;
 
-  RandomDecision(std::uint64_t seed, double resolution_m) : known(48, 36, resolution_m) {
+  RandomDecision(std::uint64_t seed, double resolution_m, double occupied = 0.15)
+      : known(48, 36, resolution_m) {
     Rng rng = make_rng(seed, "energy_aware_choice");
     corner_cutting = uniform_below(rng, 4) == 0;
-    // Known blobs: discs around random centres; 15% of their cells occupied.
+    // Known blobs: discs around random centres, some of their cells occupied.
     std::vector<int> first;
     std::vector<int> second;
     for (int blob = 0; blob < 7; ++blob) {
@@ -50,7 +52,7 @@ struct RandomDecision {
         for (int x = cx - r; x <= cx + r; ++x) {
           const Cell c{x, y};
           if (!known.in_bounds(c) || (x - cx) * (x - cx) + (y - cy) * (y - cy) > r * r) continue;
-          if (known.reveal(known.index(c), uniform01(rng) < 0.15))
+          if (known.reveal(known.index(c), uniform01(rng) < occupied))
             (blob < 4 ? first : second).push_back(known.index(c));
         }
       }
@@ -245,6 +247,53 @@ TEST(EnergyAwareChoice, CandidatesWithinABoxChooseAsAllCandidatesAtEveryVectorOf
   EXPECT_LT(within_work, full_work);
 }
 
+/// A narrow cone of weight vectors, as the exact weight search's regions are: the directions
+/// within `width` of a random ray's (w1 > 0, so that d_g counts), the integer vectors of
+/// [0, 30]^4 in them, and their bounding box.
+struct NarrowCone {
+  WeightDirections directions;
+  std::vector<std::array<double, 4>> vectors;
+  std::array<double, 4> lo{30, 30, 30, 30};
+  std::array<double, 4> hi{};
+
+  [[nodiscard]] WeightBounds bounds() const { return WeightBounds{lo, hi, directions}; }
+};
+NarrowCone random_cone(Rng& rng, double width) {
+  std::array<double, 4> ray{};
+  ray[0] = 1.0 + static_cast<double>(uniform_below(rng, 20));
+  for (std::size_t k = 1; k < 4; ++k) ray[k] = static_cast<double>(uniform_below(rng, 21));
+  const double sum = ray[0] + ray[1] + ray[2] + ray[3];
+  NarrowCone out;
+  WeightDirections& cone = out.directions;
+  cone.zero = false;
+  for (std::size_t k = 0; k < 4; ++k) {
+    cone.lo[k] = std::max(0.0, ray[k] / sum - width);
+    cone.hi[k] = std::min(1.0, ray[k] / sum + width);
+  }
+  for (int i = 0; i < 31 * 31 * 31 * 31; ++i) {
+    const std::array<double, 4> w{double(i % 31), double(i / 31 % 31), double(i / 961 % 31),
+                                  double(i / 29791)};
+    const double s = w[0] + w[1] + w[2] + w[3];
+    bool inside = s > 0.0;
+    for (std::size_t k = 0; k < 4 && inside; ++k) inside = cone.lo[k] <= w[k] / s && w[k] / s <= cone.hi[k];
+    if (!inside) continue;
+    out.vectors.push_back(w);
+    for (std::size_t k = 0; k < 4; ++k) {
+      out.lo[k] = std::min(out.lo[k], w[k]);
+      out.hi[k] = std::max(out.hi[k], w[k]);
+    }
+  }
+  return out;
+}
+
+/// candidates_within(cone) with closest frontier's own weights, and candidates() of a reference
+/// that weighs every term (so it has every feature), on decision `d` of seed `seed`.
+KeptAndAll cone_candidates(RandomDecision& d, const NarrowCone& cone, std::uint64_t seed) {
+  EnergyAware ea = energy_aware({1, 0, 0, 0}, unit_of(seed));
+  EnergyAware reference = energy_aware({1, 1, 1, 1}, unit_of(seed));
+  return kept_and_all(d, ea, reference, cone.bounds());
+}
+
 TEST(EnergyAwareChoice, CandidatesWithinNarrowDirectionsChooseAsAllCandidatesThere) {
   // The exact weight search's regions are narrow cones through the origin: a wide box, narrow
   // directions. candidates_within() may close representatives by the directions; at every
@@ -256,45 +305,15 @@ TEST(EnergyAwareChoice, CandidatesWithinNarrowDirectionsChooseAsAllCandidatesThe
     RandomDecision d(seed, seed % 3 == 0 ? 0.05 : 1.0);
     Rng rng = make_rng(seed, "cones");
     for (int round = 0; round < 6; ++round) {
-      // A ray (w1 > 0, so that d_g counts) and the directions within `width` of its own.
-      std::array<double, 4> ray{};
-      ray[0] = 1.0 + static_cast<double>(uniform_below(rng, 20));
-      for (std::size_t k = 1; k < 4; ++k) ray[k] = static_cast<double>(uniform_below(rng, 21));
-      const double sum = ray[0] + ray[1] + ray[2] + ray[3];
-      const double width = round < 3 ? 0.01 : 0.05;
-      WeightDirections cone;
-      cone.zero = false;
-      for (std::size_t k = 0; k < 4; ++k) {
-        cone.lo[k] = std::max(0.0, ray[k] / sum - width);
-        cone.hi[k] = std::min(1.0, ray[k] / sum + width);
-      }
-      std::vector<std::array<double, 4>> vectors;
-      std::array<double, 4> lo{30, 30, 30, 30};
-      std::array<double, 4> hi{};
-      for (int i = 0; i < 31 * 31 * 31 * 31; ++i) {
-        const std::array<double, 4> w{double(i % 31), double(i / 31 % 31), double(i / 961 % 31),
-                                      double(i / 29791)};
-        const double s = w[0] + w[1] + w[2] + w[3];
-        bool inside = s > 0.0;
-        for (std::size_t k = 0; k < 4 && inside; ++k)
-          inside = cone.lo[k] <= w[k] / s && w[k] / s <= cone.hi[k];
-        if (!inside) continue;
-        vectors.push_back(w);
-        for (std::size_t k = 0; k < 4; ++k) {
-          lo[k] = std::min(lo[k], w[k]);
-          hi[k] = std::max(hi[k], w[k]);
-        }
-      }
-      ASSERT_FALSE(vectors.empty());
-      EnergyAware ea = energy_aware({1, 0, 0, 0}, unit_of(seed));
-      EnergyAware reference = energy_aware({1, 1, 1, 1}, unit_of(seed));
-      const KeptAndAll c = kept_and_all(d, ea, reference, WeightBounds{lo, hi, cone});
+      const NarrowCone cone = random_cone(rng, round < 3 ? 0.01 : 0.05);
+      ASSERT_FALSE(cone.vectors.empty());
+      const KeptAndAll c = cone_candidates(d, cone, seed);
       const Candidates& all = c.all;
       const Candidates& kept = c.kept;
       ASSERT_EQ(all.cells.empty(), kept.cells.empty()) << "seed " << seed << " round " << round;
       if (all.cells.empty()) continue;
       left_out += static_cast<int>(all.cells.size() - kept.cells.size());
-      for (const std::array<double, 4>& w : vectors) {
+      for (const std::array<double, 4>& w : cone.vectors) {
         ASSERT_TRUE(same_choice(all, kept, w)) << "seed " << seed << " round " << round;
         ++compared;
       }
@@ -302,6 +321,43 @@ TEST(EnergyAwareChoice, CandidatesWithinNarrowDirectionsChooseAsAllCandidatesThe
   }
   EXPECT_GT(compared, 10000);
   EXPECT_GT(left_out, 1000);  // the directions close representatives (about 10x the box alone)
+}
+
+TEST(EnergyAwareChoice, CandidatesWithinOpenSpaceNeedNoSearchFromTheRobot) {
+  // Known space without obstacles (the free-space weight search): most representatives have a
+  // known free path of octile length, so candidates_within() measures them without a search
+  // from the robot, in the order the proofs close the rest soonest. It chooses as all
+  // candidates do at every vector of narrow cones, with a small part of the full search's work.
+  int compared = 0;
+  int searched = 0;
+  int decisions = 0;
+  long within_work = 0;
+  long full_work = 0;
+  for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+    RandomDecision d(seed, seed % 3 == 0 ? 0.05 : 1.0, 0.0);
+    Rng rng = make_rng(seed, "open cones");
+    for (int round = 0; round < 4; ++round) {
+      const NarrowCone cone = random_cone(rng, round < 2 ? 0.01 : 0.05);
+      ASSERT_FALSE(cone.vectors.empty());
+      const KeptAndAll c = cone_candidates(d, cone, seed);
+      ASSERT_EQ(c.all.cells.empty(), c.kept.cells.empty()) << "seed " << seed << " round " << round;
+      if (c.all.cells.empty()) continue;
+      ++decisions;
+      searched += c.within_work > 0 ? 1 : 0;
+      within_work += c.within_work;
+      full_work += c.full_work;
+      for (const std::array<double, 4>& w : cone.vectors) {
+        ASSERT_TRUE(same_choice(c.all, c.kept, w)) << "seed " << seed << " round " << round;
+        ++compared;
+      }
+    }
+  }
+  EXPECT_GT(compared, 10000);
+  EXPECT_GT(decisions, 100);
+  std::cout << "open space: " << searched << " of " << decisions
+            << " decisions searched from the robot; work " << within_work << " of " << full_work << "\n";
+  EXPECT_LT(searched, decisions / 2);
+  EXPECT_LT(within_work, full_work / 4);
 }
 
 TEST(EnergyAwareChoice, LowerBoundsNeverExceedTheSearchedDistances) {
