@@ -59,7 +59,7 @@ bool costs_more_at_every_weight(std::span<const double> f_j, std::span<const dou
 }
 
 bool costs_more_at_every_direction(std::span<const double> f_j, std::span<const double> f_i,
-                                   const WeightDirections& directions) {
+                                   const WeightDirections& directions, double extra) {
   const std::size_t n = f_j.size();
   std::array<double, WeightDirections::kMaxWeights> a{};
   if (!margin_differences(f_j, f_i, a)) return false;
@@ -77,7 +77,7 @@ bool costs_more_at_every_direction(std::span<const double> f_j, std::span<const 
       lowest += c * u;
       size += std::abs(c) * u;
     }
-    return lowest > 2e-15 * size;
+    return lowest > 2e-15 * size + extra;
   };
   if (proven_with(0.0)) return true;
   for (std::size_t k = 0; k < n; ++k) {

@@ -182,9 +182,10 @@ struct WeightDirections {
 /// from 0.0, off by at most 4.5e-16 * sum_k w_k |f_k| each) with room for the rounding of this
 /// test. False when that is not proven, when a feature is not finite, or when there are more
 /// than four features. Lower bounds of f_j's features keep it sound (the test only tightens as
-/// f_j grows).
+/// f_j grows). `extra`: a further margin the left side must exceed, per unit of sum(w) (for a
+/// caller whose directions are of other coordinates than w: WeightGrid::sole_choice_tied()).
 [[nodiscard]] bool costs_more_at_every_direction(std::span<const double> f_j, std::span<const double> f_i,
-                                                 const WeightDirections& directions);
+                                                 const WeightDirections& directions, double extra = 0.0);
 
 /// The same claim at every weight vector w with lo_k <= w_k <= hi_k (0 <= lo_k <= hi_k, finite):
 /// proven when w . (f_j - f_i) > 1e-12 * sum_k w_k (|f_jk| + |f_ik|) at the box's lowest

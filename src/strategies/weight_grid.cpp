@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <iterator>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -27,6 +29,104 @@ bool sparse(const BlockBits& bits) {
   return n <= kMostPoints;
 }
 
+/// Adds the direction v / sum(v) of a point's weights (or coordinates) `v` to `d`, or marks
+/// `d.zero` when they sum to 0. One division, then products: within two units in the last place
+/// of the ratios, well inside widen()'s margin.
+void take_direction(WeightDirections& d, std::span<const double> v) {
+  double sum = 0.0;
+  for (const double x : v) sum += x;
+  if (sum == 0.0) {
+    d.zero = true;
+    return;
+  }
+  d.nonzero = true;
+  const double inverse = 1.0 / sum;
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    const double ratio = v[k] * inverse;
+    d.lo[k] = std::min(d.lo[k], ratio);
+    d.hi[k] = std::max(d.hi[k], ratio);
+  }
+}
+
+/// Widens the first n bounds of `d` outward by 1e-14 (within [0, 1]), so that they hold the exact
+/// ratios that rounding may miss by a few units in the last place.
+void widen(WeightDirections& d, std::size_t n) {
+  for (std::size_t k = 0; k < n; ++k) {
+    d.lo[k] = std::max(0.0, d.lo[k] - 1e-14);
+    d.hi[k] = std::min(1.0, d.hi[k] + 1e-14);
+  }
+}
+
+/// The candidate that wins at every direction of `d` (candidates of k features), proven without
+/// visiting points: the one cheapest at the middle of `d` (the only one that can), when every
+/// other costs more at every direction (costs_more_at_every_direction() with the margin
+/// `extra(f_j, f_i)`) or has exactly its features and comes later (an exact tie, which the first
+/// wins). Where every cost is 0 (d.zero) the first candidate wins. -1 otherwise.
+template <typename Extra>
+int sole_over(const WeightDirections& d, const Candidates& candidates, std::size_t k, const Extra& extra) {
+  if (!d.nonzero) return d.zero ? 0 : -1;
+  std::array<double, WeightDirections::kMaxWeights> middle{};
+  for (std::size_t j = 0; j < k; ++j) middle[j] = 0.5 * (d.lo[j] + d.hi[j]);
+  const int winner = argmin_linear(candidates, std::span(middle).first(k));
+  if (d.zero && winner != 0) return -1;
+  const std::span<const double> features(candidates.features);
+  const std::span<const double> fi = features.subspan(static_cast<std::size_t>(winner) * k, k);
+  for (std::size_t other = 0; other < candidates.cells.size(); ++other) {
+    if (other == static_cast<std::size_t>(winner)) continue;
+    const std::span<const double> fj = features.subspan(other * k, k);
+    if (std::equal(fj.begin(), fj.end(), fi.begin())) {
+      if (other < static_cast<std::size_t>(winner)) return -1;  // it would win every tie
+      continue;
+    }
+    if (!costs_more_at_every_direction(fj, fi, d, extra(fj, fi))) return -1;
+  }
+  return winner;
+}
+
+/// The extreme directions w_k / sum(w) of the box of weights lo..hi (0 <= lo <= hi): w_k / (w_k +
+/// rest) grows with w_k and falls with each other weight, so they are at corners. Each within a
+/// few units in the last place of the exact ratio.
+void box_ratios(std::span<const double> lo, std::span<const double> hi,
+                std::array<double, WeightDirections::kMaxWeights>& low,
+                std::array<double, WeightDirections::kMaxWeights>& high) {
+  const std::size_t n = lo.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    // The other weights' sums, added directly (a difference of sums could cancel).
+    double others_lo = 0.0;
+    double others_hi = 0.0;
+    for (std::size_t j = 0; j < n; ++j) {
+      if (j == k) continue;
+      others_lo += lo[j];
+      others_hi += hi[j];
+    }
+    low[k] = lo[k] == 0.0 ? 0.0 : lo[k] / (lo[k] + others_hi);
+    high[k] = hi[k] == 0.0 ? 0.0 : hi[k] / (hi[k] + others_lo);
+  }
+}
+
+/// The extreme directions v / sum(v) (box_ratios()) of the tied coordinates v of
+/// WeightGrid::tied_directions() over the box of weights lo..hi (4 weights), from the box of
+/// v's values. True when that box holds v = 0 (then some point of it may have v = 0).
+bool tied_box_ratios(std::span<const double> lo, std::span<const double> hi, int sign,
+                     std::array<double, WeightDirections::kMaxWeights>& low,
+                     std::array<double, WeightDirections::kMaxWeights>& high) {
+  std::array<double, WeightDirections::kMaxWeights> v_lo{lo[0], 0.0, 0.0, lo[3]};
+  std::array<double, WeightDirections::kMaxWeights> v_hi{hi[0], 0.0, 0.0, hi[3]};
+  if (sign < 0) {
+    const double u_lo = lo[1] - hi[2];
+    const double u_hi = hi[1] - lo[2];
+    v_lo[1] = std::max(u_lo, 0.0);
+    v_hi[1] = std::max(u_hi, 0.0);
+    v_lo[2] = std::max(-u_hi, 0.0);
+    v_hi[2] = std::max(-u_lo, 0.0);
+  } else {
+    v_lo[1] = lo[1] + lo[2];
+    v_hi[1] = hi[1] + hi[2];
+  }
+  box_ratios(v_lo, v_hi, low, high);
+  return std::all_of(v_lo.begin(), v_lo.end(), [](double x) { return x == 0.0; });
+}
+
 }  // namespace
 
 WeightGrid::WeightGrid(std::vector<std::vector<double>> values) : values_(std::move(values)) {
@@ -49,6 +149,33 @@ WeightGrid::WeightGrid(std::vector<std::vector<double>> values) : values_(std::m
   for (const std::uint32_t b : blocks_) blocks *= b;
   if (blocks > std::uint64_t{1} << 31) throw std::invalid_argument("a weight grid of more than 2^31 blocks");
   block_count_ = static_cast<std::uint32_t>(blocks);
+  if (values_.size() == kWeights) {
+    // The smallest positive w1 + |w2 - w3| + w4: the smallest positive w1 or w4, or |w2 - w3| (by
+    // a merge of the two sorted lists: the closest pair of different values is adjacent in it).
+    double smallest = std::numeric_limits<double>::infinity();
+    for (const std::size_t k : {std::size_t{0}, std::size_t{3}}) {
+      const auto positive = std::upper_bound(values_[k].begin(), values_[k].end(), 0.0);
+      if (positive != values_[k].end()) smallest = std::min(smallest, *positive);
+    }
+    std::vector<double> merged;
+    std::merge(values_[1].begin(), values_[1].end(), values_[2].begin(), values_[2].end(),
+               std::back_inserter(merged));
+    for (std::size_t i = 1; i < merged.size(); ++i) {
+      // The difference of two doubles, rounded down a little for its own rounding.
+      if (merged[i] > merged[i - 1])
+        smallest = std::min(smallest, (merged[i] - merged[i - 1]) * (1.0 - 1e-15));
+    }
+    const double largest = std::min(values_[1].back(), values_[2].back());
+    tied_ratio_ = std::isfinite(smallest) ? largest / smallest * (1.0 + 1e-15) : 0.0;
+  }
+}
+
+void WeightGrid::span_values(const BlockSpan& span, std::array<double, kMaxWeights>& lo,
+                             std::array<double, kMaxWeights>& hi) const {
+  for (std::size_t k = 0; k < values_.size(); ++k) {
+    lo[k] = values_[k][static_cast<std::size_t>(span.first[k])];
+    hi[k] = values_[k][static_cast<std::size_t>(span.first[k] + span.extent[k] - 1)];
+  }
 }
 
 WeightGrid::BlockSpan WeightGrid::span_of(std::uint32_t block) const {
@@ -294,36 +421,19 @@ WeightDirections WeightGrid::directions(const WeightRegion& region) const {
   d.hi.fill(0.0);
   d.zero = false;
   d.nonzero = false;
-  // The directions of a box of values lo..hi per weight: w_k / (w_k + rest) grows with w_k and
-  // falls with each other weight, so its extremes are at corners. Returns whether the box holds
-  // the zero vector.
+  // The directions of a box of values lo..hi per weight (box_ratios()). Returns whether the box
+  // holds the zero vector.
   std::array<double, kMaxWeights> low{};
   std::array<double, kMaxWeights> high{};
   const auto box_directions = [&](const std::array<double, kMaxWeights>& lo,
                                   const std::array<double, kMaxWeights>& hi) {
-    for (std::size_t k = 0; k < n; ++k) {
-      // The other weights' sums, added directly (a difference of sums could cancel).
-      double others_lo = 0.0;
-      double others_hi = 0.0;
-      for (std::size_t j = 0; j < n; ++j) {
-        if (j == k) continue;
-        others_lo += lo[j];
-        others_hi += hi[j];
-      }
-      low[k] = lo[k] == 0.0 ? 0.0 : lo[k] / (lo[k] + others_hi);
-      high[k] = hi[k] == 0.0 ? 0.0 : hi[k] / (hi[k] + others_lo);
-    }
+    box_ratios(std::span(lo).first(n), std::span(hi).first(n), low, high);
     return std::all_of(lo.begin(), lo.begin() + static_cast<std::ptrdiff_t>(n),
                        [](double v) { return v == 0.0; });
   };
   std::array<double, kMaxWeights> lo{};
   std::array<double, kMaxWeights> hi{};
-  const auto values_of = [&](const BlockSpan& span) {
-    for (std::size_t k = 0; k < n; ++k) {
-      lo[k] = values_[k][static_cast<std::size_t>(span.first[k])];
-      hi[k] = values_[k][static_cast<std::size_t>(span.first[k] + span.extent[k] - 1)];
-    }
-  };
+  const auto values_of = [&](const BlockSpan& span) { span_values(span, lo, hi); };
   for (const WeightRegion::Box& box : region.whole) {
     values_of(span_of(box));
     const bool zero = box_directions(lo, hi);
@@ -347,33 +457,15 @@ WeightDirections WeightGrid::directions(const WeightRegion& region) const {
     }
     return true;
   };
-  // A point's direction: one division, then products (within two units in the last place of
-  // the ratios, well inside the widening below).
+  // A point's direction: take_direction().
   for (const WeightRegion::Part& part : region.parts) {
     if (within_so_far(part)) continue;
     for_each_member(span_of(part.block), part.bits, [&](int /*bit*/, const std::array<int, kMaxWeights>& at) {
-      double sum = 0.0;
-      for (std::size_t k = 0; k < n; ++k) {
-        lo[k] = values_[k][static_cast<std::size_t>(at[k])];
-        sum += lo[k];
-      }
-      if (sum == 0.0) {
-        d.zero = true;
-        return;
-      }
-      d.nonzero = true;
-      const double inverse = 1.0 / sum;
-      for (std::size_t k = 0; k < n; ++k) {
-        const double ratio = lo[k] * inverse;
-        d.lo[k] = std::min(d.lo[k], ratio);
-        d.hi[k] = std::max(d.hi[k], ratio);
-      }
+      for (std::size_t k = 0; k < n; ++k) lo[k] = values_[k][static_cast<std::size_t>(at[k])];
+      take_direction(d, std::span(lo).first(n));
     });
   }
-  for (std::size_t k = 0; k < n; ++k) {
-    d.lo[k] = std::max(0.0, d.lo[k] - 1e-14);
-    d.hi[k] = std::min(1.0, d.hi[k] + 1e-14);
-  }
+  widen(d, n);
   return d;
 }
 
@@ -383,29 +475,94 @@ int WeightGrid::sole_choice(const WeightDirections& directions, const Candidates
   if (n == 0 || candidates.feature_count != weights() || candidates.features.size() != n * k) {
     throw std::invalid_argument("weight grid sole_choice: candidates do not match the grid's weights");
   }
-  if (!directions.nonzero) return directions.zero ? 0 : -1;
-  // The candidate that wins at the middle of the direction box is the only one that can win
-  // everywhere.
-  std::vector<double> middle(k);
-  for (std::size_t j = 0; j < k; ++j) middle[j] = 0.5 * (directions.lo[j] + directions.hi[j]);
-  const int winner = argmin_linear(candidates, middle);
-  if (directions.zero && winner != 0) return -1;
-  const std::span<const double> features(candidates.features);
-  const std::span<const double> fi = features.subspan(static_cast<std::size_t>(winner) * k, k);
-  for (std::size_t other = 0; other < n; ++other) {
-    if (other == static_cast<std::size_t>(winner)) continue;
-    const std::span<const double> fj = features.subspan(other * k, k);
-    if (std::equal(fj.begin(), fj.end(), fi.begin())) {
-      if (other < static_cast<std::size_t>(winner)) return -1;  // it would win every tie
-    } else if (!costs_more_at_every_direction(fj, fi, directions)) {
-      return -1;
-    }
-  }
-  return winner;
+  return sole_over(directions, candidates, k,
+                   [](std::span<const double>, std::span<const double>) { return 0.0; });
 }
 
-std::vector<WeightGrid::Share> WeightGrid::split(const WeightRegion& region,
-                                                 const Candidates& candidates) const {
+int WeightGrid::tied_sign(const Candidates& candidates) {
+  if (candidates.feature_count != static_cast<int>(kWeights) || candidates.cells.empty()) return 0;
+  bool minus = true;
+  bool plus = true;
+  for (std::size_t i = 0; i < candidates.cells.size(); ++i) {
+    const double f2 = candidates.features[i * kWeights + 1];
+    const double f3 = candidates.features[i * kWeights + 2];
+    if (!std::isfinite(f2)) return 0;
+    minus = minus && f3 == -f2;
+    plus = plus && f3 == f2;
+  }
+  return minus ? -1 : (plus ? 1 : 0);
+}
+
+WeightDirections WeightGrid::tied_directions(const WeightRegion& region, int sign) const {
+  if (weights() != static_cast<int>(kWeights) || (sign != -1 && sign != 1)) {
+    throw std::invalid_argument("weight grid tied_directions: needs 4 weights and a sign of -1 or +1");
+  }
+  WeightDirections d;
+  d.lo.fill(1.0);
+  d.hi.fill(0.0);
+  d.zero = false;
+  d.nonzero = false;
+  // v of the weights w (each of v's coordinates is exact for integer weights; the widening below
+  // holds the rounding of others).
+  const auto v_of = [sign](const std::array<double, kWeights>& w) {
+    const double u = w[1] - w[2];
+    return sign < 0 ? std::array<double, kWeights>{w[0], std::max(u, 0.0), std::max(-u, 0.0), w[3]}
+                    : std::array<double, kWeights>{w[0], w[1] + w[2], 0.0, w[3]};
+  };
+  std::array<double, kWeights> lo{};
+  std::array<double, kWeights> hi{};
+  std::array<double, kWeights> low{};
+  std::array<double, kWeights> high{};
+  const auto values_of = [&](const BlockSpan& span) { span_values(span, lo, hi); };
+  // The directions of v over a box of weights (tied_box_ratios()); true when v may be 0 there.
+  const auto box_of_v = [&]() { return tied_box_ratios(lo, hi, sign, low, high); };
+  for (const WeightRegion::Box& box : region.whole) {
+    values_of(span_of(box));
+    if (box_of_v()) d.zero = true;
+    d.nonzero = true;
+    for (std::size_t k = 0; k < kWeights; ++k) {
+      d.lo[k] = std::min(d.lo[k], low[k]);
+      d.hi[k] = std::max(d.hi[k], high[k]);
+    }
+  }
+  for (const WeightRegion::Part& part : region.parts) {
+    // A part whose span's box of v has its directions within those found so far adds nothing.
+    if (d.nonzero) {
+      values_of(span_of(part.block, part.bits));
+      const bool may_be_zero = box_of_v();
+      bool within = !may_be_zero || d.zero;
+      for (std::size_t k = 0; k < kWeights && within; ++k) within = d.lo[k] <= low[k] && high[k] <= d.hi[k];
+      if (within) continue;
+    }
+    for_each_member(span_of(part.block), part.bits, [&](int /*bit*/, const std::array<int, kMaxWeights>& at) {
+      std::array<double, kWeights> w{};
+      for (std::size_t k = 0; k < kWeights; ++k) w[k] = values_[k][static_cast<std::size_t>(at[k])];
+      take_direction(d, v_of(w));
+    });
+  }
+  widen(d, kWeights);
+  return d;
+}
+
+double WeightGrid::tied_extra(int sign, std::span<const double> f_j, std::span<const double> f_i) const {
+  // costs_more_at_every_direction() bounds the rounding by 1e-12 sum_k v_k (|f_jk| + |f_ik|); the
+  // costs' own bound is 1e-12 sum_k w_k (|f_jk| + |f_ik|), larger by 2e-12 min(w2, w3)
+  // (|f_j2| + |f_i2|) for s = -1 (|f_3| = |f_2|), which per unit of sum(v) is at most this.
+  return sign < 0 ? 2e-12 * tied_ratio_ * (std::abs(f_j[1]) + std::abs(f_i[1])) : 0.0;
+}
+
+int WeightGrid::sole_choice_tied(const WeightDirections& tied, int sign, const Candidates& candidates) const {
+  const std::size_t n = candidates.cells.size();
+  if (n == 0 || tied_sign(candidates) != sign || sign == 0) return -1;
+  // v . f is w . f for these candidates: the same proof over the directions of v, with the
+  // margin for the rounding v does not carry.
+  return sole_over(tied, candidates, kWeights, [&](std::span<const double> f_j, std::span<const double> f_i) {
+    return tied_extra(sign, f_j, f_i);
+  });
+}
+
+std::vector<WeightGrid::Share> WeightGrid::split(const WeightRegion& region, const Candidates& candidates,
+                                                 const WeightDirections* tied) const {
   const auto n = static_cast<int>(candidates.cells.size());
   const auto k = static_cast<std::size_t>(candidates.feature_count);
   if (n == 0 || candidates.feature_count != weights() ||
@@ -475,19 +632,15 @@ std::vector<WeightGrid::Share> WeightGrid::split(const WeightRegion& region,
   // chains, so argmin_linear() over the rest chooses what it chooses over all. Unlike
   // corner_test(), which compares each candidate's whole range of costs over the span, this
   // compares the difference of two costs, which stays positive along a narrow cone.
-  const auto prune = [&](const BlockSpan& span, std::vector<int>& among) {
-    if (!bounded || among.size() < 2) return;
-    for (std::size_t j = 0; j < k; ++j) {
-      w_lo[j] = values_[j][static_cast<std::size_t>(span.first[j])];
-      w_hi[j] = values_[j][static_cast<std::size_t>(span.first[j] + span.extent[j] - 1)];
-    }
-    // Each candidate is compared with those cheaper at the span's middle, cheapest first: only
-    // they can cost less all over it, and the cheapest mostly does. (Which pairs are compared
-    // only decides how many candidates go; each one that goes is proven.)
-    for (std::size_t j = 0; j < k; ++j) w_mid[j] = 0.5 * (w_lo[j] + w_hi[j]);
+  // Drops from `among` every candidate that `costs_more(f_j, f_i)` proves costs more than one
+  // cheaper at `middle`, or that has exactly the features of an earlier one. Each candidate is
+  // compared with those cheaper at the middle, cheapest first: only they can cost less all over
+  // the span, and the cheapest mostly does. (Which pairs are compared only decides how many
+  // candidates go; each one that goes is proven.)
+  const auto prune_by = [&](std::span<const double> middle, const auto& costs_more, std::vector<int>& among) {
     by_middle.clear();
     for (const int i : among) {
-      by_middle.emplace_back(linear_cost(w_mid, features_of(i)), i);
+      by_middle.emplace_back(linear_cost(middle, features_of(i)), i);
     }
     std::sort(by_middle.begin(), by_middle.end());
     std::vector<int> kept;
@@ -499,12 +652,44 @@ std::vector<WeightGrid::Share> WeightGrid::split(const WeightRegion& region,
                                         const int i = cheaper.second;
                                         const std::span<const double> fi = features_of(i);
                                         if (std::equal(fj.begin(), fj.end(), fi.begin())) return i < j;
-                                        return costs_more_at_every_weight(fj, fi, w_lo, w_hi);
+                                        return costs_more(fj, fi);
                                       });
       if (!beaten) kept.push_back(j);
     }
     std::sort(kept.begin(), kept.end());
     among = std::move(kept);
+  };
+  // Tied candidates (tied_sign()) with the region's tied directions: a span is also proven in
+  // their coordinates, over the directions of v within both the region's and the span's.
+  const int sign = tied != nullptr && tied->nonzero ? tied_sign(candidates) : 0;
+  const auto prune = [&](const BlockSpan& span, std::vector<int>& among) {
+    if (!bounded || among.size() < 2) return;
+    for (std::size_t j = 0; j < k; ++j) {
+      w_lo[j] = values_[j][static_cast<std::size_t>(span.first[j])];
+      w_hi[j] = values_[j][static_cast<std::size_t>(span.first[j] + span.extent[j] - 1)];
+      w_mid[j] = 0.5 * (w_lo[j] + w_hi[j]);
+    }
+    prune_by(
+        w_mid,
+        [&](std::span<const double> fj, std::span<const double> fi) {
+          return costs_more_at_every_weight(fj, fi, w_lo, w_hi);
+        },
+        among);
+    if (among.size() < 2 || sign == 0) return;
+    WeightDirections within;
+    within.zero = false;
+    if (tied_box_ratios(w_lo, w_hi, sign, within.lo, within.hi)) return;  // v may be 0 here
+    for (std::size_t j = 0; j < k; ++j) {
+      within.lo[j] = std::max(within.lo[j] - 1e-14, tied->lo[j]);
+      within.hi[j] = std::min(within.hi[j] + 1e-14, tied->hi[j]);
+      w_mid[j] = 0.5 * (within.lo[j] + within.hi[j]);
+    }
+    prune_by(
+        w_mid,
+        [&](std::span<const double> fj, std::span<const double> fi) {
+          return costs_more_at_every_direction(fj, fi, within, tied_extra(sign, fj, fi));
+        },
+        among);
   };
 
   // Block `block` (its member points `member`, all when null, and then `box` is the block as a

@@ -117,6 +117,33 @@ class WeightGrid {
   /// features.
   [[nodiscard]] int sole_choice(const WeightDirections& directions, const Candidates& candidates) const;
 
+  /// Tied features. When every candidate's third feature is s times its second (s = -1 or +1,
+  /// as the energy-aware strategy's d_gbe = -d_gb above half charge and +d_gb below), a cost is
+  /// w1 f1 + (w2 + s w3) f2 + w4 f4: it depends on w2 + s w3, not on w2 and w3 apart, and a
+  /// region is a slab along (0, 1, -s, 0) whose directions w / sum(w) no box follows. In the
+  /// coordinates v = (w1, max(w2 - w3, 0), max(w3 - w2, 0), w4) (s = -1) or (w1, w2 + w3, 0, w4)
+  /// (s = +1), v . f = w . f for such candidates, and a region's directions v / sum(v) are narrow.
+  /// The sign s of `candidates` (4 features), or 0 when they are not tied so.
+  [[nodiscard]] static int tied_sign(const Candidates& candidates);
+  /// The directions v / sum(v) of the region's points in the coordinates of tied sign `sign`
+  /// (widened by 1e-14, as directions()); `zero`: some point has v = 0, where every tied
+  /// candidate's cost is exactly 0 (for s = -1: w1 = w4 = 0 and w2 = w3, where w2 f2 and
+  /// w3 (-f2) cancel exactly). Needs 4 weights.
+  [[nodiscard]] WeightDirections tied_directions(const WeightRegion& region, int sign) const;
+  /// sole_choice() for candidates of tied_sign() `sign` != 0, by the region's
+  /// tied_directions(): each other candidate costs more at every direction of v, by
+  /// costs_more_at_every_direction() with an extra margin for the rounding that v does not
+  /// carry (for s = -1 the costs' rounding grows with w2 + w3 = |w2 - w3| + 2 min(w2, w3), and
+  /// min(w2, w3) / sum(v) is at most tied_ratio()). -1 when not proven.
+  [[nodiscard]] int sole_choice_tied(const WeightDirections& tied, int sign,
+                                     const Candidates& candidates) const;
+  /// An upper bound of min(w2, w3) / (w1 + |w2 - w3| + w4) over the grid's points where the
+  /// denominator is not 0 (the largest w2 or w3 over the smallest positive value it can take).
+  [[nodiscard]] double tied_ratio() const { return tied_ratio_; }
+  /// The extra margin (costs_more_at_every_direction()) of a claim about candidates f_j, f_i of
+  /// tied sign `sign` over directions of v: 2e-12 tied_ratio() (|f_j2| + |f_i2|) for s = -1, else 0.
+  [[nodiscard]] double tied_extra(int sign, std::span<const double> f_j, std::span<const double> f_i) const;
+
   /// One part of a split: the points where candidate `candidate` is argmin_linear's choice.
   struct Share {
     int candidate = 0;
@@ -125,7 +152,12 @@ class WeightGrid {
   /// `region` divided by argmin_linear(candidates, w) at each of its points w: the non-empty
   /// shares in ascending candidate order. `candidates` must have at least one candidate and
   /// weights() features.
-  [[nodiscard]] std::vector<Share> split(const WeightRegion& region, const Candidates& candidates) const;
+  /// `tied`, when given, must be the region's tied_directions() for the candidates'
+  /// tied_sign(): a block then also rules out candidates in those coordinates (over the
+  /// directions of v within both the region's and the block's span), which decides most blocks
+  /// on the boundary of a slab-shaped region without visiting their points.
+  [[nodiscard]] std::vector<Share> split(const WeightRegion& region, const Candidates& candidates,
+                                         const WeightDirections* tied = nullptr) const;
 
  private:
   /// The first grid index of a block or box along each weight, and the number of grid values it
@@ -135,6 +167,9 @@ class WeightGrid {
     std::array<int, kMaxWeights> extent{};
   };
   [[nodiscard]] BlockSpan span_of(std::uint32_t block) const;
+  /// The lowest and highest value of each weight over `span`.
+  void span_values(const BlockSpan& span, std::array<double, kMaxWeights>& lo,
+                   std::array<double, kMaxWeights>& hi) const;
   [[nodiscard]] BlockSpan span_of(const WeightRegion::Box& box) const;
   /// The smallest span holding the points `bits` (at least one) of block `block`, from the
   /// bits' words without visiting the points.
@@ -158,6 +193,7 @@ class WeightGrid {
   [[nodiscard]] BlockBits all_bits(const BlockSpan& span) const;
 
   std::vector<std::vector<double>> values_;
+  double tied_ratio_ = 0.0;
   std::array<std::uint32_t, kMaxWeights> blocks_{1, 1, 1, 1};
   std::uint32_t block_count_ = 1;
   std::uint64_t size_ = 1;

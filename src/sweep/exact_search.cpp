@@ -46,6 +46,9 @@ struct Branch {
   std::optional<std::array<std::array<int, 2>, WeightGrid::kMaxWeights>> box;
   std::optional<std::uint64_t> vectors;
   std::optional<WeightDirections> directions;
+  /// Its directions in the coordinates of tied features (WeightGrid::tied_directions), for
+  /// signs -1 and +1, built the first time the plain directions do not settle a decision.
+  std::array<std::optional<WeightDirections>, 2> tied;
 };
 
 class Explorer {
@@ -121,12 +124,22 @@ class Explorer {
       }
       // Most decisions of a narrow region do not split it, though several candidates can win
       // in its bounding box: its directions prove that without visiting its points.
-      const int sole = grid_.sole_choice(*b.directions, *candidates);
+      int sole = grid_.sole_choice(*b.directions, *candidates);
+      const int sign = sole < 0 ? WeightGrid::tied_sign(*candidates) : 0;
+      const WeightDirections* tied_directions = nullptr;
+      if (sign != 0) {
+        // The energy-aware costs depend on w2 - w3 (or w2 + w3): in those coordinates a region's
+        // directions are narrow where w / sum(w) is not (WeightGrid::tied_sign()).
+        std::optional<WeightDirections>& tied = b.tied[sign < 0 ? 0 : 1];
+        if (!tied) tied = grid_.tied_directions(b.region, sign);
+        sole = grid_.sole_choice_tied(*tied, sign, *candidates);
+        tied_directions = &*tied;
+      }
       if (sole >= 0) {
         (void)sim.step_choosing(sole);
         continue;
       }
-      std::vector<WeightGrid::Share> shares = grid_.split(b.region, *candidates);
+      std::vector<WeightGrid::Share> shares = grid_.split(b.region, *candidates, tied_directions);
       if (shares.size() == 1) {
         (void)sim.step_choosing(shares.front().candidate);
         continue;
@@ -150,9 +163,14 @@ class Explorer {
       }
       for (std::size_t s = 0; s + 1 < shares.size(); ++s) {
         if (children[s] == nullptr) continue;
-        auto fork = std::make_shared<Branch>(Branch{b.sims, std::move(shares[s].region), b.choices,
-                                                    std::move(children[s]), std::nullopt, std::nullopt,
-                                                    std::nullopt});
+        auto fork = std::make_shared<Branch>(Branch{b.sims,
+                                                    std::move(shares[s].region),
+                                                    b.choices,
+                                                    std::move(children[s]),
+                                                    std::nullopt,
+                                                    std::nullopt,
+                                                    std::nullopt,
+                                                    {}});
         fork->choices.push_back(shares[s].candidate);
         const int candidate = shares[s].candidate;
         tasks_.run([this, fork, candidate, instance] {
@@ -169,6 +187,7 @@ class Explorer {
       b.box.reset();
       b.vectors.reset();
       b.directions.reset();
+      b.tied = {};
       (void)sim.step_choosing(last.candidate);
     }
   }
@@ -371,7 +390,8 @@ ExactSearchStats exact_search(std::span<const RunSpec> instances, const WeightGr
                                 std::make_shared<Node>(Node{root, nullptr, 1, false, {}}),
                                 std::nullopt,
                                 std::nullopt,
-                                std::nullopt});
+                                std::nullopt,
+                                {}});
       });
     }
     tasks.wait();

@@ -6,6 +6,7 @@
 // rounding decides.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -287,6 +288,189 @@ TEST(WeightGrid, SplitOfNarrowRegionsWithNearTiesIsArgminLinearsChoice) {
           ASSERT_EQ(owner[static_cast<std::size_t>(slot(at))], argmin_linear(c, grid.weights_at(at)))
               << "trial " << trial << ", " << n << " random candidates";
         });
+      }
+    }
+  }
+  EXPECT_GT(points, 1000000);
+}
+
+/// Random candidates whose third feature is `sign` times the second (the energy-aware
+/// strategy's d_gbe = -d_gb above half charge, +d_gb below): lengths of an 8-connected grid of
+/// 10 m cells (10 a + 10 sqrt(2) b), theta_rel in eighths; some rows repeat another's lengths
+/// with another theta_rel, one in three repeats a row whole (an exact tie).
+Candidates random_tied_candidates(Rng& rng, int sign) {
+  Candidates c;
+  c.feature_count = 4;
+  const auto length = [&] {
+    return 10.0 * static_cast<double>(uniform_below(rng, 9)) +
+           10.0 * std::sqrt(2.0) * static_cast<double>(uniform_below(rng, 6));
+  };
+  const auto n = 2 + static_cast<int>(uniform_below(rng, 10));
+  for (int i = 0; i < n; ++i) {
+    c.cells.push_back(Cell{i, 0});
+    double g = length();
+    double gb = length();
+    if (i > 0 && uniform_below(rng, 4) == 0) {  // another's lengths, another turn
+      g = c.features[0];
+      gb = c.features[1];
+    }
+    const double theta = static_cast<double>(uniform_below(rng, 9)) / 8.0;
+    for (const double f : {g, gb, sign * gb, theta}) c.features.push_back(f);
+  }
+  if (uniform_below(rng, 3) == 0) {
+    c.cells.push_back(Cell{n, 0});
+    for (int k = 0; k < 4; ++k) c.features.push_back(c.features[static_cast<std::size_t>(k)]);
+  }
+  return c;
+}
+
+/// v of WeightGrid::tied_directions(): (w1, max(w2 - w3, 0), max(w3 - w2, 0), w4) for sign -1,
+/// (w1, w2 + w3, 0, w4) for +1.
+Row tied_coordinates(const std::vector<double>& w, int sign) {
+  const double u = w[1] - w[2];
+  return sign < 0 ? Row{w[0], std::max(u, 0.0), std::max(-u, 0.0), w[3]} : Row{w[0], w[1] + w[2], 0.0, w[3]};
+}
+
+TEST(WeightGrid, TiedSignSeesTheThirdFeatureAsTheSecondSigned) {
+  Rng rng = make_rng(21, "weight_directions");
+  EXPECT_EQ(WeightGrid::tied_sign(random_tied_candidates(rng, -1)), -1);
+  EXPECT_EQ(WeightGrid::tied_sign(random_tied_candidates(rng, 1)), 1);
+  Candidates c = random_tied_candidates(rng, -1);
+  c.features[6] = std::nextafter(c.features[6], 1e9);  // row 1's third feature, one ulp off
+  EXPECT_EQ(WeightGrid::tied_sign(c), 0);
+  Candidates zeros;
+  zeros.feature_count = 4;
+  zeros.cells = {Cell{0, 0}};
+  zeros.features = {3, 0, 0, 1};  // 0 = -0 and 0 = +0: either sign is right; -1 is said
+  EXPECT_EQ(WeightGrid::tied_sign(zeros), -1);
+}
+
+TEST(WeightGrid, TiedRatioBoundsTheSmallerOfW2AndW3OverTheOtherTerms) {
+  // At every point where w1 + |w2 - w3| + w4 > 0, min(w2, w3) over it is at most tied_ratio().
+  for (const std::vector<double>& values :
+       {std::vector<double>{0, 1, 2, 3, 4, 5, 6, 7}, std::vector<double>{0, 0.25, 3, 7.5},
+        std::vector<double>{40, 41, 47}}) {
+    const WeightGrid grid({values, values, values, values});
+    double worst = 0.0;
+    grid.for_each_point(grid.everything(), [&](const Point& at) {
+      const std::vector<double> w = grid.weights_at(at);
+      const double others = w[0] + std::abs(w[1] - w[2]) + w[3];
+      if (others > 0.0) worst = std::max(worst, std::min(w[1], w[2]) / others);
+    });
+    EXPECT_GE(grid.tied_ratio(), worst);
+    EXPECT_GT(worst, 0.0);
+  }
+  EXPECT_NEAR(integer_grid(251).tied_ratio(), 250.0, 1e-9);
+}
+
+TEST(WeightGrid, TiedDirectionsBoundEveryPointsDirectionInTheirCoordinates) {
+  Rng rng = make_rng(22, "weight_directions");
+  const WeightGrid grid = integer_grid(13);
+  for (int trial = 0; trial < 30; ++trial) {
+    const int sign = trial % 2 == 0 ? -1 : 1;
+    for (const WeightGrid::Share& share : grid.split(grid.everything(), random_tied_candidates(rng, sign))) {
+      const WeightDirections d = grid.tied_directions(share.region, sign);
+      bool zero = false;
+      grid.for_each_point(share.region, [&](const Point& at) {
+        const Row v = tied_coordinates(grid.weights_at(at), sign);
+        const double sum = v[0] + v[1] + v[2] + v[3];
+        if (sum == 0.0) {
+          zero = true;
+          return;
+        }
+        EXPECT_TRUE(d.nonzero);
+        for (std::size_t k = 0; k < 4; ++k) {
+          EXPECT_LE(d.lo[k], v[k] / sum) << "trial " << trial;
+          EXPECT_GE(d.hi[k], v[k] / sum) << "trial " << trial;
+        }
+      });
+      if (zero) {
+        EXPECT_TRUE(d.zero) << "trial " << trial;
+      }
+    }
+  }
+}
+
+TEST(WeightGrid, SoleChoiceTiedIsArgminLinearsChoiceAtEveryPoint) {
+  // Regions as the search makes them from tied candidates (shares of shares: slabs along
+  // (0, 1, -sign, 0)), asked about fresh tied candidates, some with near-ties one rounding
+  // apart: when sole_choice_tied() names a candidate, argmin_linear() chooses it at every
+  // point, including the line w1 = w4 = 0, w2 = w3 where the costs cancel to 0. It proves many
+  // regions that sole_choice() by the directions of w does not.
+  Rng rng = make_rng(23, "weight_directions");
+  int named = 0;
+  int only_tied = 0;
+  for (const int first_value : {0, 40}) {
+    std::vector<double> v;
+    for (int i = 0; i < 16; ++i) v.push_back(first_value + i);
+    const WeightGrid grid({v, v, v, v});
+    for (int trial = 0; trial < 24; ++trial) {
+      const int sign = trial % 3 == 0 ? 1 : -1;
+      for (const WeightGrid::Share& first :
+           grid.split(grid.everything(), random_tied_candidates(rng, sign))) {
+        for (const WeightGrid::Share& share : grid.split(first.region, random_tied_candidates(rng, sign))) {
+          const WeightDirections plain = grid.directions(share.region);
+          const WeightDirections tied = grid.tied_directions(share.region, sign);
+          for (int ask = 0; ask < 3; ++ask) {
+            Candidates c = random_tied_candidates(rng, sign);
+            if (ask == 2) {  // a row a rounding away from row 0 in its first feature
+              c.cells.push_back(Cell{static_cast<int>(c.cells.size()), 0});
+              for (int k = 0; k < 4; ++k) {
+                const double f = c.features[static_cast<std::size_t>(k)];
+                c.features.push_back(k == 0 ? std::nextafter(f, 1e9) : f);
+              }
+            }
+            const int sole = grid.sole_choice_tied(tied, sign, c);
+            if (sole < 0) continue;
+            ++named;
+            only_tied += grid.sole_choice(plain, c) < 0 ? 1 : 0;
+            grid.for_each_point(share.region, [&](const Point& at) {
+              ASSERT_EQ(argmin_linear(c, grid.weights_at(at)), sole)
+                  << "values from " << first_value << ", trial " << trial << ", sign " << sign;
+            });
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(named, 100);
+  EXPECT_GT(only_tied, named / 4);
+}
+
+TEST(WeightGrid, SplitByTiedDirectionsIsArgminLinearsChoice) {
+  // split() given the region's tied directions rules out candidates per block in those
+  // coordinates too: every point still goes to argmin_linear()'s choice, near-ties included, on
+  // slabs near the origin (the line w1 = w4 = 0, w2 = w3 included) and far from it.
+  Rng rng = make_rng(24, "weight_directions");
+  long points = 0;
+  for (const int first_value : {0, 40}) {
+    std::vector<double> v;
+    for (int i = 0; i < 16; ++i) v.push_back(first_value + i);
+    const WeightGrid grid({v, v, v, v});
+    std::vector<int> owner(static_cast<std::size_t>(grid.size()), -1);
+    const auto slot = [](const Point& at) { return ((at[0] * 16 + at[1]) * 16 + at[2]) * 16 + at[3]; };
+    for (int trial = 0; trial < 12; ++trial) {
+      const int sign = trial % 3 == 0 ? 1 : -1;
+      for (const WeightGrid::Share& first :
+           grid.split(grid.everything(), random_tied_candidates(rng, sign))) {
+        for (const WeightGrid::Share& share : grid.split(first.region, random_tied_candidates(rng, sign))) {
+          const WeightDirections tied = grid.tied_directions(share.region, sign);
+          Candidates c = random_tied_candidates(rng, sign);
+          c.cells.push_back(Cell{static_cast<int>(c.cells.size()), 0});
+          for (int k = 0; k < 4; ++k) {  // a row a rounding away from row 0
+            const double f = c.features[static_cast<std::size_t>(k)];
+            c.features.push_back(k == 0 ? std::nextafter(f, -1e9) : f);
+          }
+          for (const WeightGrid::Share& s : grid.split(share.region, c, &tied)) {
+            grid.for_each_point(
+                s.region, [&](const Point& at) { owner[static_cast<std::size_t>(slot(at))] = s.candidate; });
+          }
+          grid.for_each_point(share.region, [&](const Point& at) {
+            ++points;
+            ASSERT_EQ(owner[static_cast<std::size_t>(slot(at))], argmin_linear(c, grid.weights_at(at)))
+                << "values from " << first_value << ", trial " << trial << ", sign " << sign;
+          });
+        }
       }
     }
   }
