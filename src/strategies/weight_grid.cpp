@@ -414,59 +414,68 @@ WeightRegion WeightGrid::united(const WeightRegion& a, const WeightRegion& b) {
   return out;
 }
 
-WeightDirections WeightGrid::directions(const WeightRegion& region) const {
-  const std::size_t n = values_.size();
+template <typename BoxOf, typename PointOf>
+WeightDirections WeightGrid::directions_in(const WeightRegion& region, std::size_t n, const BoxOf& box_of,
+                                           const PointOf& point_of) const {
   WeightDirections d;
   d.lo.fill(1.0);
   d.hi.fill(0.0);
   d.zero = false;
   d.nonzero = false;
-  // The directions of a box of values lo..hi per weight (box_ratios()). Returns whether the box
-  // holds the zero vector.
-  std::array<double, kMaxWeights> low{};
-  std::array<double, kMaxWeights> high{};
-  const auto box_directions = [&](const std::array<double, kMaxWeights>& lo,
-                                  const std::array<double, kMaxWeights>& hi) {
-    box_ratios(std::span(lo).first(n), std::span(hi).first(n), low, high);
-    return std::all_of(lo.begin(), lo.begin() + static_cast<std::ptrdiff_t>(n),
-                       [](double v) { return v == 0.0; });
-  };
   std::array<double, kMaxWeights> lo{};
   std::array<double, kMaxWeights> hi{};
-  const auto values_of = [&](const BlockSpan& span) { span_values(span, lo, hi); };
+  std::array<double, kMaxWeights> low{};
+  std::array<double, kMaxWeights> high{};
   for (const WeightRegion::Box& box : region.whole) {
-    values_of(span_of(box));
-    const bool zero = box_directions(lo, hi);
+    span_values(span_of(box), lo, hi);
+    const bool zero = box_of(lo, hi, low, high);
     d.zero = d.zero || zero;
-    if (zero && lo == hi) continue;  // the zero vector alone
+    // Every ratio's highest is 0 only where every coordinate is: the zero point alone.
+    if (zero && std::all_of(high.begin(), high.begin() + static_cast<std::ptrdiff_t>(n),
+                            [](double x) { return x == 0.0; })) {
+      continue;
+    }
     d.nonzero = true;
     for (std::size_t k = 0; k < n; ++k) {
       d.lo[k] = std::min(d.lo[k], low[k]);
       d.hi[k] = std::max(d.hi[k], high[k]);
     }
   }
-  // A part whose members' span has its directions (and its zero vector, if any) within those
+  // A part whose members' span has its directions (and its zero point, if any) within those
   // found so far cannot widen them: its points are not visited. In a large region, its boxes'
   // directions hold most of its parts'.
   const auto within_so_far = [&](const WeightRegion::Part& part) {
     if (!d.nonzero) return false;
-    values_of(span_of(part.block, part.bits));
-    if (box_directions(lo, hi) && !d.zero) return false;
+    span_values(span_of(part.block, part.bits), lo, hi);
+    if (box_of(lo, hi, low, high) && !d.zero) return false;
     for (std::size_t k = 0; k < n; ++k) {
       if (low[k] < d.lo[k] || high[k] > d.hi[k]) return false;
     }
     return true;
   };
-  // A point's direction: take_direction().
   for (const WeightRegion::Part& part : region.parts) {
     if (within_so_far(part)) continue;
     for_each_member(span_of(part.block), part.bits, [&](int /*bit*/, const std::array<int, kMaxWeights>& at) {
-      for (std::size_t k = 0; k < n; ++k) lo[k] = values_[k][static_cast<std::size_t>(at[k])];
-      take_direction(d, std::span(lo).first(n));
+      for (std::size_t k = 0; k < values_.size(); ++k) lo[k] = values_[k][static_cast<std::size_t>(at[k])];
+      const std::array<double, kMaxWeights> point = point_of(lo);
+      take_direction(d, std::span(point).first(n));
     });
   }
   widen(d, n);
   return d;
+}
+
+WeightDirections WeightGrid::directions(const WeightRegion& region) const {
+  const std::size_t n = values_.size();
+  return directions_in(
+      region, n,
+      [n](const std::array<double, kMaxWeights>& lo, const std::array<double, kMaxWeights>& hi,
+          std::array<double, kMaxWeights>& low, std::array<double, kMaxWeights>& high) {
+        box_ratios(std::span(lo).first(n), std::span(hi).first(n), low, high);
+        return std::all_of(lo.begin(), lo.begin() + static_cast<std::ptrdiff_t>(n),
+                           [](double v) { return v == 0.0; });
+      },
+      [](const std::array<double, kMaxWeights>& w) { return w; });
 }
 
 int WeightGrid::sole_choice(const WeightDirections& directions, const Candidates& candidates) const {
@@ -497,51 +506,18 @@ WeightDirections WeightGrid::tied_directions(const WeightRegion& region, int sig
   if (weights() != static_cast<int>(kWeights) || (sign != -1 && sign != 1)) {
     throw std::invalid_argument("weight grid tied_directions: needs 4 weights and a sign of -1 or +1");
   }
-  WeightDirections d;
-  d.lo.fill(1.0);
-  d.hi.fill(0.0);
-  d.zero = false;
-  d.nonzero = false;
-  // v of the weights w (each of v's coordinates is exact for integer weights; the widening below
+  // v of the weights w (each of v's coordinates is exact for integer weights; the widening
   // holds the rounding of others).
-  const auto v_of = [sign](const std::array<double, kWeights>& w) {
-    const double u = w[1] - w[2];
-    return sign < 0 ? std::array<double, kWeights>{w[0], std::max(u, 0.0), std::max(-u, 0.0), w[3]}
-                    : std::array<double, kWeights>{w[0], w[1] + w[2], 0.0, w[3]};
-  };
-  std::array<double, kWeights> lo{};
-  std::array<double, kWeights> hi{};
-  std::array<double, kWeights> low{};
-  std::array<double, kWeights> high{};
-  const auto values_of = [&](const BlockSpan& span) { span_values(span, lo, hi); };
-  // The directions of v over a box of weights (tied_box_ratios()); true when v may be 0 there.
-  const auto box_of_v = [&]() { return tied_box_ratios(lo, hi, sign, low, high); };
-  for (const WeightRegion::Box& box : region.whole) {
-    values_of(span_of(box));
-    if (box_of_v()) d.zero = true;
-    d.nonzero = true;
-    for (std::size_t k = 0; k < kWeights; ++k) {
-      d.lo[k] = std::min(d.lo[k], low[k]);
-      d.hi[k] = std::max(d.hi[k], high[k]);
-    }
-  }
-  for (const WeightRegion::Part& part : region.parts) {
-    // A part whose span's box of v has its directions within those found so far adds nothing.
-    if (d.nonzero) {
-      values_of(span_of(part.block, part.bits));
-      const bool may_be_zero = box_of_v();
-      bool within = !may_be_zero || d.zero;
-      for (std::size_t k = 0; k < kWeights && within; ++k) within = d.lo[k] <= low[k] && high[k] <= d.hi[k];
-      if (within) continue;
-    }
-    for_each_member(span_of(part.block), part.bits, [&](int /*bit*/, const std::array<int, kMaxWeights>& at) {
-      std::array<double, kWeights> w{};
-      for (std::size_t k = 0; k < kWeights; ++k) w[k] = values_[k][static_cast<std::size_t>(at[k])];
-      take_direction(d, v_of(w));
-    });
-  }
-  widen(d, kWeights);
-  return d;
+  return directions_in(
+      region, kWeights,
+      [sign](const std::array<double, kWeights>& lo, const std::array<double, kWeights>& hi,
+             std::array<double, kWeights>& low,
+             std::array<double, kWeights>& high) { return tied_box_ratios(lo, hi, sign, low, high); },
+      [sign](const std::array<double, kWeights>& w) {
+        const double u = w[1] - w[2];
+        return sign < 0 ? std::array<double, kWeights>{w[0], std::max(u, 0.0), std::max(-u, 0.0), w[3]}
+                        : std::array<double, kWeights>{w[0], w[1] + w[2], 0.0, w[3]};
+      });
 }
 
 double WeightGrid::tied_extra(int sign, std::span<const double> f_j, std::span<const double> f_i) const {

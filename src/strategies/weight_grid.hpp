@@ -167,6 +167,13 @@ class WeightGrid {
     std::array<int, kMaxWeights> extent{};
   };
   [[nodiscard]] BlockSpan span_of(std::uint32_t block) const;
+  /// The directions of `region`'s points in n coordinates (w itself, or the tied coordinates):
+  /// `box_of(lo, hi, low, high)` puts the extreme ratios of a box of weights lo..hi into
+  /// low..high and returns whether some point of it may have every coordinate 0;
+  /// `point_of(w)` gives a point's coordinates. Widened as directions() says.
+  template <typename BoxOf, typename PointOf>
+  [[nodiscard]] WeightDirections directions_in(const WeightRegion& region, std::size_t n, const BoxOf& box_of,
+                                               const PointOf& point_of) const;
   /// The lowest and highest value of each weight over `span`.
   void span_values(const BlockSpan& span, std::array<double, kMaxWeights>& lo,
                    std::array<double, kMaxWeights>& hi) const;

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -475,6 +476,40 @@ TEST(WeightGrid, SplitByTiedDirectionsIsArgminLinearsChoice) {
     }
   }
   EXPECT_GT(points, 1000000);
+}
+
+TEST(WeightGrid, SoleChoiceTiedKeepsTheMarginOfTheCostsAsComputed) {
+  // The tied coordinates drop min(w2, w3): at w = (0, 1e8 + 1, 1e8, 0), v = (0, 1, 0, 0), but
+  // the costs add two products near 1e8 f2 whose rounding dwarfs a difference of f2 in the 11th
+  // digit. Candidate 1 costs more than candidate 0 in exact arithmetic, by more than the margin
+  // of v alone, yet argmin_linear() chooses it there. The extra margin (tied_ratio() is 1e8 on
+  // this grid) refuses the claim.
+  const WeightGrid grid({{0.0}, {1e8, 1e8 + 1}, {1e8}, {0.0}});
+  EXPECT_GE(grid.tied_ratio(), 1e8);
+  const double g = 10.0 / 7.0;
+  const double g1 = g * (1 + 1e-11);
+  Candidates c;
+  c.feature_count = 4;
+  c.cells = {Cell{0, 0}, Cell{1, 0}};
+  c.features = {0, g, -g, 0, 0, g1, -g1, 0};
+  ASSERT_EQ(WeightGrid::tied_sign(c), -1);
+  EXPECT_EQ(argmin_linear(c, std::vector<double>{0, 1e8 + 1, 1e8, 0}), 1);  // rounding decides
+  EXPECT_EQ(argmin_linear(c, std::vector<double>{0, 1e8, 1e8, 0}), 0);      // v = 0: every cost 0
+  const WeightDirections tied = grid.tied_directions(grid.everything(), -1);
+  EXPECT_EQ(grid.sole_choice_tied(tied, -1, c), -1);
+  // Without the extra margin the claim would pass: the difference is above v's own margin.
+  EXPECT_TRUE(costs_more_at_every_direction(std::span<const double>(c.features).subspan(4, 4),
+                                            std::span<const double>(c.features).first(4), tied));
+  EXPECT_FALSE(costs_more_at_every_direction(
+      std::span<const double>(c.features).subspan(4, 4), std::span<const double>(c.features).first(4), tied,
+      grid.tied_extra(-1, std::span<const double>(c.features).subspan(4, 4),
+                      std::span<const double>(c.features).first(4))));
+  // split() with the tied directions still gives each point its argmin.
+  for (const WeightGrid::Share& share : grid.split(grid.everything(), c, &tied)) {
+    grid.for_each_point(share.region, [&](const Point& at) {
+      EXPECT_EQ(argmin_linear(c, grid.weights_at(at)), share.candidate);
+    });
+  }
 }
 
 TEST(WeightGrid, SoleChoiceAtTheZeroVectorIsTheFirstCandidate) {
