@@ -313,12 +313,17 @@ TEST(WeightSearchRunner, ShardsMergeIntoExactlyTheFilesOfOneSearch) {
   }
 }
 
-/// The lines of a journal, each with its newline; `behaviours`: how many hold a behaviour (the
-/// others a finished subtree).
+/// The lines of a journal, each with its newline (a torn last line, as a reader can see while the
+/// search writes it, without); `behaviours`: how many hold a behaviour (the others a finished
+/// subtree).
 std::vector<std::string> journal_lines(const std::string& journal, std::size_t* behaviours = nullptr) {
   std::vector<std::string> lines;
   for (std::size_t at = 0; at < journal.size();) {
     const std::size_t end = journal.find('\n', at);
+    if (end == std::string::npos) {
+      lines.push_back(journal.substr(at));
+      break;
+    }
     lines.push_back(journal.substr(at, end - at + 1));
     at = end + 1;
   }
