@@ -19,16 +19,6 @@ void set_bit(BlockBits& bits, int bit) {
   bits[static_cast<std::size_t>(bit) / 64] |= std::uint64_t{1} << (static_cast<unsigned>(bit) % 64);
 }
 
-/// True when a block holds few enough of its points that deciding each member alone beats the
-/// row-by-row partial sums over all of the block's points. A narrow region's blocks hold
-/// 0.1-1% of their points; the cut at a quarter of a block was chosen, not tuned.
-bool sparse(const BlockBits& bits) {
-  constexpr int kMostPoints = 1024;
-  int n = 0;
-  for (const std::uint64_t word : bits) n += std::popcount(word);
-  return n <= kMostPoints;
-}
-
 /// Adds the direction v / sum(v) of a point's weights (or coordinates) `v` to `d`, or marks
 /// `d.zero` when they sum to 0. One division, then products: within two units in the last place
 /// of the ratios, well inside widen()'s margin.
@@ -675,13 +665,14 @@ std::vector<WeightGrid::Share> WeightGrid::split(const WeightRegion& region, con
   // The costs are argmin_linear_among()'s own: linear_cost() adds w_j * F_j to 0.0 in feature
   // order, so its partial sums over the first weights are computed once per value of them
   // (partial[j]: the sum of the first j terms, per candidate of `among`) and the last term is
-  // added per point: the same operations on the same doubles, in the same order.
+  // added per point: the same operations on the same doubles, in the same order. Only the rows
+  // (points along the last weight: one byte of the bits) that hold members are visited, so a
+  // block with few members costs what they cost.
   std::array<std::vector<double>, kWeights + 1> partial;
   std::vector<double> among_features;
   // The shares of a block decided point by point, to the candidates' regions.
-  const auto emit = [&](std::uint32_t block, const BlockBits* member, const WeightRegion::Box* box,
-                        const std::vector<int>& among, const BlockSpan& span) {
-    const BlockBits full = member == nullptr ? all_bits(span) : *member;
+  const auto emit = [&](std::uint32_t block, const BlockBits& full, const WeightRegion::Box* box,
+                        const std::vector<int>& among) {
     for (const int i : among) {
       if (touched[static_cast<std::size_t>(i)] == 0) continue;
       WeightRegion& to = won[static_cast<std::size_t>(i)];
@@ -695,6 +686,7 @@ std::vector<WeightGrid::Share> WeightGrid::split(const WeightRegion& region, con
   const auto decide_points = [&](std::uint32_t block, const BlockBits* member, const WeightRegion::Box* box,
                                  const std::vector<int>& among) {
     const BlockSpan span = span_of(block);
+    const BlockBits points = member == nullptr ? all_bits(span) : *member;
     const std::size_t m = among.size();
     for (const int i : among) {
       shares[static_cast<std::size_t>(i)] = BlockBits{};
@@ -705,16 +697,6 @@ std::vector<WeightGrid::Share> WeightGrid::split(const WeightRegion& region, con
       set_bit(shares[winner], bit);
       touched[winner] = 1;
     };
-    if (member != nullptr && sparse(*member)) {
-      // Few points: argmin_linear_among() itself at each.
-      std::array<double, kWeights> w{};
-      const std::span<const double> weights(w.data(), k);
-      for_each_member(span, *member, [&](int bit, const std::array<int, kMaxWeights>& at) {
-        for (std::size_t j = 0; j < k; ++j) w[j] = values_[j][static_cast<std::size_t>(at[j])];
-        decided(bit, argmin_linear_among(candidates, weights, among));
-      });
-      return emit(block, member, box, among, span);
-    }
     // The candidates' features by feature, for the sums over every point below.
     among_features.resize(m * kWeights);
     for (std::size_t c = 0; c < m; ++c) {
@@ -733,59 +715,77 @@ std::vector<WeightGrid::Share> WeightGrid::split(const WeightRegion& region, con
       const double* f = &among_features[j * m];
       for (std::size_t c = 0; c < m; ++c) partial[j + 1][c] = partial[j][c] + wj * f[c];
     };
-    std::array<int, kMaxWeights> local{};
-    for (local[0] = 0; local[0] < span.extent[0]; ++local[0]) {
-      add_term(0, span.first[0] + local[0]);
-      for (local[1] = 0; local[1] < span.extent[1]; ++local[1]) {
-        add_term(1, span.first[1] + local[1]);
-        for (local[2] = 0; local[2] < span.extent[2]; ++local[2]) {
-          add_term(2, span.first[2] + local[2]);
-          if (k == kWeights) {
-            // The row of (up to) 8 points along the last weight at once: candidate by candidate,
-            // each point's running best, with the same sums and comparisons as below, in an
-            // order the compiler can vectorise.
-            std::array<double, kBlockEdge> w{};
-            const std::span<const double> last(values_[3]);
-            const std::span<const double> row = last.subspan(static_cast<std::size_t>(span.first[3]),
-                                                             static_cast<std::size_t>(span.extent[3]));
-            std::copy(row.begin(), row.end(), w.begin());
-            const double* base = partial[3].data();
-            const double* f = &among_features[3 * m];
-            std::array<double, kBlockEdge> best_cost{};
-            std::array<double, kBlockEdge> best_at{};  // candidate positions, exact as doubles
-            for (std::size_t p = 0; p < kBlockEdge; ++p) best_cost[p] = base[0] + w[p] * f[0];
-            for (std::size_t c = 1; c < m; ++c) {
-              const double at = static_cast<double>(c);
-              for (std::size_t p = 0; p < kBlockEdge; ++p) {
-                const double cost = base[c] + w[p] * f[c];
-                const bool better = cost < best_cost[p];  // strict: a tie keeps the earlier one
-                best_cost[p] = better ? cost : best_cost[p];
-                best_at[p] = better ? at : best_at[p];
-              }
-            }
-            for (local[3] = 0; local[3] < span.extent[3]; ++local[3]) {
-              const int bit = bit_of(local);
-              if (member != nullptr && !has_point(*member, bit)) continue;
-              decided(bit, among[static_cast<std::size_t>(best_at[static_cast<std::size_t>(local[3])])]);
-            }
-            continue;
+    const double* base = partial[3].data();
+    const double* f3 = &among_features[3 * m];
+    int summed_l0 = -1;
+    static_assert(kBlockEdge == 8);
+    for (std::size_t word = 0; word < points.size(); ++word) {
+      const std::uint64_t rows = points[word];
+      if (rows == 0) continue;
+      // A word holds the 64 points of one (local[0], local[1]) (bit_of()).
+      const int l0 = static_cast<int>(word >> 3);
+      const int l1 = static_cast<int>(word & 7);
+      if (l0 != summed_l0) add_term(0, span.first[0] + l0);
+      summed_l0 = l0;
+      add_term(1, span.first[1] + l1);
+      for (int l2 = 0; l2 < kBlockEdge; ++l2) {
+        const auto row = static_cast<unsigned>(rows >> static_cast<unsigned>(8 * l2)) & 0xFFU;
+        if (row == 0) continue;
+        add_term(2, span.first[2] + l2);
+        const int first_bit = static_cast<int>(word * 64) + 8 * l2;
+        if (k < kWeights) {
+          // No fourth weight: the row is its one point, and partial[3] its costs.
+          std::size_t best = 0;
+          for (std::size_t c = 1; c < m; ++c) {
+            if (base[c] < base[best]) best = c;  // argmin_linear's strict '<'
           }
-          for (local[3] = 0; local[3] < span.extent[3]; ++local[3]) {
-            const int bit = bit_of(local);
-            if (member != nullptr && !has_point(*member, bit)) continue;
-            add_term(3, span.first[3] + local[3]);
-            // argmin_linear_among()'s rule: strict '<', so a tie keeps the earlier candidate.
-            const std::vector<double>& cost = partial[kWeights];
-            std::size_t best = 0;
-            for (std::size_t c = 1; c < m; ++c) {
-              if (cost[c] < cost[best]) best = c;
+          decided(first_bit, among[best]);
+          continue;
+        }
+        const std::span<const double> last(values_[3]);
+        if (std::popcount(row) >= 3) {
+          // A full row: (up to) 8 points at once, candidate by candidate, each point's running
+          // best, with the same sums and comparisons as below, in an order the compiler can
+          // vectorise.
+          std::array<double, kBlockEdge> w{};
+          const std::span<const double> values =
+              last.subspan(static_cast<std::size_t>(span.first[3]), static_cast<std::size_t>(span.extent[3]));
+          std::copy(values.begin(), values.end(), w.begin());
+          std::array<double, kBlockEdge> best_cost{};
+          std::array<double, kBlockEdge> best_at{};  // candidate positions, exact as doubles
+          for (std::size_t p = 0; p < kBlockEdge; ++p) best_cost[p] = base[0] + w[p] * f3[0];
+          for (std::size_t c = 1; c < m; ++c) {
+            const double at = static_cast<double>(c);
+            for (std::size_t p = 0; p < kBlockEdge; ++p) {
+              const double cost = base[c] + w[p] * f3[c];
+              const bool better = cost < best_cost[p];  // strict: a tie keeps the earlier one
+              best_cost[p] = better ? cost : best_cost[p];
+              best_at[p] = better ? at : best_at[p];
             }
-            decided(bit, among[best]);
           }
+          for (unsigned rest = row; rest != 0; rest &= rest - 1) {
+            const auto l3 = static_cast<std::size_t>(std::countr_zero(rest));
+            decided(first_bit + static_cast<int>(l3), among[static_cast<std::size_t>(best_at[l3])]);
+          }
+          continue;
+        }
+        for (unsigned rest = row; rest != 0; rest &= rest - 1) {
+          const int l3 = std::countr_zero(rest);
+          const double w = last[static_cast<std::size_t>(span.first[3]) + static_cast<std::size_t>(l3)];
+          std::size_t best = 0;
+          double best_cost = base[0] + w * f3[0];
+          for (std::size_t c = 1; c < m; ++c) {
+            const double cost = base[c] + w * f3[c];
+            if (cost < best_cost) {  // argmin_linear's strict '<': a tie keeps the earlier one
+              best = c;
+              best_cost = cost;
+            }
+          }
+          decided(first_bit + l3, among[best]);
         }
       }
     }
-    emit(block, member, box, among, span);
+    emit(block, points, box, among);
   };
 
   // A box of whole blocks: whole to one candidate if one wins everywhere in it, else its two
