@@ -51,6 +51,9 @@ struct Found {
   /// Per instance and metric column, the value (NaN: none).
   std::vector<std::vector<double>> values;
   double objective = kNoValue;
+  /// Which of the search's `rank` vectors it holds (positions in WeightSearch::rank), noted
+  /// when it was admitted (SearchWriter::admit()), so that its region need not be kept.
+  std::vector<std::size_t> ranked;
 };
 
 /// What a search's journal holds: its behaviours, and the subtrees of its region tree whose
@@ -126,6 +129,58 @@ std::string planner_label(const SweepPlanner& p) {
   return p.params.is_null() ? p.name : p.name + " " + p.params.dump();
 }
 
+/// Heat maps over weight pairs, filled one behaviour at a time (SearchWriter::admit()): per
+/// pair of weights (a, b) and pair of their values, the best objective among the behaviours
+/// with a vector there, and of the behaviours with that objective the smallest representative.
+/// Behaviour ids follow the representatives, so that is the smallest id: what a walk over
+/// every behaviour in id order, keeping the first of the best, gives.
+class HeatMaps {
+ public:
+  /// `wanted`: false for a search without heat maps (mode best), which then holds none.
+  HeatMaps(const WeightGrid& grid, Direction direction, bool wanted) : grid_(grid), direction_(direction) {
+    const int w = wanted ? grid.weights() : 0;
+    for (int a = 0; a < w; ++a) {
+      for (int b = a + 1; b < w; ++b) {
+        const std::size_t cells = grid.values(a).size() * grid.values(b).size();
+        maps_.push_back({a, b, std::vector<double>(cells, kNoValue), std::vector<Point>(cells),
+                         std::vector<std::uint8_t>(cells, 0)});
+      }
+    }
+  }
+
+  /// Adds a behaviour: its region, objective and representative.
+  void add(const WeightRegion& region, double objective, const Point& representative) {
+    for (Map& m : maps_) {
+      const std::size_t nb = grid_.values(m.b).size();
+      grid_.for_each_projection(region, m.a, m.b, [&](int ia, int ib) {
+        const std::size_t cell = static_cast<std::size_t>(ia) * nb + static_cast<std::size_t>(ib);
+        const bool take = m.set[cell] == 0 || better(objective, m.best[cell], direction_) ||
+                          (!better(m.best[cell], objective, direction_) && representative < m.owner[cell]);
+        if (!take) return;
+        m.set[cell] = 1;
+        m.best[cell] = objective;
+        m.owner[cell] = representative;
+      });
+    }
+  }
+
+  /// One map per pair a < b, in order: `best` and `owner` (a representative) per cell
+  /// (value of a) * (values of b) + (value of b); `set`: whether any behaviour projects there.
+  struct Map {
+    int a = 0;
+    int b = 0;
+    std::vector<double> best;
+    std::vector<Point> owner;
+    std::vector<std::uint8_t> set;
+  };
+  [[nodiscard]] const std::vector<Map>& maps() const { return maps_; }
+
+ private:
+  const WeightGrid& grid_;
+  Direction direction_;
+  std::vector<Map> maps_;
+};
+
 /// What one search (or one shard's, or the shards' merged) found.
 struct Searched {
   std::vector<Found> found;
@@ -157,7 +212,22 @@ class SearchWriter {
         id_(std::to_string(id)),
         search_(*plan.strategies().at(unit.entry).search),
         grid_(search_.values),
-        objective_(objective) {}
+        objective_(objective),
+        heat_(grid_, objective.direction, search_.mode == WeightSearch::Mode::All) {
+    for (const std::vector<double>& vector : search_.rank) {
+      Point at{};
+      for (int k = 0; k < grid_.weights(); ++k) {
+        const auto values = grid_.values(k);
+        at[static_cast<std::size_t>(k)] = static_cast<int>(
+            std::lower_bound(values.begin(), values.end(), vector[static_cast<std::size_t>(k)]) -
+            values.begin());
+      }
+      rank_points_.push_back(at);
+    }
+  }
+  // Its heat maps refer to its grid.
+  SearchWriter(const SearchWriter&) = delete;
+  SearchWriter& operator=(const SearchWriter&) = delete;
 
   /// Searches `root` (everything, or a shard: WeightGrid::shard()) and formats what it finds.
   /// `on_vectors(n)`: n more vectors resolved. Every behaviour found and every finished subtree
@@ -170,7 +240,7 @@ class SearchWriter {
     Searched out;
     std::vector<Found>& found = out.found;
     const std::string key = unit_key(specs.size());
-    Journal journaled = read_journal(key, out_dir_, true);
+    Journal journaled = read_journal(key, out_dir_, true, true);
     found = std::move(journaled.found);
     // The subtrees the journal holds finished: its nodes, and its behaviours as leaves.
     const std::uint64_t root_id = subtree_root(root);
@@ -206,6 +276,7 @@ class SearchWriter {
       f.behaviour.results.clear();  // formatted; the runs' trajectories are not kept
       f.objective = objective_of(f.cells);
       append(journal_line(key, f));
+      admit(f);
       found.push_back(std::move(f));
     };
     if (search_.mode == WeightSearch::Mode::All) {
@@ -222,6 +293,19 @@ class SearchWriter {
     }
     out.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return out;
+  }
+
+  /// Takes a behaviour of the whole grid (one search's, or one the shards' parts make up) into
+  /// mode all's running results: the rank vectors it holds and its heat-map cells. Its region is
+  /// then dropped unless vectors.csv needs it: the full [0, 250]^4's behaviours would hold tens
+  /// of gigabytes of regions, these results a few megabytes.
+  void admit(Found& f) {
+    if (search_.mode != WeightSearch::Mode::All) return;
+    for (std::size_t r = 0; r < rank_points_.size(); ++r) {
+      if (grid_.contains(f.behaviour.region, rank_points_[r])) f.ranked.push_back(r);
+    }
+    heat_.add(f.behaviour.region, f.objective, f.behaviour.representative);
+    if (!search_.write_vectors) f.behaviour.region = WeightRegion{};
   }
 
   /// The rows of the files for the behaviours of the whole grid (one search's, or the shards'
@@ -270,7 +354,7 @@ class SearchWriter {
     const std::string key = unit_key(instance_count());
     std::map<std::uint64_t, std::size_t> by_trace;
     for (const std::string& dir : dirs) {
-      for (Found& f : read_journal(key, dir, false).found) {
+      for (Found& f : read_journal(key, dir, false, false).found) {
         const auto [at, is_new] = by_trace.emplace(f.behaviour.trace, out.found.size());
         if (is_new) {
           out.found.push_back(std::move(f));
@@ -284,7 +368,10 @@ class SearchWriter {
       }
     }
     std::uint64_t vectors = 0;
-    for (const Found& f : out.found) vectors += f.behaviour.vectors;
+    for (Found& f : out.found) {
+      vectors += f.behaviour.vectors;
+      admit(f);
+    }
     if (search_.mode == WeightSearch::Mode::All && vectors != grid_.size()) {
       throw ConfigError(journal_path(dirs.front()), "the shards' journals hold the behaviours of " +
                                                         std::to_string(vectors) + " of the search's " +
@@ -387,7 +474,10 @@ class SearchWriter {
   /// cut to the lines before it, so that new lines follow complete ones. Otherwise (a merge reads
   /// a finished shard, whose journal must be whole) it is a ConfigError naming the line, and the
   /// file is left as it is.
-  [[nodiscard]] Journal read_journal(const std::string& key, const std::string& dir, bool repair) const {
+  /// `admitting`: each behaviour goes through admit() as it is read (a resumed search's own
+  /// journal; a merge admits the behaviours the shards' parts make up).
+  [[nodiscard]] Journal read_journal(const std::string& key, const std::string& dir, bool repair,
+                                     bool admitting) {
     Journal out;
     const std::string path = journal_path(dir);
     std::ifstream in(path, std::ios::binary);
@@ -395,7 +485,7 @@ class SearchWriter {
     const Columns names =
         instance_cells(RunResult{}, plan_.maps().at(unit_.maps.front()), plan_.search_instance(unit_, 0));
     std::string line;
-    std::string kept;
+    std::uintmax_t kept_bytes = 0;  // the lines before a damaged one (a journal may hold gigabytes)
     std::size_t number = 0;
     bool torn = false;
     while (std::getline(in, line)) {
@@ -454,6 +544,7 @@ class SearchWriter {
           f.behaviour.representative = grid_.lexmin(f.behaviour.region);
           f.behaviour.bounds = grid_.bounds(f.behaviour.region);
           f.objective = objective_of(f.cells);
+          if (admitting) admit(f);
           out.found.push_back(std::move(f));
         }
       } catch (const std::exception& e) {
@@ -470,10 +561,10 @@ class SearchWriter {
         torn = true;
         break;
       }
-      kept += line + '\n';
+      kept_bytes += line.size() + 1;
     }
     in.close();
-    if (torn) write_file_atomically(path, kept);
+    if (torn) std::filesystem::resize_file(path, kept_bytes);
     return out;
   }
 
@@ -659,16 +750,11 @@ class SearchWriter {
       rows.best += csv_record(row) + '\n';
       before += f.behaviour.vectors;
     }
-    for (const std::vector<double>& vector : search_.rank) {
-      Point at{};
-      for (int k = 0; k < grid_.weights(); ++k) {
-        const auto values = grid_.values(k);
-        at[static_cast<std::size_t>(k)] = static_cast<int>(
-            std::lower_bound(values.begin(), values.end(), vector[static_cast<std::size_t>(k)]) -
-            values.begin());
-      }
-      const auto owner = std::find_if(found.begin(), found.end(),
-                                      [&](const Found& f) { return grid_.contains(f.behaviour.region, at); });
+    for (std::size_t r = 0; r < search_.rank.size(); ++r) {
+      const std::vector<double>& vector = search_.rank[r];
+      const auto owner = std::find_if(found.begin(), found.end(), [&](const Found& f) {
+        return std::find(f.ranked.begin(), f.ranked.end(), r) != f.ranked.end();
+      });
       if (owner == found.end()) throw std::logic_error("exact search: a vector of the box in no behaviour");
       const auto [better_count, tied] = standing(found, owner->objective);
       std::vector<std::string> row{id_};
@@ -685,29 +771,22 @@ class SearchWriter {
   }
 
   void write_heatmaps(const std::vector<Found>& found, SearchRows& rows) const {
-    const int w = grid_.weights();
-    for (int a = 0; a < w; ++a) {
-      for (int b = a + 1; b < w; ++b) {
-        const std::size_t nb = grid_.values(b).size();
-        std::vector<double> best(grid_.values(a).size() * nb, kNoValue);
-        std::vector<std::int64_t> owner(best.size(), -1);
-        for (std::size_t f = 0; f < found.size(); ++f) {
-          grid_.for_each_projection(found[f].behaviour.region, a, b, [&](int ia, int ib) {
-            const std::size_t cell = static_cast<std::size_t>(ia) * nb + static_cast<std::size_t>(ib);
-            if (owner[cell] < 0 || better(found[f].objective, best[cell], objective_.direction)) {
-              best[cell] = found[f].objective;
-              owner[cell] = static_cast<std::int64_t>(f);
-            }
-          });
-        }
-        for (std::size_t cell = 0; cell < best.size(); ++cell) {
-          rows.heatmaps +=
-              csv_record({id_, search_.weights[static_cast<std::size_t>(a)],
-                          search_.weights[static_cast<std::size_t>(b)],
-                          value_at(a, static_cast<int>(cell / nb)), value_at(b, static_cast<int>(cell % nb)),
-                          number_cell(best[cell]), std::to_string(owner[cell])}) +
-              '\n';
-        }
+    // found is in id order, which is the order of the representatives.
+    const auto id_of = [&](const Point& representative) {
+      const auto it =
+          std::lower_bound(found.begin(), found.end(), representative,
+                           [](const Found& f, const Point& p) { return f.behaviour.representative < p; });
+      return static_cast<std::int64_t>(it - found.begin());
+    };
+    for (const HeatMaps::Map& m : heat_.maps()) {
+      const std::size_t nb = grid_.values(m.b).size();
+      for (std::size_t cell = 0; cell < m.best.size(); ++cell) {
+        rows.heatmaps += csv_record({id_, search_.weights[static_cast<std::size_t>(m.a)],
+                                     search_.weights[static_cast<std::size_t>(m.b)],
+                                     value_at(m.a, static_cast<int>(cell / nb)),
+                                     value_at(m.b, static_cast<int>(cell % nb)), number_cell(m.best[cell]),
+                                     std::to_string(m.set[cell] != 0 ? id_of(m.owner[cell]) : -1)}) +
+                         '\n';
       }
     }
   }
@@ -812,6 +891,9 @@ class SearchWriter {
   const WeightSearch& search_;
   WeightGrid grid_;
   const Objective& objective_;
+  /// Mode all: the heat maps and the positions in the grid of the `rank` vectors.
+  HeatMaps heat_;
+  std::vector<Point> rank_points_;
   std::uint64_t optimal_vectors_ = 0;
 };
 

@@ -141,6 +141,43 @@ void expect_every_vector_is_its_run(const Table& runs, const Table& vectors, con
   }
 }
 
+/// Checks the behaviour_id of every cell of search_heatmaps.csv in `dir` (a search with
+/// vectors.csv, energy-aware weights): of the behaviours with a vector there and the cell's best
+/// objective, the smallest id. Returns how many cells had more than one such behaviour.
+int expect_heat_map_owners(const std::string& dir) {
+  const Table vectors = read_table(dir + "/vectors.csv");
+  const Table behaviours = read_table(dir + "/behaviours.csv");
+  const Table heat = read_table(dir + "/search_heatmaps.csv");
+  std::map<long, double> objective;
+  for (const auto& row : behaviours.rows) {
+    objective[std::stol(row[behaviours.col("behaviour_id")])] = std::stod(row[behaviours.col("objective")]);
+  }
+  int ties = 0;
+  for (const auto& row : heat.rows) {
+    const std::string& a = row[heat.col("weight_a")];
+    const std::string& b = row[heat.col("weight_b")];
+    std::set<long> there;
+    for (const auto& v : vectors.rows) {
+      if (v[vectors.col(a)] == row[heat.col("value_a")] && v[vectors.col(b)] == row[heat.col("value_b")])
+        there.insert(std::stol(v[vectors.col("behaviour_id")]));
+    }
+    double best = INFINITY;
+    for (const long id : there) best = std::min(best, objective.at(id));
+    std::vector<long> first;
+    for (const long id : there) {
+      if (objective.at(id) == best) first.push_back(id);  // ascending: std::set
+    }
+    if (first.empty()) {
+      ADD_FAILURE() << "a heat-map cell without vectors";
+      continue;
+    }
+    if (first.size() > 1) ++ties;
+    EXPECT_EQ(std::stol(row[heat.col("behaviour_id")]), first.front())
+        << a << "=" << row[heat.col("value_a")] << ", " << b << "=" << row[heat.col("value_b")];
+  }
+  return ties;
+}
+
 double objective_of(const Table& runs, std::size_t row) {
   return std::stod(runs.rows[row][runs.col("distance_to_final_coverage_m")]);
 }
@@ -198,6 +235,7 @@ TEST(WeightSearchRunner, AgreesWithABruteForceSweepOfTheSameBoxForEveryVector) {
     }
     EXPECT_EQ(std::stod(row[heat.col("best_objective")]), expected);
   }
+  (void)expect_heat_map_owners(dir);
   // 4. The summary's quantiles are those of the runs.
   const Table summary = read_table(dir + "/search_summary.csv");
   ASSERT_EQ(summary.rows.size(), 1U);
@@ -212,6 +250,23 @@ TEST(WeightSearchRunner, AgreesWithABruteForceSweepOfTheSameBoxForEveryVector) {
     EXPECT_EQ(std::stod(summary.rows[0][summary.col(column)]), quantile_sorted(distances, q)) << column;
   }
   EXPECT_EQ(summary.rows[0][summary.col("vectors")], "96");
+}
+
+TEST(WeightSearchRunner, AHeatMapCellNamesTheFirstOfTheBehavioursTiedAtItsBest) {
+  // Free space is symmetric, so mirrored behaviours reach the same objective: heat-map cells
+  // whose best objective several behaviours share. The cell names the smallest id, as a walk
+  // over the behaviours in id order would, though they were noted in the order they finished.
+  const json box = {{"w1", {{"range", {0, 3}}, {"step", 1}}},
+                    {"w2", {{"range", {0, 3}}, {"step", 1}}},
+                    {"w3", {{"range", {0, 3}}, {"step", 1}}},
+                    {"w4", {{"range", {0, 3}}, {"step", 1}}}};
+  json sweep = search_and_grid(json::array({{{"generator", "free"}, {"w", 15}, {"h", 15}, {"res", 1}}}), box,
+                               json::array());
+  sweep["strategies"].erase(1);  // the search alone
+  sweep["robot"]["battery"] = 60;
+  const std::string dir = run(sweep, "heat_ties");
+  EXPECT_GT(expect_heat_map_owners(dir), 0) << "no tie: the test tests nothing";
+  std::filesystem::remove_all(dir);
 }
 
 TEST(WeightSearchRunner, TargetSeekingIsSearchedAsEquationTwelveOverDecimalWeights) {
@@ -241,13 +296,25 @@ TEST(WeightSearchRunner, ShardsMergeIntoExactlyTheFilesOfOneSearch) {
   const json box = {
       {"w1", {0, 1, 2}}, {"w2", {0, 2}}, {"w3", {{"range", {0, 9}}, {"step", 1}}}, {"w4", {0, 2}}};
   const json maps = json::array({{{"generator", "office"}, {"w", 32}, {"h", 32}, {"seeds", {3, 4}}}});
-  for (const std::string mode : {"all", "best"}) {
+  // Mode all without vectors.csv keeps no region of a behaviour once its ranks and heat-map
+  // cells are noted, in the shards as in the merge.
+  std::string listed;  // the unsharded search of mode all with vectors.csv
+  for (const std::string variant : {"all", "all_unlisted", "best"}) {
+    const std::string mode = variant == "best" ? "best" : "all";
     json sweep = search_and_grid(maps, box, mode == "all" ? json{{1, 0, 2, 0}} : json::array());
     sweep["strategies"].erase(1);  // the search alone
-    sweep["strategies"][0]["search"] = {{"mode", mode}, {"write_vectors", mode == "all"}};
+    sweep["strategies"][0]["search"] = {{"mode", mode}, {"write_vectors", variant == "all"}};
     if (mode == "all") sweep["strategies"][0]["search"]["rank"] = {{1, 0, 2, 0}};
-    const std::string whole = run(sweep, "unsharded_" + mode);
-    const std::string dir = testing::fresh_dir("search", "sharded_" + mode);
+    const std::string whole = run(sweep, "unsharded_" + variant);
+    if (variant == "all") listed = whole;
+    if (variant == "all_unlisted") {
+      EXPECT_FALSE(std::filesystem::exists(whole + "/vectors.csv"));
+      for (const char* f : {"behaviours.csv", "search_best.csv", "search_summary.csv", "search_ranks.csv",
+                            "search_heatmaps.csv"}) {
+        EXPECT_EQ(testing::read_file(whole + "/" + f), testing::read_file(listed + "/" + f)) << f;
+      }
+    }
+    const std::string dir = testing::fresh_dir("search", "sharded_" + variant);
     for (std::uint64_t i = 0; i < 3; ++i) {
       RunnerOptions o;
       o.threads = 2;
@@ -290,11 +357,13 @@ TEST(WeightSearchRunner, ShardsMergeIntoExactlyTheFilesOfOneSearch) {
     EXPECT_EQ(merged.searches, 1U);
     std::vector<std::string> files{"behaviours.csv", "search_best.csv"};
     if (mode == "all") {
-      for (const char* f : {"search_summary.csv", "search_ranks.csv", "search_heatmaps.csv", "vectors.csv"})
+      for (const char* f : {"search_summary.csv", "search_ranks.csv", "search_heatmaps.csv"})
         files.emplace_back(f);
     }
+    if (variant == "all") files.emplace_back("vectors.csv");
     for (const auto& f : files) {
-      EXPECT_EQ(testing::read_file(dir + "/" + f), testing::read_file(whole + "/" + f)) << mode << ": " << f;
+      EXPECT_EQ(testing::read_file(dir + "/" + f), testing::read_file(whole + "/" + f))
+          << variant << ": " << f;
     }
     const json one = json::parse(testing::read_file(whole + "/searches.json"))["searches"][0];
     const json joined = json::parse(testing::read_file(dir + "/searches.json"))["searches"][0];
@@ -450,51 +519,57 @@ TEST(WeightSearchRunner, BestModeFindsTheBruteForceOptimumWithEveryTieAndPrunes)
 TEST(WeightSearchRunner, AKilledSearchResumesFromItsJournalWithTheSameFiles) {
   // A whole search of a map class, then its journal cut to its first lines and a torn one (as
   // a kill leaves it) and its files deleted: the rerun keeps the journaled behaviours, skips the
-  // journaled subtrees, searches only the rest and writes the same files.
-  const json box = {{"w1", {0, 1, 2}}, {"w2", {0, 2}}, {"w3", {0, 1, 2}}, {"w4", {0, 2}}};
-  const json maps = json::array({{{"generator", "office"}, {"w", 32}, {"h", 32}, {"seeds", {3, 4}}}});
-  json sweep = search_and_grid(maps, box, {{1, 0, 2, 0}});
-  sweep["strategies"].erase(1);  // the search alone
-  const std::string dir = run(sweep, "resume");
-  const std::vector<std::string> files{"behaviours.csv",   "search_summary.csv",  "search_best.csv",
-                                       "search_ranks.csv", "search_heatmaps.csv", "vectors.csv"};
-  std::map<std::string, std::string> first;
-  for (const auto& f : files) first[f] = testing::read_file(dir + "/" + f);
-  std::size_t behaviours = 0;
-  const std::vector<std::string> lines =
-      journal_lines(testing::read_file(dir + "/search_journal.jsonl"), &behaviours);
-  const json record = json::parse(testing::read_file(dir + "/searches.json"))["searches"][0];
-  ASSERT_EQ(behaviours, record["behaviours"].get<std::size_t>());
-  ASSERT_GE(behaviours, 6U);
-  ASSERT_GE(lines.size() - behaviours, 3U) << "no finished subtree journaled";
-  std::string cut;
-  for (std::size_t i = 0; i < lines.size() / 2; ++i) cut += lines[i];
-  std::size_t kept = 0;
-  (void)journal_lines(cut, &kept);
-  ASSERT_LT(kept, lines.size() / 2) << "the kept lines hold a finished subtree";
-  const std::string& torn = lines[lines.size() / 2];
-  cut += torn.substr(0, torn.size() / 2);
-  testing::write_file(dir + "/search_journal.jsonl", cut);
-  for (const auto& f : files) std::filesystem::remove(dir + "/" + f);
-  std::filesystem::remove(dir + "/searches.json");
+  // journaled subtrees, searches only the rest and writes the same files. Without vectors.csv
+  // the rerun keeps no journaled behaviour's region, only its ranks and heat-map cells.
+  for (const bool listed : {true, false}) {
+    const std::string what = listed ? "with vectors.csv" : "without vectors.csv";
+    const json box = {{"w1", {0, 1, 2}}, {"w2", {0, 2}}, {"w3", {0, 1, 2}}, {"w4", {0, 2}}};
+    const json maps = json::array({{{"generator", "office"}, {"w", 32}, {"h", 32}, {"seeds", {3, 4}}}});
+    json sweep = search_and_grid(maps, box, {{1, 0, 2, 0}});
+    sweep["strategies"].erase(1);  // the search alone
+    sweep["strategies"][0]["search"]["write_vectors"] = listed;
+    const std::string dir = run(sweep, listed ? "resume" : "resume_unlisted");
+    std::vector<std::string> files{"behaviours.csv", "search_summary.csv", "search_best.csv",
+                                   "search_ranks.csv", "search_heatmaps.csv"};
+    if (listed) files.emplace_back("vectors.csv");
+    std::map<std::string, std::string> first;
+    for (const auto& f : files) first[f] = testing::read_file(dir + "/" + f);
+    std::size_t behaviours = 0;
+    const std::vector<std::string> lines =
+        journal_lines(testing::read_file(dir + "/search_journal.jsonl"), &behaviours);
+    const json record = json::parse(testing::read_file(dir + "/searches.json"))["searches"][0];
+    ASSERT_EQ(behaviours, record["behaviours"].get<std::size_t>());
+    ASSERT_GE(behaviours, 6U);
+    ASSERT_GE(lines.size() - behaviours, 3U) << "no finished subtree journaled";
+    std::string cut;
+    for (std::size_t i = 0; i < lines.size() / 2; ++i) cut += lines[i];
+    std::size_t kept = 0;
+    (void)journal_lines(cut, &kept);
+    ASSERT_LT(kept, lines.size() / 2) << "the kept lines hold a finished subtree";
+    const std::string& torn = lines[lines.size() / 2];
+    cut += torn.substr(0, torn.size() / 2);
+    testing::write_file(dir + "/search_journal.jsonl", cut);
+    for (const auto& f : files) std::filesystem::remove(dir + "/" + f);
+    std::filesystem::remove(dir + "/searches.json");
 
-  RunnerOptions o;
-  o.threads = 2;
-  o.out_dir = dir;
-  o.progress = false;
-  const RunnerReport again = run_sweep(SweepPlan::from_json(sweep, "search.json"), o);
-  EXPECT_EQ(again.searches.behaviours, behaviours);
-  const json resumed = json::parse(testing::read_file(dir + "/searches.json"))["searches"][0];
-  EXPECT_EQ(resumed["resumed_behaviours"].get<std::size_t>(), kept);
-  EXPECT_LT(resumed["forks"].get<std::size_t>(), record["forks"].get<std::size_t>());
-  for (const auto& f : files) EXPECT_EQ(testing::read_file(dir + "/" + f), first[f]) << f;
-  // The journal holds every behaviour again, each once.
-  std::size_t rejournaled = 0;
-  const std::vector<std::string> relines =
-      journal_lines(testing::read_file(dir + "/search_journal.jsonl"), &rejournaled);
-  EXPECT_EQ(rejournaled, behaviours);
-  std::set<std::string> distinct(relines.begin(), relines.end());
-  EXPECT_EQ(distinct.size(), relines.size()) << "a line journaled twice";
+    RunnerOptions o;
+    o.threads = 2;
+    o.out_dir = dir;
+    o.progress = false;
+    const RunnerReport again = run_sweep(SweepPlan::from_json(sweep, "search.json"), o);
+    EXPECT_EQ(again.searches.behaviours, behaviours) << what;
+    const json resumed = json::parse(testing::read_file(dir + "/searches.json"))["searches"][0];
+    EXPECT_EQ(resumed["resumed_behaviours"].get<std::size_t>(), kept) << what;
+    EXPECT_LT(resumed["forks"].get<std::size_t>(), record["forks"].get<std::size_t>()) << what;
+    for (const auto& f : files) EXPECT_EQ(testing::read_file(dir + "/" + f), first[f]) << what << ": " << f;
+    // The journal holds every behaviour again, each once.
+    std::size_t rejournaled = 0;
+    const std::vector<std::string> relines =
+        journal_lines(testing::read_file(dir + "/search_journal.jsonl"), &rejournaled);
+    EXPECT_EQ(rejournaled, behaviours) << what;
+    std::set<std::string> distinct(relines.begin(), relines.end());
+    EXPECT_EQ(distinct.size(), relines.size()) << what << ": a line journaled twice";
+  }
 }
 
 TEST(WeightSearchRunner, InterruptStopsTheSearchAndTheRerunResumesIt) {
