@@ -86,16 +86,11 @@ bool costs_more_at_every_direction(std::span<const double> f_j, std::span<const 
   return false;
 }
 
-namespace {
-
-/// The argmin over the candidates `index(0..n-1)` (ascending indices): argmin_linear()'s rule.
-template <typename Index>
-int argmin_over(const Candidates& c, std::span<const double> weights, std::size_t n, Index index) {
+int argmin_linear(const Candidates& c, std::span<const double> weights) {
   const auto k = static_cast<std::size_t>(c.feature_count);
   int best = -1;
   double best_cost = 0.0;
-  for (std::size_t j = 0; j < n; ++j) {
-    const auto i = static_cast<std::size_t>(index(j));
+  for (std::size_t i = 0; i < c.cells.size(); ++i) {
     const double cost = linear_cost(weights, std::span(c.features).subspan(i * k, k));
     // Strict '<': on equal cost the lowest candidate index wins (documented tie rule).
     if (best < 0 || cost < best_cost) {
@@ -104,16 +99,6 @@ int argmin_over(const Candidates& c, std::span<const double> weights, std::size_
     }
   }
   return best;
-}
-
-}  // namespace
-
-int argmin_linear(const Candidates& c, std::span<const double> weights) {
-  return argmin_over(c, weights, c.cells.size(), [](std::size_t j) { return j; });
-}
-
-int argmin_linear_among(const Candidates& c, std::span<const double> weights, std::span<const int> among) {
-  return argmin_over(c, weights, among.size(), [among](std::size_t j) { return among[j]; });
 }
 
 }  // namespace strategies

@@ -154,10 +154,6 @@ struct Candidates {
 
 /// Index of argmin_i weights . features_i; ties break to the lowest i. -1 when empty.
 [[nodiscard]] int argmin_linear(const Candidates& c, std::span<const double> weights);
-/// The same over the candidates listed in `among` (ascending indices; the others left out): the
-/// choice of argmin_linear() whenever every one left out loses to one listed. -1 when empty.
-[[nodiscard]] int argmin_linear_among(const Candidates& c, std::span<const double> weights,
-                                      std::span<const int> among);
 
 /// Where the directions w / (w_1 + ... + w_n) of some weight vectors (each weight >= 0) lie:
 /// per weight, in [lo, hi], for each of them but the zero vector. Costs scale with w, so a

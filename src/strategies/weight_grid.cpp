@@ -662,7 +662,7 @@ std::vector<WeightGrid::Share> WeightGrid::split(const WeightRegion& region, con
   // box), point by point by argmin_linear's own rule over the candidates `among`. (Deciding its
   // cubes of 4^4 and 2^4 points by corner tests first took twice as long on the free-space
   // search: with many candidates a corner test costs more than the points it saves.)
-  // The costs are argmin_linear_among()'s own: linear_cost() adds w_j * F_j to 0.0 in feature
+  // The costs are argmin_linear()'s own: linear_cost() adds w_j * F_j to 0.0 in feature
   // order, so its partial sums over the first weights are computed once per value of them
   // (partial[j]: the sum of the first j terms, per candidate of `among`) and the last term is
   // added per point: the same operations on the same doubles, in the same order. Only the rows
