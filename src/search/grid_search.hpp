@@ -28,6 +28,7 @@
 #include <cstdint>
 #include <limits>
 #include <span>
+#include <stdexcept>
 #include <type_traits>
 #include <vector>
 
@@ -53,6 +54,42 @@ struct OctileCost {
     return {a.straight + b.straight, a.diagonal + b.diagonal};
   }
   friend constexpr bool operator==(OctileCost, OctileCost) = default;
+};
+
+/// An entry of A*'s open list over exact octile costs: the open-list order of BestFirstSearchT
+/// (smaller f, then larger g, then smaller state) as one 128-bit integer key, so that a
+/// comparison is one integer compare instead of four of doubles, in 16 bytes instead of 24.
+/// f and g enter as floor(value() * 2^24): OctileCost's values are exact to 1e-9 and distinct
+/// ones differ by more than 1e-7 (see there), more than the quantum 2^-24 (6e-8), so equal
+/// costs give equal keys and distinct ones keys in their order: the same order as comparing the
+/// doubles. The key is f (48 bits: f < 2^24 cells), 2^49 - 1 - g (49 bits), the state (31
+/// bits). make() throws std::overflow_error for a cost of 2^24 cells or more: a path of
+/// millions of cells, longer than any map with fewer than ten million cells can hold.
+struct PackedOctileItem {
+  __extension__ typedef unsigned __int128 Key;  // a typedef: __extension__ (for -Wpedantic) takes no alias
+  Key key;
+
+  [[nodiscard]] static PackedOctileItem make(OctileCost f, OctileCost g, int state) {
+    const double fv = f.value() * kScale;
+    const double gv = g.value() * kScale;
+    if (!(fv < kFLimit) || !(gv < kFLimit)) {
+      throw std::overflow_error("A*: a path cost of 2^24 cells or more (PackedOctileItem)");
+    }
+    const auto qf = static_cast<std::uint64_t>(fv);
+    const auto qg = static_cast<std::uint64_t>(gv);
+    return {static_cast<Key>(qf) << (kGBits + kStateBits) | static_cast<Key>(kGMax - qg) << kStateBits |
+            static_cast<Key>(state)};
+  }
+  [[nodiscard]] int id() const { return static_cast<int>(static_cast<std::uint64_t>(key) & kStateMask); }
+  static bool before(const PackedOctileItem& a, const PackedOctileItem& b) { return a.key < b.key; }
+
+ private:
+  static constexpr double kScale = 16777216.0;  // 2^24
+  static constexpr int kStateBits = 31;
+  static constexpr int kGBits = 49;
+  static constexpr std::uint64_t kStateMask = (std::uint64_t{1} << kStateBits) - 1;
+  static constexpr std::uint64_t kGMax = (std::uint64_t{1} << kGBits) - 1;
+  static constexpr double kFLimit = 281474976710656.0;  // 2^48 = 2^24 cells * kScale
 };
 
 /// The octile length between two cells as an exact cost: its value is octile_distance(a, b).
@@ -198,6 +235,7 @@ class BestFirstSearchT {
       pass_ = 0;
     }
     ++pass_;
+    reopened_ = true;
     heap_.clear();
     dijkstra_heap_.clear();
   }
@@ -266,6 +304,7 @@ class BestFirstSearchT {
     double g;
     int state;
     /// The open-list order: smaller f, then larger g, then smaller state.
+    [[nodiscard]] int id() const { return state; }
     static bool before(const HeapItem& a, const HeapItem& b) {
       // Bitwise, not short-circuit: no branches, so the heap's child selection needs none.
       return static_cast<bool>(
@@ -279,6 +318,7 @@ class BestFirstSearchT {
   struct DijkstraItem {
     double g;
     int state;
+    [[nodiscard]] int id() const { return state; }
   };
   /// std heap comparator of the Dijkstra list: true when `a` comes out after `b` (smaller g, then
   /// smaller state first). A function object so that the heap algorithms inline it.
@@ -288,8 +328,10 @@ class BestFirstSearchT {
       return a.state > b.state;
     }
   };
+  /// A*'s open-list entry: the packed one for exact octile costs.
+  using AStarItem = std::conditional_t<std::is_same_v<Cost, OctileCost>, PackedOctileItem, HeapItem>;
   /// Removes and returns the first entry of a non-empty open list.
-  static HeapItem pop_open(IndexedHeap<HeapItem>& heap) { return heap.pop(); }
+  static AStarItem pop_open(IndexedHeap<AStarItem>& heap) { return heap.pop(); }
   static DijkstraItem pop_open(std::vector<DijkstraItem>& heap) {
     std::pop_heap(heap.begin(), heap.end(), Later{});
     const DijkstraItem top = heap.back();
@@ -311,7 +353,11 @@ class BestFirstSearchT {
     if constexpr (ZeroHeuristicEnvironment<Env>) {
       return DijkstraItem{cost_value(g), state};
     } else {
-      return HeapItem{cost_value(g + static_cast<Cost>(env.heuristic(state))), cost_value(g), state};
+      if constexpr (std::is_same_v<Cost, OctileCost>) {
+        return PackedOctileItem::make(g + static_cast<Cost>(env.heuristic(state)), g, state);
+      } else {
+        return HeapItem{cost_value(g + static_cast<Cost>(env.heuristic(state))), cost_value(g), state};
+      }
     }
   }
   /// Opens `state` at cost `g` on `Env`'s open list; `reached`: it may have an entry already
@@ -322,6 +368,12 @@ class BestFirstSearchT {
       dijkstra_heap_.push_back(open_item(env, state, g));
       std::push_heap(dijkstra_heap_.begin(), dijkstra_heap_.end(), Later{});
     } else if (reached) {
+      if constexpr (std::is_same_v<Cost, OctileCost>) {
+        // A state reached in this pass and not settled has its entry on the list, and a cheaper
+        // exact cost is a smaller f (h is fixed): the entry only moves up. After reopen() a
+        // reached state may have none (it was settled in an earlier pass).
+        if (!reopened_) return heap_.decrease(open_item(env, state, g));
+      }
       heap_.push_or_update(open_item(env, state, g));
     } else {
       heap_.push(open_item(env, state, g));
@@ -386,6 +438,7 @@ class BestFirstSearchT {
     }
     ++run_;
     ++pass_;
+    reopened_ = false;
     dijkstra_heap_.clear();
     if constexpr (ZeroHeuristicEnvironment<Env>) {
       heap_.clear();
@@ -398,7 +451,9 @@ class BestFirstSearchT {
   std::vector<Node> nodes_;
   std::uint16_t run_ = 0;  // >= 1 once sized, so fresh nodes (stamps 0) are neither reached nor settled
   std::uint16_t pass_ = 0;
-  IndexedHeap<HeapItem> heap_;
+  /// True from reopen() to the next run: reached states need not be on the open list.
+  bool reopened_ = false;
+  IndexedHeap<AStarItem> heap_;
   std::vector<DijkstraItem> dijkstra_heap_;
 };
 
@@ -426,9 +481,14 @@ SearchOutcome BestFirstSearchT<Cost, P>::expand(Env& env, const SearchLimits& li
     // 1. Take the best entry; Dijkstra: skip it if stale (a cheaper entry of its state came
     //    first). A*'s list holds one entry per open state, at its current cost.
     const auto top = pop_open(heap);
-    Node& node = nodes_[idx(top.state)];
+    const int state = top.id();
+    Node& node = nodes_[idx(state)];
+    double g_top_value;
     if constexpr (kDijkstra) {
       if (top.g > cost_value(node.g)) continue;
+      g_top_value = top.g;
+    } else {
+      g_top_value = cost_value(node.g);  // its one entry's cost
     }
 
     // 2. The stop condition: budget spent or time up ends the run before the next visit.
@@ -438,12 +498,12 @@ SearchOutcome BestFirstSearchT<Cost, P>::expand(Env& env, const SearchLimits& li
     }
 
     // 3. Let the environment decide: expand, goal, or stop before settling.
-    const Visit visit = env.visit(top.state, top.g);
+    const Visit visit = env.visit(state, g_top_value);
     if (visit == Visit::Stop) break;
     node.pass = pass;
     ++outcome.expansions;
     if (visit == Visit::Goal) {
-      outcome.goal = top.state;
+      outcome.goal = state;
       break;
     }
 
@@ -451,7 +511,7 @@ SearchOutcome BestFirstSearchT<Cost, P>::expand(Env& env, const SearchLimits& li
     // The scalars by value: captured by reference they are reloaded after every store the
     // relaxation makes (the compiler cannot tell that the stores leave them alone).
     const Cost g_top = node.g;
-    const int from = top.state;
+    const int from = state;
     Node* const nodes = nodes_.data();
     // The relaxation is inlined into each of the environment's successor calls: GCC otherwise
     // calls it there, and the call's register saves cost more than the usual early return.

@@ -13,8 +13,8 @@
 namespace fsweep {
 inline namespace search {
 
-/// `Item` has an `int state` in [0, state count) and a static `bool before(const Item&, const
-/// Item&)`: a strict total order, true when the first comes out first.
+/// `Item` has `int id() const`, its state in [0, state count), and a static `bool before(const
+/// Item&, const Item&)`: a strict total order, true when the first comes out first.
 template <typename Item>
 class IndexedHeap {
  public:
@@ -38,11 +38,11 @@ class IndexedHeap {
     items_.push_back(item);
     sift_up(items_.size() - 1, item);
   }
-  /// Inserts `item`, or replaces the entry of `item.state` if the heap holds one (its key may
+  /// Inserts `item`, or replaces the entry of `item.id()` if the heap holds one (its key may
   /// move either way). The state must be below reset()'s state count.
   void push_or_update(const Item& item) {
-    const std::uint32_t at = position_[idx(item.state)];
-    if (at >= items_.size() || items_[at].state != item.state) {
+    const std::uint32_t at = position_[idx(item.id())];
+    if (at >= items_.size() || items_[at].id() != item.id()) {
       push(item);
     } else if (at > 0 && Item::before(item, items_[(at - 1) / kArity])) {
       sift_up(at, item);
@@ -50,6 +50,9 @@ class IndexedHeap {
       sift_down(at, item);
     }
   }
+  /// Re-keys the entry of `item.id()`, which the heap must hold, to `item`, which must come
+  /// before it (a decrease-key): it can only move up.
+  void decrease(const Item& item) { sift_up(position_[idx(item.id())], item); }
   /// Removes and returns the first entry; the heap must not be empty.
   Item pop() {
     const Item top = items_.front();
@@ -65,7 +68,7 @@ class IndexedHeap {
   /// Puts `item` at `at` and records its position.
   void place(std::size_t at, const Item& item) {
     items_[at] = item;
-    position_[idx(item.state)] = static_cast<std::uint32_t>(at);
+    position_[idx(item.id())] = static_cast<std::uint32_t>(at);
   }
   /// Moves `item`, meant for slot `at`, up past the entries it comes before.
   void sift_up(std::size_t at, const Item& item) {

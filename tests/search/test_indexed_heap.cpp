@@ -1,11 +1,14 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <limits>
 #include <set>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
 #include "core/random.hpp"
+#include "search/grid_search.hpp"
 #include "search/indexed_heap.hpp"
 
 namespace fsweep {
@@ -15,6 +18,7 @@ namespace test_indexed_heap {
 struct Item {
   int key;
   int state;
+  [[nodiscard]] int id() const { return state; }
   static bool before(const Item& a, const Item& b) {
     if (a.key != b.key) return a.key < b.key;
     return a.state < b.state;
@@ -70,6 +74,57 @@ TEST(IndexedHeap, ClearForgetsEntriesSoTheyComeBackAsNew) {
   EXPECT_EQ(heap.pop().state, 1);
   EXPECT_EQ(heap.pop().state, 2);
   EXPECT_TRUE(heap.empty());
+}
+
+/// The order A*'s list had before its entries were packed: f, then the larger g, then the
+/// smaller state, comparing the costs' doubles.
+bool before_as_doubles(OctileCost f1, OctileCost g1, int s1, OctileCost f2, OctileCost g2, int s2) {
+  if (f1.value() != f2.value()) return f1.value() < f2.value();
+  if (g1.value() != g2.value()) return g1.value() > g2.value();
+  return s1 < s2;
+}
+
+TEST(PackedOctileItem, OrdersAsTheCostsDoublesWithTiesAndLongPaths) {
+  // Small counts (many equal f and g, and near-equal ones such as 29 sqrt(2) against 41) and
+  // counts up to 2^20, where distinct lengths come closest; the largest state id.
+  for (const int range : {60, 1 << 20}) {
+    Rng rng = make_rng(static_cast<std::uint64_t>(range), "packed_octile_item");
+    const auto draw = [&](int limit) {
+      return static_cast<int>(uniform_below(rng, static_cast<std::uint64_t>(limit)));
+    };
+    struct Entry {
+      OctileCost f, g;
+      int state;
+      PackedOctileItem item;
+    };
+    std::vector<Entry> entries;
+    for (int i = 0; i < 400; ++i) {
+      const OctileCost g{draw(range), draw(range)};
+      const OctileCost f = g + OctileCost{draw(range), draw(range)};
+      const int state = i % 7 == 0 ? std::numeric_limits<int>::max() - draw(3) : draw(1000);
+      entries.push_back({f, g, state, PackedOctileItem::make(f, g, state)});
+    }
+    entries.push_back(entries[5]);  // the same entry twice
+    for (const Entry& a : entries) {
+      ASSERT_EQ(a.item.id(), a.state);
+      for (const Entry& b : entries) {
+        ASSERT_EQ(PackedOctileItem::before(a.item, b.item),
+                  before_as_doubles(a.f, a.g, a.state, b.f, b.g, b.state))
+            << "f " << a.f.straight << "+" << a.f.diagonal << "r2, g " << a.g.straight << "+" << a.g.diagonal
+            << "r2, state " << a.state << " against f " << b.f.straight << "+" << b.f.diagonal << "r2, g "
+            << b.g.straight << "+" << b.g.diagonal << "r2, state " << b.state;
+      }
+    }
+  }
+  // 29 sqrt(2) = 41.012...: f just above 41 straight steps, with equal g, comes after.
+  EXPECT_TRUE(PackedOctileItem::before(PackedOctileItem::make({41, 0}, {1, 0}, 9),
+                                       PackedOctileItem::make({0, 29}, {1, 0}, 2)));
+}
+
+TEST(PackedOctileItem, RefusesACostOf2To24CellsOrMore) {
+  EXPECT_NO_THROW((void)PackedOctileItem::make({(1 << 24) - 1, 0}, {0, 0}, 0));
+  EXPECT_THROW((void)PackedOctileItem::make({1 << 24, 0}, {0, 0}, 0), std::overflow_error);
+  EXPECT_THROW((void)PackedOctileItem::make({0, 1 << 24}, {0, 1 << 24}, 0), std::overflow_error);
 }
 
 }  // namespace test_indexed_heap
