@@ -59,12 +59,14 @@ struct OctileCost {
 /// An entry of A*'s open list over exact octile costs: the open-list order of BestFirstSearchT
 /// (smaller f, then larger g, then smaller state) as one 128-bit integer key, so that a
 /// comparison is one integer compare instead of four of doubles, in 16 bytes instead of 24.
-/// f and g enter as floor(value() * 2^24): OctileCost's values are exact to 1e-9 and distinct
-/// ones differ by more than 1e-7 (see there), more than the quantum 2^-24 (6e-8), so equal
-/// costs give equal keys and distinct ones keys in their order: the same order as comparing the
-/// doubles. The key is f (48 bits: f < 2^24 cells), 2^49 - 1 - g (49 bits), the state (31
-/// bits). make() throws std::overflow_error for a cost of 2^24 cells or more: a path of
-/// millions of cells, longer than any map with fewer than ten million cells can hold.
+/// f and g enter as floor(value() * 2^24): below 2^20 straight and 2^20 diagonal steps,
+/// OctileCost's values are exact to 1e-9 and distinct ones differ by more than 1e-7 (see there),
+/// more than the quantum 2^-24 (6e-8), so equal costs give equal keys and distinct ones keys in
+/// their order: the same order as comparing the doubles. (Beyond that, where the doubles'
+/// order is no longer exact either, costs within 6e-8 of each other may key as equal and be
+/// ordered by g and the state.) The key is f (48 bits: f < 2^24 cells), 2^49 - 1 - g (49
+/// bits), the state (31 bits). make() throws std::overflow_error for a cost of 2^24 cells or
+/// more: a path longer than any map of fewer than ten million cells can hold.
 struct PackedOctileItem {
   __extension__ typedef unsigned __int128 Key;  // a typedef: __extension__ (for -Wpedantic) takes no alias
   Key key;
@@ -303,8 +305,8 @@ class BestFirstSearchT {
     double f;
     double g;
     int state;
-    /// The open-list order: smaller f, then larger g, then smaller state.
     [[nodiscard]] int id() const { return state; }
+    /// The open-list order: smaller f, then larger g, then smaller state.
     static bool before(const HeapItem& a, const HeapItem& b) {
       // Bitwise, not short-circuit: no branches, so the heap's child selection needs none.
       return static_cast<bool>(

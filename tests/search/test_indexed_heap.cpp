@@ -41,14 +41,20 @@ TEST(IndexedHeap, PopsInKeyOrderThroughPushesAndReKeysBothWays) {
         key_of[static_cast<std::size_t>(top.state)] = -1;
         continue;
       }
-      // Insert, or re-key up or down (a state already in the heap).
+      // Insert, or re-key up or down (a state already in the heap): a smaller key for a state
+      // in the heap half of the time by decrease(), which may only move it up.
       const int state = static_cast<int>(uniform_below(rng, kStates));
       const int key = static_cast<int>(uniform_below(rng, 40));
       int& old = key_of[static_cast<std::size_t>(state)];
+      const bool smaller = old >= 0 && key < old;
       if (old >= 0) reference.erase({old, state});
       old = key;
       reference.insert({key, state});
-      heap.push_or_update(Item{key, state});
+      if (smaller && op % 2 == 0) {
+        heap.decrease(Item{key, state});
+      } else {
+        heap.push_or_update(Item{key, state});
+      }
       ASSERT_EQ(heap.size(), reference.size());
     }
     if (seed % 2 == 0) continue;  // leave entries behind: reset() must forget them
