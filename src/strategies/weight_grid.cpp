@@ -19,6 +19,18 @@ void set_bit(BlockBits& bits, int bit) {
   bits[static_cast<std::size_t>(bit) / 64] |= std::uint64_t{1} << (static_cast<unsigned>(bit) % 64);
 }
 
+/// The first bit at or after `from` (below 4,096) whose value is `value`, or 4,096.
+std::size_t next_bit(const BlockBits& bits, std::size_t from, bool value) {
+  constexpr std::size_t kBits = std::tuple_size_v<BlockBits> * 64;
+  for (std::size_t at = from; at < kBits;) {
+    const std::uint64_t word = value ? bits[at / 64] : ~bits[at / 64];
+    const std::uint64_t rest = word >> (at % 64);
+    if (rest != 0) return at + static_cast<std::size_t>(std::countr_zero(rest));
+    at = (at / 64 + 1) * 64;
+  }
+  return kBits;
+}
+
 /// Adds the direction v / sum(v) of a point's weights (or coordinates) `v` to `d`, or marks
 /// `d.zero` when they sum to 0. One division, then products: within two units in the last place
 /// of the ratios, well inside widen()'s margin.
@@ -240,6 +252,35 @@ std::uint32_t WeightGrid::block_of(const std::array<int, kMaxWeights>& at) const
     block = block * blocks_[k] + static_cast<std::uint32_t>(k < values_.size() ? at[k] / kBlockEdge : 0);
   }
   return block;
+}
+
+std::vector<std::uint32_t> point_runs(const BlockBits& bits) {
+  std::vector<std::uint32_t> runs;
+  std::size_t at = 0;
+  for (bool in = false;; in = !in) {
+    const std::size_t end = next_bit(bits, at, !in);
+    if (!in && end == std::tuple_size_v<BlockBits> * 64) return runs;  // no point after `at`
+    runs.push_back(static_cast<std::uint32_t>(end - at));
+    at = end;
+  }
+}
+
+BlockBits bits_of_runs(std::span<const std::uint32_t> runs) {
+  constexpr std::size_t kBits = std::tuple_size_v<BlockBits> * 64;
+  if (runs.size() % 2 != 0) {
+    throw std::invalid_argument("an odd number of runs (the last must be of points in)");
+  }
+  BlockBits bits{};
+  std::size_t at = 0;
+  for (std::size_t r = 0; r < runs.size(); ++r) {
+    if (r > 0 && runs[r] == 0) throw std::invalid_argument("a run of 0 points after the first");
+    if (runs[r] > kBits - at) throw std::invalid_argument("runs of more than 4096 points");
+    if (r % 2 == 1) {
+      for (std::size_t b = at; b < at + runs[r]; ++b) set_bit(bits, static_cast<int>(b));
+    }
+    at += runs[r];
+  }
+  return bits;
 }
 
 int WeightGrid::bit_of(const std::array<int, kMaxWeights>& local) {

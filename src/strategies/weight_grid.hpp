@@ -37,6 +37,15 @@ using BlockBits = std::array<std::uint64_t, 64>;
   return ((bits[static_cast<std::size_t>(bit) / 64] >> (static_cast<unsigned>(bit) % 64)) & 1U) != 0;
 }
 
+/// The points of `bits` as run lengths in bit order, alternating points out and points in,
+/// starting with points out (that first run may be 0) and ending with the last run of points in
+/// (no runs: no point). A behaviour's share of a block is the block cut by half-spaces, so it
+/// takes a few runs where the 64 words take 1,024 hexadecimal digits: journal lines keep parts so.
+[[nodiscard]] std::vector<std::uint32_t> point_runs(const BlockBits& bits);
+/// The points of runs written by point_runs(). Throws std::invalid_argument when `runs` is not
+/// such a list (a run but the first of 0, an odd count, or more than 4,096 points).
+[[nodiscard]] BlockBits bits_of_runs(std::span<const std::uint32_t> runs);
+
 /// A set of points of a WeightGrid: boxes of blocks it holds whole (every grid point of every
 /// block of the box) and blocks it holds in part, the latter in ascending block order. A box
 /// keeps a large uniform share (the whole [0, 250]^4 is one box of 32^4 blocks) in one entry,

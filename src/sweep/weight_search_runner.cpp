@@ -439,9 +439,7 @@ class SearchWriter {
     }
     json parts = json::array();
     for (const WeightRegion::Part& p : f.behaviour.region.parts) {
-      std::string hex;
-      for (const std::uint64_t word : p.bits) hex += hex64(word);
-      parts.push_back({p.block, hex});
+      parts.push_back({p.block, point_runs(p.bits)});
     }
     json cells = json::array();
     for (const Columns& c : f.cells) {
@@ -452,6 +450,27 @@ class SearchWriter {
     return json{{"key", key},     {"trace", hex64(f.behaviour.trace)}, {"boxes", boxes},
                 {"parts", parts}, {"choices", f.behaviour.choices},    {"cells", cells}}
         .dump();
+  }
+
+  /// A part of a journaled region: its block and its points as point_runs(), or (journals
+  /// written before 2026-12-04) as the 64 words of its bits in hexadecimal.
+  [[nodiscard]] static WeightRegion::Part part_of(const json& p) {
+    WeightRegion::Part part;
+    part.block = p.at(0).get<std::uint32_t>();
+    const json& points = p.at(1);
+    if (points.is_array()) {
+      part.bits = bits_of_runs(points.get<std::vector<std::uint32_t>>());
+    } else {
+      const std::string hex = points.get<std::string>();
+      if (hex.size() != part.bits.size() * 16) throw std::runtime_error("bad part");
+      for (std::size_t w = 0; w < part.bits.size(); ++w) {
+        part.bits[w] = std::stoull(hex.substr(w * 16, 16), nullptr, 16);
+      }
+    }
+    if (std::ranges::all_of(part.bits, [](std::uint64_t word) { return word == 0; })) {
+      throw std::runtime_error("a part without points");
+    }
+    return part;
   }
 
   /// The journal line of a finished subtree: its id and tally (the bound signed as the search
@@ -515,16 +534,7 @@ class SearchWriter {
             }
             f.behaviour.region.whole.push_back(box);
           }
-          for (const json& p : j.at("parts")) {
-            WeightRegion::Part part;
-            part.block = p.at(0).get<std::uint32_t>();
-            const std::string hex = p.at(1).get<std::string>();
-            if (hex.size() != part.bits.size() * 16) throw std::runtime_error("bad part");
-            for (std::size_t w = 0; w < part.bits.size(); ++w) {
-              part.bits[w] = std::stoull(hex.substr(w * 16, 16), nullptr, 16);
-            }
-            f.behaviour.region.parts.push_back(part);
-          }
+          for (const json& p : j.at("parts")) f.behaviour.region.parts.push_back(part_of(p));
           f.behaviour.choices = j.at("choices").get<std::vector<int>>();
           const std::string trace = j.at("trace").get<std::string>();
           if (trace.size() != 16) throw std::runtime_error("bad trace");

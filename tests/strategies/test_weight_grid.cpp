@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cstdint>
 #include <limits>
 #include <map>
@@ -169,6 +170,55 @@ TEST(WeightGrid, ShardsAreDisjointAndCoverTheGridInAFewBoxes) {
   const WeightGrid grid({values(3)});
   EXPECT_THROW((void)grid.shard(2, 2), std::invalid_argument);
   EXPECT_THROW((void)grid.shard(0, 0), std::invalid_argument);
+}
+
+TEST(WeightGrid, PointRunsGiveBackTheirBits) {
+  // Blocks of every density, empty and full, and the first and last bits alone.
+  Rng rng = make_rng(5, "point_runs");
+  std::vector<BlockBits> blocks;
+  BlockBits all{};
+  all.fill(~std::uint64_t{0});
+  BlockBits first{};
+  first[0] = 1;
+  BlockBits last{};
+  last[63] = std::uint64_t{1} << 63U;
+  blocks.insert(blocks.end(), {BlockBits{}, all, first, last});
+  for (int trial = 0; trial < 200; ++trial) {
+    BlockBits b{};
+    const std::uint64_t density = uniform_below(rng, 65);
+    for (int bit = 0; bit < 4096; ++bit) {
+      if (uniform_below(rng, 64) < density) {
+        b[static_cast<std::size_t>(bit) / 64] |= std::uint64_t{1} << (bit % 64);
+      }
+    }
+    blocks.push_back(b);
+  }
+  for (const BlockBits& b : blocks) {
+    const std::vector<std::uint32_t> runs = point_runs(b);
+    ASSERT_EQ(runs.size() % 2, 0U);
+    std::uint64_t in = 0;
+    for (std::size_t r = 1; r < runs.size(); r += 2) in += runs[r];
+    std::uint64_t bits = 0;
+    for (const std::uint64_t word : b) bits += static_cast<std::uint64_t>(std::popcount(word));
+    EXPECT_EQ(in, bits);
+    EXPECT_EQ(bits_of_runs(runs), b);
+  }
+  EXPECT_EQ(point_runs(all), (std::vector<std::uint32_t>{0, 4096}));
+  EXPECT_EQ(point_runs(last), (std::vector<std::uint32_t>{4095, 1}));
+  EXPECT_TRUE(point_runs(BlockBits{}).empty());
+  const auto refusal = [](std::vector<std::uint32_t> runs) {
+    try {
+      (void)bits_of_runs(runs);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("(accepted)");
+  };
+  EXPECT_EQ(refusal({3}), "an odd number of runs (the last must be of points in)");
+  EXPECT_EQ(refusal({3, 0}), "a run of 0 points after the first");
+  EXPECT_EQ(refusal({4000, 97}), "runs of more than 4096 points");
+  EXPECT_EQ(refusal({4000, 90, 2, 5}), "runs of more than 4096 points");
+  EXPECT_EQ(refusal({4000, 96}), "(accepted)");
 }
 
 TEST(WeightGrid, RefusesBadValueLists) {

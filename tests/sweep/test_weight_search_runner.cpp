@@ -16,8 +16,10 @@
 
 #include "core/config_error.hpp"
 #include "core/csv_reader.hpp"
+#include "core/random.hpp"
 #include "core/statistics.hpp"
 #include "report/runs_schema.hpp"
+#include "strategies/weight_grid.hpp"
 #include "sweep/merge.hpp"
 #include "sweep/sweep_plan.hpp"
 #include "sweep/sweep_runner.hpp"
@@ -405,6 +407,19 @@ std::vector<std::string> journal_lines(const std::string& journal, std::size_t* 
   return lines;
 }
 
+/// A behaviour's journal line (with its newline) with its parts' points as the 64 hexadecimal
+/// words that journals held before 2026-12-04 instead of runs; another line as it is.
+std::string with_hex_parts(const std::string& line) {
+  json j = json::parse(line);
+  if (!j.contains("parts")) return line;
+  for (json& p : j["parts"]) {
+    std::string hex;
+    for (const std::uint64_t word : bits_of_runs(p[1].get<std::vector<std::uint32_t>>())) hex += hex64(word);
+    p[1] = hex;
+  }
+  return j.dump() + "\n";
+}
+
 TEST(WeightSearchRunner, AKilledBestSearchResumesWithItsJournalAsIncumbent) {
   // Mode best journals the behaviours it finishes; a rerun after the files are lost keeps them,
   // starts from the best of them and writes the same optimal behaviours.
@@ -520,7 +535,8 @@ TEST(WeightSearchRunner, AKilledSearchResumesFromItsJournalWithTheSameFiles) {
   // A whole search of a map class, then its journal cut to its first lines and a torn one (as
   // a kill leaves it) and its files deleted: the rerun keeps the journaled behaviours, skips the
   // journaled subtrees, searches only the rest and writes the same files. Without vectors.csv
-  // the rerun keeps no journaled behaviour's region, only its ranks and heat-map cells.
+  // the rerun keeps no journaled behaviour's region, only its ranks and heat-map cells; that
+  // journal is given in the format of before 2026-12-04 (a part's points in hexadecimal words).
   for (const bool listed : {true, false}) {
     const std::string what = listed ? "with vectors.csv" : "without vectors.csv";
     const json box = {{"w1", {0, 1, 2}}, {"w2", {0, 2}}, {"w3", {0, 1, 2}}, {"w4", {0, 2}}};
@@ -542,7 +558,12 @@ TEST(WeightSearchRunner, AKilledSearchResumesFromItsJournalWithTheSameFiles) {
     ASSERT_GE(behaviours, 6U);
     ASSERT_GE(lines.size() - behaviours, 3U) << "no finished subtree journaled";
     std::string cut;
-    for (std::size_t i = 0; i < lines.size() / 2; ++i) cut += lines[i];
+    std::size_t hex_parts = 0;
+    for (std::size_t i = 0; i < lines.size() / 2; ++i) {
+      cut += listed ? lines[i] : with_hex_parts(lines[i]);
+      if (!listed && lines[i].find("\"parts\":[[") != std::string::npos) ++hex_parts;
+    }
+    ASSERT_EQ(hex_parts > 0, !listed) << "no part in the kept lines to write in hexadecimal";
     std::size_t kept = 0;
     (void)journal_lines(cut, &kept);
     ASSERT_LT(kept, lines.size() / 2) << "the kept lines hold a finished subtree";
