@@ -12,6 +12,8 @@
 #include <sstream>
 #include <string>
 
+#include "sweep/sweep_test_files.hpp"
+
 namespace fsweep::testing {
 
 /// Exit code (-1 when the process did not exit normally) and everything it printed.
@@ -44,11 +46,13 @@ inline CliOutcome run_fsweep(const std::string& args, const std::string& dir = "
 }
 
 /// A fresh (removed) directory under the system temp dir, unique per process:
-/// <tmp>/fsweep_cli_<tag>_<name>_<pid>.
+/// <tmp>/fsweep_cli_<tag>_<name>_<pid>; removed after the program's tests if all passed
+/// (ScratchDirs).
 inline std::string fresh_temp_dir(const std::string& tag, const std::string& name) {
   const auto dir = std::filesystem::temp_directory_path() /
                    ("fsweep_cli_" + tag + "_" + name + "_" + std::to_string(getpid()));
   std::filesystem::remove_all(dir);
+  ScratchDirs::add(dir);
   return dir.string();
 }
 

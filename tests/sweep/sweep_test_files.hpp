@@ -3,6 +3,7 @@
 /// Scratch files for the sweep tests: fresh temp directories and whole-file reads and writes;
 /// a SIGINT sent when the files say so (the Ctrl-C tests).
 
+#include <gtest/gtest.h>
 #include <signal.h>
 #include <unistd.h>
 
@@ -14,15 +15,39 @@
 #include <string>
 #include <thread>
 #include <utility>
+#include <vector>
 
 namespace fsweep::testing {
 
-/// A fresh, empty directory <tmp>/fsweep_<tag>_<name>_<pid> (removed first if it exists).
+/// The directories fresh_dir() made, removed when the test program has run its tests and every
+/// one passed; a failed program leaves them for a look.
+class ScratchDirs : public ::testing::Environment {
+ public:
+  static void add(const std::filesystem::path& dir) { made().push_back(dir); }
+  void TearDown() override {
+    if (!::testing::UnitTest::GetInstance()->Passed()) return;
+    for (const std::filesystem::path& dir : made()) {
+      std::error_code ignored;  // a directory a test removed itself
+      std::filesystem::remove_all(dir, ignored);
+    }
+  }
+
+ private:
+  static std::vector<std::filesystem::path>& made() {
+    static std::vector<std::filesystem::path> dirs;
+    return dirs;
+  }
+};
+inline ::testing::Environment* const kScratchDirs = ::testing::AddGlobalTestEnvironment(new ScratchDirs);
+
+/// A fresh, empty directory <tmp>/fsweep_<tag>_<name>_<pid> (removed first if it exists; removed
+/// after the program's tests if all passed, ScratchDirs).
 inline std::string fresh_dir(const std::string& tag, const std::string& name) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() /
                                     ("fsweep_" + tag + "_" + name + "_" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
+  ScratchDirs::add(dir);
   return dir.string();
 }
 
