@@ -375,6 +375,26 @@ std::array<std::array<int, 2>, WeightGrid::kMaxWeights> WeightGrid::bounds(const
   return box;
 }
 
+bool WeightGrid::holds(const WeightRegion& region) const {
+  for (const WeightRegion::Box& box : region.whole) {
+    for (std::size_t k = 0; k < kWeights; ++k) {
+      if (box.lo[k] >= box.hi[k] || box.hi[k] > blocks_[k]) return false;
+    }
+  }
+  for (std::size_t i = 0; i < region.parts.size(); ++i) {
+    const WeightRegion::Part& part = region.parts[i];
+    if (part.block >= block_count_ || (i > 0 && part.block <= region.parts[i - 1].block)) return false;
+    const BlockBits grid_points = all_bits(span_of(part.block));
+    bool any = false;
+    for (std::size_t w = 0; w < part.bits.size(); ++w) {
+      if ((part.bits[w] & ~grid_points[w]) != 0) return false;
+      any = any || part.bits[w] != 0;
+    }
+    if (!any) return false;
+  }
+  return true;
+}
+
 bool WeightGrid::contains(const WeightRegion& region, const std::array<int, kMaxWeights>& at) const {
   for (std::size_t k = 0; k < kWeights; ++k) {
     const int size = k < values_.size() ? static_cast<int>(values_[k].size()) : 1;

@@ -90,6 +90,11 @@ class WeightGrid {
   [[nodiscard]] std::array<int, kMaxWeights> lexmin(const WeightRegion& region) const;
   /// Per weight, the smallest and largest index of the region's points (non-empty region).
   [[nodiscard]] std::array<std::array<int, 2>, kMaxWeights> bounds(const WeightRegion& region) const;
+  /// True when `region` is a region of this grid: every box non-empty and within its blocks,
+  /// parts in strictly ascending block order, each with points only on grid points of its
+  /// block, and at least one. (Not checked: that boxes and parts share no block.) A journal line
+  /// read back is checked so before its region is used.
+  [[nodiscard]] bool holds(const WeightRegion& region) const;
   /// True when the point of indices `at` is in `region`.
   [[nodiscard]] bool contains(const WeightRegion& region, const std::array<int, kMaxWeights>& at) const;
   /// Calls `f(indices)` for every point of `region` once: the blocks of its boxes, then its

@@ -467,9 +467,6 @@ class SearchWriter {
         part.bits[w] = std::stoull(hex.substr(w * 16, 16), nullptr, 16);
       }
     }
-    if (std::ranges::all_of(part.bits, [](std::uint64_t word) { return word == 0; })) {
-      throw std::runtime_error("a part without points");
-    }
     return part;
   }
 
@@ -545,6 +542,7 @@ class SearchWriter {
             for (std::size_t m = 0; m < c.size(); ++m) c[m].second = row.at(m).get<std::string>();
             f.cells.push_back(std::move(c));
           }
+          if (!grid_.holds(f.behaviour.region)) throw std::runtime_error("a region outside the search's box");
           if (f.behaviour.region.empty() ||
               f.cells.size() != static_cast<std::size_t>(unit_.maps.size()) *
                                     static_cast<std::size_t>(plan_.repetitions())) {

@@ -133,6 +133,45 @@ TEST(WeightGrid, EverythingHoldsEveryPoint) {
   EXPECT_EQ(grid.weights_at(Point{2, 8, 0, 0}), (std::vector<double>{2, 13}));
 }
 
+TEST(WeightGrid, HoldsOnlyRegionsOfItsOwnBlocksAndPoints) {
+  // 3 x 9 values: blocks (0, 0) and (0, 1), the second holding weight 1's last value only.
+  const WeightGrid grid({{0, 1, 2}, {5, 6, 7, 8, 9, 10, 11, 12, 13}});
+  EXPECT_TRUE(grid.holds(grid.everything()));
+  Rng rng = make_rng(7, "holds");
+  for (int trial = 0; trial < 20; ++trial) {
+    for (const WeightGrid::Share& share : grid.split(grid.everything(), random_candidates(rng, 2, false))) {
+      EXPECT_TRUE(grid.holds(share.region));
+    }
+  }
+  const auto part = [](std::uint32_t block, int bit) {
+    WeightRegion::Part p;
+    p.block = block;
+    p.bits[static_cast<std::size_t>(bit) / 64] |= std::uint64_t{1} << (bit % 64);
+    return p;
+  };
+  const auto with_parts = [](std::vector<WeightRegion::Part> parts) {
+    WeightRegion r;
+    r.parts = std::move(parts);
+    return r;
+  };
+  EXPECT_TRUE(grid.holds(with_parts({part(0, 0), part(1, 0)})));
+  EXPECT_FALSE(grid.holds(with_parts({part(2, 0)}))) << "no block 2";
+  EXPECT_FALSE(grid.holds(with_parts({part(1, 64)}))) << "block 1 has no second value of weight 1";
+  EXPECT_FALSE(grid.holds(with_parts({part(0, 3 * 512)}))) << "weight 0 has 3 values";
+  EXPECT_FALSE(grid.holds(with_parts({part(1, 0), part(0, 0)}))) << "out of order";
+  EXPECT_FALSE(grid.holds(with_parts({part(0, 0), part(0, 1)}))) << "a block twice";
+  EXPECT_FALSE(grid.holds(with_parts({WeightRegion::Part{}}))) << "a part without points";
+  const auto with_box = [](std::array<std::uint32_t, 4> lo, std::array<std::uint32_t, 4> hi) {
+    WeightRegion r;
+    r.whole.push_back(WeightRegion::Box{lo, hi});
+    return r;
+  };
+  EXPECT_TRUE(grid.holds(with_box({0, 0, 0, 0}, {1, 2, 1, 1})));
+  EXPECT_FALSE(grid.holds(with_box({0, 1, 0, 0}, {1, 1, 1, 1}))) << "an empty box";
+  EXPECT_FALSE(grid.holds(with_box({0, 0, 0, 0}, {1, 3, 1, 1}))) << "weight 1 has 2 blocks";
+  EXPECT_FALSE(grid.holds(with_box({0, 0, 0, 0}, {1, 1, 2, 1}))) << "an unused weight has 1 block";
+}
+
 TEST(WeightGrid, ShardsAreDisjointAndCoverTheGridInAFewBoxes) {
   // Grids of 1 to 4 weights whose block counts are not multiples of the shard counts, and more
   // shards than blocks (some empty).

@@ -292,6 +292,29 @@ TEST(WeightSearchRunner, TargetSeekingIsSearchedAsEquationTwelveOverDecimalWeigh
   }
 }
 
+/// The lines of a journal, each with its newline (a torn last line, as a reader can see while the
+/// search writes it, without); `behaviours`: how many hold a behaviour (the others a finished
+/// subtree).
+std::vector<std::string> journal_lines(const std::string& journal, std::size_t* behaviours = nullptr) {
+  std::vector<std::string> lines;
+  for (std::size_t at = 0; at < journal.size();) {
+    const std::size_t end = journal.find('\n', at);
+    if (end == std::string::npos) {
+      lines.push_back(journal.substr(at));
+      break;
+    }
+    lines.push_back(journal.substr(at, end - at + 1));
+    at = end + 1;
+  }
+  if (behaviours != nullptr) {
+    *behaviours =
+        static_cast<std::size_t>(std::count_if(lines.begin(), lines.end(), [](const std::string& l) {
+          return l.find("\"done\"") == std::string::npos;
+        }));
+  }
+  return lines;
+}
+
 TEST(WeightSearchRunner, ShardsMergeIntoExactlyTheFilesOfOneSearch) {
   // A map class searched whole and as 3 shards (their parts of one behaviour joined by its
   // trace), in both modes: every CSV file of the merge is the unsharded one, byte for byte.
@@ -354,6 +377,26 @@ TEST(WeightSearchRunner, ShardsMergeIntoExactlyTheFilesOfOneSearch) {
     }
     EXPECT_EQ(testing::read_file(journal), "{not json\n" + whole_journal);
     testing::write_file(journal, whole_journal);
+    // So does a line that parses but whose region is not of the box (a block it does not have).
+    const std::string other = dir + "/shard-1-of-3/search_journal.jsonl";
+    const std::string other_journal = testing::read_file(other);
+    const std::vector<std::string> other_lines = journal_lines(other_journal);
+    const auto behaviour_line =
+        std::find_if(other_lines.begin(), other_lines.end(),
+                     [](const std::string& l) { return l.find("\"parts\":[[") != std::string::npos; });
+    ASSERT_NE(behaviour_line, other_lines.end());
+    json outside = json::parse(*behaviour_line);
+    outside["parts"][0][0] = 1U << 20U;
+    testing::write_file(other, outside.dump() + "\n" + other_journal);
+    try {
+      (void)merge_shards(dir);
+      ADD_FAILURE() << "merged a region outside the box";
+    } catch (const ConfigError& e) {
+      EXPECT_NE(std::string(e.what()).find(other + ":1"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("a region outside the search's box"), std::string::npos)
+          << e.what();
+    }
+    testing::write_file(other, other_journal);
     const MergeReport merged = merge_shards(dir);
     ASSERT_TRUE(merged.written);
     EXPECT_EQ(merged.searches, 1U);
@@ -382,29 +425,6 @@ TEST(WeightSearchRunner, ShardsMergeIntoExactlyTheFilesOfOneSearch) {
       EXPECT_GT(parts, joined["behaviours"].get<std::size_t>());
     }
   }
-}
-
-/// The lines of a journal, each with its newline (a torn last line, as a reader can see while the
-/// search writes it, without); `behaviours`: how many hold a behaviour (the others a finished
-/// subtree).
-std::vector<std::string> journal_lines(const std::string& journal, std::size_t* behaviours = nullptr) {
-  std::vector<std::string> lines;
-  for (std::size_t at = 0; at < journal.size();) {
-    const std::size_t end = journal.find('\n', at);
-    if (end == std::string::npos) {
-      lines.push_back(journal.substr(at));
-      break;
-    }
-    lines.push_back(journal.substr(at, end - at + 1));
-    at = end + 1;
-  }
-  if (behaviours != nullptr) {
-    *behaviours =
-        static_cast<std::size_t>(std::count_if(lines.begin(), lines.end(), [](const std::string& l) {
-          return l.find("\"done\"") == std::string::npos;
-        }));
-  }
-  return lines;
 }
 
 /// A behaviour's journal line (with its newline) with its parts' points as the 64 hexadecimal
