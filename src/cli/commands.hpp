@@ -24,5 +24,6 @@ Command add_plot_command(CLI::App& app);
 Command add_report_command(CLI::App& app);
 Command add_describe_command(CLI::App& app);
 Command add_export_sqlite_command(CLI::App& app);
+Command add_paired_command(CLI::App& app);
 
 }  // namespace fsweep::cli

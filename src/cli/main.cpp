@@ -44,6 +44,7 @@ int main(int argc, char** argv) try {
   commands["aggregate"] = fsweep::cli::add_aggregate_command(app);
   commands["merge"] = fsweep::cli::add_merge_command(app);
   commands["compare"] = fsweep::cli::add_compare_command(app);
+  commands["paired"] = fsweep::cli::add_paired_command(app);
   commands["slurm"] = fsweep::cli::add_slurm_command(app);
   commands["plot"] = fsweep::cli::add_plot_command(app);
   commands["report"] = fsweep::cli::add_report_command(app);

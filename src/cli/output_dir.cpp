@@ -71,6 +71,10 @@ std::optional<OutputDirContents> output_dir_contents(const std::string& dir) {
     return OutputDirContents{OutputKind::Compare, "the output of fsweep compare (" +
                                                       present(dir, {"compare.csv", "compare.html"}) + ")"};
   }
+  if (has(dir, "paired.csv") || has(dir, "paired.json")) {
+    return OutputDirContents{OutputKind::Paired, "the output of fsweep paired (" +
+                                                     present(dir, {"paired.csv", "paired.json"}) + ")"};
+  }
   if (const std::vector<std::string> shards = shard_folders(dir); !shards.empty()) {
     return OutputDirContents{OutputKind::Sweep, "the shards of a sweep (" + join_names(shards) + ")"};
   }

@@ -17,6 +17,7 @@ enum class OutputKind {
   PlanCompare,  ///< `fsweep plan-compare --out`: pairs.csv, summary.csv, manifest.json
   Compare,      ///< `fsweep compare --out`: compare.csv, compare.html
   Plots,        ///< `fsweep plot --out`: progress.png, metrics.png, heat maps
+  Paired,       ///< `fsweep paired --out`: paired.csv, paired.json
 };
 
 /// A directory holding `shard-<i>-of-<n>` folders (a sharded sweep's --out) and no other

@@ -4,14 +4,15 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
-#include <vector>
+#include <sstream>
 
 namespace fsweep::cli {
 namespace {
 
-constexpr const char* kPython = "/usr/bin/python3";
+constexpr const char* kSystemPython = "/usr/bin/python3";
 
 /// Runs `args` (args[0] an absolute path) and returns its exit code (-1 if it could not run or
 /// was killed).
@@ -39,26 +40,65 @@ int run_process(const std::vector<std::string>& args, ChildOutput output) {
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
+/// The python3 executables on PATH, in PATH's order, then /usr/bin/python3; each once.
+std::vector<std::string> python_candidates() {
+  std::vector<std::string> out;
+  const char* path = std::getenv("PATH");
+  std::istringstream dirs(path == nullptr ? "" : path);
+  std::string dir;
+  const auto add = [&](const std::string& candidate) {
+    std::error_code ec;
+    const auto canonical = std::filesystem::weakly_canonical(candidate, ec);
+    if (access(candidate.c_str(), X_OK) != 0) return;
+    for (const auto& o : out) {
+      if (std::filesystem::weakly_canonical(o, ec) == canonical) return;
+    }
+    out.push_back(candidate);
+  };
+  while (std::getline(dirs, dir, ':')) {
+    if (!dir.empty() && dir.front() == '/') add(dir + "/python3");
+  }
+  add(kSystemPython);
+  return out;
+}
+
 }  // namespace
 
-int draw_plots(const std::string& dir, const std::string& out, int top, ChildOutput output) {
-  const std::string script = std::string(FSWEEP_SOURCE_DIR) + "/tools/plot.py";
-  if (!std::filesystem::exists(kPython) ||
-      run_process({kPython, "-c", "import matplotlib"}, ChildOutput::None) != 0) {
-    std::cerr << "fsweep: error: plotting needs " << kPython
-              << " with matplotlib (Debian: apt install python3-matplotlib)\n";
+std::string python_with_matplotlib(std::vector<std::string>& tried) {
+  for (const std::string& python : python_candidates()) {
+    tried.push_back(python);
+    if (run_process({python, "-c", "import matplotlib"}, ChildOutput::None) == 0) return python;
+  }
+  return {};
+}
+
+int run_tool_script(const std::string& script, const std::vector<std::string>& args, ChildOutput output) {
+  const std::string path = std::string(FSWEEP_SOURCE_DIR) + "/tools/" + script;
+  if (!std::filesystem::exists(path)) {
+    std::cerr << "fsweep: error: " << path << ": script not found\n";
     return 2;
   }
-  if (!std::filesystem::exists(script)) {
-    std::cerr << "fsweep: error: " << script << ": plotting script not found\n";
+  std::vector<std::string> tried;
+  const std::string python = python_with_matplotlib(tried);
+  if (python.empty()) {
+    std::cerr << "fsweep: error: " << script << " needs python3 with matplotlib; none of";
+    for (const auto& t : tried) std::cerr << ' ' << t;
+    if (tried.empty()) std::cerr << " (no python3 on PATH or at " << kSystemPython << ")";
+    std::cerr << " imports it (Debian: apt install python3-matplotlib)\n";
     return 2;
   }
-  const int code = run_process({kPython, script, dir, "--out", out, "--top", std::to_string(top)}, output);
+  std::vector<std::string> command{python, path};
+  command.insert(command.end(), args.begin(), args.end());
+  const int code = run_process(command, output);
   if (code != 0) {
-    std::cerr << "fsweep: error: " << script << " failed (exit code " << code << ")\n";
+    std::cerr << "fsweep: error: " << path << " failed with " << python << " (exit code " << code << ")\n";
     return 1;
   }
   return 0;
+}
+
+int draw_plots(const std::string& dir, const std::string& out, int top, ChildOutput output) {
+  return run_tool_script("plot.py", {dir, "--out", out, "--top", std::to_string(top)}, output);
 }
 
 }  // namespace fsweep::cli

@@ -127,5 +127,22 @@ std::vector<std::string> objective_names() {
   return out;
 }
 
+Direction metric_direction(std::string_view column) {
+  constexpr std::array<std::string_view, 5> kLargerIsBetter{"area_per_metre", "coverage", "completeness",
+                                                            "explored_area_m2", "known_area_m2"};
+  return std::find(kLargerIsBetter.begin(), kLargerIsBetter.end(), column) != kLargerIsBetter.end()
+             ? Direction::Maximize
+             : Direction::Minimize;
+}
+
+std::string_view metric_unit(std::string_view column) {
+  if (column == "area_per_metre") return "m²/m";
+  if (column == "turned_deg") return "°";
+  if (column.ends_with("_m2")) return "m²";
+  if (column.ends_with("_m")) return "m";
+  if (column.ends_with("_s")) return "s";
+  return "";
+}
+
 }  // namespace report
 }  // namespace fsweep

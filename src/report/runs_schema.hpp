@@ -191,5 +191,17 @@ inline constexpr std::array<Objective, 3> kObjectives{{
 /// The objectives' names, in kObjectives order.
 [[nodiscard]] std::vector<std::string> objective_names();
 
+/// Which way a metric column improves, for comparisons that need a "better": larger is better for
+/// the area and coverage metrics (area_per_metre, coverage, completeness, explored_area_m2,
+/// known_area_m2), smaller for every other (distances, energy, times, counts of stops, turns,
+/// decisions and failures, what is left unexplored, competitive_ratio).
+[[nodiscard]] Direction metric_direction(std::string_view column);
+
+/// The unit of a metric column, for headers people read: "m" (`*_m`), "m²" (`*_m2`), "s"
+/// (`*_s`), "m²/m" (area_per_metre), "°" (turned_deg); "" for counts, shares and ratios (coverage,
+/// completeness, competitive_ratio, stops, ...) and for `energy`, whose unit is the run's energy
+/// model's (the robot.energy.unit column: m, units, Wh, ...).
+[[nodiscard]] std::string_view metric_unit(std::string_view column);
+
 }  // namespace report
 }  // namespace fsweep
