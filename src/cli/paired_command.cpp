@@ -74,7 +74,7 @@ void print_table(const PairedTable& t) {
   std::string block, metric;
   for (const PairedRow& r : t.rows) {
     std::string b = (r.source == "runs" ? "" : r.source + ", ") + "map class " + r.map_class;
-    for (std::size_t v = 0; v < r.variant.size(); ++v) b += ", " + t.variant_columns[v] + " " + r.variant[v];
+    for (std::size_t v = 0; v < r.variant.size(); ++v) b += ", " + t.variant_columns[v] + "=" + r.variant[v];
     if (b != block) {
       std::cout << b << ":\n";
       block = b;

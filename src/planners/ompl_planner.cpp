@@ -137,9 +137,9 @@ ob::PlannerPtr make_planner_of(const ob::SpaceInformationPtr& si) {
 /// Capabilities of the single-threaded OMPL planners that stop at their first path (RRTConnect,
 /// KPIECE1) and of the anytime ones (asymptotically optimal, not optimal in finite time); PRMstar
 /// checks for a solution in a second thread, so it is never deterministic.
-constexpr PlannerCapabilities kFirstPath{Determinism::WithMaxIterations, false, false};
-constexpr PlannerCapabilities kAnytime{Determinism::WithMaxIterations, false, true};
-constexpr PlannerCapabilities kAnytimeThreaded{Determinism::Never, false, true};
+constexpr PlannerCapabilities kFirstPath{Determinism::WithMaxIterations, false, false, true};
+constexpr PlannerCapabilities kAnytime{Determinism::WithMaxIterations, false, true, true};
+constexpr PlannerCapabilities kAnytimeThreaded{Determinism::Never, false, true, true};
 
 /// THE list of OMPL planners (add one here, one line; registry order).
 constexpr std::array kOmplPlanners{

@@ -98,6 +98,9 @@ struct PlannerCapabilities {
   bool optimal = false;
   /// Keeps improving a found path until its budget ends (instead of returning the first).
   bool anytime = false;
+  /// Draws random samples from the request's seed (sampling planners): runs that differ only in
+  /// their seed (the repetitions of a sweep) take different paths.
+  bool seeded = false;
 };
 
 /// What a planner's search gives back to Planner::plan(), which measures the path.

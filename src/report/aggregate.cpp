@@ -10,6 +10,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <unordered_map>
+#include <unordered_set>
 #include <utility>
 
 #include "core/config_error.hpp"
@@ -17,6 +18,7 @@
 #include "core/csv_reader.hpp"
 #include "core/files.hpp"
 #include "core/json_text.hpp"
+#include "core/random.hpp"
 #include "core/statistics.hpp"
 #include "report/runs_schema.hpp"
 #include "sim/run_result.hpp"
@@ -38,6 +40,8 @@ using Stats = std::array<double, kStatNames.size()>;
 struct Configuration {
   std::vector<std::string> values;
   std::uint64_t n = 0;
+  /// Hashes of the runs' map instance and outcome (n_distinct: the number of distinct ones).
+  std::unordered_set<std::uint64_t> distinct;
   std::vector<std::uint64_t> end_counts;     // parallel to RunsTable::end_reasons
   std::vector<std::vector<double>> metrics;  // parallel to RunsTable::metric_names
 };
@@ -119,6 +123,14 @@ RunsTable read_runs(const std::string& path) {
     t.end_reasons.emplace_back(to_string(static_cast<EndReason>(r)));
   }
 
+  // A run's identity for n_distinct: its map instance (the instance columns but the seed) and its
+  // outcome (end reason and every metric but the effort columns).
+  std::vector<std::size_t> identity_cols;
+  for (std::size_t c = 0; c < header.names().size(); ++c) {
+    if (header.role(c) == ColumnRole::Instance && header.names()[c] != kSeedColumn)
+      identity_cols.push_back(c);
+  }
+  identity_cols.insert(identity_cols.end(), header.quality().begin(), header.quality().end());
   std::unordered_map<std::string, std::size_t> config_of_key;
   while (in.next()) {
     const auto& f = in.fields();
@@ -135,6 +147,10 @@ RunsTable read_runs(const std::string& path) {
       throw ConfigError(in.where(), "run_key " + f[run_key] + " appears twice");
     }
     ++config.n;
+    std::uint64_t identity = kFnv1aBasis;
+    for (const std::size_t c : identity_cols)
+      identity = fnv1a(std::string_view("\x1f", 1), fnv1a(f[c], identity));
+    config.distinct.insert(identity);
     // 2. End reason count (a reason this build does not know gets its own column).
     const std::string& reason = f[end_reason];
     if (reason.empty()) throw ConfigError(in.where(), "empty end_reason");
@@ -214,6 +230,7 @@ void write_summary(const std::string& path, RunsTable& runs) {
   std::vector<std::string> row{"config_id"};
   row.insert(row.end(), runs.config_names.begin(), runs.config_names.end());
   row.emplace_back("n");
+  row.emplace_back("n_distinct");
   for (const auto& r : runs.end_reasons) row.push_back("end." + r);
   for (const auto& m : runs.metric_names) {
     for (const auto s : kStatNames) row.push_back(m + "." + std::string(s));
@@ -224,6 +241,7 @@ void write_summary(const std::string& path, RunsTable& runs) {
     row = {std::to_string(id)};
     row.insert(row.end(), c.values.begin(), c.values.end());
     row.push_back(std::to_string(c.n));
+    row.push_back(std::to_string(c.distinct.size()));
     for (const auto count : c.end_counts) row.push_back(std::to_string(count));
     for (auto& values : c.metrics) {
       for (const double s : describe(values)) row.push_back(number_cell(s));

@@ -12,7 +12,10 @@
 ///   config key; the instance columns `map`, `map.start` and `seed` are not part of it, so runs
 ///   on the maps of one `map_class` — e.g. the seeds of one generated map — are pooled like
 ///   repetitions), in order of first appearance in runs.csv, numbered by `config_id` from 0:
-///   `config_id`, the config columns, `n` (runs), one count column per end reason
+///   `config_id`, the config columns, `n` (runs), `n_distinct` (distinct runs: those that differ in
+///   their map instance (map, map.start, map.width, map.height) or in their outcome (end_reason,
+///   end_detail and every metric but the effort columns), so repetitions that came out identical,
+///   having nothing random in them, count once; compared by a 64-bit hash), one count column per end reason
 ///   (`end.complete`, ... for every EndReason in declaration order, then any reason this build
 ///   does not know, by first appearance), then for every metric column M:
 ///   `M.mean, M.std, M.min, M.q05, M.q25, M.median, M.q75, M.q95, M.max`. Quantiles are

@@ -145,6 +145,40 @@ void name_runs_sides(PairedTable& table, const Source& source,
   }
 }
 
+/// True when, over `groups`, the value of variant column `by` determines that of column `of`.
+bool determines(std::size_t by, std::size_t of, const std::vector<Group>& groups) {
+  std::unordered_map<std::string, const std::string*> seen;
+  for (const Group& g : groups) {
+    const auto [it, added] = seen.try_emplace(g.variant[by], &g.variant[of]);
+    if (!added && *it->second != g.variant[of]) return false;
+  }
+  return true;
+}
+
+/// The variant columns (`names`, the values of each group's variant) worth showing: those with
+/// more than one value, less any that another shown column determines. Of columns that determine
+/// each other, one stays: a `*.preset` column first, else the first in file order.
+std::vector<std::size_t> telling_columns(const std::vector<std::string>& names,
+                                         const std::vector<Group>& groups) {
+  std::vector<std::size_t> order;
+  for (std::size_t c = 0; c < names.size(); ++c) {
+    std::set<std::string> values;
+    for (const Group& g : groups) values.insert(g.variant[c]);
+    if (values.size() > 1) order.push_back(c);
+  }
+  std::stable_partition(order.begin(), order.end(),
+                        [&](std::size_t c) { return names[c].ends_with(".preset"); });
+  std::vector<std::size_t> kept;
+  for (const std::size_t c : order) {
+    const bool implied =
+        std::any_of(kept.begin(), kept.end(), [&](std::size_t k) { return determines(k, c, groups); });
+    if (!implied) kept.push_back(c);
+  }
+  // A kept column that the others together determine stays: the rule drops only single implications.
+  std::sort(kept.begin(), kept.end());
+  return kept;
+}
+
 /// runs.csv as a source (paired.hpp, "Sides and pairs").
 Source read_runs_source(const std::string& path, PairedTable& table, const PairedOptions& o) {
   CsvReader in(path);
@@ -166,7 +200,6 @@ Source read_runs_source(const std::string& path, PairedTable& table, const Paire
   Source source{kRunsSource, {}, {}, {}};
   std::unordered_map<std::string, std::size_t> side_of, group_of_key;
   std::vector<std::vector<std::string>> side_values;  // parallel to source.sides: the side columns' cells
-  std::vector<std::set<std::string>> group_cells(group_cols.size());
   while (in.next()) {
     const auto& f = in.fields();
     const std::string side_key = config_key(f, std::vector<int>(side_cols.begin(), side_cols.end()));
@@ -180,7 +213,6 @@ Source read_runs_source(const std::string& path, PairedTable& table, const Paire
     }
     std::vector<std::string> variant;
     for (std::size_t g = 0; g < group_cols.size(); ++g) {
-      group_cells[g].insert(f[group_cols[g]]);
       if (static_cast<int>(group_cols[g]) != map_class) variant.push_back(f[group_cols[g]]);
     }
     Group& group =
@@ -196,21 +228,18 @@ Source read_runs_source(const std::string& path, PairedTable& table, const Paire
                                         f[header.run_key()] + ")");
     }
   }
-  // Variant columns: the group columns but map_class that differ in the file.
-  std::vector<std::size_t> differing;
-  std::size_t v = 0;
-  for (std::size_t g = 0; g < group_cols.size(); ++g) {
-    if (static_cast<int>(group_cols[g]) == map_class) continue;
-    if (group_cells[g].size() > 1) {
-      table.variant_columns.push_back(header.names()[group_cols[g]]);
-      differing.push_back(v);
-    }
-    ++v;
+  // Variant columns: the group columns but map_class that differ in the file, without those that
+  // another shown column determines (robot.energy.per_metre by robot.energy.preset).
+  std::vector<std::string> names;
+  for (const std::size_t g : group_cols) {
+    if (static_cast<int>(g) != map_class) names.push_back(header.names()[g]);
   }
+  const std::vector<std::size_t> shown = telling_columns(names, source.groups);
+  for (const std::size_t c : shown) table.variant_columns.push_back(names[c]);
   for (Group& group : source.groups) {
-    std::vector<std::string> shown;
-    for (const std::size_t d : differing) shown.push_back(group.variant[d]);
-    group.variant = std::move(shown);
+    std::vector<std::string> values;
+    for (const std::size_t c : shown) values.push_back(group.variant[c]);
+    group.variant = std::move(values);
   }
   std::vector<std::string> side_names;
   for (const std::size_t c : side_cols) side_names.push_back(header.names()[c]);

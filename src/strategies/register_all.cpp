@@ -1,6 +1,7 @@
 /// @file register_all.cpp
 /// The one place where strategies are registered.
 
+#include <map>
 #include <nlohmann/json.hpp>
 
 #include "core/config_error.hpp"
@@ -19,8 +20,26 @@ namespace {
 
 using Made = std::unique_ptr<Strategy>;
 
-StrategyRegistry make_registry() {
-  StrategyRegistry r("strategy");
+/// The registry and, by the same names, the traits (strategies whose traits are not given have
+/// the defaults: not seeded).
+struct StrategyCatalog {
+  StrategyRegistry registry{"strategy"};
+  std::map<std::string, StrategyTraits, std::less<>> traits;
+
+  template <class P, class Make>
+  void add(const std::string& name, const std::string& doc, ParamDecl<P> decl, Make make) {
+    add<P>(name, StrategyTraits{}, doc, std::move(decl), std::move(make));
+  }
+  template <class P, class Make>
+  void add(const std::string& name, StrategyTraits t, const std::string& doc, ParamDecl<P> decl, Make make) {
+    registry.add<P>(name, doc, std::move(decl),
+                    std::function<Made(const P&, std::uint64_t)>(std::move(make)));
+    traits.emplace(name, t);
+  }
+};
+
+StrategyCatalog make_catalog() {
+  StrategyCatalog r;
   r.add<EnergyAwareParams>(
       "energy_aware",
       "energy-aware exploration, Rappaport 2016 Algorithm 1 (cost eq. 8, return threshold eq. 7)",
@@ -50,7 +69,7 @@ StrategyRegistry make_registry() {
         return std::make_unique<WidestFrontier>(p);
       });
   r.add<GblParams>(
-      "gbl",
+      "gbl", StrategyTraits{.seeded = true},
       "Gonzalez-Banos and Latombe: sampled candidates maximising I(p) exp(-lambda L(p)) (Holz 2010 eq. 3)",
       gbl_params(),
       [](const GblParams& p, std::uint64_t seed) -> Made { return std::make_unique<Gbl>(p, seed); });
@@ -61,18 +80,25 @@ StrategyRegistry make_registry() {
       "target_seeking", "Arvanitakis et al.: reach a target in unknown space, frontier cost eq. 12",
       target_seeking_params(),
       [](const TargetSeekingParams& p, std::uint64_t) -> Made { return std::make_unique<TargetSeeking>(p); });
-  r.add<NoParams>("random_frontier", "a reachable frontier cluster drawn uniformly (seeded); a baseline",
-                  ParamDecl<NoParams>{}, [](const NoParams&, std::uint64_t seed) -> Made {
-                    return std::make_unique<RandomFrontier>(seed);
-                  });
+  r.add<NoParams>(
+      "random_frontier", StrategyTraits{.seeded = true},
+      "a reachable frontier cluster drawn uniformly (seeded); a baseline", ParamDecl<NoParams>{},
+      [](const NoParams&, std::uint64_t seed) -> Made { return std::make_unique<RandomFrontier>(seed); });
   return r;
+}
+
+const StrategyCatalog& catalog() {
+  static const StrategyCatalog kCatalog = make_catalog();
+  return kCatalog;
 }
 
 }  // namespace
 
-const StrategyRegistry& strategy_registry() {
-  static const StrategyRegistry kRegistry = make_registry();
-  return kRegistry;
+const StrategyRegistry& strategy_registry() { return catalog().registry; }
+
+StrategyTraits strategy_traits(std::string_view name) {
+  const auto it = catalog().traits.find(name);
+  return it == catalog().traits.end() ? StrategyTraits{} : it->second;
 }
 
 StrategyConfig configure_strategy(const std::string& name, const nlohmann::json& params,

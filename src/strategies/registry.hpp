@@ -8,6 +8,7 @@
 #include <memory>
 #include <nlohmann/json_fwd.hpp>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/registry.hpp"
@@ -21,8 +22,19 @@ using StrategyRegistry = Registry<std::unique_ptr<Strategy>, std::uint64_t>;
 /// A strategy resolved once: name, resolved params (every parameter), maker.
 using StrategyConfig = StrategyRegistry::Configured;
 
+/// What a strategy declares of itself beside its parameters (register_all.cpp, beside each
+/// registration).
+struct StrategyTraits {
+  /// Draws random numbers from the seed it is made with (the run seed's "strategy" stream): runs
+  /// that differ only in their seed (a sweep's repetitions) choose differently.
+  bool seeded = false;
+};
+
 /// Every registered strategy.
 [[nodiscard]] const StrategyRegistry& strategy_registry();
+
+/// The traits of strategy `name` (the defaults for a name not registered).
+[[nodiscard]] StrategyTraits strategy_traits(std::string_view name);
 
 /// Resolves strategy `name` with `params` (JSON object or null for defaults). Throws ConfigError
 /// at `where` for an unknown name (listing the known ones) and one ConfigError listing every

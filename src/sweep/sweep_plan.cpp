@@ -29,9 +29,9 @@ namespace {
 using nlohmann::json;
 using sweep_detail::value_text;
 
-const std::vector<std::string> kTopLevelKeys = {"schema_version",  "name",        "description", "maps",
-                                                "strategies",      "planners",    "robot",       "sim",
-                                                "progress_step_m", "repetitions", "seed",        "output"};
+const std::vector<std::string> kTopLevelKeys = {
+    "schema_version", "name", "description",     "maps",        "strategies", "baseline", "planners",
+    "robot",          "sim",  "progress_step_m", "repetitions", "seed",       "output"};
 
 bool valid_name(const std::string& name) {
   if (name.empty() || name == "." || name == "..") return false;
@@ -164,6 +164,23 @@ SweepPlan SweepPlan::build(const json& sweep, const std::string& file, std::vect
   plan.strategies_ = sweep_detail::parse_strategies(get("strategies"), problems);
   plan.planners_ = sweep_detail::parse_planners(get("planners"), problems);
   plan.robots_ = sweep_detail::parse_robots(get("robot"), problems);
+  if (const json& b = get("baseline"); !b.is_null()) {
+    // A strategy entry's label, or for a search entry "<label>@best" or "<label>@w1,w2,..." (paired.hpp).
+    std::vector<std::string> labels;
+    bool known = false;
+    for (const StrategyEntry& e : plan.strategies_) {
+      labels.push_back(e.search ? e.label + "@best" : e.label);
+      known = known || (b.is_string() &&
+                        (b == e.label || (e.search && b.get<std::string>().starts_with(e.label + "@"))));
+    }
+    if (!known) {
+      problems.push_back(
+          "/baseline: value " + value_text(b) +
+          " not allowed; allowed: a strategy entry's label (the side fsweep paired and fsweep report "
+          "compare the others with): " +
+          join_names(labels));
+    }
+  }
 
   // 4. Robot against maps: the dock is a free cell, the sensor sees the 8 neighbours and its
   //    range in cells is one the sensor supports.

@@ -9,6 +9,7 @@
 #include "sim/competitive.hpp"
 #include "sim/heuristics.hpp"
 #include "sim/simulation.hpp"
+#include "sweep/repetition_check.hpp"
 
 namespace fsweep {
 inline namespace sweep {
@@ -109,6 +110,7 @@ std::vector<std::string> sweep_warnings(const SweepPlan& plan) {
     out.push_back(m.where + ": skipped plan " + m.file + " (\"on_bad_map\": \"skip\"): " + m.reason);
   }
   for (std::string& line : clipped_free_space_warnings(plan)) out.push_back(std::move(line));
+  for (std::string& line : identical_repetition_warnings(plan)) out.push_back(std::move(line));
   return out;
 }
 

@@ -111,7 +111,8 @@ inline constexpr char kOptimumCheckColumn[] = "optimum_check";
 [[nodiscard]] std::vector<std::string> clipped_free_space_warnings(const SweepPlan& plan);
 
 /// Every warning about `plan` that `expand`, `run` and `slurm` print and manifest.json keeps: one
-/// line per skipped dataset plan (SweepPlan::skipped_maps()), then clipped_free_space_warnings().
+/// line per skipped dataset plan (SweepPlan::skipped_maps()), then clipped_free_space_warnings(),
+/// then identical_repetition_warnings() (repetition_check.hpp).
 [[nodiscard]] std::vector<std::string> sweep_warnings(const SweepPlan& plan);
 
 /// Index of the run at the given axis positions (repetition 0): the inverse of

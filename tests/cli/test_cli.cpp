@@ -193,11 +193,11 @@ TEST(Cli, PlanScenarioCountsQueriesWithInvalidEndpointsOnStderr) {
 TEST(Cli, UnknownCommandIsNamedWithTheCommandsAllowed) {
   const Outcome r = fsweep("frobnicate");
   EXPECT_EQ(r.code, 2) << r.output;
-  EXPECT_NE(
-      r.output.find("fsweep: error: unknown command 'frobnicate'; allowed: sim, plan, plan-compare, "
-                    "plan-bench, run, expand, aggregate, merge, compare, slurm, plot, report, describe, "
-                    "export-sqlite"),
-      std::string::npos)
+  EXPECT_NE(r.output.find(
+                "fsweep: error: unknown command 'frobnicate'; allowed: sim, plan, plan-compare, "
+                "plan-bench, run, expand, aggregate, merge, compare, paired, slurm, plot, report, describe, "
+                "export-sqlite"),
+            std::string::npos)
       << r.output;
   const Outcome none = fsweep("");
   EXPECT_EQ(none.code, 2) << none.output;

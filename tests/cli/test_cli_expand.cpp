@@ -28,6 +28,30 @@ TEST(CliExpand, PrintsTheRunCountOfTheExhaustiveWeightSearch) {
   EXPECT_NE(r.output.find("nothing was run or written"), std::string::npos) << r.output;
 }
 
+TEST(CliExpand, WarnsThatRepetitionsWithNothingRandomAreCopiesAndRunRecordsIt) {
+  const std::string dir = fsweep::testing::fresh_temp_dir("expand", "copies");
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir + "/copies.json")
+      << R"({"schema_version": 1, "name": "copies", "maps": ["rooms:w=24,h=20,seed=2"],
+    "strategies": [{"name": "closest_frontier", "label": "CF"}], "repetitions": 4})";
+  const std::string warning =
+      "1 of 1 configurations have nothing random in them (no sensor misses, a fixed start, no seeded "
+      "strategy or "
+      "planner), so their 4 repetitions on a map instance will be 4 copies of one run";
+  Outcome r = fsweep("expand " + dir + "/copies.json");
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find("fsweep: warning: " + dir + "/copies.json: " + warning), std::string::npos)
+      << r.output;
+  r = fsweep("run " + dir + "/copies.json --quiet --out " + dir + "/out");
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find(warning), std::string::npos) << r.output;
+  EXPECT_NE(fsweep::testing::read_all(dir + "/out/manifest.json").find(warning), std::string::npos);
+  // After the runs, summary.csv says how many were distinct.
+  const std::string summary = fsweep::testing::read_all(dir + "/out/summary.csv");
+  EXPECT_NE(summary.find(",n,n_distinct,"), std::string::npos) << summary;
+  EXPECT_NE(summary.find(",4,1,"), std::string::npos) << summary;
+}
+
 TEST(CliExpand, BadSweepExits2ListingEveryProblem) {
   const auto path = (std::filesystem::temp_directory_path() /
                      ("fsweep_cli_bad_sweep_" + std::to_string(getpid()) + ".json"))

@@ -66,6 +66,31 @@ TEST(Summary, GroupsRunsByConfigurationIgnoringSeed) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(Summary, CountsDistinctRunsBesideN) {
+  // Configuration 0: the same map instance three times with the same outcome (only the seed and the
+  // wall time differ: repetitions with nothing random), and once on another map. Configuration 1:
+  // two seeds with different outcomes.
+  const auto dir = make_sweep_dir("distinct");
+  write_text(
+      dir / "runs.csv",
+      "run_index,run_key,map_class,map,strategy,seed,end_reason,end_detail,distance_m,energy,wall_time_s\n"
+      "0,k0,c,m1,a,1,complete,,5,5,0.1\n"
+      "1,k1,c,m1,a,2,complete,,5,5,0.3\n"
+      "2,k2,c,m1,a,3,complete,,5,5,0.2\n"
+      "3,k3,c,m2,a,1,complete,,5,5,0.2\n"
+      "4,k4,c,m1,b,1,complete,,5,5,0.1\n"
+      "5,k5,c,m1,b,2,range_limited,,5,5,0.1\n");
+  write_text(dir / "progress.csv", "run_index,run_key,distance_m,explored_area_m2,coverage,energy\n");
+  aggregate(dir.string(), AggregateOptions{"energy"});
+  const auto rows = read_rows(dir / "summary.csv");
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0].at("n"), "4");
+  EXPECT_EQ(rows[0].at("n_distinct"), "2");
+  EXPECT_EQ(rows[1].at("n"), "2");
+  EXPECT_EQ(rows[1].at("n_distinct"), "2");
+  std::filesystem::remove_all(dir);
+}
+
 // Config 0's distances are 1, 2, 3, 4: mean 2.5, std sqrt(5/3) (squares 2.25 + 0.25 + 0.25 +
 // 2.25 over n - 1 = 3), quantiles as in Quantile.Type7MatchesHandComputation.
 TEST(Summary, StatisticsMatchHandComputation) {
