@@ -284,6 +284,24 @@ TEST(SweepValidation, ShippedExamplesAreValid) {
   EXPECT_GE(n, 4);
 }
 
+TEST(SweepValidation, TheBaselineIsAStrategyEntrysLabel) {
+  json sweep = minimal();
+  sweep["strategies"].push_back(json::parse(R"({"name": "energy_aware", "label": "EA"})"));
+  sweep["baseline"] = "EA";
+  EXPECT_EQ(problems_of(sweep), "");
+  sweep["baseline"] = "closest_frontier";  // an entry without a label is named by its strategy
+  EXPECT_EQ(problems_of(sweep), "");
+  sweep["baseline"] = "CF";
+  EXPECT_NE(
+      problems_of(sweep).find("/baseline: value \"CF\" not allowed; allowed: a strategy entry's label (the "
+                              "side fsweep paired and fsweep report compare the others with): "
+                              "closest_frontier, EA"),
+      std::string::npos)
+      << problems_of(sweep);
+  sweep["baseline"] = 3;
+  EXPECT_NE(problems_of(sweep).find("/baseline: value 3 not allowed"), std::string::npos);
+}
+
 TEST(SweepValidation, NoShippedSweepClipsTheFreeSpaceOptimum) {
   // Every free map of the shipped sweeps holds the disc its robots can reach, the sensor band and
   // one cell (sweep_table.hpp's star_optimum()): no sweep prints the clipped-map warning. The
