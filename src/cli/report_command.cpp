@@ -11,6 +11,7 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -105,6 +106,27 @@ void add_trajectories(ReportPage& page) {
   }
 }
 
+/// The paired comparisons of the sweep's strategies when it has two or more labels: against the
+/// sweep's "baseline", else its first strategy entry (paired.hpp); why not, when they fail.
+void add_paired(ReportPage& page) {
+  try {
+    PairedTable table = paired_comparison(page.result.dir, PairedOptions{});
+    std::set<std::string> labels;
+    for (const PairedSide& side : table.sides) {
+      if (side.source == "runs") labels.insert(side.label);
+    }
+    if (labels.size() < 2) return;
+    const nlohmann::json& sweep = page.result.manifest["sweep"];
+    page.paired_note = sweep.contains("baseline")
+                           ? "the sweep's \"baseline\""
+                           : "the sweep's first strategy entry; a sweep's \"baseline\" "
+                             "names another, fsweep paired --baseline too";
+    page.paired = std::move(table);
+  } catch (const ConfigError& e) {
+    page.paired_note = std::string("The strategies could not be compared: ") + e.what();
+  }
+}
+
 /// Refuses an --out that is a directory, or an existing file other than a page this command
 /// wrote (its generator tag, html.hpp, or the title of pages from before the tag): the page
 /// never replaces another command's file.
@@ -133,6 +155,7 @@ int run_report(const ReportOptions& o) {
   check_report_out(out);  // before the plots are drawn
   ReportPage page;
   page.result = read_result_dir(o.dir, o.rows);
+  add_paired(page);
   {
     const TempDir plots;
     if (const int code = draw_plots(o.dir, plots.path(), o.top, ChildOutput::ErrorsOnly); code != 0)
@@ -167,7 +190,9 @@ Command add_report_command(CLI::App& app) {
   sub->add_option("--top", o->top, "Plot the best N configurations (fsweep plot --top)")
       ->check(positive())
       ->capture_default_str();
-  sub->add_option("--rows", o->rows, "Rows of each table (best.csv, summary.csv, search_best.csv)")
+  sub->add_option(
+         "--rows", o->rows,
+         "Rows of each table (the ranking of each map class, best.csv, summary.csv, search_best.csv)")
       ->check(positive())
       ->capture_default_str();
   sub->add_flag("!--no-trajectories", o->trajectories,

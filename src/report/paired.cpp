@@ -21,6 +21,7 @@
 #include "core/json_text.hpp"
 #include "core/random.hpp"
 #include "core/statistics.hpp"
+#include "report/config_names.hpp"
 #include "report/runs_schema.hpp"
 
 namespace fsweep {
@@ -118,67 +119,6 @@ bool is_side_column(const std::string& name) {
   return name == kStrategyLabelColumn || name == "strategy" || name.starts_with("strategy.");
 }
 
-/// Names the sides of runs.csv (the source's sides, whose side-column cells are `side_values`, in
-/// the order of `side_columns`): the label, and the side columns but the label that differ
-/// between the sides of that label, in column order ("EA w1=10 w3=9"; empty cells left out).
-void name_runs_sides(PairedTable& table, const Source& source,
-                     const std::vector<std::vector<std::string>>& side_values,
-                     const std::vector<std::string>& side_columns) {
-  std::map<std::string, std::vector<std::set<std::string>>> cells_of_label;
-  for (std::size_t k = 0; k < source.sides.size(); ++k) {
-    auto& cells = cells_of_label[table.sides[source.sides[k]].label];
-    cells.resize(side_columns.size());
-    for (std::size_t c = 0; c < side_columns.size(); ++c) cells[c].insert(side_values[k][c]);
-  }
-  for (std::size_t k = 0; k < source.sides.size(); ++k) {
-    PairedSide& side = table.sides[source.sides[k]];
-    side.name = side.label;
-    const auto& cells = cells_of_label[side.label];
-    for (std::size_t c = 0; c < side_columns.size(); ++c) {
-      if (side_columns[c] == kStrategyLabelColumn || cells[c].size() < 2 || side_values[k][c].empty())
-        continue;
-      const std::string& column = side_columns[c];
-      const std::string name = column.starts_with("strategy.") ? column.substr(9) : column;
-      side.params.emplace_back(name, side_values[k][c]);
-      side.name += " " + name + "=" + side_values[k][c];
-    }
-  }
-}
-
-/// True when, over `groups`, the value of variant column `by` determines that of column `of`.
-bool determines(std::size_t by, std::size_t of, const std::vector<Group>& groups) {
-  std::unordered_map<std::string, const std::string*> seen;
-  for (const Group& g : groups) {
-    const auto [it, added] = seen.try_emplace(g.variant[by], &g.variant[of]);
-    if (!added && *it->second != g.variant[of]) return false;
-  }
-  return true;
-}
-
-/// The variant columns (`names`, the values of each group's variant) worth showing: those with
-/// more than one value, less any that another shown column determines. Of columns that determine
-/// each other, one stays: a `*.preset` column first, else the first in file order.
-std::vector<std::size_t> telling_columns(const std::vector<std::string>& names,
-                                         const std::vector<Group>& groups) {
-  std::vector<std::size_t> order;
-  for (std::size_t c = 0; c < names.size(); ++c) {
-    std::set<std::string> values;
-    for (const Group& g : groups) values.insert(g.variant[c]);
-    if (values.size() > 1) order.push_back(c);
-  }
-  std::stable_partition(order.begin(), order.end(),
-                        [&](std::size_t c) { return names[c].ends_with(".preset"); });
-  std::vector<std::size_t> kept;
-  for (const std::size_t c : order) {
-    const bool implied =
-        std::any_of(kept.begin(), kept.end(), [&](std::size_t k) { return determines(k, c, groups); });
-    if (!implied) kept.push_back(c);
-  }
-  // A kept column that the others together determine stays: the rule drops only single implications.
-  std::sort(kept.begin(), kept.end());
-  return kept;
-}
-
 /// runs.csv as a source (paired.hpp, "Sides and pairs").
 Source read_runs_source(const std::string& path, PairedTable& table, const PairedOptions& o) {
   CsvReader in(path);
@@ -234,16 +174,25 @@ Source read_runs_source(const std::string& path, PairedTable& table, const Paire
   for (const std::size_t g : group_cols) {
     if (static_cast<int>(g) != map_class) names.push_back(header.names()[g]);
   }
-  const std::vector<std::size_t> shown = telling_columns(names, source.groups);
+  std::vector<std::vector<std::string>> variants;
+  for (const Group& group : source.groups) variants.push_back(group.variant);
+  const std::vector<std::size_t> shown = telling_columns(names, variants);
   for (const std::size_t c : shown) table.variant_columns.push_back(names[c]);
   for (Group& group : source.groups) {
     std::vector<std::string> values;
     for (const std::size_t c : shown) values.push_back(group.variant[c]);
     group.variant = std::move(values);
   }
-  std::vector<std::string> side_names;
-  for (const std::size_t c : side_cols) side_names.push_back(header.names()[c]);
-  name_runs_sides(table, source, side_values, side_names);
+  const std::vector<std::string> side_names = strategy_names(header.names_of(side_cols), side_values);
+  for (std::size_t k = 0; k < source.sides.size(); ++k) {
+    PairedSide& side = table.sides[source.sides[k]];
+    side.name = side_names[k];
+    for (std::size_t c = 0; c < side_cols.size(); ++c) {
+      const std::string& column = header.names()[side_cols[c]];
+      if (column.starts_with("strategy.") && !side_values[k][c].empty())
+        side.params.emplace_back(column.substr(9), side_values[k][c]);
+    }
+  }
   return source;
 }
 

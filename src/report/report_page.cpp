@@ -10,7 +10,10 @@
 #include <string_view>
 
 #include "core/csv_format.hpp"
+#include "core/csv_reader.hpp"
+#include "core/readable_number.hpp"
 #include "report/html.hpp"
+#include "report/report_tables.hpp"
 
 namespace fsweep {
 inline namespace report {
@@ -19,10 +22,6 @@ namespace {
 /// best.csv's columns before the config columns: rank, config_id, n and the objective's median,
 /// q05 and q95 (aggregate.hpp).
 constexpr std::size_t kBestLeadingColumns = 6;
-
-/// The summary's metrics shown in its compact table (besides the objective), when present.
-constexpr const char* kSummaryMetrics[] = {"distance_m",       "energy",    "coverage",
-                                           "explored_area_m2", "decisions", "recharges"};
 
 /// A manifest value as text: strings as they are, numbers as the CSV files write them.
 std::string json_text(const nlohmann::json& j) {
@@ -36,6 +35,12 @@ std::string json_text(const nlohmann::json& j) {
 std::string field(const nlohmann::json& manifest, const char* pointer) {
   const nlohmann::json::json_pointer p(pointer);
   return manifest.contains(p) ? json_text(manifest.at(p)) : std::string();
+}
+
+/// A number's text rounded for reading (readable_number()); other text as it is.
+std::string readable_text(const std::string& text) {
+  const auto v = parse_number(text);
+  return v ? readable_number(*v) : text;
 }
 
 /// A POSIX shell word: as it is when it has only safe characters, else single-quoted.
@@ -84,12 +89,6 @@ std::string folded_table(const CsvExcerpt& t, std::vector<std::size_t> keep,
   return out.str();
 }
 
-/// Index of column `name` of `t`, or -1.
-int column(const CsvExcerpt& t, const std::string& name) {
-  const auto it = std::find(t.header.begin(), t.header.end(), name);
-  return it == t.header.end() ? -1 : static_cast<int>(it - t.header.begin());
-}
-
 void what_ran(std::ostringstream& out, const ResultDir& r) {
   const nlohmann::json& m = r.manifest;
   std::vector<std::vector<std::string>> rows;
@@ -125,8 +124,8 @@ void what_ran(std::ostringstream& out, const ResultDir& r) {
   add("host, CPU", field(m, "/host") + ", " + field(m, "/cpu_model"));
   add("threads", field(m, "/threads"));
   add("started, ended (UTC)", field(m, "/start_utc") + ", " + field(m, "/end_utc"));
-  add("wall time (s)", field(m, "/wall_s"));
-  add("runs per second", field(m, "/runs_per_s"));
+  add("wall time (s)", readable_text(field(m, "/wall_s")));
+  add("runs per second", readable_text(field(m, "/runs_per_s")));
   out << "<h2 id='what-ran'>What ran</h2>\n<table>";
   for (const auto& row : rows)
     out << "<tr><th>" << html_escape(row[0]) << "</th><td>" << html_escape(row[1]) << "</td></tr>";
@@ -140,55 +139,26 @@ void what_ran(std::ostringstream& out, const ResultDir& r) {
       << html_escape(m["sweep"].dump(2)) << "</pre></details>\n";
 }
 
-void best_section(std::ostringstream& out, const ResultDir& r) {
-  const CsvExcerpt& t = r.best;
-  out << "<h2 id='best'>Best configurations (best.csv)</h2>\n";
-  if (t.total_rows == 0) {
+/// The files in full, folded: best.csv and summary.csv, cells as the files write them.
+void files_section(std::ostringstream& out, const ResultDir& r) {
+  out << "<h2 id='files'>The files in full</h2>\n<p>The ranking's files at full precision, as they hold "
+         "them: open a table to see it.</p>\n";
+  out << "<details id='best'><summary>best.csv: every configuration ranked by the median of the objective "
+         "(rank 1 best)</summary>\n";
+  if (r.best.total_rows == 0) {
     out << "<p>No configurations: the sweep has no runs of its own.</p>\n";
-    return;
+  } else {
+    // rank, config_id, n and the objective's three columns, then the config columns.
+    std::vector<std::size_t> keep, fold;
+    for (std::size_t c = 0; c < r.best.header.size(); ++c)
+      (c < kBestLeadingColumns ? keep : fold).push_back(c);
+    out << folded_table(r.best, keep, fold);
   }
-  // rank, config_id, n and the objective's three columns, then the config columns.
-  std::vector<std::size_t> keep, fold;
-  for (std::size_t c = 0; c < t.header.size(); ++c) (c < kBestLeadingColumns ? keep : fold).push_back(c);
-  out << "<p>Configurations ranked by the median of the objective (rank 1 best).</p>\n"
-      << folded_table(t, keep, fold);
-}
-
-void summary_section(std::ostringstream& out, const ResultDir& r) {
-  const CsvExcerpt& t = r.summary;
-  out << "<h2 id='summary'>Summary (summary.csv)</h2>\n";
-  const int first = column(t, "config_id"), n = column(t, "n");
-  if (t.total_rows == 0 || first < 0 || n < first) {
-    out << "<p>No configurations.</p>\n";
-    return;
-  }
-  std::vector<std::size_t> keep{static_cast<std::size_t>(first), static_cast<std::size_t>(n)}, fold;
-  for (int c = first + 1; c < n; ++c) fold.push_back(static_cast<std::size_t>(c));
-  for (std::size_t c = static_cast<std::size_t>(n) + 1; c < t.header.size(); ++c) {
-    const bool any =
-        std::any_of(t.rows.begin(), t.rows.end(), [&](const auto& row) { return row[c] != "0"; });
-    if (t.header[c].starts_with("end.") && any) keep.push_back(c);
-  }
-  std::vector<std::string> metrics;
-  if (r.best.header.size() > 3 && r.best.header[3].ends_with(".median")) {
-    metrics.push_back(r.best.header[3].substr(0, r.best.header[3].size() - 7));
-  }
-  for (const char* m : kSummaryMetrics) {
-    if (std::find(metrics.begin(), metrics.end(), m) == metrics.end()) metrics.emplace_back(m);
-  }
-  for (const auto& m : metrics) {
-    for (const char* stat : {".median", ".q05", ".q95"}) {
-      if (const int c = column(t, m + stat); c >= 0) keep.push_back(static_cast<std::size_t>(c));
-    }
-  }
-  out << "<p>Per configuration (runs with equal config columns; the maps of a map class and the seeds "
-         "pooled): the runs <code>n</code>, how they ended, and the median, q05 and q95 of the main "
-         "metrics.</p>\n"
-      << folded_table(t, keep, fold);
-  std::vector<std::size_t> all(t.header.size());
+  out << "</details>\n<details id='summary'><summary>summary.csv: every column (per configuration: the runs, "
+         "how they ended, and mean, std, min, q05, q25, median, q75, q95, max of every metric)</summary>\n";
+  std::vector<std::size_t> all(r.summary.header.size());
   for (std::size_t c = 0; c < all.size(); ++c) all[c] = c;
-  out << "<details><summary>Every column of summary.csv</summary>" << folded_table(t, all, {})
-      << "</details>\n";
+  out << folded_table(r.summary, all, {}) << "</details>\n";
 }
 
 void figure(std::ostringstream& out, const PageImage& image) {
@@ -322,7 +292,10 @@ std::string report_html(const ReportPage& page) {
       "figure{margin:1em 0}figcaption{font-size:13px;color:#333;max-width:1100px}"
       ".scroll{overflow-x:auto}.same{font-size:13px;color:#333}pre{background:#f4f4f4;padding:6px}"
       "figure img{max-width:100%;border:1px solid #ddd}.gallery{display:flex;flex-wrap:wrap;gap:0 2em}"
-      ".gallery figure{flex:1 1 420px;max-width:640px}.gallery h3{font-size:15px}",
+      ".gallery figure{flex:1 1 420px;max-width:640px}.gallery h3{font-size:15px}"
+      "table.readable td.num{text-align:right;white-space:nowrap}table.readable "
+      "td:nth-child(2){white-space:nowrap}tr.copies td{background:#fff3cd}"
+      "details{margin:0.6em 0}summary{cursor:pointer}",
       kReportGenerator);
   out << "<h1>fsweep report: " << html_escape(name) << "</h1>\n";
   if (const std::string d = field(r.manifest, "/sweep/description"); !d.empty())
@@ -330,9 +303,10 @@ std::string report_html(const ReportPage& page) {
   out << "<p>" << r.runs << " runs in <code>" << html_escape(r.dir) << "</code>.</p>\n";
 
   // Contents: the sections and every figure the page holds.
-  out << "<ul class='contents'><li><a href='#what-ran'>What ran</a></li><li><a href='#best'>Best "
-         "configurations</a></li>"
-         "<li><a href='#summary'>Summary</a></li>";
+  out << "<ul class='contents'><li><a href='#what-ran'>What ran</a></li><li><a href='#ranking'>Ranking per "
+         "map "
+         "class</a></li>";
+  if (page.paired || !page.paired_note.empty()) out << "<li><a href='#paired'>Paired comparisons</a></li>";
   if (r.search_best) out << "<li><a href='#searches'>Exact weight searches</a></li>";
   out << "<li><a href='#plots'>Plots</a><ul>";
   for (const auto& p : page.plots) {
@@ -344,11 +318,20 @@ std::string report_html(const ReportPage& page) {
     out << "<li><a class='figure-link' href='#" << html_escape(t.id) << "'>" << html_escape(t.title)
         << "</a></li>";
   }
-  out << "</ul></li><li><a href='#reproduce'>Reproduce</a></li></ul>\n";
+  out << "</ul></li><li><a href='#files'>The files in full</a></li><li><a "
+         "href='#reproduce'>Reproduce</a></li></ul>\n";
 
   what_ran(out, r);
-  best_section(out, r);
-  summary_section(out, r);
+  out << "<h2 id='ranking'>Ranking per map class</h2>\n<p>Per map class, the configurations ranked by the "
+         "median of the objective over their runs (the map instances of the class and the repetitions "
+         "pooled), "
+         "best first; numbers rounded for reading.</p>\n"
+      << ranking_html(r);
+  if (page.paired) {
+    out << "<h2 id='paired'>Paired comparisons</h2>\n" << paired_html(*page.paired, page.paired_note);
+  } else if (!page.paired_note.empty()) {
+    out << "<h2 id='paired'>Paired comparisons</h2>\n<p>" << html_escape(page.paired_note) << "</p>\n";
+  }
   if (r.search_best) {
     out << "<h2 id='searches'>Exact weight searches (search_best.csv)</h2>\n<p>Per search, its behaviours "
            "ranked by "
@@ -365,6 +348,7 @@ std::string report_html(const ReportPage& page) {
          "files.</p>\n";
   for (const auto& p : page.plots) figure(out, p);
   trajectories_section(out, page, trajectories);
+  files_section(out, r);
 
   out << "<h2 id='reproduce'>Reproduce</h2>\n<p>From the source tree, with <code>fsweep</code> built at the "
          "revision "

@@ -5,15 +5,17 @@
 /// 1. what ran: manifest.json (sweep name and description, sweep file and hash, status, run
 ///    counts, shards, git revision, compiler, libraries, host, CPU, threads, times, throughput,
 ///    warnings), the rows of runs.csv by end reason, and the sweep's JSON;
-/// 2. the best configurations (best.csv) and the summary (summary.csv: the columns that tell the
-///    configurations apart, the end reasons, median, q05 and q95 of the main metrics; every
-///    column in a folded table), cells as the files write them; columns that are equal in every
-///    row shown are listed once above their table;
-/// 3. exact weight searches: search_best.csv;
-/// 4. the figures of `fsweep plot` (tools/plot.py), then the trajectories of the shown runs
+/// 2. the ranking per map class (report_tables.hpp: rounded numbers with units, the columns that
+///    name a row first, rows whose runs came out identical marked);
+/// 3. the paired comparisons of the strategies against the baseline (report_tables.hpp), when the
+///    sweep has two or more strategy labels;
+/// 4. exact weight searches: search_best.csv;
+/// 5. the figures of `fsweep plot` (tools/plot.py), then the trajectories of the shown runs
 ///    (result_dir.hpp), re-simulated, with whether the re-simulation reproduced the recorded
 ///    outcome;
-/// 5. the commands that reproduce the directory and the page.
+/// 6. the files in full, folded: best.csv and summary.csv with every column, cells as the files
+///    write them; columns that are equal in every row shown are listed once above their table;
+/// 7. the commands that reproduce the directory and the page.
 /// A contents list links every figure by its id (`<a class='figure-link' href='#ID'>`, each
 /// figure `<figure id='ID'>`), so a reader (or a test) can tell which pictures the page claims.
 /// Every text that comes from a file is escaped.
@@ -23,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "report/paired.hpp"
 #include "report/result_dir.hpp"
 
 namespace fsweep {
@@ -65,6 +68,10 @@ struct ReportPage {
   std::vector<PageTrajectory> trajectories;
   /// Why the page has no trajectories when it has none (e.g. `--no-trajectories`).
   std::string trajectories_note;
+  /// The paired comparisons of the sweep's strategies, when it has two or more labels.
+  std::optional<PairedTable> paired;
+  /// Where paired's baseline came from ("the sweep's \"baseline\""), or why there is no comparison.
+  std::string paired_note;
 };
 
 /// Shell command lines that reproduce `r` into `<dir>-rerun` (the sweep's `fsweep run`, per

@@ -240,6 +240,42 @@ void read_searches(ResultDir& r) {
   }
 }
 
+/// The rankings per map class (ResultDir::rankings): best.csv's order split by map_class, the
+/// first `max_rows` of each class with their summary.csv rows.
+void read_rankings(ResultDir& r, std::size_t max_rows) {
+  std::unordered_map<std::string, std::size_t> class_index;
+  std::unordered_map<std::string, std::pair<std::size_t, std::size_t>> wanted;  // config_id -> (class, row)
+  {
+    CsvReader in(r.dir + "/best.csv");
+    const std::size_t id = in.require_column("config_id");
+    const int map_class = in.column(kMapClassColumn);
+    while (in.next()) {
+      const auto& f = in.fields();
+      const std::string name = map_class < 0 ? std::string() : f[static_cast<std::size_t>(map_class)];
+      const auto [it, added] = class_index.try_emplace(name, r.rankings.size());
+      if (added) r.rankings.push_back(ClassRanking{name, {}, {}, 0});
+      ClassRanking& c = r.rankings[it->second];
+      if (++c.total > max_rows) continue;
+      c.ranks.push_back(c.total);
+      c.rows.emplace_back();
+      wanted.emplace(f[id], std::pair{it->second, c.rows.size() - 1});
+    }
+  }
+  CsvReader in(r.dir + "/summary.csv");
+  const std::size_t id = in.require_column("config_id");
+  std::size_t found = 0;
+  while (in.next()) {
+    const auto it = wanted.find(in.fields()[id]);
+    if (it == wanted.end()) continue;
+    r.rankings[it->second.first].rows[it->second.second] = in.fields();
+    ++found;
+  }
+  if (found != wanted.size()) {
+    throw ConfigError(r.dir + "/best.csv",
+                      "ranks configurations summary.csv does not have (run fsweep aggregate " + r.dir + ")");
+  }
+}
+
 }  // namespace
 
 CsvExcerpt read_csv_excerpt(const std::string& path, std::size_t max_rows) {
@@ -268,6 +304,7 @@ ResultDir read_result_dir(const std::string& dir, std::size_t max_rows) {
   aggregate_if_stale(r);
   r.best = read_csv_excerpt(dir + "/best.csv", std::max<std::size_t>(max_rows, 1));
   r.summary = read_csv_excerpt(dir + "/summary.csv", max_rows);
+  read_rankings(r, max_rows);
   read_runs(r);
   if (fs::exists(dir + "/search_best.csv")) {
     r.search_best = read_csv_excerpt(dir + "/search_best.csv", max_rows);

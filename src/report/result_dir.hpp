@@ -60,6 +60,15 @@ struct ShownRun {
   Columns recorded;
 };
 
+/// One map class's configurations in best.csv's order (its objective's ranking): their summary.csv
+/// rows, the first `max_rows` of them, with each one's rank within the class.
+struct ClassRanking {
+  std::string map_class;
+  std::vector<std::size_t> ranks;              ///< from 1, within the class
+  std::vector<std::vector<std::string>> rows;  ///< summary.csv rows (ResultDir::summary.header)
+  std::size_t total = 0;                       ///< configurations of the class
+};
+
 /// What `fsweep report` shows of a result directory.
 // NOLINTNEXTLINE(bugprone-exception-escape): false positive inside nlohmann::json's noexcept move
 struct ResultDir {
@@ -70,6 +79,7 @@ struct ResultDir {
   std::vector<std::pair<std::string, std::uint64_t>> end_reasons;
   CsvExcerpt best;                        ///< best.csv
   CsvExcerpt summary;                     ///< summary.csv
+  std::vector<ClassRanking> rankings;     ///< per map class, by first appearance in best.csv
   std::optional<CsvExcerpt> search_best;  ///< search_best.csv of exact weight searches
   std::vector<ShownRun> shown;            ///< sweep runs first, then behaviours
   std::vector<std::string> notes;         ///< e.g. "summary.csv was older than runs.csv: aggregated it"

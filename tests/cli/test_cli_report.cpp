@@ -51,10 +51,18 @@ TEST(CliReport, WritesOneSelfContainedPageOfTheResultDirectory) {
   EXPECT_NE(page.find(dir + "/sweep.json"), std::string::npos);
   EXPECT_NE(page.find("4 runs: complete 4"), std::string::npos);
   // The sections, the figures of fsweep plot and both trajectories, every picture embedded.
-  for (const char* id : {"id='what-ran'", "id='best'", "id='summary'", "id='plot-progress'",
-                         "id='plot-metrics'", "id='trajectory-1'", "id='trajectory-2'", "id='reproduce'"}) {
+  for (const char* id :
+       {"id='what-ran'", "id='ranking'", "id='paired'", "id='best'", "id='summary'", "id='plot-progress'",
+        "id='plot-metrics'", "id='trajectory-1'", "id='trajectory-2'", "id='reproduce'"}) {
     EXPECT_NE(page.find(id), std::string::npos) << id;
   }
+  // The ranking names rows by their labels and marks configurations whose two repetitions (nothing
+  // random in them) are one run twice; the paired comparison is against the first entry.
+  EXPECT_EQ(occurrences(page, "<tr class='copies'>"), 2U);
+  EXPECT_NE(page.find("<td class='num'>2 (1 distinct) ⚠</td>"), std::string::npos);
+  EXPECT_NE(page.find("Each strategy against <b>cf &quot;quoted&quot; &amp; &lt;b&gt;bold&lt;/b&gt;</b>"),
+            std::string::npos);
+  EXPECT_NE(page.find("<td>ea&#39;s</td>"), std::string::npos);
   EXPECT_EQ(occurrences(page, "<img "), 4U);
   EXPECT_EQ(occurrences(page, "src='data:image/png;base64,iVBORw0KGgo"), 4U);  // the PNG signature
   EXPECT_NE(page.find("best configuration (rank 1 of 2 in best.csv): its first run"), std::string::npos);
