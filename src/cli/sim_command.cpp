@@ -9,6 +9,7 @@
 #include "cli/kv_options.hpp"
 #include "cli/output_dir.hpp"
 #include "core/csv_format.hpp"
+#include "core/readable_number.hpp"
 #include "report/runs_schema.hpp"
 #include "sim/simulation.hpp"
 #include "sim/trajectory_image.hpp"
@@ -60,15 +61,19 @@ int run_sim(const SimOptions& o) {
   row.insert(row.end(), metrics.begin(), metrics.end());
   write_csv(o.out + "/run.csv", {row});
   write_progress_csv(o.out + "/progress.csv", result);
-  write_trajectory_png(o.out + "/trajectory.png", *spec.map, result, o.png_scale);
+  write_trajectory_png(o.out + "/trajectory.png", *spec.map, result, o.png_scale, trajectory_title(spec));
 
   const RunMetrics& m = result.metrics;
+  // Rounded for reading (5 significant digits); run.csv keeps every digit.
+  const auto r = [](double v) { return readable_number(v, 5); };
   std::cout << "end: " << to_string(result.end)
             << (result.end_detail.empty() ? "" : " (" + result.end_detail + ")")
-            << "\ndistance: " << format_number(m.distance_m) << " m, energy: " << format_number(m.energy)
-            << ' ' << spec.robot.energy.unit << ", coverage: " << format_number(m.coverage)
-            << ", decisions: " << m.decisions << ", recharges: " << m.recharges << "\nwrote " << o.out
-            << "/run.csv, " << o.out << "/progress.csv, " << o.out << "/trajectory.png\n";
+            << "\ndistance: " << r(m.distance_m) << " m (" << r(m.distance_to_final_coverage_m)
+            << " m to the final coverage), energy: " << r(m.energy) << ' ' << spec.robot.energy.unit
+            << ", coverage: " << readable_number(100.0 * m.coverage, 4)
+            << "%, explored: " << r(m.explored_area_m2) << " m², decisions: " << m.decisions
+            << ", recharges: " << m.recharges << "\nwrote " << o.out << "/run.csv (full precision), " << o.out
+            << "/progress.csv, " << o.out << "/trajectory.png\n";
   return 0;
 }
 

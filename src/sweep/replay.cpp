@@ -48,7 +48,9 @@ RunResult replay_behaviour(const SweepPlan& plan, const ShownRun& run, Replay& o
   while (sim.step()) {
   }
   RunResult result = std::move(sim).result();
-  out.png = trajectory_png(*spec.map, result);
+  const std::vector<std::string> names = plan.strategies().at(unit.entry).search->weights;
+  out.png = trajectory_png(*spec.map, result, 0,
+                           TrajectoryTitle{out.map, trajectory_strategy_text(spec, names, run.weights)});
   return result;
 }
 
@@ -73,7 +75,7 @@ Replay replay(const SweepPlan& plan, const ShownRun& run) {
     }
     out.map = plan.maps().at(sweep_run.at.map).label;
     result = simulate(sweep_run.spec);
-    out.png = trajectory_png(*sweep_run.spec.map, result);
+    out.png = trajectory_png(*sweep_run.spec.map, result, 0, trajectory_title(sweep_run.spec, out.map));
   }
   compare_cells(run, result, out);
   return out;

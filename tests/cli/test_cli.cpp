@@ -3,10 +3,12 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <string>
 
 #include "cli/fsweep_process.hpp"
@@ -39,6 +41,17 @@ TEST(Cli, SimWritesCsvProgressAndPng) {
       out);
   ASSERT_EQ(r.code, 0) << r.output;
   EXPECT_NE(r.output.find("end: "), std::string::npos);
+  // The terminal rounds for reading (5 significant digits); run.csv keeps every digit.
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(
+      r.output, m,
+      std::regex(R"(distance: ([0-9,.]+) m \(([0-9,.]+) m to the final coverage\), energy: ([0-9,.]+) m)")))
+      << r.output;
+  for (std::size_t i = 1; i <= 3; ++i) {
+    const std::string number = m[i].str();
+    EXPECT_LE(std::count_if(number.begin(), number.end(), [](char c) { return c >= '0' && c <= '9'; }), 5)
+        << number;
+  }
   for (const char* f : {"run.csv", "progress.csv", "trajectory.png"}) {
     EXPECT_TRUE(std::filesystem::exists(out + "/" + f)) << f;
   }
@@ -118,17 +131,18 @@ TEST(Cli, SimPngScaleOverTheImageLimitIsExit2BeforeAnyOutput) {
   const std::string out = temp_dir("png_scale");
   const Outcome huge = fsweep("sim --map free:w=20,h=20 --png-scale 16384 --out " + out);
   EXPECT_EQ(huge.code, 2) << huge.output;
-  EXPECT_NE(
-      huge.output.find("--png-scale: 16384 pixels per cell on the 20x20 map makes a 327680x327680 image "
-                       "(107374182400 pixels); allowed: at most 16384 pixels per side and 100000000 "
-                       "pixels in all"),
-      std::string::npos)
+  EXPECT_NE(huge.output.find(
+                "--png-scale: 16384 pixels per cell on the 20x20 map makes a 327680x327940 image "
+                "(107459379200 pixels, with the title and the legend); allowed: at most 16384 pixels per "
+                "side and 100000000 pixels in all"),
+            std::string::npos)
       << huge.output;
   EXPECT_FALSE(std::filesystem::exists(out)) << "nothing is written";
-  // Within the side limit but over the pixel limit: 20 x 819 = 16380 pixels a side, 268 megapixels.
-  const Outcome pixels = fsweep("sim --map free:w=20,h=20 --png-scale 819 --out " + out);
+  // Within the side limit but over the pixel limit: 20 x 600 = 12000 pixels wide, the map and its
+  // title and legend bands (6.5 lines of 40 pixels at text size 4) 12260 high: 147 megapixels.
+  const Outcome pixels = fsweep("sim --map free:w=20,h=20 --png-scale 600 --out " + out);
   EXPECT_EQ(pixels.code, 2) << pixels.output;
-  EXPECT_NE(pixels.output.find("makes a 16380x16380 image (268304400 pixels)"), std::string::npos)
+  EXPECT_NE(pixels.output.find("makes a 12000x12260 image (147120000 pixels"), std::string::npos)
       << pixels.output;
   EXPECT_FALSE(std::filesystem::exists(out));
 }
