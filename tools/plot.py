@@ -5,9 +5,9 @@ Reads DIR/summary.csv, DIR/progress_summary.csv and DIR/best.csv (written by
 `fsweep aggregate`, src/report/aggregate.hpp) and writes to --out (default DIR/plots):
 
   progress.png           explored area vs distance: mean line and q05-q95 band per configuration
-                         (Rappaport 2016, Figure 4)
+                         (Rappaport 2016, Figure 4), one panel per map class
   metrics.png            median with q05-q95 bars of distance, energy, coverage and distance to
-                         the final coverage, per configuration
+                         the final coverage, per configuration, grouped by map class
   heatmap_<wi>_<wj>.png  weight searches (at least three values in each of at least two of
                          strategy.w1..w4): the objective's median over each pair of weights, the
                          best value over the other weights and columns
@@ -16,21 +16,34 @@ Reads DIR/summary.csv, DIR/progress_summary.csv and DIR/best.csv (written by
                          at least two values each, the best objective of any weight vector with
                          those two values
 
-With many configurations, progress.png and metrics.png show the best ones by best.csv's ranking
-(at most --top). Needs Python 3 and matplotlib only; output is deterministic (no timestamps).
+Each configuration is named by what tells it apart from the others drawn: its strategy label
+(with the parameters that differ within the label), then the planner, robot and sim columns
+that differ, a preset standing for its numbers (energy=mei2006, not every per-metre and per-turn
+cost), prefixes such as `robot.` left out. Per map class the best --top configurations by
+best.csv's ranking are drawn (the title says so when there are more), one colour per name in
+every panel. Legends sit below the axes, never on them.
+
+--layout-json FILE writes, per figure, the bounding boxes (in pixels) matplotlib gives the
+figure, its axes, their titles, labels and tick labels, the figure's title and the legend, so a
+test can check that nothing is cut off or covered (tests/report/check_plot_layout.py).
+
+Needs Python 3 and matplotlib only; output is deterministic (no timestamps).
 """
 
 import argparse
 import csv
 import itertools
+import json
 import math
 import os
 import sys
+import textwrap
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.lines import Line2D  # noqa: E402
 from matplotlib.patches import Rectangle  # noqa: E402
 
 WEIGHTS = ["strategy.w1", "strategy.w2", "strategy.w3", "strategy.w4"]
@@ -43,6 +56,12 @@ METRICS = [
 # Objectives where larger is better; the others are minimised (as in aggregate.hpp).
 MAXIMISED = {"area_per_metre"}
 SAVE = {"dpi": 120, "metadata": {"Software": None}}
+# Columns whose value names others (src/report/config_names.hpp): they stand for what they determine.
+NAMING = ("map_class", "strategy_label", "planner")
+LEGEND_FONT = 8
+WRAP = 48  # characters per legend or tick-label line
+
+LAYOUT = {}  # file name -> bounding boxes, for --layout-json
 
 
 def read_csv(path):
@@ -71,107 +90,271 @@ def compact(v):
 
 
 def short_name(column):
-    """Column name without the strategy./robot. prefix, for labels."""
-    for prefix in ("strategy.", "robot."):
+    """A column's name for labels: without the strategy./robot./planner./sim. prefix, a preset as
+    its model ('robot.energy.preset' -> 'energy')."""
+    if column.endswith(".preset"):
+        column = column[:-len(".preset")]
+    for prefix in ("strategy.", "robot.", "planner.", "sim."):
         if column.startswith(prefix):
             return column[len(prefix):]
     return column
 
 
-def config_labels(header, rows):
-    """config_id -> 'strategy k=v ...' with the config columns that differ between rows."""
-    config_cols = header[header.index("config_id") + 1:header.index("n")]
-    # Columns with more than one value (an empty cell, a parameter another strategy lacks, aside).
-    differing = [c for c in config_cols if c != "strategy" and len({r[c] for r in rows if r[c] != ""}) > 1]
-    # A sweep's strategy labels ("EA free") stand for the strategy and its parameters.
-    # When one label covers several parameter sets (a weight grid), the parameters still show.
-    if "strategy_label" in config_cols:
-        params = [c for c in config_cols if c.startswith("strategy.")]
-        sets = {}
-        for r in rows:
-            sets.setdefault(r["strategy_label"], set()).add(tuple(r[c] for c in params))
-        shared = any(len(v) > 1 for v in sets.values())
-        differing = [c for c in differing
-                     if c != "strategy_label" and (shared or not c.startswith("strategy."))]
-    labels = {}
+def naming(column):
+    return column in NAMING or column.endswith(".preset")
+
+
+def determines(by, of, rows):
+    """True when, over rows, the value of column `by` determines that of column `of`."""
+    seen = {}
     for r in rows:
-        if "strategy_label" in config_cols:
-            parts = [r["strategy_label"]]
-        else:
-            parts = [r.get("strategy", "")] if "strategy" in config_cols else []
-        parts += [f"{short_name(c)}={r[c]}" for c in differing if r[c] != ""]
-        labels[r["config_id"]] = " ".join(p for p in parts if p) or f"config {r['config_id']}"
-    return labels
+        if seen.setdefault(r[by], r[of]) != r[of]:
+            return False
+    return True
 
 
-def shown_configs(best_header, best_rows, top):
-    """config_ids to draw in best.csv's order: all, or the best `top`; and a note for titles."""
-    ids = [r["config_id"] for r in best_rows]
+def telling_columns(columns, rows):
+    """The columns that tell rows apart: more than one value, less those a naming column
+    (map_class, strategy_label, planner, *.preset) determines (as src/report/config_names.hpp)."""
+    varying = [c for c in columns if len({r[c] for r in rows}) > 1]
+    names = [c for c in varying if naming(c)]
+    return [c for c in varying if naming(c) or not any(determines(k, c, rows) for k in names)]
+
+
+def strategy_names(side, rows):
+    """Per row, its strategy's name: the label, with the side columns that differ within it."""
+    label = "strategy_label" if "strategy_label" in side else ("strategy" if "strategy" in side else None)
+    if label is None:
+        return ["" for _ in rows]
+    values = {}
+    for r in rows:
+        for c in side:
+            values.setdefault((r[label], c), set()).add(r[c])
+    out = []
+    for r in rows:
+        parts = [r[label]]
+        parts += [f"{short_name(c)}={r[c]}" for c in side
+                  if c != label and r[c] != "" and len(values[(r[label], c)]) > 1]
+        out.append(" ".join(parts))
+    return out
+
+
+def config_labels(header, rows):
+    """config_id -> its name without the map class (file comment), config_id -> its map class."""
+    config_cols = header[header.index("config_id") + 1:header.index("n")]
+    side = [c for c in config_cols if c in ("strategy_label", "strategy") or c.startswith("strategy.")]
+    other = [c for c in config_cols if c not in side]
+    names = strategy_names(side, rows)
+    variant = [c for c in telling_columns(other, rows) if c != "map_class"]  # the panels are the classes
+    labels, classes = {}, {}
+    for r, name in zip(rows, names):
+        parts = [name] if name else []
+        parts += [f"{short_name(c)}={r[c]}" for c in variant if r[c] != ""]
+        labels[r["config_id"]] = " · ".join(parts) or f"config {r['config_id']}"
+        classes[r["config_id"]] = r.get("map_class", "")
+    return labels, classes
+
+
+def objective_of(best_header):
     median_col = next((c for c in best_header if c.endswith(".median")), "objective.median")
-    objective = median_col[:-len(".median")]
-    if len(ids) <= top:
-        return ids, f"\nconfigurations by median {objective}"
-    return ids[:top], f"\nbest {top} of {len(ids)} configurations by median {objective}"
+    return median_col[:-len(".median")]
 
 
-def plot_progress(progress_rows, ids, labels, note, out):
-    curves = {i: [] for i in ids}
-    for r in progress_rows:
-        if r["config_id"] in curves:
-            curves[r["config_id"]].append(r)
-    fig, ax = plt.subplots(figsize=(9, 5.5))
-    colors = plt.get_cmap("tab10")
-    for k, config_id in enumerate(ids):
-        rows = sorted(curves[config_id], key=lambda r: number(r["distance_m"]))
+def shown_configs(best_rows, classes, top):
+    """Per map class (in best.csv's order of first appearance), its best `top` config_ids; and
+    whether some class has more."""
+    per_class = {}
+    for r in best_rows:
+        per_class.setdefault(classes.get(r["config_id"], ""), []).append(r["config_id"])
+    cut = any(len(ids) > top for ids in per_class.values())
+    return {c: ids[:top] for c, ids in per_class.items()}, per_class, cut
+
+
+def selection_note(per_class, shown, objective, cut):
+    counts = sorted({len(ids) for ids in per_class.values()})
+    total = "/".join(str(n) for n in counts)
+    per = " per map class" if len(per_class) > 1 else ""
+    if cut:
+        top = max(len(ids) for ids in shown.values())
+        return f"the best {top} of {total} configurations{per} by median {objective}"
+    return f"{total} configurations{per}, by median {objective}"
+
+
+def colours_for(names):
+    """A colour (and dash pattern beyond 20) per name, in order."""
+    palette = plt.get_cmap("tab10" if len(names) <= 10 else "tab20")
+    n = 10 if len(names) <= 10 else 20
+    dashes = ["-", "--", ":", "-."]
+    return {name: (palette(k % n), dashes[(k // n) % len(dashes)]) for k, name in enumerate(names)}
+
+
+def wrapped(text, width=WRAP):
+    return "\n".join(textwrap.wrap(text, width, break_on_hyphens=False)) or text
+
+
+def legend_below(fig, legend_ax, handles, labels, width_in):
+    """The legend in its own axes under the panels (so it can never cover one), `width_in` wide."""
+    legend_ax.axis("off")
+    if not handles:
+        return None
+    longest = max(max(len(line) for line in lab.split("\n")) for lab in labels)
+    ncol = max(1, min(len(labels), int(width_in / (longest * 0.068 + 0.55))))
+    return legend_ax.legend(handles, labels, loc="upper center", ncol=ncol, fontsize=LEGEND_FONT, frameon=False,
+                            borderaxespad=0.0, handlelength=2.2)
+
+
+def legend_height_in(labels, width_in):
+    """The height (inches) a legend of `labels` takes in a figure `width_in` wide (legend_below)."""
+    if not labels:
+        return 0.1
+    longest = max(max(len(line) for line in lab.split("\n")) for lab in labels)
+    ncol = max(1, min(len(labels), int(width_in / (longest * 0.068 + 0.55))))
+    lines_per_entry = max(lab.count("\n") + 1 for lab in labels)
+    rows = math.ceil(len(labels) / ncol)
+    return 0.2 + rows * lines_per_entry * 0.17
+
+
+def drawn_tick_labels(axis):
+    """The tick labels matplotlib draws: those of the ticks within the axis' view interval."""
+    lo, hi = sorted(axis.get_view_interval())
+    slack = 1e-9 * max(1.0, abs(hi - lo))
+    return [t.label1 for t in axis.get_major_ticks() if lo - slack <= t.get_loc() <= hi + slack and t.label1.get_visible()]
+
+
+def record_layout(name, fig):
+    """The bounding boxes of `fig`'s parts, for --layout-json."""
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+
+    def box(artist):
+        b = artist.get_window_extent(renderer)
+        return [b.x0, b.y0, b.x1, b.y1]
+
+    entry = {"figure": [0, 0, fig.bbox.width, fig.bbox.height], "axes": [], "texts": [], "legends": []}
+    for ax in fig.axes:
+        if not ax.axison:  # the legend's own row
+            for leg in [ax.get_legend()] if ax.get_legend() else []:
+                entry["legends"].append(box(leg))
+            continue
+        entry["axes"].append(box(ax.patch))
+        texts = [ax.title, ax.xaxis.label, ax.yaxis.label] + drawn_tick_labels(ax.xaxis) + drawn_tick_labels(ax.yaxis)
+        entry["texts"] += [{"text": t.get_text(), "box": box(t)} for t in texts if t.get_text() and t.get_visible()]
+        if ax.get_legend():
+            entry["legends"].append(box(ax.get_legend()))
+    if fig._suptitle is not None:
+        entry["texts"].append({"text": fig._suptitle.get_text(), "box": box(fig._suptitle), "suptitle": True})
+    LAYOUT[name] = entry
+
+
+def save(fig, out, name):
+    record_layout(name, fig)
+    fig.savefig(os.path.join(out, name), **SAVE)
+    plt.close(fig)
+    return name
+
+
+def panel_grid(count):
+    cols = 1 if count == 1 else 2 if count in (2, 4) else 3
+    return cols, math.ceil(count / cols)
+
+
+def progress_panel(ax, cls, ids, curves, labels, style):
+    """One map class's curves: each configuration's mean explored area and q05-q95 band."""
+    ns = set()
+    for config_id in ids:
+        rows = sorted(curves.get(config_id, []), key=lambda r: number(r["distance_m"]))
         if not rows:
             continue
+        ns.add(rows[0]["n"])
         d = [number(r["distance_m"]) for r in rows]
-        color = colors(k % 10)
+        colour, dash = style[labels[config_id]]
         ax.fill_between(d, [number(r["explored_area_m2.q05"]) for r in rows],
-                        [number(r["explored_area_m2.q95"]) for r in rows], color=color, alpha=0.18, linewidth=0)
-        ax.plot(d, [number(r["explored_area_m2.mean"]) for r in rows], color=color, linewidth=1.6,
-                marker="o" if len(d) == 1 else None, label=f"{labels[config_id]} (n={rows[0]['n']})")
-    ax.set_xlabel("distance travelled (m)", fontsize=11)
-    ax.set_ylabel("explored area (m²)", fontsize=11)
-    ax.set_title("Explored area vs distance: mean, q05–q95 band" + note, fontsize=11)
+                        [number(r["explored_area_m2.q95"]) for r in rows], color=colour, alpha=0.15, linewidth=0)
+        ax.plot(d, [number(r["explored_area_m2.mean"]) for r in rows], color=colour, linestyle=dash, linewidth=1.5,
+                marker="o" if len(d) == 1 else None)
+    runs = f"n = {ns.pop()} runs each" if len(ns) == 1 else ""
+    ax.set_title(wrapped(f"{cls} ({runs})" if cls and runs else cls or runs, 60), fontsize=10)
+    ax.set_xlabel("distance travelled (m)", fontsize=9)
+    ax.set_ylabel("explored area (m²)", fontsize=9)
+    ax.tick_params(labelsize=8)
     ax.grid(True, alpha=0.3)
     ax.set_xlim(left=0)
     ax.set_ylim(bottom=0)
-    if ids:
-        ax.legend(fontsize=8, loc="lower right", framealpha=0.9)
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "progress.png"), **SAVE)
-    plt.close(fig)
 
 
-def plot_metrics(summary_header, summary_rows, ids, labels, note, out):
+def plot_progress(progress_rows, shown, labels, note, out):
+    """A panel per map class; one legend below them all when every class draws the same few
+    configurations (one colour each everywhere), else a legend below each panel."""
+    curves = {}
+    for r in progress_rows:
+        curves.setdefault(r["config_id"], []).append(r)
+    classes = list(shown)
+    names = {cls: [labels[i] for i in shown[cls]] for cls in classes}
+    union = list(dict.fromkeys(n for cls in classes for n in names[cls]))
+    shared = len(union) <= 10
+    styles = {cls: colours_for(union if shared else names[cls]) for cls in classes}
+    if not classes:  # a sweep of weight searches only: no runs of its own
+        classes, shown, names, styles = [""], {"": []}, {"": []}, {"": {}}
+    cols, rows_n = panel_grid(len(classes))
+    width = max(7.0, 4.6 * cols + 1.0)
+    if shared:
+        legend_rows = [legend_height_in([wrapped(n) for n in union], width)]
+        ratios = [3.6] * rows_n + legend_rows
+    else:
+        legend_rows = [max(legend_height_in([wrapped(n, 40) for n in names[c]], width / cols)
+                           for c in classes[r * cols:(r + 1) * cols]) for r in range(rows_n)]
+        ratios = [x for r in range(rows_n) for x in (3.6, legend_rows[r])]
+    fig = plt.figure(figsize=(width, sum(ratios) + 0.9), layout="constrained")
+    grid = fig.add_gridspec(len(ratios), cols, height_ratios=ratios)
+    for k, cls in enumerate(classes):
+        row, col = (k // cols, k % cols) if shared else (2 * (k // cols), k % cols)
+        progress_panel(fig.add_subplot(grid[row, col]), cls, shown[cls], curves, labels, styles[cls])
+        if not shared:
+            handles = [Line2D([], [], color=styles[cls][n][0], linestyle=styles[cls][n][1], linewidth=2)
+                       for n in names[cls]]
+            legend_below(fig, fig.add_subplot(grid[row + 1, col]), handles, [wrapped(n, 40) for n in names[cls]],
+                         width / cols)
+    if shared:
+        handles = [Line2D([], [], color=styles[classes[0]][n][0], linestyle=styles[classes[0]][n][1], linewidth=2)
+                   for n in union]
+        legend_below(fig, fig.add_subplot(grid[rows_n, :]), handles, [wrapped(n) for n in union], width)
+    fig.suptitle(wrapped("Explored area vs distance: mean and q05–q95 band; " + note, 90), fontsize=11)
+    return save(fig, out, "progress.png")
+
+
+def plot_metrics(summary_header, summary_rows, shown, labels, note, out):
     by_id = {r["config_id"]: r for r in summary_rows}
     metrics = [(m, t) for m, t in METRICS if f"{m}.median" in summary_header]
-    cols = 2
-    rows_n = max(1, math.ceil(len(metrics) / cols))
-    height = max(3.0, 0.32 * len(ids) + 1.5)
-    fig, axes = plt.subplots(rows_n, cols, figsize=(12, height * rows_n), squeeze=False)
+    several = len(shown) > 1
+    ids = [i for ids in shown.values() for i in ids]
+    names = [wrapped((f"{cls} · " if several else "") + labels[i]) for cls, cids in shown.items() for i in cids]
+    units = {r.get("robot.energy.unit", "") for r in summary_rows}
+    colours = colours_for(list(shown))
+    cols = max(1, len(metrics))  # one row of panels sharing the names on the left
+    lines = sum(n.count("\n") + 1 for n in names)
+    height = max(2.8, 0.16 * lines + 0.1 * len(ids) + 1.6)
+    label_width = min(WRAP, max((len(line) for n in names for line in n.split("\n")), default=10)) * 0.068 + 0.4
+    fig, axes = plt.subplots(1, cols, figsize=(label_width + 2.6 * cols, height), squeeze=False,
+                             layout="constrained")
     y = list(range(len(ids)))
-    names = [labels[i] for i in ids]
-    colors = plt.get_cmap("tab10")  # the same colour per configuration as in progress.png
     for k, (metric, title) in enumerate(metrics):
-        ax = axes[k // cols][k % cols]
+        ax = axes[0][k]
         med = [number(by_id[i][f"{metric}.median"]) for i in ids]
         lo = [max(0.0, m - number(by_id[i][f"{metric}.q05"])) for m, i in zip(med, ids)]
         hi = [max(0.0, number(by_id[i][f"{metric}.q95"]) - m) for m, i in zip(med, ids)]
-        ax.barh(y, med, xerr=[lo, hi], color=[colors(k % 10) for k in y], alpha=0.8,
-                error_kw={"ecolor": "black", "capsize": 3})
+        bar_colours = [colours[cls][0] for cls, cids in shown.items() for _ in cids]
+        ax.barh(y, med, xerr=[lo, hi], color=bar_colours, alpha=0.8, error_kw={"ecolor": "black", "capsize": 2})
         ax.set_yticks(y)
-        ax.set_yticklabels(names if k % cols == 0 else [], fontsize=8)
+        ax.set_yticklabels(names if k == 0 else [], fontsize=7)
         ax.invert_yaxis()  # best first, at the top
-        ax.set_title(title, fontsize=11)
+        if metric == "energy" and units - {""}:
+            title = f"energy ({', '.join(sorted(units - {''}))})"
+        ax.set_title(title, fontsize=10)
+        ax.tick_params(axis="x", labelsize=8)
         ax.grid(True, axis="x", alpha=0.3)
-    for k in range(len(metrics), rows_n * cols):
-        axes[k // cols][k % cols].set_visible(False)
-    fig.suptitle("Median per configuration, bars q05–q95" + note, fontsize=11)
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "metrics.png"), **SAVE)
-    plt.close(fig)
+    fig.suptitle(wrapped("Median per configuration, bars q05–q95; " + note
+                         + ("; colour: map class" if several else ""), 100), fontsize=11)
+    return save(fig, out, "metrics.png")
 
 
 def plot_heatmaps(summary_header, summary_rows, best_header, best_rows, out):
@@ -196,16 +379,17 @@ def plot_heatmaps(summary_header, summary_rows, best_header, best_rows, out):
         cells = {}
         for r in best_rows:
             s = weights[r["config_id"]]
-            x, y, v = number(s[wi]), number(s[wj]), number(r[median_col])
-            if math.isnan(x) or math.isnan(y) or math.isnan(v):
+            x, yv, v = number(s[wi]), number(s[wj]), number(r[median_col])
+            if math.isnan(x) or math.isnan(yv) or math.isnan(v):
                 continue
-            cells[(x, y)] = better(cells[(x, y)], v) if (x, y) in cells else v
+            cells[(x, yv)] = better(cells[(x, yv)], v) if (x, yv) in cells else v
         if not cells:
             continue
         xs = sorted({x for x, _ in cells})
-        ys = sorted({y for _, y in cells})
-        grid = [[cells.get((x, y), math.nan) for x in xs] for y in ys]
-        fig, ax = plt.subplots(figsize=(max(6.0, 0.42 * len(xs) + 2.5), max(4.5, 0.36 * len(ys) + 1.8)))
+        ys = sorted({yv for _, yv in cells})
+        grid = [[cells.get((x, yv), math.nan) for x in xs] for yv in ys]
+        fig, ax = plt.subplots(figsize=(max(6.0, 0.42 * len(xs) + 2.5), max(4.5, 0.36 * len(ys) + 1.8)),
+                               layout="constrained")
         cmap = plt.get_cmap("viridis" if objective in MAXIMISED else "viridis_r").copy()
         cmap.set_bad("lightgrey")
         image = ax.imshow(grid, origin="lower", cmap=cmap, aspect="auto")
@@ -214,17 +398,17 @@ def plot_heatmaps(summary_header, summary_rows, best_header, best_rows, out):
         ax.set_ylabel(short_name(wj), fontsize=11)
         # Values are printed only where the cells are wide enough for them.
         if len(xs) <= 8 and len(ys) <= 12:
-            for (x, y), v in cells.items():
-                ax.text(xs.index(x), ys.index(y), compact(v), ha="center", va="center", fontsize=7, color="white",
+            for (x, yv), v in cells.items():
+                ax.text(xs.index(x), ys.index(yv), compact(v), ha="center", va="center", fontsize=7, color="white",
                         bbox={"facecolor": "black", "alpha": 0.25, "pad": 1, "linewidth": 0})
         # The best cell (ties: smallest weights) framed in red.
         bx, by = min(cells, key=lambda c: (-cells[c] if objective in MAXIMISED else cells[c], c))
         ax.add_patch(Rectangle((xs.index(bx) - 0.5, ys.index(by) - 0.5), 1, 1, fill=False, edgecolor="red",
                                linewidth=2.5))
-        ax.set_title(f"median {objective}\n({'max' if better is max else 'min'} over {others}; best framed)"
-                     if others else f"median {objective} (best framed)", fontsize=10)
-        written.append(save_heatmap(fig, ax, image, f"median {objective}", out,
-                                    f"heatmap_{short_name(wi)}_{short_name(wj)}.png"))
+        ax.set_title(wrapped(f"median {objective} ({'max' if better is max else 'min'} over {others}; best framed)"
+                             if others else f"median {objective} (best framed)", 60), fontsize=10)
+        fig.colorbar(image, ax=ax, label=f"median {objective}")
+        written.append(save(fig, out, f"heatmap_{short_name(wi)}_{short_name(wj)}.png"))
     return written
 
 
@@ -236,15 +420,6 @@ def value_ticks(ax, xs, ys):
     ax.set_xticklabels([f"{xs[k]:g}" for k in range(0, len(xs), step_x)], fontsize=8)
     ax.set_yticks(range(0, len(ys), step_y))
     ax.set_yticklabels([f"{ys[k]:g}" for k in range(0, len(ys), step_y)], fontsize=8)
-
-
-def save_heatmap(fig, ax, image, label, out, name):
-    """Colour bar, layout, the PNG `name` in `out`; returns `name`."""
-    fig.colorbar(image, ax=ax, label=label)
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, name), **SAVE)
-    plt.close(fig)
-    return name
 
 
 def plot_search_heatmaps(path, out):
@@ -263,7 +438,7 @@ def plot_search_heatmaps(path, out):
         if len(xs) < 2 or len(ys) < 2:
             continue
         grid = [[cells.get((x, y), math.nan) for x in xs] for y in ys]
-        fig, ax = plt.subplots(figsize=(7.0, 5.5))
+        fig, ax = plt.subplots(figsize=(7.0, 5.5), layout="constrained")
         cmap = plt.get_cmap("viridis_r").copy()
         cmap.set_bad("lightgrey")
         image = ax.imshow(grid, origin="lower", cmap=cmap, aspect="auto")
@@ -275,8 +450,10 @@ def plot_search_heatmaps(path, out):
                                    linewidth=2))
         ax.set_xlabel(wa, fontsize=11)
         ax.set_ylabel(wb, fontsize=11)
-        ax.set_title(f"exact search {search}: best objective over the other weights (best framed)", fontsize=10)
-        written.append(save_heatmap(fig, ax, image, "best objective", out, f"search{search}_{wa}_{wb}.png"))
+        ax.set_title(wrapped(f"exact search {search}: best objective over the other weights (best framed)", 60),
+                     fontsize=10)
+        fig.colorbar(image, ax=ax, label="best objective")
+        written.append(save(fig, out, f"search{search}_{wa}_{wb}.png"))
     return written
 
 
@@ -284,7 +461,8 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("dir", help="sweep output directory (aggregated)")
     parser.add_argument("--out", help="directory for the PNGs (default: DIR/plots)")
-    parser.add_argument("--top", type=int, default=10, help="most configurations per figure (default 10)")
+    parser.add_argument("--top", type=int, default=8, help="most configurations per map class (default 8)")
+    parser.add_argument("--layout-json", help="write the figures' bounding boxes to this file")
     args = parser.parse_args()
     out = args.out or os.path.join(args.dir, "plots")
     os.makedirs(out, exist_ok=True)
@@ -292,14 +470,22 @@ def main():
     summary_header, summary_rows = read_csv(os.path.join(args.dir, "summary.csv"))
     _, progress_rows = read_csv(os.path.join(args.dir, "progress_summary.csv"))
     best_header, best_rows = read_csv(os.path.join(args.dir, "best.csv"))
-    labels = config_labels(summary_header, summary_rows)
-    ids, note = shown_configs(best_header, best_rows, args.top)
+    labels, classes = config_labels(summary_header, summary_rows)
+    shown, per_class, cut = shown_configs(best_rows, classes, args.top)
+    shown_labels = {i: labels[i] for ids in shown.values() for i in ids}
+    # Names from what differs among the drawn configurations only.
+    drawn = [r for r in summary_rows if r["config_id"] in shown_labels]
+    if drawn:
+        labels, _ = config_labels(summary_header, drawn)
+    note = selection_note(per_class, shown, objective_of(best_header), cut)
 
-    plot_progress(progress_rows, ids, labels, note, out)
-    plot_metrics(summary_header, summary_rows, ids, labels, note, out)
-    written = ["progress.png", "metrics.png"]
+    written = [plot_progress(progress_rows, shown, labels, note, out),
+               plot_metrics(summary_header, summary_rows, shown, labels, note, out)]
     written += plot_heatmaps(summary_header, summary_rows, best_header, best_rows, out)
     written += plot_search_heatmaps(os.path.join(args.dir, "search_heatmaps.csv"), out)
+    if args.layout_json:
+        with open(args.layout_json, "w", encoding="utf-8") as f:
+            json.dump(LAYOUT, f, indent=1)
     print(f"wrote {', '.join(os.path.join(out, w) for w in written)}")
 
 

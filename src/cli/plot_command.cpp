@@ -19,7 +19,7 @@ namespace {
 struct PlotOptions {
   std::string dir;
   std::string out;  // empty: DIR/plots
-  int top = 10;     // configurations drawn, best first
+  int top = 8;      // configurations drawn per map class, best first
 };
 
 int run_plot(const PlotOptions& o) {
@@ -45,7 +45,7 @@ Command add_plot_command(CLI::App& app) {
   sub->add_option("DIR", o->dir, "Sweep output directory (aggregated first if summary files are missing)")
       ->required();
   sub->add_option("--out", o->out, "Directory for the PNGs (default: DIR/plots)");
-  sub->add_option("--top", o->top, "Draw the best N configurations (by best.csv)")
+  sub->add_option("--top", o->top, "Draw the best N configurations of each map class (by best.csv)")
       ->check(positive())
       ->capture_default_str();
   return [o] { return run_plot(*o); };

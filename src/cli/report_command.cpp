@@ -32,7 +32,7 @@ namespace fs = std::filesystem;
 struct ReportOptions {
   std::string dir;
   std::string out;        // empty: DIR/report.html
-  int top = 10;           // configurations drawn by fsweep plot
+  int top = 8;            // configurations per map class drawn by fsweep plot
   std::size_t rows = 30;  // rows of each table
   bool trajectories = true;
 };
@@ -187,7 +187,7 @@ Command add_report_command(CLI::App& app) {
                   "Sweep result directory (fsweep run or fsweep merge; aggregated first if needed)")
       ->required();
   sub->add_option("--out", o->out, "The page's file (default: DIR/report.html)");
-  sub->add_option("--top", o->top, "Plot the best N configurations (fsweep plot --top)")
+  sub->add_option("--top", o->top, "Plot the best N configurations of each map class (fsweep plot --top)")
       ->check(positive())
       ->capture_default_str();
   sub->add_option(

@@ -14,9 +14,10 @@ namespace fsweep {
 inline namespace report {
 namespace {
 
-/// True for the columns whose value names others: strategy_label, planner, *.preset.
+/// True for the columns whose value names others: map_class, strategy_label, planner, *.preset.
 bool naming_column(const std::string& name) {
-  return name == kStrategyLabelColumn || name == kPlannerColumn || name.ends_with(".preset");
+  return name == kMapClassColumn || name == kStrategyLabelColumn || name == kPlannerColumn ||
+         name.ends_with(".preset");
 }
 
 /// True when, over `rows`, the cell of column `by` determines that of column `of`.

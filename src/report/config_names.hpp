@@ -14,8 +14,9 @@ inline namespace report {
 /// Of the columns `names` of `rows` (a row has one cell per name), those that tell the rows
 /// apart, as indices into `names`, ascending: the columns with more than one value, less those a
 /// kept naming column determines (over `rows`, each of its values comes with one value of the
-/// other): `strategy_label` (its strategy and parameters), `planner` (its parameters) and any
-/// `*.preset` column (robot.energy.preset: the energy model's numbers and unit).
+/// other): `map_class` (its maps' resolution), `strategy_label` (its strategy and parameters),
+/// `planner` (its parameters) and any `*.preset` column (robot.energy.preset: the energy model's
+/// numbers and unit).
 [[nodiscard]] std::vector<std::size_t> telling_columns(const std::vector<std::string>& names,
                                                        const std::vector<std::vector<std::string>>& rows);
 

@@ -170,13 +170,19 @@ Source read_runs_source(const std::string& path, PairedTable& table, const Paire
   }
   // Variant columns: the group columns but map_class that differ in the file, without those that
   // another shown column determines (robot.energy.per_metre by robot.energy.preset).
+  // map_class (last here) names the groups itself, but tells what it determines (the maps' resolution).
   std::vector<std::string> names;
   for (const std::size_t g : group_cols) {
     if (static_cast<int>(g) != map_class) names.push_back(header.names()[g]);
   }
+  names.emplace_back(kMapClassColumn);
   std::vector<std::vector<std::string>> variants;
-  for (const Group& group : source.groups) variants.push_back(group.variant);
-  const std::vector<std::size_t> shown = telling_columns(names, variants);
+  for (const Group& group : source.groups) {
+    variants.push_back(group.variant);
+    variants.back().push_back(group.map_class);
+  }
+  std::vector<std::size_t> shown = telling_columns(names, variants);
+  std::erase(shown, names.size() - 1);
   for (const std::size_t c : shown) table.variant_columns.push_back(names[c]);
   for (Group& group : source.groups) {
     std::vector<std::string> values;

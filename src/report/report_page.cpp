@@ -234,13 +234,13 @@ PageImage plot_image(const std::string& name, std::string png) {
   if (stem == "progress") {
     image.title = "Explored area over distance";
     image.caption =
-        "Per configuration (the best by best.csv), the mean explored area over the distance travelled, "
-        "and the band from q05 to q95 over its runs.";
+        "A panel per map class: for its best configurations by best.csv, the mean explored area over the "
+        "distance travelled, and the band from q05 to q95 over their runs.";
   } else if (stem == "metrics") {
     image.title = "Metrics per configuration";
     image.caption =
-        "Per configuration (the best by best.csv), the median of distance, energy, coverage and distance "
-        "to the final coverage, with bars from q05 to q95.";
+        "For the best configurations of each map class by best.csv (coloured by class), the median of "
+        "distance, energy, coverage and distance to the final coverage, with bars from q05 to q95.";
   } else if (stem.starts_with("heatmap_")) {
     image.title = "Weight heat map " + stem.substr(8);
     image.caption =

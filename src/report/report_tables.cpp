@@ -157,6 +157,9 @@ std::string ranking_html(const ResultDir& r) {
   const SummaryColumns cols = summary_columns(h);
   // 1. What names a row: the strategy, then the other config columns that tell rows apart.
   std::vector<std::size_t> side, other;
+  // map_class names its own tables, but tells what it determines (the maps' resolution).
+  const int map_class = index_of(h, kMapClassColumn);
+  if (map_class >= 0) other.push_back(static_cast<std::size_t>(map_class));
   for (const std::size_t c : cols.config) {
     const bool is_side = h[c] == kStrategyLabelColumn || h[c] == "strategy" || h[c].starts_with("strategy.");
     (is_side ? side : other).push_back(c);
@@ -166,7 +169,9 @@ std::string ranking_html(const ResultDir& r) {
   for (const std::size_t c : other) other_names.push_back(h[c]);
   const std::vector<std::string> names = strategy_names(side_names, project(rows, side));
   std::vector<std::size_t> variant;
-  for (const std::size_t k : telling_columns(other_names, project(rows, other))) variant.push_back(other[k]);
+  for (const std::size_t k : telling_columns(other_names, project(rows, other))) {
+    if (static_cast<int>(other[k]) != map_class) variant.push_back(other[k]);
+  }
   // 2. The numbers: objective and metrics, the energy unit, the end reasons.
   const std::string objective = r.best.header.size() > 3 && r.best.header[3].ends_with(".median")
                                     ? r.best.header[3].substr(0, r.best.header[3].size() - 7)

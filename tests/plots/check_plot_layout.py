@@ -1,0 +1,122 @@
+#!/usr/bin/python3
+"""The figures of `fsweep plot` fit their pictures: checked from matplotlib's own bounding boxes.
+
+Draws the plots (tools/plot.py --layout-json) of three sweeps and checks every figure:
+- every text (figure title, panel titles, axis labels, tick labels) and every legend lies inside
+  the figure (1 pixel of slack);
+- no legend overlaps a panel (the axes' area), and the figure title overlaps none;
+- no two panels overlap.
+The sweeps: sweeps/examples/strategies_planners.json (48 configurations, 2 map classes), the
+default sweep, and the nightly suite's 702 configurations from the committed baseline
+(results/baseline/nightly/runs.csv, 6 map classes), whose progress.csv is made here from each
+run's final explored area (the layout is what is checked, not the curves).
+
+Usage: check_plot_layout.py FSWEEP --work DIR. Exit 0 when every figure fits, 1 listing what
+does not; the PNGs and layout.json stay in DIR/<sweep>/.
+"""
+
+import argparse
+import csv
+import json
+import os
+import shutil
+import subprocess
+import sys
+
+SOURCE = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+SLACK = 1.0
+
+
+def run(command, cwd=SOURCE):
+    r = subprocess.run(command, cwd=cwd, capture_output=True, text=True)
+    if r.returncode != 0:
+        sys.exit(f"check_plot_layout.py: {' '.join(command)} failed ({r.returncode}):\n{r.stdout}{r.stderr}")
+    return r.stdout
+
+
+def inside(box, frame):
+    return (box[0] >= frame[0] - SLACK and box[1] >= frame[1] - SLACK and box[2] <= frame[2] + SLACK
+            and box[3] <= frame[3] + SLACK)
+
+
+def overlap(a, b):
+    return min(a[2], b[2]) - max(a[0], b[0]) > SLACK and min(a[3], b[3]) - max(a[1], b[1]) > SLACK
+
+
+def problems_of(name, figure):
+    frame = figure["figure"]
+    out = []
+    for t in figure["texts"]:
+        if not inside(t["box"], frame):
+            out.append(f"{name}: text {t['text'][:60]!r} at {[round(v) for v in t['box']]} leaves the figure "
+                       f"{[round(v) for v in frame]}")
+    for legend in figure["legends"]:
+        if not inside(legend, frame):
+            out.append(f"{name}: the legend at {[round(v) for v in legend]} leaves the figure")
+        for ax in figure["axes"]:
+            if overlap(legend, ax):
+                out.append(f"{name}: the legend at {[round(v) for v in legend]} covers a panel at "
+                           f"{[round(v) for v in ax]}")
+    for i, a in enumerate(figure["axes"]):
+        for b in figure["axes"][i + 1:]:
+            if overlap(a, b):
+                out.append(f"{name}: panels at {[round(v) for v in a]} and {[round(v) for v in b]} overlap")
+    titles = [t for t in figure["texts"] if t.get("suptitle")]
+    for t in titles:
+        for ax in figure["axes"]:
+            if overlap(t["box"], ax):
+                out.append(f"{name}: the title covers a panel")
+    return out
+
+
+def nightly_dir(fsweep, work):
+    """The committed nightly baseline's runs with a progress.csv of two samples per run."""
+    base = os.path.join(SOURCE, "results", "baseline", "nightly")
+    out = os.path.join(work, "nightly")
+    shutil.rmtree(out, ignore_errors=True)
+    os.makedirs(out)
+    for f in ("runs.csv", "manifest.json"):
+        shutil.copy(os.path.join(base, f), out)
+    with open(os.path.join(out, "runs.csv"), newline="", encoding="utf-8") as f, \
+            open(os.path.join(out, "progress.csv"), "w", newline="", encoding="utf-8") as p:
+        writer = csv.writer(p, lineterminator="\n")
+        writer.writerow(["run_index", "run_key", "distance_m", "explored_area_m2", "coverage", "energy"])
+        for r in csv.DictReader(f):
+            writer.writerow([r["run_index"], r["run_key"], 0, 0, 0, 0])
+            writer.writerow([r["run_index"], r["run_key"], r["distance_m"], r["explored_area_m2"], r["coverage"],
+                             r["energy"]])
+    run([fsweep, "aggregate", out])
+    return out
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("fsweep")
+    parser.add_argument("--work", required=True)
+    args = parser.parse_args()
+    os.makedirs(args.work, exist_ok=True)
+    dirs = {}
+    for name, sweep in (("strategies_planners", "sweeps/examples/strategies_planners.json"),
+                        ("default", "sweeps/default.json")):
+        dirs[name] = os.path.join(args.work, name)
+        run([args.fsweep, "run", sweep, "--quiet", "--fresh", "--out", dirs[name]])
+    dirs["nightly"] = nightly_dir(args.fsweep, args.work)
+    problems, figures = [], 0
+    for name, d in dirs.items():
+        layout = os.path.join(d, "layout.json")
+        run(["/usr/bin/python3", os.path.join(SOURCE, "tools", "plot.py"), d, "--out", os.path.join(d, "plots"),
+             "--layout-json", layout])
+        with open(layout, encoding="utf-8") as f:
+            for png, figure in json.load(f).items():
+                figures += 1
+                problems += problems_of(f"{name}/{png}", figure)
+    if figures < 6:
+        problems.append(f"only {figures} figures were drawn")
+    for p in problems:
+        print(p)
+    print(f"check_plot_layout.py: {figures} figures, {len(problems)} problems")
+    return 1 if problems else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
