@@ -43,6 +43,14 @@ std::string readable_text(const std::string& text) {
   return v ? readable_number(*v) : text;
 }
 
+/// `t` with its number cells rounded for reading (readable_text()).
+CsvExcerpt readable_excerpt(CsvExcerpt t) {
+  for (auto& row : t.rows) {
+    for (auto& cell : row) cell = readable_text(cell);
+  }
+  return t;
+}
+
 /// A POSIX shell word: as it is when it has only safe characters, else single-quoted.
 std::string shell_word(const std::string& s) {
   const bool safe = !s.empty() && std::all_of(s.begin(), s.end(), [](char c) {
@@ -336,13 +344,14 @@ std::string report_html(const ReportPage& page) {
     out << "<h2 id='searches'>Exact weight searches (search_best.csv)</h2>\n<p>Per search, its behaviours "
            "ranked by "
            "the objective (the class mean); the representative is the smallest weight vector of each.</p>\n"
-        << folded_table(*r.search_best,
+        << folded_table(readable_excerpt(*r.search_best),
                         [&] {
                           std::vector<std::size_t> all(r.search_best->header.size());
                           for (std::size_t c = 0; c < all.size(); ++c) all[c] = c;
                           return all;
                         }(),
-                        {});
+                        {})
+        << "<p>Rounded for reading; <code>search_best.csv</code> has every digit.</p>\n";
   }
   out << "<h2 id='plots'>Plots</h2>\n<p>Drawn by <code>fsweep plot</code> (tools/plot.py) from the summary "
          "files.</p>\n";

@@ -10,6 +10,7 @@
 #include "core/csv_reader.hpp"
 #include "core/files.hpp"
 #include "core/json_text.hpp"
+#include "core/readable_number.hpp"
 #include "core/shard_dirs.hpp"
 #include "report/aggregate.hpp"
 
@@ -208,7 +209,8 @@ void read_searches(ResultDir& r) {
           .append(", behaviour ")
           .append(run.behaviour_id);
       run.role.append(", ").append(cell(h, *row, "vectors")).append(" vectors, objective ");
-      run.role.append(cell(h, *row, "objective"))
+      const auto objective = parse_number(cell(h, *row, "objective"));
+      run.role.append(objective ? readable_number(*objective, 6) : cell(h, *row, "objective"))
           .append("), its first instance with the representative weights ");
       run.role.append(vector);
       shown.push_back(std::move(run));

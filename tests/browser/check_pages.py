@@ -17,7 +17,12 @@ checks, per page:
   element made of it, no script);
 - compare.html: the plots of both sides are embedded, one image per PNG;
 
-and saves a screenshot of each (--screenshots DIR). Exit 0 when every check passes, 1 when one
+The report pages of the shipped sweeps a user meets first, sweeps/default.json and
+sweeps/examples/strategies_planners.json, run here: besides the checks above, a ranking table per
+map class whose numbers are rounded for reading (no number cell with more than 6 digits), and
+the paired comparisons against the baseline with one row per strategy, metric and table.
+
+It saves a screenshot of each (--screenshots DIR). Exit 0 when every check passes, 1 when one
 fails, 77 (ctest SKIP_RETURN_CODE) only when chromium cannot start.
 
   check_pages.py FSWEEP [--work DIR] [--screenshots DIR] [--width 1280] [--height 900]
@@ -33,6 +38,7 @@ import sys
 import tempfile
 import time
 
+SOURCE = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 SKIP = 77
 CHROMIUM = "/usr/bin/chromium"
 CHROMEDRIVER = "/usr/bin/chromedriver"
@@ -83,7 +89,15 @@ def make_results(binary, work):
         fsweep(binary, "report", d)
     # compare exits 0 (no regression): the same sweep, deterministic planner.
     fsweep(binary, "compare", new, base)
-    return {"report_merged": os.path.join(base, "report.html"), "report": os.path.join(new, "report.html"),
+    shipped = {}
+    for name, file in (("default", "sweeps/default.json"),
+                       ("strategies_planners", "sweeps/examples/strategies_planners.json")):
+        out = os.path.join(work, name)
+        fsweep(binary, "run", os.path.join(SOURCE, file), "--quiet", "--out", out)
+        fsweep(binary, "report", out)
+        shipped[name] = out
+    return {"shipped": shipped,
+            "report_merged": os.path.join(base, "report.html"), "report": os.path.join(new, "report.html"),
             "compare": os.path.join(new, "compare", "compare.html"),
             "plots": {os.path.join(base, "report.html"): os.path.join(base, "plots"),
                       os.path.join(new, "report.html"): os.path.join(new, "plots")}}
@@ -211,6 +225,46 @@ def check_report(driver, path, plots_dir):
     return problems
 
 
+READABLE_JS = """
+const cells = Array.from(document.querySelectorAll('#ranking ~ div table.readable td.num, table.readable td.num'));
+return {
+  classes: Array.from(document.querySelectorAll('h3')).filter(h => {
+    let e = h.previousElementSibling;
+    while (e && e.tagName !== 'H2') e = e.previousElementSibling;
+    return e && e.id === 'ranking' && h.innerText.startsWith('map class');
+  }).length,
+  long: cells.map(c => c.innerText).filter(t => /[0-9]{7,}/.test(t.replace(/[,.]/g, ''))).slice(0, 5),
+  paired_rows: document.querySelectorAll('#paired ~ div table.readable tr').length,
+  paired: document.getElementById('paired') !== null,
+};
+"""
+
+
+def check_shipped(driver, name, out):
+    """A shipped sweep's page: rankings per map class, rounded numbers, the paired comparisons as
+    paired.csv has them."""
+    problems = []
+    path = os.path.join(out, "report.html")
+    got = driver.execute_script(READABLE_JS)
+    with open(os.path.join(out, "summary.csv"), encoding="utf-8") as f:
+        classes = {line.split(",")[1] for line in f.readlines()[1:]}
+    if got["classes"] != len(classes):
+        problems.append(f"{path}: {got['classes']} ranking tables, the sweep has {len(classes)} map classes")
+    if got["long"]:
+        problems.append(f"{path}: numbers not rounded for reading: {got['long']}")
+    if not got["paired"]:
+        problems.append(f"{path}: no paired comparisons")
+    # paired.csv's rows for the same comparison: one table row each, plus a header row per table.
+    fsweep_binary = os.environ.get("FSWEEP_BINARY")
+    if fsweep_binary:
+        fsweep(fsweep_binary, "paired", out)
+        with open(os.path.join(out, "paired.csv"), encoding="utf-8") as f:
+            rows = len(f.readlines()) - 1
+        if got["paired_rows"] < rows:
+            problems.append(f"{path}: {got['paired_rows']} rows in the paired tables, paired.csv has {rows}")
+    return problems
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("fsweep", help="the built fsweep executable")
@@ -244,9 +298,17 @@ def main():
                 shown = driver.execute_script("return document.images.length")
                 if shown != drawn:
                     problems.append(f"{path}: {shown} images, the two plots directories have {drawn} PNGs")
+        os.environ["FSWEEP_BINARY"] = args.fsweep
+        for name, out in pages["shipped"].items():
+            path = os.path.join(out, "report.html")
+            driver.set_window_size(args.width, args.height)
+            problems += check_page(driver, path, os.path.join(shots, f"report_{name}.png"), args.width)
+            problems += check_shipped(driver, name, out)
+            figures = driver.execute_script(FIGURES_JS)
+            problems += [f"{path}: figure '{f['id']}' not loaded" for f in figures if not (f["found"] and f["loaded"])]
         if problems:
             raise CheckFailed("\n".join(problems))
-        print(f"3 pages checked in chromium: results {made - start:.1f} s, browser {time.time() - made:.1f} s; "
+        print(f"5 pages checked in chromium: results {made - start:.1f} s, browser {time.time() - made:.1f} s; "
               f"screenshots in {shots}")
         return 0
     except CheckFailed as e:
