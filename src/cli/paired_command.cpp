@@ -16,6 +16,7 @@
 #include "cli/plotting.hpp"
 #include "core/config_error.hpp"
 #include "core/readable_number.hpp"
+#include "report/config_names.hpp"
 #include "report/paired.hpp"
 #include "report/runs_schema.hpp"
 
@@ -74,7 +75,8 @@ void print_table(const PairedTable& t) {
   std::string block, metric;
   for (const PairedRow& r : t.rows) {
     std::string b = (r.source == "runs" ? "" : r.source + ", ") + "map class " + r.map_class;
-    for (std::size_t v = 0; v < r.variant.size(); ++v) b += ", " + t.variant_columns[v] + "=" + r.variant[v];
+    for (std::size_t v = 0; v < r.variant.size(); ++v)
+      b += ", " + column_title(t.variant_columns[v]) + "=" + r.variant[v];
     if (b != block) {
       std::cout << b << ":\n";
       block = b;

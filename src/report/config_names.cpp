@@ -52,6 +52,14 @@ std::vector<std::size_t> telling_columns(const std::vector<std::string>& names,
   return kept;
 }
 
+std::string column_title(std::string name) {
+  if (name.ends_with(".preset")) name.resize(name.size() - 7);
+  for (const char* prefix : {"strategy.", "robot.", "planner.", "sim."}) {
+    if (name.starts_with(prefix)) return name.substr(std::string_view(prefix).size());
+  }
+  return name;
+}
+
 std::vector<std::string> strategy_names(const std::vector<std::string>& columns,
                                         const std::vector<std::vector<std::string>>& rows) {
   const auto find = [&](const char* name) {

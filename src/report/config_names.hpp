@@ -20,6 +20,11 @@ inline namespace report {
 [[nodiscard]] std::vector<std::size_t> telling_columns(const std::vector<std::string>& names,
                                                        const std::vector<std::vector<std::string>>& rows);
 
+/// A config column's name for a heading people read: without its `strategy.`, `robot.`,
+/// `planner.` or `sim.` prefix, a preset column as its model ("robot.energy.preset" -> "energy",
+/// "robot.sensor.range_m" -> "sensor.range_m"), as tools/plot.py names them.
+[[nodiscard]] std::string column_title(std::string name);
+
 /// The name of each strategy configuration of `rows`: cells of `columns`, among them
 /// strategy_label, strategy and the strategy.* parameters. A configuration is named by its label
 /// alone when the label holds one configuration in `rows`, else by the label and each column

@@ -185,7 +185,7 @@ std::string ranking_html(const ResultDir& r) {
     return ends_text(h, *row, cols.ends) != "complete " + (*row)[cols.n];
   });
   std::vector<std::string> header{"rank", "strategy"};
-  for (const std::size_t c : variant) header.push_back(h[c]);
+  for (const std::size_t c : variant) header.push_back(column_title(h[c]));
   header.emplace_back("runs");
   for (const auto& m : metrics) {
     header.push_back(metric_title(m, energy_unit) + (m == objective ? ", median [q05, q95]" : ", median"));
@@ -277,7 +277,7 @@ std::string paired_html(const PairedTable& table, const std::string& baseline_fr
   for (const PairedRow& r : table.rows) {
     std::string b = (r.source == "runs" ? "" : r.source + ", ") + "map class " + r.map_class;
     for (std::size_t v = 0; v < r.variant.size() && v < table.variant_columns.size(); ++v)
-      b += ", " + table.variant_columns[v] + " = " + r.variant[v];
+      b += ", " + column_title(table.variant_columns[v]) + " = " + r.variant[v];
     if (b != block) {
       flush();
       out << "<h3>" << html_escape(b) << "</h3>\n";

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -237,6 +238,26 @@ TEST(CliPaired, WeightSearchVectorsAgainstTheOptimumByInstance) {
     EXPECT_EQ(row.at("n_pairs"), "3");
     ASSERT_TRUE(objective.count(row.at("label"))) << row.at("label");
     EXPECT_NEAR(std::stod(row.at("mean_diff")), objective[row.at("label")] - best, 1e-9 * best);
+  }
+}
+
+TEST(CliPaired, CurvesAddTheCoverageCurveAnalysisOfEachLabel) {
+  if (std::system("/usr/bin/python3 -c 'import matplotlib' >/dev/null 2>&1") != 0)
+    GTEST_SKIP() << "no matplotlib";
+  const std::string dir = fresh_temp_dir("paired", "curves");
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir + "/mei.json") << R"({"schema_version": 1, "name": "curves",
+    "maps": [{"generator": "rooms", "w": 40, "h": 30, "label": "rooms", "seeds": {"range": [1, 3], "step": 1}}],
+    "strategies": [{"name": "widest_frontier", "label": "widest"}, {"name": "orientation", "label": "orientation"}],
+    "baseline": "widest", "planners": ["lattice"], "robot": {"sensor": {"range_m": 6}, "energy": "mei2006"},
+    "progress_step_m": 2, "seed": 5})";
+  ASSERT_EQ(run_fsweep("run " + dir + "/mei.json --quiet --out " + dir + "/out").code, 0);
+  const CliOutcome r = run_fsweep("paired " + dir + "/out --curves");
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find("A = orientation, B = widest; 3 pairs"), std::string::npos) << r.output;
+  for (const char* f : {"paired.csv", "paired_curves_orientation_pairs.csv",
+                        "paired_curves_orientation_summary.csv", "paired_curves_orientation_rooms.png"}) {
+    EXPECT_TRUE(std::filesystem::exists(dir + "/out/" + f)) << f;
   }
 }
 
