@@ -107,9 +107,9 @@ int run_paired(const PairedCommandOptions& o) {
   for (const PairedSide& side : table.sides) {
     if (side.source != "runs" || side.name != side.label || side.name == table.baseline) continue;
     if (!done.insert(side.name).second) continue;
-    std::string stem = "paired_curves_";
-    for (const char c : side.name) stem += std::isalnum(static_cast<unsigned char>(c)) != 0 ? c : '_';
-    const std::string prefix = out + "/" + stem;
+    std::string prefix = out;
+    prefix += "/paired_curves_";
+    for (const char c : side.name) prefix += std::isalnum(static_cast<unsigned char>(c)) != 0 ? c : '_';
     if (const int code = run_tool_script(
             "paired_compare.py",
             {o.dir, "--a", side.name, "--b", table.baseline, "--out", prefix, "--plot", prefix + "_"},

@@ -60,8 +60,8 @@ struct Source {
   std::string default_baseline;  ///< the side compared with when the baseline asked for is not one
 };
 
-/// A side's run, added to `group` under `pair_key`; a second run of the same side and pair key is
-/// dropped (counted as unpaired by the caller).
+/// A side's run, added to `group` under `pair_key`; false (and nothing added) when the side has a
+/// run under that key already.
 bool add_run(Group& group, const std::string& pair_key, const std::string& instance, std::size_t side,
              SideRun run) {
   auto [it, added] = group.index.try_emplace(pair_key, group.slots.size());
@@ -90,14 +90,10 @@ std::vector<double> metric_values(const std::vector<std::string>& fields, const 
   return values;
 }
 
-/// The compared metrics: the options', each a metric column of `available` (else ConfigError at
-/// --metric listing them), or the defaults the file has.
+/// The compared metrics: the options', each a metric column of `available` given once (else
+/// ConfigError at --metric listing them), or the defaults the file has.
 std::vector<std::string> chosen_metrics(const PairedOptions& o, const std::vector<std::string>& available,
                                         const std::string& file) {
-  std::vector<std::string> quality;
-  for (const auto& m : available) {
-    if (!is_effort_column(m)) quality.push_back(m);
-  }
   if (o.metrics.empty()) {
     std::vector<std::string> out;
     for (const char* m : kDefaultPairedMetrics) {
@@ -105,11 +101,13 @@ std::vector<std::string> chosen_metrics(const PairedOptions& o, const std::vecto
     }
     return out;
   }
-  for (const auto& m : o.metrics) {
-    if (std::find(available.begin(), available.end(), m) == available.end()) {
-      throw ConfigError(
-          "--metric", "'" + m + "' is not a metric column of " + file + "; allowed: " + join_names(quality));
+  for (auto m = o.metrics.begin(); m != o.metrics.end(); ++m) {
+    if (std::find(available.begin(), available.end(), *m) == available.end()) {
+      throw ConfigError("--metric", "'" + *m + "' is not a metric column of " + file +
+                                        "; allowed: " + join_names(available));
     }
+    if (std::find(o.metrics.begin(), m, *m) != m)
+      throw ConfigError("--metric", "'" + *m + "' is given twice");
   }
   return o.metrics;
 }
@@ -392,7 +390,7 @@ Pairs collect_pairs(const RowInput& in, Direction direction, PairedRow& row) {
     const double y = b->second.values[in.metric];
     if (s->second.end != b->second.end) {
       ++row.mixed_end;
-    } else if (std::isnan(x) || std::isnan(y)) {
+    } else if (!std::isfinite(x) || !std::isfinite(y)) {
       ++row.no_value;
     } else {
       const double d = x - y;

@@ -21,7 +21,8 @@
 /// - n_pairs: pairs in the statistics: both runs present, the same end_reason and a value of the
 ///   metric on both; unpaired: runs of either side without a partner; mixed_end: pairs whose
 ///   runs ended differently (e.g. complete and range_limited), counted and left out; no_value:
-///   pairs with an empty metric cell, left out; instances: map instances among the pairs.
+///   pairs with an empty, nan or infinite metric cell, left out; instances: map instances among
+///   the pairs.
 /// - d = side - baseline per pair: mean_diff, median_diff; rel_diff_pct: the median of
 ///   100 d / |baseline| (pairs with baseline 0 left out, unless both are 0: 0%).
 /// - ci95_lo, ci95_hi: the cluster bootstrap interval of the mean difference

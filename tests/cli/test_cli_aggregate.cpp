@@ -130,6 +130,30 @@ TEST(CliPlot, HeatMapForTwoVaryingWeightsInOutDir) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(CliPlot, FindsAPythonWithMatplotlibOnPathAndNamesTheOneThatFailed) {
+  if (!python_has_matplotlib()) GTEST_SKIP() << "/usr/bin/python3 has no matplotlib";
+  const auto dir = fsweep::testing::make_sweep_dir("cli_python");
+  // 1. A python3 first on PATH without matplotlib (its import check fails): the next one is used.
+  const auto bin = dir / "bin";
+  std::filesystem::create_directories(bin);
+  fsweep::testing::write_text(bin / "python3",
+                              "#!/bin/sh\necho \"$@\" >> " + (dir / "calls").string() + "\nexit 1\n");
+  std::filesystem::permissions(bin / "python3", std::filesystem::perms::owner_all);
+  const std::string path = "PATH='" + bin.string() + ":/usr/bin:/bin' ";
+  Outcome r = fsweep::testing::run_command(path + FSWEEP_BINARY_DIR "/bin/fsweep plot " + dir.string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(fsweep::testing::read_all((dir / "calls").string()).find("-c import matplotlib"),
+            std::string::npos);
+  // 2. One that has "matplotlib" but whose run of the script fails: the message names it.
+  fsweep::testing::write_text(bin / "python3", "#!/bin/sh\n[ \"$1\" = -c ] && exit 0\nexit 3\n");
+  r = fsweep::testing::run_command(path + FSWEEP_BINARY_DIR "/bin/fsweep plot " + dir.string());
+  EXPECT_EQ(r.code, 1) << r.output;
+  EXPECT_NE(r.output.find("tools/plot.py failed with " + (bin / "python3").string() + " (exit code 3)"),
+            std::string::npos)
+      << r.output;
+  std::filesystem::remove_all(dir);
+}
+
 TEST(CliPlot, ExactSearchExpandRunAndHeatMaps) {
   if (!python_has_matplotlib()) GTEST_SKIP() << "/usr/bin/python3 has no matplotlib";
   // A sweep of one search entry (no runs of its own) over w1 x w3 = {0, 1, 2}^2.

@@ -125,6 +125,9 @@ TEST(CliPaired, RefusesWhatItCannotCompare) {
   r = run_fsweep("paired " + dir + " --baseline CF --metric speed");
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.output.find("--metric: 'speed' is not a metric column"), std::string::npos) << r.output;
+  r = run_fsweep("paired " + dir + " --baseline CF --metric energy --metric energy");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.output.find("--metric: 'energy' is given twice"), std::string::npos) << r.output;
   r = run_fsweep("paired " + dir + "/nothing-here");
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.output.find("not a directory"), std::string::npos) << r.output;
@@ -140,7 +143,8 @@ TEST(CliPaired, RefusesWhatItCannotCompare) {
 }
 
 /// A directory with a hand-written runs.csv: A and B on two maps x two seeds; one of B's runs is
-/// missing (its A run is unpaired), and one pair ended differently.
+/// missing (its A run is unpaired), and one pair ended differently; on a third map, A's distance
+/// is infinite (no value for distance_m).
 std::string handwritten_dir() {
   const std::string dir = fresh_temp_dir("paired", "hand");
   std::filesystem::create_directories(dir);
@@ -153,7 +157,9 @@ std::string handwritten_dir() {
                                       "3,b1,c,B,m1,x,2,range_limited,,8,0.5\n"
                                       "4,a2,c,A,m2,x,1,complete,,20,1\n"
                                       "5,b2,c,B,m2,x,1,complete,,20,1\n"
-                                      "6,a3,c,A,m2,x,2,complete,,30,0.9\n";
+                                      "6,a3,c,A,m2,x,2,complete,,30,0.9\n"
+                                      "7,a4,c,A,m3,x,1,complete,,inf,1\n"
+                                      "8,b4,c,B,m3,x,1,complete,,5,1\n";
   return dir;
 }
 
@@ -166,11 +172,15 @@ TEST(CliPaired, CountsUnpairedRunsAndMixedEndsAndLeavesThemOut) {
   for (const auto& row : rows) {
     EXPECT_EQ(row.at("label"), "B");
     EXPECT_EQ(row.at("baseline"), "A");
-    EXPECT_EQ(row.at("n_pairs"), "2");
     EXPECT_EQ(row.at("unpaired"), "1");
     EXPECT_EQ(row.at("mixed_end"), "1");
-    EXPECT_EQ(row.at("instances"), "2");
   }
+  EXPECT_EQ(rows[0].at("n_pairs"), "2");
+  EXPECT_EQ(rows[0].at("no_value"), "1");
+  EXPECT_EQ(rows[0].at("instances"), "2");
+  EXPECT_EQ(rows[1].at("n_pairs"), "3");  // coverage has a value on m3
+  EXPECT_EQ(rows[1].at("no_value"), "0");
+  EXPECT_EQ(rows[1].at("instances"), "3");
   EXPECT_EQ(rows[0].at("metric"), "distance_m");
   EXPECT_EQ(rows[0].at("mean_diff"), "1");  // (12 - 10 + 20 - 20) / 2
   EXPECT_EQ(rows[0].at("wins"), "0");
@@ -178,7 +188,7 @@ TEST(CliPaired, CountsUnpairedRunsAndMixedEndsAndLeavesThemOut) {
   EXPECT_EQ(rows[0].at("losses"), "1");
   EXPECT_EQ(rows[0].at("rel_diff_pct"), "10");  // median of 20% and 0%
   EXPECT_EQ(rows[1].at("metric"), "coverage");
-  EXPECT_EQ(rows[1].at("ties"), "2");
+  EXPECT_EQ(rows[1].at("ties"), "3");
   EXPECT_EQ(rows[1].at("wilcoxon_method"), "none");
   EXPECT_EQ(rows[1].at("wilcoxon_p"), "1");
 }
