@@ -184,6 +184,7 @@ Source read_runs_source(const std::string& path, PairedTable& table, const Paire
   for (const std::size_t c : shown) table.variant_columns.push_back(names[c]);
   for (Group& group : source.groups) {
     std::vector<std::string> values;
+    values.reserve(shown.size());
     for (const std::size_t c : shown) values.push_back(group.variant[c]);
     group.variant = std::move(values);
   }
@@ -305,7 +306,9 @@ std::map<std::string, std::map<std::string, std::vector<std::size_t>>> add_searc
       const auto& f = in.fields();
       auto [text, params] = weights_of(f, in.header(), w);
       const std::string label = label_of(f[cols[0]]);
-      add(f[cols[0]], f[cols[1]], PairedSide{label + "@" + text, "search " + f[cols[0]], label, params});
+      std::string name = label;
+      name.append("@").append(text);
+      add(f[cols[0]], f[cols[1]], PairedSide{name, "search " + f[cols[0]], label, params});
     }
   }
   return wanted;

@@ -69,7 +69,7 @@ SummaryColumns summary_columns(const std::vector<std::string>& h) {
   SummaryColumns c;
   const int id = index_of(h, "config_id");
   c.n = static_cast<std::size_t>(std::max(index_of(h, "n"), 0));
-  for (std::size_t k = static_cast<std::size_t>(id + 1); k < c.n; ++k) {
+  for (std::size_t k = static_cast<std::size_t>(id) + 1; k < c.n; ++k) {
     if (h[k] != kMapClassColumn) c.config.push_back(k);
   }
   c.n_distinct = index_of(h, "n_distinct");

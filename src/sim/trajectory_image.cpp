@@ -121,7 +121,7 @@ class Canvas {
     };
     const auto* v = reinterpret_cast<const Vertex*>(buffer.data());
     for (int q = 0; q < quads; ++q) {
-      const Vertex* a = v + 4 * q;
+      const Vertex* a = v + static_cast<std::ptrdiff_t>(4) * q;
       const auto px = [&](float f) { return static_cast<int>(std::lround(f * static_cast<float>(size))); };
       rect(x + px(a[0].x), y + px(a[0].y), x + px(a[2].x), y + px(a[2].y), rgb);
     }
