@@ -338,9 +338,12 @@ CompareReport compare_dirs(const std::string& new_dir, const std::string& baseli
   if (base_manifest.sweep_hash && cur_manifest.sweep_hash &&
       *base_manifest.sweep_hash != *cur_manifest.sweep_hash) {
     r.sweep_hash_differs = true;
-    r.warnings.push_back("the sweeps differ (sweep_hash " + *base_manifest.sweep_hash + " (baseline) vs " +
-                         *cur_manifest.sweep_hash +
-                         " (new)): only the configurations and runs both have are compared");
+    r.warnings.push_back(
+        "the sweeps differ (sweep_hash " + *base_manifest.sweep_hash + " (baseline) vs " +
+        *cur_manifest.sweep_hash +
+        " (new)): only the configurations and runs both have are compared (compare checks a "
+        "sweep against an earlier run of itself; to compare strategies within one sweep, use "
+        "fsweep paired)");
   }
   if (cur_manifest.status && *cur_manifest.status != "complete") {
     r.warnings.push_back(cur_manifest.path + ": status '" + *cur_manifest.status + "', not 'complete'");

@@ -34,15 +34,12 @@ std::vector<std::map<std::string, std::string>> read_rows(const std::string& pat
   return rows;
 }
 
-/// The default sweep, run once for the tests of this file.
-const std::string& default_sweep_dir() {
-  static const std::string dir = [] {
-    const std::string out = fresh_temp_dir("paired", "default");
-    const CliOutcome r = run_fsweep("run sweeps/default.json --quiet --out " + out, FSWEEP_SOURCE_DIR);
-    EXPECT_EQ(r.code, 0) << r.output;
-    return out;
-  }();
-  return dir;
+/// The default sweep's results (90 runs).
+std::string default_sweep_dir() {
+  const std::string out = fresh_temp_dir("paired", "default");
+  const CliOutcome r = run_fsweep("run sweeps/default.json --quiet --out " + out, FSWEEP_SOURCE_DIR);
+  EXPECT_EQ(r.code, 0) << r.output;
+  return out;
 }
 
 TEST(CliPaired, DefaultSweepMatchesARecomputationFromRunsCsv) {
@@ -104,37 +101,59 @@ TEST(CliPaired, DefaultSweepMatchesARecomputationFromRunsCsv) {
   EXPECT_NE(json.find("\"resamples\": 10000"), std::string::npos) << json;
 }
 
+/// A hand-written directory of A and B on 6 maps x 2 seeds, B's distances off A's by varied amounts.
+std::string varied_dir() {
+  const std::string dir = fresh_temp_dir("paired", "varied");
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir + "/manifest.json") << R"({"sweep": {"strategies": [{"name": "x", "label": "A"}]}})";
+  std::ofstream runs(dir + "/runs.csv");
+  runs << "run_index,run_key,map_class,strategy_label,map,strategy,seed,end_reason,end_detail,distance_m\n";
+  int index = 0;
+  for (int map = 0; map < 6; ++map) {
+    for (int seed = 0; seed < 2; ++seed) {
+      const double a = 100 + 10 * map + seed;
+      const double b = a + ((map * 7 + seed * 3) % 11) - 4;
+      runs << index << ",a" << index << ",c,A,m" << map << ",x," << seed << ",complete,," << a << "\n";
+      ++index;
+      runs << index << ",b" << index << ",c,B,m" << map << ",x," << seed << ",complete,," << b << "\n";
+      ++index;
+    }
+  }
+  return dir;
+}
+
 TEST(CliPaired, IsAPureFunctionOfTheFilesAndTheSeed) {
-  const std::string dir = default_sweep_dir();
+  const std::string dir = varied_dir();
   const std::string a = fresh_temp_dir("paired", "seed_a");
   const std::string b = fresh_temp_dir("paired", "seed_b");
-  ASSERT_EQ(run_fsweep("paired " + dir + " --baseline CF --seed 7 --resamples 500 --out " + a).code, 0);
-  ASSERT_EQ(run_fsweep("paired " + dir + " --baseline CF --seed 7 --resamples 500 --out " + b).code, 0);
+  const std::string args = "paired " + dir + " --metric distance_m --resamples 500 ";
+  ASSERT_EQ(run_fsweep(args + "--seed 7 --out " + a).code, 0);
+  ASSERT_EQ(run_fsweep(args + "--seed 7 --out " + b).code, 0);
   EXPECT_EQ(fsweep::testing::read_all(a + "/paired.csv"), fsweep::testing::read_all(b + "/paired.csv"));
-  ASSERT_EQ(run_fsweep("paired " + dir + " --baseline CF --seed 8 --resamples 500 --out " + b).code, 0);
+  ASSERT_EQ(run_fsweep(args + "--seed 8 --out " + b).code, 0);
   EXPECT_NE(fsweep::testing::read_all(a + "/paired.csv"), fsweep::testing::read_all(b + "/paired.csv"));
+  EXPECT_EQ(read_rows(a + "/paired.csv").at(0).at("instances"), "6");
 }
 
 TEST(CliPaired, RefusesWhatItCannotCompare) {
-  const std::string dir = default_sweep_dir();
+  const std::string dir = varied_dir();
   CliOutcome r = run_fsweep("paired " + dir + " --baseline nobody");
   EXPECT_EQ(r.code, 2);
-  EXPECT_NE(r.output.find("--baseline: no side 'nobody' in the results; sides: CF, EA free, EA Manhattan"),
-            std::string::npos)
+  EXPECT_NE(r.output.find("--baseline: no side 'nobody' in the results; sides: A, B"), std::string::npos)
       << r.output;
-  r = run_fsweep("paired " + dir + " --baseline CF --metric speed");
+  r = run_fsweep("paired " + dir + " --metric speed");
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.output.find("--metric: 'speed' is not a metric column"), std::string::npos) << r.output;
-  r = run_fsweep("paired " + dir + " --baseline CF --metric energy --metric energy");
+  r = run_fsweep("paired " + dir + " --metric distance_m --metric distance_m");
   EXPECT_EQ(r.code, 2);
-  EXPECT_NE(r.output.find("--metric: 'energy' is given twice"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("--metric: 'distance_m' is given twice"), std::string::npos) << r.output;
   r = run_fsweep("paired " + dir + "/nothing-here");
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.output.find("not a directory"), std::string::npos) << r.output;
   const std::string sim = fresh_temp_dir("paired", "sim_out");
   std::filesystem::create_directories(sim);
   std::ofstream(sim + "/run.csv") << "x\n";
-  r = run_fsweep("paired " + dir + " --baseline CF --out " + sim);
+  r = run_fsweep("paired " + dir + " --out " + sim);
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.output.find("holds the output of fsweep sim"), std::string::npos) << r.output;
   EXPECT_FALSE(std::filesystem::exists(sim + "/paired.csv"));

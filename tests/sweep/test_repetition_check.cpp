@@ -2,8 +2,6 @@
 /// before anything runs, and only those.
 #include <gtest/gtest.h>
 
-#include <filesystem>
-
 #include "sweep/repetition_check.hpp"
 #include "sweep/sweep_table.hpp"
 
@@ -65,19 +63,6 @@ TEST(RepetitionCheck, CountsTheFixedParametersOfAnEntry) {
   EXPECT_NE(w[0].find("2 of 4 configurations"), std::string::npos) << w[0];
   EXPECT_NE(w[0].find("planners astar, dijkstra; robots sensor.miss_probability=0."), std::string::npos)
       << w[0];
-}
-
-TEST(RepetitionCheck, NoShippedSweepRepeatsIdenticalRuns) {
-  const std::filesystem::path before = std::filesystem::current_path();
-  std::filesystem::current_path(FSWEEP_SOURCE_DIR);
-  for (const char* folder : {"sweeps", "sweeps/examples", "sweeps/paper"}) {
-    for (const auto& entry : std::filesystem::directory_iterator(folder)) {
-      if (entry.path().extension() != ".json") continue;
-      EXPECT_TRUE(identical_repetition_warnings(SweepPlan::from_file(entry.path().string())).empty())
-          << entry.path();
-    }
-  }
-  std::filesystem::current_path(before);
 }
 
 }  // namespace test_repetition_check

@@ -646,7 +646,8 @@ TEST(SweepRunner, AFreeMapThatClipsTheReachableDiscOrItsSensorBandHasNoOptimumAn
   const std::string plain = temp_dir("no_free");
   ASSERT_EQ(run(small_sweep(), plain, 2).ran, 48U);
   EXPECT_EQ(read_file(plain + "/runs.csv").find("optimum_check"), std::string::npos);
-  for (const auto& w : json::parse(read_file(plain + "/manifest.json"))["warnings"])
+  const json plain_manifest = json::parse(read_file(plain + "/manifest.json"));
+  for (const auto& w : plain_manifest["warnings"])
     EXPECT_EQ(w.get<std::string>().find("clips the free-space optimum"), std::string::npos) << w;
   fs::remove_all(plain);
 }

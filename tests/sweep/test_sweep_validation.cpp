@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/config_error.hpp"
+#include "sweep/repetition_check.hpp"
 #include "sweep/sweep_json_reader.hpp"
 #include "sweep/sweep_plan.hpp"
 #include "sweep/sweep_table.hpp"
@@ -302,10 +303,11 @@ TEST(SweepValidation, TheBaselineIsAStrategyEntrysLabel) {
   EXPECT_NE(problems_of(sweep).find("/baseline: value 3 not allowed"), std::string::npos);
 }
 
-TEST(SweepValidation, NoShippedSweepClipsTheFreeSpaceOptimum) {
+TEST(SweepValidation, NoShippedSweepClipsTheFreeSpaceOptimumOrRepeatsIdenticalRuns) {
   // Every free map of the shipped sweeps holds the disc its robots can reach, the sensor band and
-  // one cell (sweep_table.hpp's star_optimum()): no sweep prints the clipped-map warning. The
-  // paper sweeps name their maps relative to the repository, so they load from there.
+  // one cell (sweep_table.hpp's star_optimum()): no sweep prints the clipped-map warning; and no
+  // shipped sweep has repetitions with nothing random in them (repetition_check.hpp). The paper
+  // sweeps name their maps relative to the repository, so they load from there.
   const std::filesystem::path before = std::filesystem::current_path();
   std::filesystem::current_path(FSWEEP_SOURCE_DIR);
   int n = 0;
@@ -314,6 +316,7 @@ TEST(SweepValidation, NoShippedSweepClipsTheFreeSpaceOptimum) {
       if (entry.path().extension() != ".json") continue;
       const SweepPlan plan = SweepPlan::from_file(entry.path().string());
       EXPECT_TRUE(clipped_free_space_warnings(plan).empty()) << entry.path();
+      EXPECT_TRUE(identical_repetition_warnings(plan).empty()) << entry.path();
       ++n;
     }
   }
