@@ -1,8 +1,7 @@
-/// identical_repetition_warnings(): configurations whose repetitions cannot differ are named
-/// before anything runs, and only those.
+/// identical_repetition_warnings() (sweep_table.hpp): configurations whose repetitions cannot differ are
+/// named before anything runs, and only those.
 #include <gtest/gtest.h>
 
-#include "sweep/repetition_check.hpp"
 #include "sweep/sweep_table.hpp"
 
 namespace fsweep {

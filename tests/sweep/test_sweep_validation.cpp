@@ -8,7 +8,6 @@
 #include <string>
 
 #include "core/config_error.hpp"
-#include "sweep/repetition_check.hpp"
 #include "sweep/sweep_json_reader.hpp"
 #include "sweep/sweep_plan.hpp"
 #include "sweep/sweep_table.hpp"
@@ -306,7 +305,7 @@ TEST(SweepValidation, TheBaselineIsAStrategyEntrysLabel) {
 TEST(SweepValidation, NoShippedSweepClipsTheFreeSpaceOptimumOrRepeatsIdenticalRuns) {
   // Every free map of the shipped sweeps holds the disc its robots can reach, the sensor band and
   // one cell (sweep_table.hpp's star_optimum()): no sweep prints the clipped-map warning; and no
-  // shipped sweep has repetitions with nothing random in them (repetition_check.hpp). The paper
+  // shipped sweep has repetitions with nothing random in them (sweep_table.hpp). The paper
   // sweeps name their maps relative to the repository, so they load from there.
   const std::filesystem::path before = std::filesystem::current_path();
   std::filesystem::current_path(FSWEEP_SOURCE_DIR);
