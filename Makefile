@@ -5,11 +5,13 @@
 #                    single-node Slurm integration test, and a sanitizer pass that also fuzzes
 #                    every input parser for a few seconds)
 #   make fuzz      - fuzz every input parser longer (FUZZ_SECONDS each, default 300; fuzz/README.md)
-# and the nightly regression job (README, "Nightly regression checks"):
+#   make docs-long - run the command blocks of the docs marked long too (docs/dev/docs-tests.md)
+#   make install PREFIX=DIR - install fsweep, its scripts, bash completion and docs (docs/install.md)
+# and the nightly regression job (docs/running.md, "Nightly regression checks"):
 #   make nightly   - build, run sweeps/nightly.json and the micro-benchmarks into results/nightly/,
 #                    compare them with results/baseline/nightly/ (exit 1 on a regression)
 #   make baseline  - the same suite and benchmarks, copied over results/baseline/nightly/
-.PHONY: run test build bench fuzz nightly baseline clean
+.PHONY: run test build install bench fuzz docs-long nightly baseline clean
 
 FSWEEP := build/release/bin/fsweep
 
@@ -20,6 +22,12 @@ run:
 
 build:
 	@scripts/bootstrap release
+
+# make install PREFIX=DIR (default /usr/local): fsweep, its scripts, bash completion and docs.
+PREFIX ?= /usr/local
+install:
+	@scripts/bootstrap release fsweep
+	cmake --install build/release --prefix "$(PREFIX)"
 
 test:
 	@scripts/bootstrap release
@@ -32,6 +40,9 @@ FUZZ_SECONDS ?= 300
 fuzz:
 	@scripts/bootstrap asan
 	scripts/fuzz $(FUZZ_SECONDS)
+
+docs-long: build
+	cd build/release && ctest --output-on-failure -L docs-long
 
 bench: build
 	build/release/bin/fsweep_bench

@@ -10,6 +10,7 @@
 #include "cli/commands.hpp"
 #include "cli/option_checks.hpp"
 #include "core/config_error.hpp"
+#include "sweep/manifest.hpp"
 
 namespace {
 
@@ -33,6 +34,9 @@ void keep_freed_memory() {
 int main(int argc, char** argv) try {
   keep_freed_memory();
   CLI::App app{"frontier-sweep: experiments on 2D frontier exploration strategies and planners"};
+  std::string version = fsweep::version_text();
+  version.pop_back();  // CLI11 ends the text with its own newline
+  app.set_version_flag("--version", version);
   app.require_subcommand(1);
   std::map<std::string, fsweep::cli::Command> commands;
   commands["sim"] = fsweep::cli::add_sim_command(app);
@@ -50,6 +54,8 @@ int main(int argc, char** argv) try {
   commands["report"] = fsweep::cli::add_report_command(app);
   commands["describe"] = fsweep::cli::add_describe_command(app);
   commands["export-sqlite"] = fsweep::cli::add_export_sqlite_command(app);
+  commands["version"] = fsweep::cli::add_version_command(app);
+  commands["completion"] = fsweep::cli::add_completion_command(app);
   fsweep::cli::check_number_options(app);
   try {
     app.parse(argc, argv);

@@ -72,8 +72,20 @@ std::string python_with_matplotlib(std::vector<std::string>& tried) {
   return {};
 }
 
+std::string tool_script(const std::string& script) {
+  // An installed fsweep (cmake --install: <prefix>/bin/fsweep) finds its scripts in
+  // <prefix>/share/fsweep/tools; a build in its source tree's tools/.
+  std::error_code ec;
+  const auto exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (!ec) {
+    const auto installed = exe.parent_path().parent_path() / "share" / "fsweep" / "tools" / script;
+    if (std::filesystem::exists(installed, ec)) return installed.string();
+  }
+  return std::string(FSWEEP_SOURCE_DIR) + "/tools/" + script;
+}
+
 int run_tool_script(const std::string& script, const std::vector<std::string>& args, ChildOutput output) {
-  const std::string path = std::string(FSWEEP_SOURCE_DIR) + "/tools/" + script;
+  const std::string path = tool_script(script);
   if (!std::filesystem::exists(path)) {
     std::cerr << "fsweep: error: " << path << ": script not found\n";
     return 2;

@@ -22,7 +22,11 @@ enum class ChildOutput {
 /// lists each interpreter tried, in order.
 [[nodiscard]] std::string python_with_matplotlib(std::vector<std::string>& tried);
 
-/// Runs tools/`script` with `args` under python_with_matplotlib(). Returns 0, else the exit code
+/// The path of tools/`script`: <prefix>/share/fsweep/tools/`script` when this fsweep is installed
+/// (<prefix>/bin/fsweep, cmake --install) and the script is there, else the source tree's.
+[[nodiscard]] std::string tool_script(const std::string& script);
+
+/// Runs tool_script(`script`) with `args` under python_with_matplotlib(). Returns 0, else the exit code
 /// for the CLI after saying why on stderr (naming the interpreter): 2 when no Python with
 /// matplotlib or the script is missing, 1 when the script fails.
 [[nodiscard]] int run_tool_script(const std::string& script, const std::vector<std::string>& args,

@@ -1,8 +1,8 @@
 #pragma once
 /// @file grid_planner.hpp
 /// `dijkstra` and `astar`: optimal 8-connected planners over known-free cells with octile
-/// costs (docs/architecture.md, "Plugins and their parameters"). Moves follow src/search/octile_grid.hpp (no
-/// corner cutting unless PlanRequest::allow_corner_cutting), so lengths match MovingAI's optimal lengths.
+/// costs (docs/dev/architecture.md, "Plugins and their parameters"). Moves follow src/search/octile_grid.hpp
+/// (no corner cutting unless PlanRequest::allow_corner_cutting), so lengths match MovingAI's optimal lengths.
 
 #include <limits>
 #include <memory>

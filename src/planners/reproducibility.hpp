@@ -13,8 +13,8 @@ namespace fsweep {
 inline namespace planners {
 
 /// True if runs with planner `planner` and parameters `params` give the same quality
-/// metrics for the same run seed on the same build (README, planner table, "determinism"),
-/// by the planner's declared Determinism (planner_capabilities() in registry.hpp):
+/// metrics for the same run seed on the same build (docs/planners.md, the planner table's determinism
+/// column), by the planner's declared Determinism (planner_capabilities() in registry.hpp):
 /// - Always (the grid and lattice planners, `shortest_fewest_turns`): true;
 /// - WithMaxIterations (the single-threaded OMPL planners): only with `max_iterations` > 0 (and
 ///   a time limit it reaches first), else they stop at the time limit: the anytime planners on

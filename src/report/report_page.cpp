@@ -121,6 +121,7 @@ void what_ran(std::ostringstream& out, const ResultDir& r) {
   } else if (field(m, "/shard/count") != "1" && !field(m, "/shard/count").empty()) {
     add("shard", field(m, "/shard/index") + " of " + field(m, "/shard/count"));
   }
+  add("fsweep version", field(m, "/fsweep_version"));
   add("version (git revision)", field(m, "/git_revision"));
   add("compiler", field(m, "/compiler"));
   std::string libraries;
@@ -360,8 +361,8 @@ std::string report_html(const ReportPage& page) {
   files_section(out, r);
 
   out << "<h2 id='reproduce'>Reproduce</h2>\n<p>From the source tree, with <code>fsweep</code> built at the "
-         "revision "
-         "above: rerun the sweep into a new directory, check it against this one (runs of deterministic "
+         "revision above and on your PATH (build/release/bin, or installed): rerun the sweep into a new "
+         "directory, check it against this one (runs of deterministic "
          "planners "
          "equal cell for cell), and make this page again. If the sweep file is no longer there, save the "
          "sweep "

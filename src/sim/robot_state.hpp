@@ -13,7 +13,7 @@
 namespace fsweep {
 inline namespace sim {
 
-/// The cost of one cell step (docs/architecture.md, "Robot, motion and energy").
+/// The cost of one cell step (docs/dev/architecture.md, "Robot, motion and energy").
 struct StepCost {
   /// Heading of the step (0..7) and the 45-degree turns from the previous heading (0..4).
   int heading = 0;

@@ -26,7 +26,7 @@ enum class EndReason {
 
 [[nodiscard]] std::string_view to_string(EndReason r);
 
-/// Per-run metrics (docs/architecture.md, "The simulation loop and metrics"). Areas in m^2, distances in
+/// Per-run metrics (docs/dev/architecture.md, "The simulation loop and metrics"). Areas in m^2, distances in
 /// metres, energy in the energy model's unit. Fields added later are declared last, so that CSV columns (in
 /// declaration order, report/runs_schema.hpp) are only ever appended.
 struct RunMetrics {

@@ -19,7 +19,8 @@
 namespace fsweep {
 inline namespace sim {
 
-/// The robot: sensor, motion rules, energy and battery (docs/architecture.md, "Robot, motion and energy").
+/// The robot: sensor, motion rules, energy and battery (docs/dev/architecture.md, "Robot, motion and
+/// energy").
 struct RobotParams {
   SensorParams sensor;
   EnergyModel energy;
@@ -44,7 +45,7 @@ struct RobotParams {
 /// model's keys only when they are not defaults); run keys and runs.csv record this.
 void to_json(nlohmann::json& j, const RobotParams& r);
 
-/// Loop settings (docs/architecture.md, "The simulation loop and metrics").
+/// Loop settings (docs/dev/architecture.md, "The simulation loop and metrics").
 struct SimParams {
   /// Frontier clusters are split into pieces of at most this length (metres); <= 0: the
   /// sensor range (as Rappaport 2016 section 3.3).

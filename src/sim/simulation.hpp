@@ -1,7 +1,8 @@
 #pragma once
 /// @file simulation.hpp
-/// The exploration loop (docs/architecture.md, "The simulation loop and metrics"): sense, update frontiers,
-/// ask the strategy, plan, move cell by cell sensing after every step, repeat until an end reason applies.
+/// The exploration loop (docs/dev/architecture.md, "The simulation loop and metrics"): sense, update
+/// frontiers, ask the strategy, plan, move cell by cell sensing after every step, repeat until an end reason
+/// applies.
 
 #include <cstdint>
 #include <memory>
@@ -25,15 +26,15 @@ namespace fsweep {
 inline namespace sim {
 
 /// The state of one run, as a copyable value, so a run can be forked at a decision
-/// (docs/architecture.md, "Sweeps, keys, shards and the weight search"). It is made of value parts that refer
-/// to nothing outside themselves between calls: RobotState, Belief, MetricsRecorder, HeuristicsPolicy, the
-/// sensor (whose ray tables are shared), the strategy and the planner (copied by clone()), and the distance
-/// oracle's search arrays (scratch: a copy starts empty, as a cloned planner's). What never changes during a
-/// run (the spec, the true map, the reachable and observable cells: RunSetup) is shared between a run and its
-/// forks, and so is the dock's distance field until one of them updates it (DockField, copy-on-write). Copies
-/// are therefore `= default` and independent of each other; a fork copies about 3 bytes per map cell (the
-/// known map, the frontier flags, the dropped goals) plus the trajectory and the progress curve. No globals;
-/// every random stream comes from the run seed.
+/// (docs/dev/architecture.md, "Sweeps, keys, shards and the weight search"). It is made of value parts that
+/// refer to nothing outside themselves between calls: RobotState, Belief, MetricsRecorder, HeuristicsPolicy,
+/// the sensor (whose ray tables are shared), the strategy and the planner (copied by clone()), and the
+/// distance oracle's search arrays (scratch: a copy starts empty, as a cloned planner's). What never changes
+/// during a run (the spec, the true map, the reachable and observable cells: RunSetup) is shared between a
+/// run and its forks, and so is the dock's distance field until one of them updates it (DockField,
+/// copy-on-write). Copies are therefore `= default` and independent of each other; a fork copies about 3
+/// bytes per map cell (the known map, the frontier flags, the dropped goals) plus the trajectory and the
+/// progress curve. No globals; every random stream comes from the run seed.
 ///
 /// Rules of the loop:
 /// - The robot senses at the start and after every cell step.

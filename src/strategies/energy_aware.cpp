@@ -179,7 +179,7 @@ EnergyAware::Terms EnergyAware::terms(const Observation& obs, bool dock_weighted
   t.above_half = obs.battery.unlimited() || obs.battery.level > 0.5 * obs.battery.capacity;
   const double res = obs.known.resolution_m();
   if (params_.distance == "path") {
-    // The leg to the dock must be shorter than d_l, so d_l bounds its search (docs/architecture.md,
+    // The leg to the dock must be shorter than d_l, so d_l bounds its search (docs/dev/architecture.md,
     // "Plugins and their parameters"). With an unlimited battery d_gb matters only through its
     // weights: skip that search if both are zero (the features then read 0, which those weights
     // ignore).

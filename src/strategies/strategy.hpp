@@ -212,7 +212,7 @@ class Strategy {
 };
 
 /// A strategy whose choice is argmin(weights . features) over candidates. The engine may read
-/// candidates() and weights() directly to evaluate many weight vectors at once (docs/architecture.md,
+/// candidates() and weights() directly to evaluate many weight vectors at once (docs/dev/architecture.md,
 /// "Sweeps, keys, shards and the weight search").
 class LinearScoredStrategy : public Strategy {
  public:

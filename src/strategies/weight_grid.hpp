@@ -1,6 +1,6 @@
 #pragma once
 /// @file weight_grid.hpp
-/// Sets of weight vectors for the exact weight search (docs/architecture.md, "The exact weight
+/// Sets of weight vectors for the exact weight search (docs/dev/architecture.md, "The exact weight
 /// search"): a WeightGrid is the product of one sorted list of values per weight (e.g. the
 /// integers 0..250 four times), a WeightRegion any subset of its points, and
 /// WeightGrid::split() divides a region by which candidate argmin_linear() chooses at each of

@@ -1,6 +1,6 @@
 #pragma once
 /// @file exact_search.hpp
-/// The exact weight search (docs/architecture.md, "The exact weight search"): every distinct
+/// The exact weight search (docs/dev/architecture.md, "The exact weight search"): every distinct
 /// behaviour of a linear-scored strategy over a whole grid of weight vectors, by decision
 /// sharing. One simulation starts with the region of every weight vector; at each decision
 /// whose choice depends on the weights (Simulation::choice()), the region is split by which

@@ -9,12 +9,19 @@
 #include "core/host_info.hpp"
 #include "core/json_text.hpp"
 #include "core/random.hpp"
+#include "planners/ompl_planner.hpp"
 #include "sweep/csv_journal.hpp"
 #include "sweep/sweep_plan.hpp"
 #include "sweep/sweep_table.hpp"
 
 #ifndef FSWEEP_GIT_REVISION
 #define FSWEEP_GIT_REVISION "unknown"
+#endif
+#ifndef FSWEEP_GIT_DESCRIBE
+#define FSWEEP_GIT_DESCRIBE ""
+#endif
+#ifndef FSWEEP_VERSION
+#define FSWEEP_VERSION "unknown"
 #endif
 
 namespace fsweep {
@@ -36,10 +43,23 @@ nlohmann::json libraries() {
                          std::to_string(TBB_VERSION_PATCH)},
           {"nlohmann_json", std::to_string(NLOHMANN_JSON_VERSION_MAJOR) + "." +
                                 std::to_string(NLOHMANN_JSON_VERSION_MINOR) + "." +
-                                std::to_string(NLOHMANN_JSON_VERSION_PATCH)}};
+                                std::to_string(NLOHMANN_JSON_VERSION_PATCH)},
+          {"OMPL", ompl_version()}};
 }
 
 }  // namespace
+
+std::string fsweep_version() {
+  const std::string describe = FSWEEP_GIT_DESCRIBE;
+  return describe.empty() ? std::string(FSWEEP_VERSION) : std::string(FSWEEP_VERSION) + " (" + describe + ")";
+}
+
+std::string version_text() {
+  std::string text = "fsweep " + fsweep_version() + "\n" + compiler() + "\n";
+  const nlohmann::json libs = libraries();
+  for (const auto& [name, version] : libs.items()) text += name + " " + version.get<std::string>() + "\n";
+  return text;
+}
 
 std::string sweep_hash(const nlohmann::json& sweep) { return hex64(fnv1a(sweep.dump())); }
 
@@ -78,6 +98,7 @@ nlohmann::json manifest_json(const SweepPlan& plan, const ManifestInfo& info) {
                {"failed", info.runs.failed}};
   j["shard"] = {{"index", info.shard_index}, {"count", info.shard_count}};
   j["git_revision"] = FSWEEP_GIT_REVISION;
+  j["fsweep_version"] = fsweep_version();
   j["compiler"] = compiler();
   j["libraries"] = libraries();
   j["host"] = host_name();

@@ -40,6 +40,14 @@ struct ManifestInfo {
 /// reformatting the file does not change it.
 [[nodiscard]] std::string sweep_hash(const nlohmann::json& sweep);
 
+/// This build's version: project()'s semantic version, and `git describe` of the checkout it was
+/// configured in when it was one, e.g. "0.1.0 (v0.1.0-3-g1a2b3c4-dirty)".
+[[nodiscard]] std::string fsweep_version();
+
+/// What `fsweep --version` prints: "fsweep <fsweep_version()>", the compiler, and the versions of
+/// oneTBB, nlohmann_json and OMPL, one a line.
+[[nodiscard]] std::string version_text();
+
 /// The current time, UTC, ISO 8601 with seconds: "2024-05-01T12:34:56Z".
 [[nodiscard]] std::string utc_now_iso8601();
 
@@ -47,7 +55,8 @@ struct ManifestInfo {
 /// repetitions, warnings (sweep_warnings(): what the CLI printed), maps [{label, source,
 /// content_hash}] (each map as loaded; run keys cover the hash), skipped_maps [{where, file,
 /// reason}] (dataset plans left out by "on_bad_map": "skip"), runs {total, done, skipped,
-/// ran, failed}, shard {index, count}, git_revision, compiler, libraries {oneTBB, nlohmann_json}, host,
+/// ran, failed}, shard {index, count}, git_revision, fsweep_version, compiler, libraries {oneTBB,
+/// nlohmann_json, OMPL}, host,
 /// cpu_model, threads, start_utc, end_utc (null while running), wall_s, runs_per_s, status.
 [[nodiscard]] nlohmann::json manifest_json(const SweepPlan& plan, const ManifestInfo& info);
 

@@ -1,6 +1,6 @@
 #pragma once
 /// @file progress_meter.hpp
-/// Progress of a long job on stderr (docs/architecture.md, "Command line"): on a terminal a one-line bar
+/// Progress of a long job on stderr (docs/dev/architecture.md, "Command line"): on a terminal a one-line bar
 /// `[#####.....] 123/400 runs, 45.6 runs/s, ETA 6 s` redrawn at most 10 times a second;
 /// otherwise (a log file, a Slurm job) one line every 5 seconds.
 

@@ -1,7 +1,7 @@
 #pragma once
 /// @file slurm_script.hpp
-/// The scripts of `fsweep slurm` (docs/architecture.md, "Sweeps, keys, shards and the weight search", issue
-/// 8): an sbatch job array whose tasks run the shards of a sweep (`fsweep run SWEEP --shard i/N`,
+/// The scripts of `fsweep slurm` (docs/dev/architecture.md, "Sweeps, keys, shards and the weight search",
+/// issue 8): an sbatch job array whose tasks run the shards of a sweep (`fsweep run SWEEP --shard i/N`,
 /// sweep_runner.hpp) and a merge job
 /// (`fsweep merge OUT`, merge.hpp) submitted with an `afterany` dependency on the array. Pure
 /// functions of their options, so they are tested without Slurm; the command line

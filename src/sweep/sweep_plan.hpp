@@ -1,7 +1,7 @@
 #pragma once
 /// @file sweep_plan.hpp
-/// A sweep file, validated and expanded lazily into runs (docs/architecture.md, "Sweeps, keys, shards and the
-/// weight search").
+/// A sweep file, validated and expanded lazily into runs (docs/dev/architecture.md, "Sweeps, keys, shards and
+/// the weight search").
 ///
 /// # Format (schema_version 1)
 ///
@@ -135,8 +135,8 @@ struct SweepMap {
   /// content_hash() of `map` as 16 hex digits: run keys cover it, so an edited map file changes
   /// its runs' keys; manifest.json records it per map ("maps") and a resume refuses a change.
   std::string content_hash;
-  /// True for the `free` generator (the star-pattern optimum of docs/architecture.md, "Sweeps, keys, shards
-  /// and the weight search" applies).
+  /// True for the `free` generator (the star-pattern optimum of docs/dev/architecture.md, "Sweeps, keys,
+  /// shards and the weight search" applies).
   bool free_space = false;
   /// `start: "random"`: the cells each run draws its start from (draw_region_cell() with the run
   /// seed), per motion rule: [0] without corner cutting, [1] with (largest_free_region(),

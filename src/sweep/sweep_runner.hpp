@@ -78,7 +78,7 @@
 /// stay repairable). The previous handlers are restored on return. Not reentrant: one run_sweep per process
 /// at a time.
 ///
-/// Sharding (docs/architecture.md, "Sweeps, keys, shards and the weight search"): shard i of n runs the
+/// Sharding (docs/dev/architecture.md, "Sweeps, keys, shards and the weight search"): shard i of n runs the
 /// indices with index % n == i and writes to
 /// `<out>/shard-i-of-n/` with the whole sweep's header, so shards concatenate row-wise; each
 /// shard resumes on its own; aggregation is left to the merge.
@@ -115,8 +115,8 @@ struct RunnerOptions {
   /// Progress on stderr: a bar with runs done, runs/s and ETA on a terminal, a line every few
   /// seconds otherwise; false = silent.
   bool progress = true;
-  /// Shard i of n (docs/architecture.md, "Sweeps, keys, shards and the weight search"): only runs with index
-  /// % n == i. n = 1: all runs. n = 0 or i >= n: ConfigError.
+  /// Shard i of n (docs/dev/architecture.md, "Sweeps, keys, shards and the weight search"): only runs with
+  /// index % n == i. n = 1: all runs. n = 0 or i >= n: ConfigError.
   std::uint64_t shard_index = 0;
   std::uint64_t shard_count = 1;
 };

@@ -1,7 +1,7 @@
 #pragma once
 /// @file weight_search_runner.hpp
 /// Runs a sweep's exact weight searches (strategy entries with "search", sweep_plan.hpp) and
-/// writes their files (docs/architecture.md, "The exact weight search"; the README documents
+/// writes their files (docs/dev/architecture.md, "The exact weight search"; docs/weight-search.md documents
 /// the columns). One search per SearchUnit (entry x map class x planner x robot variant), its
 /// instances (the class's maps x repetitions) searched jointly by exact_search(). A behaviour's
 /// objective is the mean of the objective over its instances (the class mean); every statistic

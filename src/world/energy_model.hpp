@@ -1,6 +1,7 @@
 #pragma once
 /// @file energy_model.hpp
-/// What motion costs: per distance, per stop, per turn (docs/architecture.md, "Robot, motion and energy").
+/// What motion costs: per distance, per stop, per turn (docs/dev/architecture.md, "Robot, motion and
+/// energy").
 ///
 /// The model lives in `world`, below planners and sim: planners report path energy under the
 /// run's model and the lattice planner searches on it. Battery stays in sim.

@@ -2,9 +2,9 @@
 /// @file grid.hpp
 /// Flat row-major grids and the 8-connected cell geometry shared by every layer.
 ///
-/// Conventions (docs/architecture.md, "World conventions"): (0,0) is the top-left cell, x is the column and
-/// grows to the right, y is the row and grows downward, `index = y * width + x`. Distances inside this file
-/// are in cells unless a name says metres.
+/// Conventions (docs/dev/architecture.md, "World conventions"): (0,0) is the top-left cell, x is the column
+/// and grows to the right, y is the row and grows downward, `index = y * width + x`. Distances inside this
+/// file are in cells unless a name says metres.
 
 #include <array>
 #include <cassert>

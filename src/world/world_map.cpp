@@ -31,7 +31,7 @@ namespace {
 /// Breadth-first search over free cells from `from` (free, not yet marked), marking every cell
 /// it reaches with 1 in `reached` and appending its index to `queue`. A diagonal step from c to
 /// c + (dx, dy) needs both orthogonal cells c + (dx, 0) and c + (0, dy) free unless corner
-/// cutting is allowed (the MovingAI convention, docs/architecture.md, "Robot, motion and
+/// cutting is allowed (the MovingAI convention, docs/dev/architecture.md, "Robot, motion and
 /// energy"); the rule is symmetric, so the cells reached form one connected region.
 void flood_free(const WorldMap& map, Cell from, bool allow_corner_cutting, Grid<std::uint8_t>& reached,
                 std::vector<int>& queue) {

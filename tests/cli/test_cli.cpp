@@ -204,13 +204,35 @@ TEST(Cli, PlanScenarioCountsQueriesWithInvalidEndpointsOnStderr) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(Cli, VersionNamesTheVersionTheCompilerAndTheLibraries) {
+  for (const char* args : {"--version", "version"}) {
+    const Outcome r = fsweep(args);
+    EXPECT_EQ(r.code, 0) << r.output;
+    EXPECT_TRUE(std::regex_search(r.output, std::regex(R"(^fsweep [0-9]+\.[0-9]+\.[0-9]+)"))) << r.output;
+    for (const char* part : {"\nOMPL 1.", "\noneTBB 20", "\nnlohmann_json 3."}) {
+      EXPECT_NE(r.output.find(part), std::string::npos) << args << ": " << part << "\n" << r.output;
+    }
+    EXPECT_TRUE(std::regex_search(r.output, std::regex("\n(gcc|clang) "))) << r.output;
+  }
+}
+
+TEST(Cli, BashCompletionCompletesCommandsAndTheirOptions) {
+  const Outcome r = fsweep::testing::run_command(
+      "bash -c 'source <(" FSWEEP_BINARY_DIR
+      "/bin/fsweep completion bash); "
+      "COMP_WORDS=(fsweep pai); COMP_CWORD=1; _fsweep; echo \"${COMPREPLY[*]}\"; "
+      "COMP_WORDS=(fsweep paired --base); COMP_CWORD=2; _fsweep; echo \"${COMPREPLY[*]}\"'");
+  EXPECT_EQ(r.code, 0) << r.output;
+  EXPECT_EQ(r.output, "paired\n--baseline\n");
+}
+
 TEST(Cli, UnknownCommandIsNamedWithTheCommandsAllowed) {
   const Outcome r = fsweep("frobnicate");
   EXPECT_EQ(r.code, 2) << r.output;
   EXPECT_NE(r.output.find(
                 "fsweep: error: unknown command 'frobnicate'; allowed: sim, plan, plan-compare, "
                 "plan-bench, run, expand, aggregate, merge, compare, paired, slurm, plot, report, describe, "
-                "export-sqlite"),
+                "export-sqlite, version, completion"),
             std::string::npos)
       << r.output;
   const Outcome none = fsweep("");

@@ -1,4 +1,4 @@
-/// Every registered planner through the same checks (docs/architecture.md, "Plugins and their
+/// Every registered planner through the same checks (docs/dev/architecture.md, "Plugins and their
 /// parameters"): valid 8-connected,
 /// collision-free paths over known-free cells that start and end right, the documented
 /// statuses for invalid or unreachable endpoints, the stop condition (a tiny expansion budget
