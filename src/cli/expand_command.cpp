@@ -20,6 +20,7 @@ namespace {
 
 struct ExpandOptions {
   std::string sweep;
+  std::vector<std::string> overrides;
   std::uint64_t limit = 10;
   std::uint64_t from = 0;
 };
@@ -151,13 +152,18 @@ void print_runs(const SweepPlan& plan, std::uint64_t from, std::uint64_t limit) 
 }
 
 int run_expand(const ExpandOptions& o) {
-  const SweepPlan plan = SweepPlan::from_file(o.sweep);
+  const SweepPlan plan = SweepPlan::from_file(o.sweep, o.overrides);
   print_sweep_warnings(plan, o.sweep);
   if (o.from > 0 && o.from >= plan.run_count()) {
     throw ConfigError("--from", "index " + std::to_string(o.from) + " out of range; allowed: 0 .. " +
                                     std::to_string(plan.run_count() - 1));
   }
   std::cout << "sweep: " << plan.name() << " (" << o.sweep << ")\n";
+  if (!plan.overrides().empty()) {
+    std::cout << "overrides:";
+    for (const std::string& text : plan.overrides()) std::cout << ' ' << text;
+    std::cout << '\n';
+  }
   if (!plan.description().empty()) std::cout << "description: " << plan.description() << '\n';
   std::cout << "runs: " << thousands(plan.run_count()) << '\n';
   std::cout << "configurations: " << thousands(plan.configuration_count()) << " (x "
@@ -181,6 +187,9 @@ Command add_expand_command(CLI::App& app) {
                                      "Validate a sweep and show its run count, axes and first runs "
                                      "(a dry run: nothing is run or written)");
   sub->add_option("sweep", o->sweep, "Sweep JSON file")->required();
+  sub->add_option("overrides", o->overrides,
+                  "PATH=VALUE overrides of the sweep, applied before validation (robot.battery=800, "
+                  "'strategies[0].params.w1=[0,10]'; VALUE is JSON when it parses, else a string)");
   sub->add_option("--limit", o->limit, "Runs to list (0: none)")->capture_default_str();
   sub->add_option("--from", o->from, "Index of the first run listed")->capture_default_str();
   return [o] { return run_expand(*o); };

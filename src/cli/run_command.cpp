@@ -9,6 +9,7 @@
 #include <memory>
 #include <string_view>
 #include <tuple>
+#include <vector>
 
 #include "cli/commands.hpp"
 #include "cli/output_dir.hpp"
@@ -23,6 +24,7 @@ namespace {
 
 struct RunCommandOptions {
   std::string sweep_file;
+  std::vector<std::string> overrides;
   int threads = 0;
   bool fresh = false;
   std::string out;
@@ -55,9 +57,9 @@ std::pair<std::uint64_t, std::uint64_t> parse_shard(const std::string& s) {
 }
 
 int run_command(const RunCommandOptions& o) {
-  const SweepPlan plan = SweepPlan::from_file(o.sweep_file);
-  // The runner refuses a directory of another sweep (manifest.json's sweep_hash); here one of
-  // another command (fsweep sim's progress.csv is not a sweep's).
+  const SweepPlan plan = SweepPlan::from_file(o.sweep_file, o.overrides);
+  // The runner refuses a directory of another sweep (manifest.json's sweep_hash) unless this one
+  // only adds runs to it; here one of another command (fsweep sim's progress.csv is not a sweep's).
   const std::string out = o.out.empty() ? plan.output_dir() : o.out;
   check_output_dir(out.empty() ? "." : out, OutputKind::Sweep,
                    o.out.empty() ? "--out (or output.dir)" : "--out");
@@ -82,6 +84,10 @@ int run_command(const RunCommandOptions& o) {
   std::cout << std::endl;  // before the (possibly long) run
 
   const RunnerReport r = run_sweep(plan, options);
+  if (!r.extended_from.empty()) {
+    std::cout << "extended the results of an earlier version of the sweep file (sweep_hash "
+              << r.extended_from << "): its " << r.kept << " finished runs kept, in this sweep's run order\n";
+  }
   std::cout << (r.interrupted ? "interrupted: " : "done: ") << r.ran << " ran, " << r.skipped
             << " already done, " << r.failed << " failed (end_reason error), " << r.total - r.ran - r.skipped
             << " left; " << one_decimal(r.wall_s) << " s, " << one_decimal(r.runs_per_s) << " runs/s on "
@@ -125,6 +131,9 @@ Command add_run_command(CLI::App& app) {
                                      "Run a sweep file in parallel, resumably (runs.csv, progress.csv, "
                                      "summary.csv, best.csv, manifest.json)");
   sub->add_option("sweep", o->sweep_file, "Sweep file (JSON)")->required();
+  sub->add_option("overrides", o->overrides,
+                  "PATH=VALUE overrides of the sweep, applied before validation (robot.battery=800, "
+                  "'strategies[0].params.w1=[0,10]'; VALUE is JSON when it parses, else a string)");
   sub->add_option("--threads", o->threads, "Worker threads (0: all cores; at most 4 x the hardware threads)")
       ->capture_default_str();
   sub->add_flag("--fresh", o->fresh, "Delete previous outputs and start over");

@@ -13,6 +13,7 @@
 #include "report/runs_schema.hpp"
 #include "sim/simulation.hpp"
 #include "sim/trajectory_image.hpp"
+#include "sweep/sweep_table.hpp"
 #include "world/map_spec.hpp"
 
 namespace fsweep::cli {
@@ -54,11 +55,26 @@ int run_sim(const SimOptions& o) {
 
   check_trajectory_image(*spec.map, o.png_scale, "--png-scale");  // before the run and any file
   create_output_dir(o.out, OutputKind::Sim, "--out");             // before the run: a bad --out costs nothing
+  // The free-space optimum d* (the star pattern), as a sweep's runs.csv records it.
+  const bool free_space = map_spec_object(o.map).value("generator", std::string()) == "free";
+  const StarOptimum star = star_optimum(*spec.map, free_space, spec.robot);
+  if (star.status == StarOptimum::Status::Clipped) {
+    std::cerr << "fsweep: warning: " << clipped_free_space_warning(o.map, *spec.map, spec.robot, "", star)
+              << " (optimum_check in run.csv)\n";
+  }
   const RunResult result = simulate(spec);
 
   Columns row = config_columns(spec);
+  if (star.status != StarOptimum::Status::NotApplicable)
+    row.emplace_back(kOptimumCheckColumn, star.check_text());
   const Columns metrics = metric_columns(result);
   row.insert(row.end(), metrics.begin(), metrics.end());
+  const double ratio = result.metrics.distance_m / star.optimum_m;
+  if (star.status != StarOptimum::Status::NotApplicable) {
+    const bool ok = star.status == StarOptimum::Status::Ok;
+    row.emplace_back(kSweepMetricColumns[0], ok ? format_number(star.optimum_m) : "");
+    row.emplace_back(kSweepMetricColumns[1], ok ? format_number(ratio) : "");
+  }
   write_csv(o.out + "/run.csv", {row});
   write_progress_csv(o.out + "/progress.csv", result);
   write_trajectory_png(o.out + "/trajectory.png", *spec.map, result, o.png_scale, trajectory_title(spec));
@@ -72,8 +88,13 @@ int run_sim(const SimOptions& o) {
             << " m to the final coverage), energy: " << r(m.energy) << ' ' << spec.robot.energy.unit
             << ", coverage: " << readable_number(100.0 * m.coverage, 4)
             << "%, explored: " << r(m.explored_area_m2) << " m², decisions: " << m.decisions
-            << ", recharges: " << m.recharges << "\nwrote " << o.out << "/run.csv (full precision), " << o.out
-            << "/progress.csv, " << o.out << "/trajectory.png\n";
+            << ", recharges: " << m.recharges;
+  if (star.status == StarOptimum::Status::Ok) {
+    std::cout << "\nfree-space optimum (star pattern): " << r(star.optimum_m)
+              << " m, competitive ratio: " << readable_number(ratio, 4);
+  }
+  std::cout << "\nwrote " << o.out << "/run.csv (full precision), " << o.out << "/progress.csv, " << o.out
+            << "/trajectory.png\n";
   return 0;
 }
 

@@ -35,11 +35,17 @@ namespace fs = std::filesystem;
 
 struct SlurmCommandOptions {
   std::string sweep_file;
+  std::vector<std::string> overrides;
   std::uint64_t tasks = 0;
   std::string partition;
   std::string time;
   int cpus = 1;
   std::string mem;
+  std::string account;
+  std::string qos;
+  std::string gres;
+  std::vector<std::string> sbatch_lines;
+  std::vector<std::string> setup_lines;
   std::string out;
   std::uint64_t max_array_size = 0;
   bool max_array_size_given = false;
@@ -120,12 +126,13 @@ int run_slurm(const SlurmCommandOptions& o) {
     throw ConfigError("--max-array-size", "must be >= 1, got 0");
 
   // 1. The sweep: loaded and expanded here, so that its errors show now and not on the cluster.
-  const SweepPlan plan = SweepPlan::from_file(o.sweep_file);
+  const SweepPlan plan = SweepPlan::from_file(o.sweep_file, o.overrides);
   print_sweep_warnings(plan, o.sweep_file);
   const std::uint64_t runs = plan.run_count();
 
   SlurmScriptOptions s;
   s.sweep_file = absolute_path(o.sweep_file);
+  s.overrides = o.overrides;
   s.out_dir = absolute_path(o.out.empty() ? plan.output_dir() : o.out);
   check_output_dir(s.out_dir, OutputKind::Sweep, "--out");  // the jobs run and merge the sweep there
   s.work_dir = absolute_path(fs::current_path().string());
@@ -135,6 +142,11 @@ int run_slurm(const SlurmCommandOptions& o) {
   s.partition = o.partition;
   s.time = o.time;
   s.mem = o.mem;
+  s.account = o.account;
+  s.qos = o.qos;
+  s.gres = o.gres;
+  s.sbatch_lines = o.sbatch_lines;
+  s.setup_lines = o.setup_lines;
   s.fsweep = absolute_path(o.fsweep.empty() ? fs::read_symlink("/proc/self/exe").string() : o.fsweep);
   if (::access(s.fsweep.c_str(), X_OK) != 0 || !fs::is_regular_file(s.fsweep)) {
     throw ConfigError("--fsweep", "'" + s.fsweep + "' is not an executable file");
@@ -229,6 +241,10 @@ Command add_slurm_command(CLI::App& app) {
       "shards: "
       "sbatch --array=<their task ids> <out>/slurm/array.sbatch (shards resume), then fsweep merge <out>");
   sub->add_option("sweep", o->sweep_file, "Sweep file (JSON)")->required();
+  sub->add_option("overrides", o->overrides,
+                  "PATH=VALUE overrides of the sweep, applied before validation (robot.battery=800, "
+                  "'strategies[0].params.w1=[0,10]'; VALUE is JSON when it parses, else a string)"
+                  " (the jobs run with them)");
   sub->add_option("--tasks", o->tasks, "Number of shards N (fsweep run --shard i/N for i = 0..N-1)")
       ->required();
   sub->add_option("--partition", o->partition, "Slurm partition (default: the cluster's)");
@@ -237,6 +253,19 @@ Command add_slurm_command(CLI::App& app) {
   sub->add_option("--cpus", o->cpus, "CPUs per array task; each shard runs with that many threads")
       ->capture_default_str();
   sub->add_option("--mem", o->mem, "Memory per array task, Slurm format (e.g. 4G; default: the partition's)");
+  sub->add_option("--account", o->account, "Slurm account both jobs are charged to (letters, digits, _ . -)");
+  sub->add_option("--qos", o->qos, "Slurm quality of service of both jobs (letters, digits, _ . -)");
+  sub->add_option("--gres", o->gres, "Generic resources per array task, Slurm format (e.g. gpu:1)");
+  sub->add_option("--sbatch", o->sbatch_lines,
+                  "Another #SBATCH directive of both jobs (repeatable, in order): --option or --option=value "
+                  "as for sbatch, e.g. --sbatch --constraint=a100 (a leading '#SBATCH ' is dropped); not one "
+                  "of the directives fsweep slurm writes itself")
+      ->allow_extra_args(false);  // one value per --sbatch: `--sbatch --exclusive sweep.json` keeps the sweep
+  sub->add_option(
+         "--setup", o->setup_lines,
+         "A shell line both jobs run before fsweep, in the directory fsweep slurm ran in (repeatable, "
+         "in order), e.g. --setup 'module load gcc/12'")
+      ->allow_extra_args(false);
   sub->add_option("--out", o->out, "Output directory (default: the sweep's output.dir or results/<name>)");
   sub->add_option(
       "--max-array-size", o->max_array_size,

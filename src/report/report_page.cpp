@@ -105,13 +105,28 @@ void what_ran(std::ostringstream& out, const ResultDir& r) {
   };
   add("result directory", r.dir);
   add("sweep file", field(m, "/sweep_file"));
+  if (m.contains("overrides") && m["overrides"].is_array()) {
+    std::string overrides;  // PATH=VALUE arguments of `fsweep run` (the sweep below is the overridden one)
+    for (const nlohmann::json& o : m["overrides"]) {
+      if (o.is_string()) overrides += (overrides.empty() ? "" : "  ") + o.get<std::string>();
+    }
+    add("command-line overrides", overrides);
+  }
   add("sweep hash", field(m, "/sweep_hash"));
   add("status", field(m, "/status"));
   add("objective (best.csv)", field(m, "/objective"));
   add("seed, repetitions", field(m, "/seed") + ", " + field(m, "/repetitions"));
+  const nlohmann::json no_sessions = nlohmann::json::array();
+  const nlohmann::json& sessions =
+      m.contains("sessions") && m["sessions"].is_array() ? m["sessions"] : no_sessions;
+  const std::string over_sessions =
+      sessions.size() > 1 ? " over " + std::to_string(sessions.size()) + " sessions" : std::string();
+  const std::string skipped = over_sessions.empty()
+                                  ? ", skipped as done before " + field(m, "/runs/skipped")
+                                  : " (the last found " + field(m, "/runs/skipped") + " done)";
   add("runs (manifest)", "total " + field(m, "/runs/total") + ", done " + field(m, "/runs/done") + ", ran " +
-                             field(m, "/runs/ran") + ", skipped as done before " + field(m, "/runs/skipped") +
-                             ", failed " + field(m, "/runs/failed"));
+                             field(m, "/runs/ran") + over_sessions + skipped + ", failed " +
+                             field(m, "/runs/failed"));
   std::string ends;
   for (const auto& [reason, n] : r.end_reasons)
     ends += (ends.empty() ? ": " : ", ") + reason + " " + std::to_string(n);
@@ -133,12 +148,36 @@ void what_ran(std::ostringstream& out, const ResultDir& r) {
   add("host, CPU", field(m, "/host") + ", " + field(m, "/cpu_model"));
   add("threads", field(m, "/threads"));
   add("started, ended (UTC)", field(m, "/start_utc") + ", " + field(m, "/end_utc"));
-  add("wall time (s)", readable_text(field(m, "/wall_s")));
-  add("runs per second", readable_text(field(m, "/runs_per_s")));
+  add("wall time (s)", readable_text(field(m, "/wall_s")) + over_sessions);
+  // Over the sessions that simulated runs; none (e.g. a rerun of a finished sweep by an fsweep
+  // that kept only the last session) shows no figure rather than 0.
+  if (const auto per_s = parse_number(field(m, "/runs_per_s")); per_s && *per_s > 0.0) {
+    add("runs per second",
+        readable_number(*per_s) + (over_sessions.empty() ? "" : " (over the sessions that simulated runs)"));
+  }
   out << "<h2 id='what-ran'>What ran</h2>\n<table>";
   for (const auto& row : rows)
     out << "<tr><th>" << html_escape(row[0]) << "</th><td>" << html_escape(row[1]) << "</td></tr>";
   out << "</table>\n";
+  if (sessions.size() > 1) {  // the invocations: a resumed or extended sweep's history
+    std::vector<std::vector<std::string>> session_rows;
+    for (const nlohmann::json& s : sessions) {
+      const std::string shard = field(s, "/shard/count").empty() || field(s, "/shard/count") == "1"
+                                    ? std::string()
+                                    : field(s, "/shard/index") + "/" + field(s, "/shard/count");
+      session_rows.push_back({field(s, "/start_utc"), field(s, "/end_utc"), field(s, "/status"),
+                              field(s, "/sweep_hash"), field(s, "/runs/ran"), field(s, "/runs/skipped"),
+                              readable_text(field(s, "/wall_s")),
+                              field(s, "/runs/ran") == "0" ? "" : readable_text(field(s, "/runs_per_s")),
+                              field(s, "/threads"), shard, field(s, "/host")});
+    }
+    out << "<p>Sessions (one per <code>fsweep run</code> on the directory, oldest first):</p>\n<div "
+           "class='scroll'>"
+        << html_table({"started (UTC)", "ended (UTC)", "status", "sweep hash", "ran", "already done",
+                       "wall (s)", "runs/s", "threads", "shard", "host"},
+                      session_rows)
+        << "</div>\n";
+  }
   if (m.contains("warnings") && m["warnings"].is_array()) {
     for (const auto& w : m["warnings"])
       out << "<div class='warn'>warning: " << html_escape(json_text(w)) << "</div>\n";

@@ -13,6 +13,7 @@
 #include <utility>
 
 #include "core/config_error.hpp"
+#include "core/csv_format.hpp"
 #include "core/files.hpp"
 #include "sweep/done_runs.hpp"
 
@@ -277,8 +278,7 @@ CsvRepairStats CsvJournal::repair(const RecordFilter& keep, const std::function<
   return stats;
 }
 
-void CsvJournal::rewrite_in_order(std::size_t index_field,
-                                  std::vector<std::pair<std::uint64_t, std::string>> inserts) {
+void CsvJournal::rewrite_in_order(std::size_t index_field, const Rewrite& rewrite) {
   flush();
   if (fd_ >= 0) {
     ::close(fd_);  // the rename replaces the file: append to the new one
@@ -304,40 +304,51 @@ void CsvJournal::rewrite_in_order(std::size_t index_field,
         ++offset;
         if (!parser.feed(buf[i])) continue;
         const auto& fields = parser.fields();
-        const auto index = fields.size() > index_field ? parse_run_index(fields[index_field]) : std::nullopt;
-        records.push_back({index.value_or(UINT64_MAX), {record_begin, offset}});
-        parser.next_record();
+        const Span span{record_begin, offset};
         record_begin = offset;
+        if (rewrite.place) {
+          if (const auto index = rewrite.place(fields)) records.push_back({*index, span});
+        } else {
+          const auto index =
+              fields.size() > index_field ? parse_run_index(fields[index_field]) : std::nullopt;
+          records.push_back({index.value_or(UINT64_MAX), span});
+        }
+        parser.next_record();
       }
     }
   }
   std::stable_sort(records.begin(), records.end(),
                    [](const Record& a, const Record& b) { return a.index < b.index; });
-  std::stable_sort(inserts.begin(), inserts.end(),
-                   [](const auto& a, const auto& b) { return a.first < b.first; });
 
-  // 2. Header, then the records merged with the inserts, into a temp file renamed over the file.
+  // 2. Header, then the records, into a temp file renamed over the file.
   std::ifstream in(path_, std::ios::binary);
   const std::string tmp = temp_path(path_);
   std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
   if (!in || !out) throw ConfigError(path_, "cannot rewrite (putting its rows in run order)");
-  out << header_ << '\n';
+  const std::string header = rewrite.header.empty() ? header_ : rewrite.header;
+  out << header << '\n';
   std::string bytes;
-  auto insert = inserts.begin();
   for (const Record& r : records) {
-    for (; insert != inserts.end() && insert->first < r.index; ++insert) out << insert->second;
     bytes.resize(r.span.end - r.span.begin);
     in.seekg(static_cast<std::streamoff>(r.span.begin));
     in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
     if (in.gcount() != static_cast<std::streamsize>(bytes.size())) {
       throw ConfigError(path_, "short read while putting its rows in run order");
     }
-    out << bytes;
+    if (!rewrite.fill) {
+      out << bytes;
+      continue;
+    }
+    RecordParser parser;
+    for (const char c : bytes) (void)parser.feed(c);  // the record ends with its newline
+    std::vector<std::string> fields = parser.fields();
+    rewrite.fill(r.index, fields);
+    out << csv_record(fields) << '\n';
   }
-  for (; insert != inserts.end(); ++insert) out << insert->second;
   out.close();
   if (!out) throw ConfigError(tmp, "write failed (putting the rows of " + path_ + " in run order)");
   std::filesystem::rename(tmp, path_);
+  header_ = header;
 }
 
 void CsvJournal::append(std::string_view records) { buffer_.append(records); }

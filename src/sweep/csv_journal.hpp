@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -68,12 +69,24 @@ class CsvJournal {
   /// touched: if it throws, the file is left as it was. Call before the first append().
   CsvRepairStats repair(const RecordFilter& keep, const std::function<void()>& before_changes = {});
 
+  /// How rewrite_in_order() changes the records it copies. Each part may be empty.
+  struct Rewrite {
+    /// A record's place in the new file (its fields, unquoted): its number, or nullopt to leave
+    /// it out. Empty: the decimal number in the record's field `index_field`.
+    std::function<std::optional<std::uint64_t>(const std::vector<std::string>& fields)> place;
+    /// Sets a kept record's fields as the new file has them, given its number; the record is
+    /// then written as csv_record() of them. Empty: the record is copied as it is.
+    std::function<void(std::uint64_t index, std::vector<std::string>& fields)> fill;
+    /// The new file's header line, and the journal's from then on. Empty: the same.
+    std::string header;
+  };
+
   /// Rewrites the file (temp file and rename, so a kill leaves the old or the new file) with
-  /// its records in ascending order of the decimal number in field `index_field` (stable: equal
-  /// numbers keep their order), merged with `inserts` (number, whole records ending in '\n';
-  /// after the file's records of the same number). Records whose field is not a number go
-  /// last. Call before the first append() (or after a flush(): the file is reopened).
-  void rewrite_in_order(std::size_t index_field, std::vector<std::pair<std::uint64_t, std::string>> inserts);
+  /// its records in ascending order of their number (stable: equal numbers keep their order),
+  /// by default the decimal number in field `index_field`; records without one go last.
+  /// `rewrite` may renumber, leave out and change records, and change the header. Call before the
+  /// first append() (or after a flush(): the file is reopened).
+  void rewrite_in_order(std::size_t index_field, const Rewrite& rewrite = {});
 
   /// Queues whole records (each ending in '\n'); nothing reaches the file before flush().
   void append(std::string_view records);

@@ -47,6 +47,21 @@ nlohmann::json libraries() {
           {"OMPL", ompl_version()}};
 }
 
+/// The number at `pointer` of `j`, 0 when absent or not a number (a manifest may be hand-edited).
+double number_at(const nlohmann::json& j, const char* pointer) {
+  const nlohmann::json::json_pointer p(pointer);
+  return j.is_object() && j.contains(p) && j.at(p).is_number() ? j.at(p).get<double>() : 0.0;
+}
+
+/// The unsigned integer at `pointer` of `j`, 0 when absent or not one.
+std::uint64_t unsigned_at(const nlohmann::json& j, const char* pointer) {
+  const nlohmann::json::json_pointer p(pointer);
+  if (!j.is_object() || !j.contains(p)) return 0;
+  const nlohmann::json& v = j.at(p);
+  const bool whole = v.is_number_unsigned() || (v.is_number_integer() && v.get<std::int64_t>() >= 0);
+  return whole ? v.get<std::uint64_t>() : 0;
+}
+
 }  // namespace
 
 std::string fsweep_version() {
@@ -72,11 +87,39 @@ std::string utc_now_iso8601() {
   return buf;
 }
 
+nlohmann::json session_json(const SweepPlan& plan, const ManifestInfo& info) {
+  return {
+      {"start_utc", info.start_utc},
+      {"end_utc", info.end_utc.empty() ? nlohmann::json(nullptr) : nlohmann::json(info.end_utc)},
+      {"status", info.status},
+      {"sweep_hash", sweep_hash(plan.source())},
+      {"sweep_file", info.sweep_file},
+      {"fsweep_version", fsweep_version()},
+      {"git_revision", FSWEEP_GIT_REVISION},
+      {"host", host_name()},
+      {"threads", info.threads},
+      {"shard", {{"index", info.shard_index}, {"count", info.shard_count}}},
+      {"runs", {{"ran", info.runs.ran}, {"skipped", info.runs.skipped}, {"failed", info.runs.ran_failed}}},
+      {"wall_s", info.wall_s},
+      {"runs_per_s", info.runs_per_s}};
+}
+
 nlohmann::json manifest_json(const SweepPlan& plan, const ManifestInfo& info) {
+  nlohmann::json sessions = info.sessions.is_array() ? info.sessions : nlohmann::json::array();
+  sessions.push_back(session_json(plan, info));
+  std::uint64_t ran = 0;
+  double wall_s = 0.0;
+  for (const nlohmann::json& s : sessions) {
+    ran += unsigned_at(s, "/runs/ran");
+    wall_s += number_at(s, "/wall_s");
+  }
+  const nlohmann::json& first = sessions.front();
+  const nlohmann::json::json_pointer start("/start_utc");
   nlohmann::json j;
   j["status"] = info.status;
   j["name"] = plan.name();
   j["sweep_file"] = info.sweep_file;
+  j["overrides"] = plan.overrides();
   j["sweep_hash"] = sweep_hash(plan.source());
   j["sweep"] = plan.source();
   j["objective"] = plan.objective();
@@ -94,7 +137,7 @@ nlohmann::json manifest_json(const SweepPlan& plan, const ManifestInfo& info) {
   j["runs"] = {{"total", info.runs.total},
                {"done", info.runs.done},
                {"skipped", info.runs.skipped},
-               {"ran", info.runs.ran},
+               {"ran", ran},
                {"failed", info.runs.failed}};
   j["shard"] = {{"index", info.shard_index}, {"count", info.shard_count}};
   j["git_revision"] = FSWEEP_GIT_REVISION;
@@ -104,11 +147,55 @@ nlohmann::json manifest_json(const SweepPlan& plan, const ManifestInfo& info) {
   j["host"] = host_name();
   j["cpu_model"] = cpu_model();
   j["threads"] = info.threads;
-  j["start_utc"] = info.start_utc;
+  j["start_utc"] =
+      first.contains(start) && first.at(start).is_string() ? first.at(start) : nlohmann::json(info.start_utc);
   j["end_utc"] = info.end_utc.empty() ? nlohmann::json(nullptr) : nlohmann::json(info.end_utc);
-  j["wall_s"] = info.wall_s;
-  j["runs_per_s"] = info.runs_per_s;
+  j["wall_s"] = wall_s;
+  j["runs_per_s"] = sessions_runs_per_s(sessions);
+  j["sessions"] = std::move(sessions);
   return j;
+}
+
+nlohmann::json manifest_sessions(const nlohmann::json& manifest) {
+  nlohmann::json out = nlohmann::json::array();
+  if (!manifest.is_object()) return out;
+  if (const auto it = manifest.find("sessions"); it != manifest.end()) {
+    if (it->is_array()) {
+      for (const nlohmann::json& s : *it) {
+        if (s.is_object()) out.push_back(s);
+      }
+    }
+    return out;
+  }
+  // An fsweep that kept only the last invocation: that one, from the top-level fields.
+  nlohmann::json s = nlohmann::json::object();
+  for (const char* key : {"start_utc", "end_utc", "status", "sweep_hash", "sweep_file", "fsweep_version",
+                          "git_revision", "host", "threads", "shard", "wall_s", "runs_per_s"}) {
+    if (const auto it = manifest.find(key); it != manifest.end()) s[key] = *it;
+  }
+  if (const auto runs = manifest.find("runs"); runs != manifest.end() && runs->is_object()) {
+    s["runs"] = nlohmann::json::object();
+    for (const char* key : {"ran", "skipped"}) {
+      if (const auto it = runs->find(key); it != runs->end()) s["runs"][key] = *it;
+    }
+  }
+  out.push_back(std::move(s));
+  return out;
+}
+
+double sessions_runs_per_s(const nlohmann::json& sessions) {
+  double ran = 0.0;
+  double seconds = 0.0;
+  if (!sessions.is_array()) return 0.0;
+  for (const nlohmann::json& s : sessions) {
+    const auto n = static_cast<double>(unsigned_at(s, "/runs/ran"));
+    const double per_s = number_at(s, "/runs_per_s");
+    if (n > 0.0 && per_s > 0.0) {
+      ran += n;
+      seconds += n / per_s;
+    }
+  }
+  return seconds > 0.0 ? ran / seconds : 0.0;
 }
 
 void write_manifest(const std::string& path, const nlohmann::json& manifest) {
@@ -123,6 +210,31 @@ std::optional<nlohmann::json> read_manifest(const std::string& path) {
     return std::nullopt;
   }
   return j;
+}
+
+std::vector<std::string> changed_map_contents(const nlohmann::json& manifest, const SweepPlan& plan) {
+  std::vector<std::string> out;
+  const nlohmann::json* recorded = manifest.contains("maps") ? &manifest["maps"] : nullptr;
+  if (recorded == nullptr || !recorded->is_array()) {
+    out.emplace_back("manifest.json does not record the maps' content (written by an older fsweep)");
+    return out;
+  }
+  for (const nlohmann::json& was : *recorded) {
+    if (!was.is_object()) continue;
+    const std::string label = was.value("label", std::string());
+    const std::string source = was.value("source", std::string());
+    const std::string hash = was.value("content_hash", std::string());
+    for (const SweepMap& m : plan.maps()) {
+      if (m.label != label || m.map->source != source) continue;
+      if (m.content_hash != hash) {
+        std::string line = "map '" + m.label + "' (" + m.map->source + ") changed: content hash ";
+        line.append(hash).append(" then, ").append(m.content_hash).append(" now");
+        out.push_back(std::move(line));
+      }
+      break;
+    }
+  }
+  return out;
 }
 
 std::optional<std::string> read_manifest_hash(const std::string& path) {

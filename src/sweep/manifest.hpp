@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace fsweep {
 inline namespace sweep {
@@ -15,25 +16,30 @@ class SweepPlan;
 
 /// Run counts of a sweep (or shard) as the manifest reports them.
 struct ManifestCounts {
-  std::uint64_t total = 0;    ///< runs in the sweep (or shard)
-  std::uint64_t done = 0;     ///< runs with a row in runs.csv (skipped + ran)
-  std::uint64_t skipped = 0;  ///< already done when this invocation started
-  std::uint64_t ran = 0;      ///< simulated by this invocation
-  std::uint64_t failed = 0;   ///< rows in runs.csv whose end_reason is `error`
+  std::uint64_t total = 0;       ///< runs in the sweep (or shard)
+  std::uint64_t done = 0;        ///< runs with a row in runs.csv
+  std::uint64_t skipped = 0;     ///< already done when this invocation started
+  std::uint64_t ran = 0;         ///< simulated by this invocation
+  std::uint64_t failed = 0;      ///< rows in runs.csv whose end_reason is `error`
+  std::uint64_t ran_failed = 0;  ///< of the runs this invocation simulated, those that failed
 };
 
-/// Everything the manifest records besides the plan and the build.
+/// Everything the manifest records besides the plan and the build: this invocation (a session)
+/// and the sessions before it.
 struct ManifestInfo {
   std::string sweep_file;  ///< path the sweep was read from (may be empty)
   ManifestCounts runs;
   int threads = 0;
   std::uint64_t shard_index = 0;
   std::uint64_t shard_count = 1;
-  std::string start_utc;  ///< ISO 8601
-  std::string end_utc;    ///< empty while running
-  double wall_s = 0.0;
-  double runs_per_s = 0.0;  ///< runs simulated by this invocation / wall_s
+  std::string start_utc;    ///< ISO 8601
+  std::string end_utc;      ///< empty while running
+  double wall_s = 0.0;      ///< this invocation, weight searches included
+  double runs_per_s = 0.0;  ///< runs simulated by this invocation / the seconds until they were written
   std::string status;       ///< "running", "complete", "interrupted", "failed"
+  /// The sessions of the earlier invocations on the directory, oldest first (manifest_sessions()
+  /// of its manifest); empty for a new or --fresh directory.
+  nlohmann::json sessions = nlohmann::json::array();
 };
 
 /// 16 hex digits: FNV-1a 64 of the sweep JSON's dump (canonical: keys sorted, no spaces), so
@@ -51,14 +57,37 @@ struct ManifestInfo {
 /// The current time, UTC, ISO 8601 with seconds: "2024-05-01T12:34:56Z".
 [[nodiscard]] std::string utc_now_iso8601();
 
-/// The manifest's JSON: sweep (the file's JSON), sweep_file, sweep_hash, name, objective, seed,
+/// The manifest's JSON: sweep (the file's JSON with the command-line overrides applied: what
+/// ran), sweep_file, overrides (SweepPlan::overrides(), as given), sweep_hash (of `sweep`), name,
+/// objective, seed,
 /// repetitions, warnings (sweep_warnings(): what the CLI printed), maps [{label, source,
 /// content_hash}] (each map as loaded; run keys cover the hash), skipped_maps [{where, file,
 /// reason}] (dataset plans left out by "on_bad_map": "skip"), runs {total, done, skipped,
 /// ran, failed}, shard {index, count}, git_revision, fsweep_version, compiler, libraries {oneTBB,
-/// nlohmann_json, OMPL}, host,
-/// cpu_model, threads, start_utc, end_utc (null while running), wall_s, runs_per_s, status.
+/// nlohmann_json, OMPL}, host, cpu_model, threads, start_utc, end_utc (null while running),
+/// wall_s, runs_per_s, status, sessions.
+///
+/// `sessions` is `info.sessions` and then this invocation's session_json(). The top-level fields
+/// describe the directory over all its sessions: status, sweep_file, threads, end_utc and
+/// runs.skipped are this (the last) session's; start_utc is the first session's; wall_s and
+/// runs.ran are summed over the sessions; runs_per_s is the runs simulated over all sessions per
+/// second spent simulating them (sessions that simulated nothing do not count), 0 when none did;
+/// runs.total, done and failed are the state of the files.
 [[nodiscard]] nlohmann::json manifest_json(const SweepPlan& plan, const ManifestInfo& info);
+
+/// One session's entry of a manifest's `sessions`: start_utc, end_utc (null while running),
+/// status, sweep_hash, sweep_file, fsweep_version, git_revision, host, threads, shard {index,
+/// count}, runs {ran, skipped, failed} (simulated in it, already done when it started, of
+/// those simulated the failed ones), wall_s, runs_per_s.
+[[nodiscard]] nlohmann::json session_json(const SweepPlan& plan, const ManifestInfo& info);
+
+/// The sessions `manifest` records (its `sessions`, the objects among them), oldest first. A
+/// manifest of an fsweep that kept no sessions gives one, made of its top-level fields.
+[[nodiscard]] nlohmann::json manifest_sessions(const nlohmann::json& manifest);
+
+/// Runs simulated per second over `sessions` (manifest_sessions()): their runs.ran summed, over
+/// the seconds those that simulated runs spent on them (runs.ran / runs_per_s each); 0 when none did.
+[[nodiscard]] double sessions_runs_per_s(const nlohmann::json& sessions);
 
 /// Writes `manifest` to `path` (temp file and rename: never torn).
 void write_manifest(const std::string& path, const nlohmann::json& manifest);
@@ -70,6 +99,13 @@ void write_manifest(const std::string& path, const nlohmann::json& manifest);
 /// from `plan`'s: one line per changed, added or removed map (a dataset plan that now loads or
 /// no longer does), or one line when the manifest records none. Empty when they agree.
 [[nodiscard]] std::vector<std::string> changed_maps(const nlohmann::json& manifest, const SweepPlan& plan);
+
+/// The maps `manifest` records (label, source, content_hash) whose content differs from the map
+/// of `plan` with the same label and source, wherever it is in the plan (maps may be added to or
+/// moved in an extended sweep, sweep_runner.hpp), one line each; or one line when the manifest
+/// records none. Empty when they agree.
+[[nodiscard]] std::vector<std::string> changed_map_contents(const nlohmann::json& manifest,
+                                                            const SweepPlan& plan);
 
 /// The sweep_hash of the manifest at `path`; nullopt when the file is missing or unreadable.
 [[nodiscard]] std::optional<std::string> read_manifest_hash(const std::string& path);

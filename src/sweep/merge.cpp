@@ -80,13 +80,26 @@ std::string first_map_difference(const nlohmann::json& a, const nlohmann::json& 
   return "the lists of maps (" + std::to_string(ma.size()) + " and " + std::to_string(mb.size()) + " maps)";
 }
 
+/// True when a session of a shard ran the sweep with hash `hash`: the shards extended it
+/// (sweep_runner.hpp, Extending).
+bool shards_ran(const std::vector<Shard>& shards, const nlohmann::json& hash) {
+  return std::any_of(shards.begin(), shards.end(), [&](const Shard& s) {
+    const nlohmann::json sessions = manifest_sessions(s.manifest);
+    return std::any_of(sessions.begin(), sessions.end(), [&](const nlohmann::json& session) {
+      return session.value("sweep_hash", nlohmann::json()) == hash;
+    });
+  });
+}
+
 /// Throws ConfigError when `dir` already holds the merged (or unsharded) results of another sweep
-/// than the shards' (its manifest.json's sweep_hash differs), as an unsharded run refuses.
-void refuse_results_of_another_sweep(const std::string& dir, const Shard& first) {
+/// than the shards' (its manifest.json's sweep_hash differs, and is not of a sweep the shards
+/// extended), as an unsharded run refuses.
+void refuse_results_of_another_sweep(const std::string& dir, const std::vector<Shard>& shards) {
+  const Shard& first = shards.front();
   const std::string path = dir + "/manifest.json";
   if (!fs::exists(path)) return;
   const nlohmann::json held = read_json(path);
-  if (held["sweep_hash"] == first.manifest["sweep_hash"]) return;
+  if (held["sweep_hash"] == first.manifest["sweep_hash"] || shards_ran(shards, held["sweep_hash"])) return;
   throw ConfigError(dir, "holds the results of " + describe_sweep(held) + ", its shards are of " +
                              describe_sweep(first.manifest) + " (" + first.dir +
                              "); nothing written: merge the shards of one sweep into its own directory");
@@ -129,7 +142,7 @@ MergeReport merge_shards(const std::string& dir, const std::string& objective) {
                             "; was a map file edited between them?): rerun one of them on the other's maps");
     }
   }
-  refuse_results_of_another_sweep(dir, shards.front());
+  refuse_results_of_another_sweep(dir, shards);
   {
     std::size_t k = 0;
     for (std::uint64_t i = 0; i < n; ++i) {
@@ -232,12 +245,20 @@ MergeReport merge_shards(const std::string& dir, const std::string& objective) {
   std::uint64_t ran = 0;
   std::uint64_t skipped = 0;
   double wall = 0.0;
+  nlohmann::json sessions = nlohmann::json::array();  // every shard's, by start time
   for (const Shard& s : shards) {
     failed += s.manifest.value("/runs/failed"_json_pointer, std::uint64_t{0});
     ran += s.manifest.value("/runs/ran"_json_pointer, std::uint64_t{0});
     skipped += s.manifest.value("/runs/skipped"_json_pointer, std::uint64_t{0});
     wall = std::max(wall, s.manifest.value("wall_s", 0.0));
+    for (nlohmann::json& session : manifest_sessions(s.manifest)) sessions.push_back(std::move(session));
   }
+  const auto start = [](const nlohmann::json& session) {  // ISO 8601 UTC: text order is time order
+    const auto it = session.find("start_utc");
+    return it != session.end() && it->is_string() ? it->get<std::string>() : std::string();
+  };
+  std::stable_sort(sessions.begin(), sessions.end(),
+                   [&](const nlohmann::json& a, const nlohmann::json& b) { return start(a) < start(b); });
   manifest["runs"] = {{"total", report.total},
                       {"done", report.total},
                       {"skipped", skipped},
@@ -248,6 +269,8 @@ MergeReport merge_shards(const std::string& dir, const std::string& objective) {
   manifest["wall_s"] = wall;  // the longest shard: the elapsed time if the shards ran at once
   manifest["runs_per_s"] = wall > 0.0 ? static_cast<double>(ran) / wall : 0.0;
   manifest["end_utc"] = utc_now_iso8601();
+  if (!sessions.empty() && !start(sessions.front()).empty()) manifest["start_utc"] = start(sessions.front());
+  manifest["sessions"] = std::move(sessions);
 
   // The weight searches' parts (weight_search_runner.hpp): joined first, so that a shard whose
   // searches did not finish stops the merge before anything is written.

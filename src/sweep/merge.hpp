@@ -30,7 +30,8 @@ struct MergeReport {
 /// Merges the shards under `dir`. Every shard directory (name `shard-<i>-of-<n>`) must have the
 /// same n, a manifest.json with the same sweep_hash and runs.csv / progress.csv with equal
 /// headers, and a manifest.json already in `dir` (an earlier merge or an unsharded run) must have
-/// that sweep_hash too; otherwise (or with no shard directory, or malformed files) throws
+/// that sweep_hash too, or that of a sweep a session of the shards ran (the shards extended it,
+/// sweep_runner.hpp); otherwise (or with no shard directory, or malformed files) throws
 /// ConfigError naming the directories (and both sweeps) or the file and line, before anything is
 /// written (exit code 2 in the CLI). The sweep's run count and run
 /// keys come from the sweep plan rebuilt from the manifest's `sweep` (if that fails, e.g. a map
@@ -39,7 +40,8 @@ struct MergeReport {
 /// 0..total-1 without a row, indices outside that range, and a run_index or run_key in more than
 /// one row are listed in `problems`; then nothing is written. Otherwise writes DIR/runs.csv and
 /// DIR/progress.csv (rows ordered by run_index, a run's progress rows in their shard's order),
-/// DIR/manifest.json (the first shard's, with shard {index 0, count 1}, runs summed, status
+/// DIR/manifest.json (the first shard's, with shard {index 0, count 1}, runs summed, every shard's
+/// sessions by start time, start_utc the first session's, status
 /// "complete") atomically, and runs aggregate(dir, {objective}). A sweep with exact weight
 /// searches has them merged first (merge_weight_searches(): every shard needs its
 /// searches.json, else ConfigError and nothing is written).

@@ -21,17 +21,112 @@ void require_absolute(const std::string& path, const std::string& what) {
   if (!is_absolute(path)) throw ConfigError(what, "must be an absolute path, got '" + path + "'");
 }
 
+/// `s` in single quotes for messages, control characters written as \n, \r, \0 or \xNN (a bad
+/// value may hold a newline), cut after 120 characters.
+std::string quoted(const std::string& s) {
+  constexpr std::size_t kMaxChars = 120;
+  std::string out = "'";
+  for (std::size_t i = 0; i < s.size() && i < kMaxChars; ++i) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    if (c == '\n') {
+      out += "\\n";
+    } else if (c == '\r') {
+      out += "\\r";
+    } else if (c == 0) {
+      out += "\\0";
+    } else if (c < 0x20 || c == 0x7f) {
+      constexpr std::string_view kHex = "0123456789abcdef";
+      out += "\\x";
+      out += kHex[c >> 4];
+      out += kHex[c & 0xf];
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  return out + (s.size() > kMaxChars ? "'..." : "'");
+}
+
 /// Characters that would break an `#SBATCH --opt=value` line (sbatch splits it at whitespace
-/// and strips quotes).
+/// and strips quotes; a NUL would end it).
 bool breaks_directive(char c) {
-  return std::isspace(static_cast<unsigned char>(c)) != 0 || c == '"' || c == '\'' || c == '\\';
+  return c == '\0' || std::isspace(static_cast<unsigned char>(c)) != 0 || c == '"' || c == '\'' || c == '\\';
 }
 
 void require_directive_value(const std::string& value, const std::string& what) {
   if (std::any_of(value.begin(), value.end(), breaks_directive)) {
-    throw ConfigError(
-        what, "must not contain whitespace, quotes or backslashes (it goes into an #SBATCH line), got '" +
-                  value + "'");
+    throw ConfigError(what,
+                      "must not contain whitespace, quotes, backslashes or NUL (it goes into an #SBATCH "
+                      "line), got " +
+                          quoted(value));
+  }
+}
+
+/// An account or QOS name: empty (not written) or [A-Za-z0-9_.-]+.
+void require_slurm_name(const std::string& value, const std::string& what) {
+  const auto allowed = [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_' || c == '.' || c == '-';
+  };
+  if (!std::all_of(value.begin(), value.end(), allowed)) {
+    throw ConfigError(what, "must be a name of letters, digits, '_', '.' and '-', got " + quoted(value));
+  }
+}
+
+/// The directives fsweep slurm writes itself, and what to use instead of an --sbatch line.
+struct OwnDirective {
+  std::string_view option;
+  std::string_view instead;
+};
+constexpr OwnDirective kOwnDirectives[] = {
+    {"job-name", "the jobs are named fsweep-<sweep name> and fsweep-<sweep name>-merge"},
+    {"array", "the array covers the shards: --tasks, --max-array-size"},
+    {"cpus-per-task", "use --cpus"},
+    {"output", "the logs go to <out>/slurm/logs"},
+    {"partition", "use --partition"},
+    {"time", "use --time"},
+    {"mem", "use --mem"},
+    {"account", "use --account"},
+    {"qos", "use --qos"},
+    {"gres", "use --gres"},
+};
+
+/// An --sbatch line as the directive it becomes, `--option` or `--option=value` (a leading
+/// `#SBATCH ` dropped); ConfigError naming --sbatch when it is not one (SlurmScriptOptions).
+std::string sbatch_directive(const std::string& line) {
+  const std::string allowed =
+      "; allowed: --option or --option=value as on sbatch's command line (optionally after '#SBATCH '), "
+      "the option of a-z, 0-9 and '-', the value without whitespace, quotes or backslashes";
+  std::string_view d(line);
+  constexpr std::string_view kPrefix = "#SBATCH ";
+  if (d.starts_with(kPrefix)) {
+    d.remove_prefix(kPrefix.size());
+    while (d.starts_with(' ')) d.remove_prefix(1);
+  }
+  const std::size_t eq = d.find('=');
+  const std::string_view option = d.substr(0, eq);
+  const auto option_char = [](char c) {
+    return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-';
+  };
+  if (!option.starts_with("--") || option.size() < 3 || !(option[2] >= 'a' && option[2] <= 'z') ||
+      !std::all_of(option.begin(), option.end(), option_char) ||
+      (eq != std::string_view::npos && std::any_of(d.begin() + eq + 1, d.end(), breaks_directive))) {
+    throw ConfigError("--sbatch", quoted(line) + " is not an sbatch option" + allowed);
+  }
+  const std::string_view name = option.substr(2);
+  for (const OwnDirective& own : kOwnDirectives) {
+    if (own.option.starts_with(name)) {  // sbatch takes an unambiguous abbreviation as the option
+      throw ConfigError("--sbatch", quoted(line) + " sets --" + std::string(own.option) +
+                                        ", which fsweep slurm writes itself; " + std::string(own.instead));
+    }
+  }
+  return std::string(d);
+}
+
+/// A --setup line: one line of shell (no newline, carriage return or NUL).
+void require_setup_line(const std::string& line) {
+  if (line.find_first_of(std::string_view("\n\r\0", 3)) != std::string::npos) {
+    throw ConfigError("--setup", quoted(line) +
+                                     " is not one line; allowed: one line of shell each (repeat --setup for "
+                                     "more), without newline, carriage return or NUL");
   }
 }
 
@@ -44,6 +139,11 @@ void validate(const SlurmScriptOptions& o) {
   require_directive_value(o.partition, "--partition");
   require_directive_value(o.time, "--time");
   require_directive_value(o.mem, "--mem");
+  require_slurm_name(o.account, "--account");
+  require_slurm_name(o.qos, "--qos");
+  require_directive_value(o.gres, "--gres");
+  for (const std::string& line : o.sbatch_lines) (void)sbatch_directive(line);
+  for (const std::string& line : o.setup_lines) require_setup_line(line);
   if (o.name.empty()) throw ConfigError("sweep name", "must not be empty");
   require_directive_value(o.name, "sweep name");
   if (o.cpus < 1) throw ConfigError("--cpus", "must be >= 1, got " + std::to_string(o.cpus));
@@ -65,6 +165,23 @@ void resource_directives(std::ostringstream& s, const SlurmScriptOptions& o) {
   if (!o.partition.empty()) s << "#SBATCH --partition=" << o.partition << '\n';
   if (!o.time.empty()) s << "#SBATCH --time=" << o.time << '\n';
   if (!o.mem.empty()) s << "#SBATCH --mem=" << o.mem << '\n';
+  if (!o.account.empty()) s << "#SBATCH --account=" << o.account << '\n';
+  if (!o.qos.empty()) s << "#SBATCH --qos=" << o.qos << '\n';
+}
+
+/// The --sbatch lines, after fsweep's own directives.
+void extra_directives(std::ostringstream& s, const SlurmScriptOptions& o) {
+  for (const std::string& line : o.sbatch_lines) s << "#SBATCH " << sbatch_directive(line) << '\n';
+}
+
+/// The --setup lines, as given, with `set -u` off around them (module and conda scripts read
+/// unset variables); `restore_nounset` when the script runs with `set -u`.
+void setup_block(std::ostringstream& s, const SlurmScriptOptions& o, bool restore_nounset) {
+  if (o.setup_lines.empty()) return;
+  s << "# setup (fsweep slurm --setup), in order:\n";
+  if (restore_nounset) s << "set +u\n";
+  for (const std::string& line : o.setup_lines) s << line << '\n';
+  if (restore_nounset) s << "set -u\n";
 }
 
 }  // namespace
@@ -110,7 +227,9 @@ std::string render_slurm_array_script(const SlurmScriptOptions& o) {
   s << "#SBATCH --array=0-" << tasks - 1 << '\n';
   s << "#SBATCH --cpus-per-task=" << o.cpus << '\n';
   resource_directives(s, o);
+  if (!o.gres.empty()) s << "#SBATCH --gres=" << o.gres << '\n';
   s << "#SBATCH --output=" << escape_pattern(slurm_log_dir(o.out_dir)) << "/%A_%a.out\n";
+  extra_directives(s, o);
   s << "#\n"
     << "# Written by `fsweep slurm`: sweep " << o.name << " in " << n << " shards over " << t
     << " array tasks. Array task t runs\n"
@@ -137,12 +256,14 @@ std::string render_slurm_array_script(const SlurmScriptOptions& o) {
        ">&2\n"
     << "  exit 2\n"
     << "fi\n"
-    << "cd -- " << shell_quote(o.work_dir) << " || exit 2\n"
-    << "failed=0\n"
+    << "cd -- " << shell_quote(o.work_dir) << " || exit 2\n";
+  setup_block(s, o, /*restore_nounset=*/true);
+  s << "failed=0\n"
     << "for ((shard = task; shard < shards; shard += tasks)); do\n"
     << "  echo \"fsweep slurm: array task $task: shard $shard/$shards on $(hostname)\"\n"
-    << "  " << shell_quote(o.fsweep) << " run " << shell_quote(o.sweep_file) << " --out "
-    << shell_quote(o.out_dir) << " --shard \"$shard/$shards\" \\\n"
+    << "  " << shell_quote(o.fsweep) << " run " << shell_quote(o.sweep_file);
+  for (const std::string& text : o.overrides) s << ' ' << shell_quote(text);
+  s << " --out " << shell_quote(o.out_dir) << " --shard \"$shard/$shards\" \\\n"
     << "    --threads \"${SLURM_CPUS_PER_TASK:-1}\" --quiet\n"
     << "  rc=$?\n"
     << "  if ((rc != 0)); then\n"
@@ -165,12 +286,14 @@ std::string render_slurm_merge_script(const SlurmScriptOptions& o) {
   s << "#SBATCH --cpus-per-task=1\n";
   resource_directives(s, o);
   s << "#SBATCH --output=" << escape_pattern(slurm_log_dir(o.out_dir)) << "/merge_%j.out\n";
+  extra_directives(s, o);
   s << "#\n"
     << "# Written by `fsweep slurm`: merges the " << o.shards << " shards of sweep " << o.name
     << " once every array task has ended\n"
     << "# (submitted with --dependency=afterany:<array job>, so it also runs after failures and then\n"
     << "# lists the missing runs and exits 1, writing nothing).\n\n";
   s << "cd -- " << shell_quote(o.work_dir) << " || exit 2\n";
+  setup_block(s, o, /*restore_nounset=*/false);
   s << "exec " << shell_quote(o.fsweep) << " merge " << shell_quote(o.out_dir) << '\n';
   return s.str();
 }

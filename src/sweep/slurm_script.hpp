@@ -28,14 +28,17 @@ inline constexpr std::uint64_t kDefaultMaxArraySize = 1001;
 /// What the scripts run and the resources they request.
 struct SlurmScriptOptions {
   /// Absolute paths: the fsweep executable, the sweep file, the sweep's output directory
-  /// (shards go to <out_dir>/shard-i-of-N/) and the directory the jobs run in (relative map
-  /// paths in the sweep file are relative to it). Not absolute: ConfigError. The output
+  /// (shards go to <out_dir>/shard-i-of-N/) and the directory the jobs run in (where relative
+  /// paths of the sweep file that are not beside it are looked for). Not absolute: ConfigError. The output
   /// directory must not contain whitespace, quotes or backslashes (it is written into
   /// `#SBATCH --output=` lines); the others are shell-quoted.
   std::string fsweep;
   std::string sweep_file;
   std::string out_dir;
   std::string work_dir;
+  /// The sweep's command-line overrides ("PATH=VALUE", sweep_json_reader.hpp), passed to every
+  /// shard's `fsweep run` after the sweep file, each shell-quoted.
+  std::vector<std::string> overrides;
   /// The sweep's name ([A-Za-z0-9_.-]+ as sweep_plan.hpp requires); jobs are named
   /// `fsweep-<name>` and `fsweep-<name>-merge`.
   std::string name;
@@ -47,10 +50,29 @@ struct SlurmScriptOptions {
   /// `--threads ${SLURM_CPUS_PER_TASK:-1}`.
   int cpus = 1;
   /// `--partition`, `--time`, `--mem` of both jobs; a directive is written only when its
-  /// value is non-empty. Whitespace, quotes or backslashes in them: ConfigError.
+  /// value is non-empty. Whitespace, quotes, backslashes or NUL in them: ConfigError.
   std::string partition;
   std::string time;
   std::string mem;
+  /// `--account` and `--qos` of both jobs, written only when non-empty: names of
+  /// [A-Za-z0-9_.-] (else ConfigError).
+  std::string account;
+  std::string qos;
+  /// `--gres` of the array tasks only (e.g. `gpu:1`; the merge job runs `fsweep merge` on one
+  /// CPU), written only when non-empty; checked as partition.
+  std::string gres;
+  /// Further directives of both jobs, in order, each written as `#SBATCH LINE` after fsweep's
+  /// own: `--option` or `--option=value` as on sbatch's command line (a leading `#SBATCH ` is
+  /// dropped). The option is lower-case letters, digits and '-'; the value as partition. An
+  /// option fsweep writes itself (job-name, array, cpus-per-task, output, partition, time, mem,
+  /// account, qos, gres), or an abbreviation of one (sbatch takes `--part` for `--partition`):
+  /// ConfigError naming the option to use instead.
+  std::vector<std::string> sbatch_lines;
+  /// Shell lines both jobs run in order, after changing to work_dir and before fsweep (e.g.
+  /// `module load gcc/12`, `source venv/bin/activate`), written as given with `set -u` off. A
+  /// failing line does not stop the job (add `|| exit 1` to make it). A newline, carriage
+  /// return or NUL in one: ConfigError.
+  std::vector<std::string> setup_lines;
 };
 
 /// T = min(shards, max_array_size): the number of array tasks (indices 0..T-1). Both must be
@@ -72,17 +94,18 @@ struct SlurmScriptOptions {
 [[nodiscard]] std::string slurm_merge_script_path(const std::string& out_dir);
 
 /// The bash job-array script: `#SBATCH` directives (job name, `--array=0-(T-1)`,
-/// `--cpus-per-task`, the optional partition/time/mem, `--output` into slurm_log_dir), then a
-/// body that changes to work_dir, runs `fsweep run SWEEP --out OUT --shard i/N --threads
+/// `--cpus-per-task`, the optional partition/time/mem/account/qos/gres, `--output` into
+/// slurm_log_dir, then the sbatch_lines), then a body that changes to work_dir, runs the
+/// setup_lines, runs `fsweep run SWEEP [OVERRIDES] --out OUT --shard i/N --threads
 /// ${SLURM_CPUS_PER_TASK:-1} --quiet` for each shard of SLURM_ARRAY_TASK_ID (all of them even
 /// when one fails) and exits 1 if any failed, 0 otherwise; 2 when SLURM_ARRAY_TASK_ID is unset
 /// or not below T. Throws ConfigError for bad options (see SlurmScriptOptions).
 [[nodiscard]] std::string render_slurm_array_script(const SlurmScriptOptions& o);
 
 /// The bash merge script: `#SBATCH` directives (job name `fsweep-<name>-merge`, one CPU, the
-/// optional partition/time/mem, `--output` into slurm_log_dir), then `cd work_dir` and
-/// `exec fsweep merge OUT` (exit 1 with the missing runs listed when shards are incomplete).
-/// Throws ConfigError for bad options.
+/// optional partition/time/mem/account/qos (no gres), `--output` into slurm_log_dir, then the
+/// sbatch_lines), then `cd work_dir`, the setup_lines and `exec fsweep merge OUT` (exit 1 with
+/// the missing runs listed when shards are incomplete). Throws ConfigError for bad options.
 [[nodiscard]] std::string render_slurm_merge_script(const SlurmScriptOptions& o);
 
 /// argv of the array submission: sbatch --parsable <array script>.

@@ -65,9 +65,9 @@ void report_axis(const Axis& axis, const std::vector<std::pair<std::size_t, std:
 }
 
 /// The declaration (sim/run_spec.hpp, robot_params()) of the robot parameter at the JSON
-/// pointer `pointer` ("/sensor/range_m"), when it alone decides whether a value is allowed:
-/// nothing for an energy model's keys (which depend on its preset) or an undeclared key.
-const ParamSpec* robot_leaf_spec(const std::string& pointer) {
+/// pointer `pointer` ("/sensor/range_m"); null for an undeclared key or one inside an energy
+/// model (its keys depend on its preset).
+const ParamSpec* robot_spec(const std::string& pointer) {
   const ParamSpecs* specs = &robot_params().specs();
   const ParamSpec* spec = nullptr;
   for (std::size_t at = 1; at <= pointer.size();) {
@@ -86,6 +86,13 @@ const ParamSpec* robot_leaf_spec(const std::string& pointer) {
     specs = spec->fields.get();
     at = end + 1;
   }
+  return spec;
+}
+
+/// robot_spec(pointer) when it alone decides whether a value is allowed: not for an object (the
+/// sensor) or an energy model.
+const ParamSpec* robot_leaf_spec(const std::string& pointer) {
+  const ParamSpec* spec = robot_spec(pointer);
   return spec != nullptr && !spec->nested_problems ? spec : nullptr;
 }
 
@@ -107,12 +114,25 @@ std::string pointer_token(const std::string& key) {
 /// Robot fields whose values are arrays: there only a list of arrays is a sweep.
 bool array_valued(const std::string& pointer) { return pointer == "/dock" || pointer == "/energy/per_turn"; }
 
-/// The swept leaves of the robot object, depth-first in key order.
+/// The swept leaves of the robot object, depth-first in key order. Where the robot takes an
+/// object (the sensor, an energy model: declared with nested problems), an object is that
+/// object, not a range; a key the declaration of its object does not have is no axis (the
+/// reader names it with the keys allowed: a misspelt "range_m" is not a sweep range).
 void collect_robot_axes(const json& node, const std::string& pointer, std::vector<Axis>& axes,
                         std::vector<std::string>& problems) {
+  const ParamSpec* declared = pointer.empty() ? nullptr : robot_spec(pointer);
+  const ParamSpecs* fields = pointer.empty()       ? &robot_params().specs()
+                             : declared != nullptr ? declared->fields.get()
+                                                   : nullptr;
   for (const auto& [key, value] : node.items()) {
     const std::string child = pointer + "/" + pointer_token(key);
-    const bool range = value.is_object() && value.contains("range");
+    if (fields != nullptr && std::none_of(fields->begin(), fields->end(),
+                                          [&key = key](const ParamSpec& s) { return s.name == key; })) {
+      continue;
+    }
+    const ParamSpec* spec = robot_spec(child);
+    const bool takes_object = spec != nullptr && spec->nested_problems;
+    const bool range = value.is_object() && value.contains("range") && !takes_object;
     if (value.is_object() && !range) {
       collect_robot_axes(value, child, axes, problems);
       continue;

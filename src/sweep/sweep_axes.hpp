@@ -4,8 +4,10 @@
 /// is documented in sweep_plan.hpp). Every function appends problems as "<JSON path>: message"
 /// to `problems` and returns what it could parse; callers throw when `problems` is not empty.
 
+#include <filesystem>
 #include <initializer_list>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -33,9 +35,35 @@ namespace sweep_detail {
 /// 12,345,678.
 [[nodiscard]] std::string with_thousands(std::uint64_t n);
 
-/// `maps`: loads every map (see sweep_plan.hpp); plans of dataset items skipped by
-/// `"on_bad_map": "skip"` go to `skipped`.
-[[nodiscard]] std::vector<SweepMap> parse_maps(const nlohmann::json& maps, std::vector<std::string>& problems,
+/// Where the relative paths of a sweep file (map files, dataset folders, id lists) are found: in
+/// the sweep file's folder (as CMake, Compose and Hydra resolve theirs), else, for sweeps written
+/// when they were relative to the working directory, there, with a warning.
+class SweepPaths {
+ public:
+  /// `sweep_file`: the path the sweep was read from; "" or a bare name: the working directory.
+  explicit SweepPaths(const std::string& sweep_file);
+  enum class Kind { File, Folder };
+  /// The path to open for `written` (a path as the sweep gives it at JSON path `where`): itself
+  /// when absolute or when the sweep file's folder is the working directory; else under the
+  /// sweep file's folder when it is there, else under the working directory when it is there
+  /// (a warning). A relative path in neither: a problem naming the absolute paths tried, and
+  /// nullopt.
+  [[nodiscard]] std::optional<std::string> resolve(const std::string& written, Kind kind,
+                                                   const std::string& where,
+                                                   std::vector<std::string>& problems);
+  /// The warnings, one per path read from the working directory, with the path to write instead.
+  [[nodiscard]] const std::vector<std::string>& warnings() const { return warnings_; }
+
+ private:
+  std::filesystem::path folder_;  ///< the sweep file's folder ("" for the working directory)
+  bool folder_is_cwd_ = true;
+  std::vector<std::string> warnings_;
+};
+
+/// `maps`: loads every map (see sweep_plan.hpp), relative paths found by `paths`; plans of
+/// dataset items skipped by `"on_bad_map": "skip"` go to `skipped`.
+[[nodiscard]] std::vector<SweepMap> parse_maps(const nlohmann::json& maps, SweepPaths& paths,
+                                               std::vector<std::string>& problems,
                                                std::vector<SkippedMap>& skipped);
 
 /// `strategies`: entries with their parameter groups, each axis value validated.

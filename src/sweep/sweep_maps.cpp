@@ -1,6 +1,6 @@
 /// @file sweep_maps.cpp
-/// The `maps` axis of a sweep: SPEC strings and JSON objects, "seeds" expansion, loading and
-/// the canonical spec that run keys hash.
+/// The `maps` axis of a sweep: SPEC strings and JSON objects, "seeds" expansion, loading (relative
+/// paths found by SweepPaths) and the canonical spec that run keys hash.
 
 #include <algorithm>
 #include <cmath>
@@ -92,7 +92,11 @@ std::shared_ptr<const std::array<Grid<std::uint8_t>, 2>> start_regions_of(const 
 }
 
 /// Puts a loaded map into `m`: the map, its content hash and, for a random start, its regions.
-void take_loaded(SweepMap& m, RunMap loaded) {
+/// `opened` is the file read for `written` (a path as the sweep gives it): the map's source
+/// (runs.csv's `map` column, the manifest) names the path as written.
+void take_loaded(SweepMap& m, RunMap loaded, const std::string& opened = {},
+                 const std::string& written = {}) {
+  if (!opened.empty() && loaded.map.source == opened) loaded.map.source = written;
   if (loaded.random_start) m.start_regions = start_regions_of(loaded.map);
   m.content_hash = hex64(content_hash(loaded.map));
   m.map = std::make_shared<const WorldMap>(std::move(loaded.map));
@@ -105,10 +109,17 @@ const std::vector<std::string>& dataset_keys() {
   return kKeys;
 }
 
+/// A plan of a dataset: its file as the sweep names it (the dataset folder as written, then the
+/// plan's name) and the path to open.
+struct DatasetPlan {
+  std::string file;
+  std::string opened;
+};
+
 /// A dataset item's plan files: `<dataset>/<id>.json` for each id of the `ids` file (blank
 /// lines and surrounding spaces ignored), else every `*.json` of the folder in name order; then
 /// a seeded sample of `sample` of them, kept in list order. Problems at `where`.
-std::vector<std::string> dataset_plans(const json& item, const std::string& where,
+std::vector<DatasetPlan> dataset_plans(const json& item, const std::string& where, SweepPaths& paths,
                                        std::vector<std::string>& problems) {
   namespace fs = std::filesystem;
   const json& dir_json = item.at("dataset");
@@ -117,15 +128,24 @@ std::vector<std::string> dataset_plans(const json& item, const std::string& wher
     return {};
   }
   const fs::path dir = dir_json.get<std::string>();
+  const std::optional<std::string> opened_dir =
+      paths.resolve(dir.string(), SweepPaths::Kind::Folder, where + "/dataset", problems);
+  if (!opened_dir) return {};
   std::error_code ec;
-  if (!fs::is_directory(dir, ec)) {
+  if (!fs::is_directory(*opened_dir, ec)) {
     problems.push_back(where + "/dataset: '" + dir.string() + "' is not a folder (a HouseExpo json folder)");
     return {};
   }
-  std::vector<std::string> plans;
+  // Plans by their names inside the folder (an id may hold a '/').
+  std::vector<std::string> names;
   if (item.contains("ids")) {
     const json& ids = item.at("ids");
-    std::ifstream in(ids.is_string() ? ids.get<std::string>() : std::string());
+    const std::optional<std::string> list =
+        ids.is_string()
+            ? paths.resolve(ids.get<std::string>(), SweepPaths::Kind::File, where + "/ids", problems)
+            : std::optional<std::string>(std::string());
+    if (!list) return {};
+    std::ifstream in(*list);
     if (!ids.is_string() || !in) {
       problems.push_back(where + "/ids: cannot read the id list " + value_text(ids) +
                          "; allowed: a text file with one plan id per line (HouseExpo's map_id_*.txt)");
@@ -135,15 +155,22 @@ std::vector<std::string> dataset_plans(const json& item, const std::string& wher
     while (std::getline(in, line)) {
       const std::size_t begin = line.find_first_not_of(" \t\r");
       if (begin == std::string::npos) continue;
-      const std::string id = line.substr(begin, line.find_last_not_of(" \t\r") - begin + 1);
-      plans.push_back((dir / (id + ".json")).lexically_normal().generic_string());
+      names.push_back(line.substr(begin, line.find_last_not_of(" \t\r") - begin + 1) + ".json");
     }
   } else {
-    for (const auto& entry : fs::directory_iterator(dir, ec)) {
-      if (entry.path().extension() == ".json")
-        plans.push_back(entry.path().lexically_normal().generic_string());
+    for (const auto& entry : fs::directory_iterator(*opened_dir, ec)) {
+      if (entry.path().extension() == ".json") names.push_back(entry.path().filename().string());
     }
-    std::sort(plans.begin(), plans.end());
+  }
+  std::vector<DatasetPlan> plans;
+  plans.reserve(names.size());
+  for (const std::string& name : names) {
+    plans.push_back(DatasetPlan{(dir / name).lexically_normal().generic_string(),
+                                (fs::path(*opened_dir) / name).string()});
+  }
+  if (!item.contains("ids")) {
+    std::sort(plans.begin(), plans.end(),
+              [](const DatasetPlan& a, const DatasetPlan& b) { return a.file < b.file; });
   }
   if (plans.empty()) {
     problems.push_back(
@@ -181,7 +208,7 @@ std::vector<std::string> dataset_plans(const json& item, const std::string& wher
   }
   order.resize(n);
   std::sort(order.begin(), order.end());
-  std::vector<std::string> chosen;
+  std::vector<DatasetPlan> chosen;
   chosen.reserve(n);
   for (const std::size_t i : order) chosen.push_back(plans[i]);
   return chosen;
@@ -189,7 +216,7 @@ std::vector<std::string> dataset_plans(const json& item, const std::string& wher
 
 /// A dataset item (sweep_plan.hpp, "maps"): one map class of HouseExpo plans. Appends its maps
 /// to `out`; plans that fail to load are problems, or skipped with `"on_bad_map": "skip"`.
-void parse_dataset(const json& item, const std::string& where, std::vector<SweepMap>& out,
+void parse_dataset(const json& item, const std::string& where, SweepPaths& paths, std::vector<SweepMap>& out,
                    std::vector<std::string>& problems, std::vector<SkippedMap>& skipped) {
   const std::size_t before = problems.size();
   for (const auto& [key, value] : item.items()) {
@@ -220,7 +247,7 @@ void parse_dataset(const json& item, const std::string& where, std::vector<Sweep
       problems.push_back(where + "/label: expected a string, got " + value_text(item.at("label")));
     }
   }
-  const std::vector<std::string> plans = dataset_plans(item, where, problems);
+  const std::vector<DatasetPlan> plans = dataset_plans(item, where, paths, problems);
   if (problems.size() != before) return;
   json options = json::object();  // what every plan's source gets besides its file
   for (const char* key : {"res", "start"}) {
@@ -232,12 +259,14 @@ void parse_dataset(const json& item, const std::string& where, std::vector<Sweep
                            (item.contains("sample") ? " sample=" + item.at("sample").dump() : "");
   std::size_t bad = 0;
   constexpr std::size_t kListedBadPlans = 20;
-  for (const std::string& file : plans) {
+  for (const auto& [file, opened] : plans) {
     json source = options;
     source["file"] = file;
+    json opened_source = options;
+    opened_source["file"] = opened;
     SweepMap m;
     try {
-      take_loaded(m, load_run_map_json(source, where));
+      take_loaded(m, load_run_map_json(opened_source, where), opened, file);
     } catch (const ConfigError& e) {
       const std::string reason = strip_path(e.what(), where);
       if (skip) {
@@ -263,7 +292,51 @@ void parse_dataset(const json& item, const std::string& where, std::vector<Sweep
 
 }  // namespace
 
-std::vector<SweepMap> parse_maps(const json& maps, std::vector<std::string>& problems,
+SweepPaths::SweepPaths(const std::string& sweep_file)
+    : folder_(std::filesystem::path(sweep_file).parent_path()) {
+  std::error_code ec;
+  folder_is_cwd_ =
+      folder_.empty() || std::filesystem::equivalent(folder_, std::filesystem::current_path(ec), ec);
+}
+
+std::optional<std::string> SweepPaths::resolve(const std::string& written, Kind kind,
+                                               const std::string& where, std::vector<std::string>& problems) {
+  namespace fs = std::filesystem;
+  const fs::path path(written);
+  if (written.empty() || path.is_absolute()) return written;
+  const auto there = [kind](const fs::path& p) {
+    std::error_code ec;
+    return kind == Kind::Folder ? fs::is_directory(p, ec) : fs::exists(p, ec) && !fs::is_directory(p, ec);
+  };
+  const auto absolute = [](const fs::path& p) {
+    std::error_code ec;
+    return fs::absolute(p, ec).lexically_normal().string();
+  };
+  const std::string what = kind == Kind::Folder ? "folder" : "file";
+  if (folder_is_cwd_) {
+    if (there(path)) return written;
+    problems.push_back(concat({where, ": no such ", what, " '", written, "' (tried ", absolute(path), ")"}));
+    return std::nullopt;
+  }
+  const fs::path beside = folder_ / path;
+  if (there(beside)) return beside.string();
+  if (there(path)) {
+    const std::string relative =
+        fs::path(absolute(path)).lexically_relative(absolute(folder_)).generic_string();
+    warnings_.push_back(
+        concat({where, ": '", written, "' is not beside the sweep file (no ", absolute(beside),
+                "); read from the working directory instead (", absolute(path),
+                "), as sweeps were before relative paths followed the sweep file",
+                relative.empty() ? "" : "; write '", relative, relative.empty() ? "" : "'"}));
+    return written;
+  }
+  problems.push_back(
+      concat({where, ": no such ", what, " '", written, "': tried ", absolute(beside),
+              " (beside the sweep file) and ", absolute(path), " (in the working directory)"}));
+  return std::nullopt;
+}
+
+std::vector<SweepMap> parse_maps(const json& maps, SweepPaths& paths, std::vector<std::string>& problems,
                                  std::vector<SkippedMap>& skipped) {
   std::vector<SweepMap> out;
   if (!maps.is_array() || maps.empty()) {
@@ -281,7 +354,7 @@ std::vector<SweepMap> parse_maps(const json& maps, std::vector<std::string>& pro
     }
     if (item.is_object() && item.contains("dataset")) {
       const std::size_t first = out.size();
-      parse_dataset(item, where, out, problems, skipped);
+      parse_dataset(item, where, paths, out, problems, skipped);
       for (std::size_t k = first; k < out.size(); ++k) {
         if (!seen.emplace(out[k].spec.dump(), where).second) {
           problems.push_back(where + ": plan " + out[k].label +
@@ -341,6 +414,16 @@ std::vector<SweepMap> parse_maps(const json& maps, std::vector<std::string>& pro
         seeds = parse_seeds(item, where, problems);
       }
     }
+    // A file: the path to open for the path as written (the sweep file's folder first).
+    std::string written;
+    std::string opened;
+    if (base.contains("file") && base["file"].is_string() && !base["file"].get<std::string>().empty()) {
+      written = base["file"].get<std::string>();
+      opened = paths
+                   .resolve(written, SweepPaths::Kind::File, spec_string.empty() ? where + "/file" : where,
+                            problems)
+                   .value_or(written);
+    }
     if (problems.size() != before) continue;
 
     // 3. Load each map; one problem per item (its first failing seed).
@@ -353,9 +436,20 @@ std::vector<SweepMap> parse_maps(const json& maps, std::vector<std::string>& pro
         if (!spec_k.empty())
           spec_k += (spec_k.find(':') == std::string::npos ? ":seed=" : ",seed=") + std::to_string(seeds[k]);
       }
+      // What is opened: the spec or source with the file found for the one written (a spec names
+      // it up to its first ':', so a path holding one goes as the JSON source).
+      json opened_source = source;
+      if (opened != written) opened_source["file"] = opened;
+      std::string opened_spec = spec_k;
+      if (opened != written && !spec_k.empty()) {
+        opened_spec =
+            opened.find(':') == std::string::npos ? opened + spec_k.substr(written.size()) : std::string();
+      }
       SweepMap m;
       try {
-        take_loaded(m, spec_k.empty() ? load_run_map_json(source, where) : load_run_map_spec(spec_k));
+        take_loaded(
+            m, opened_spec.empty() ? load_run_map_json(opened_source, where) : load_run_map_spec(opened_spec),
+            opened, written);
       } catch (const ConfigError& e) {
         const std::string what = e.what();
         const std::string seed_note = has_seeds ? " (seed " + std::to_string(seeds[k]) + ")" : "";

@@ -44,11 +44,26 @@ bool is_uint(const json& v) {
   return v.is_number_unsigned() || (v.is_number_integer() && v.get<std::int64_t>() >= 0);
 }
 
+/// The override a problem ("<JSON path>: message") comes from: the one with the longest path
+/// at or above the problem's path; null when none is.
+const SweepOverride* origin_of(const std::string& problem, const std::vector<SweepOverride>& overrides) {
+  const std::string path = problem.substr(0, problem.find(": "));
+  const SweepOverride* found = nullptr;
+  for (const SweepOverride& o : overrides) {
+    const bool above =
+        path.starts_with(o.pointer) && (path.size() == o.pointer.size() || path[o.pointer.size()] == '/');
+    if (above && (found == nullptr || o.pointer.size() > found->pointer.size())) found = &o;
+  }
+  return found;
+}
+
 }  // namespace
 
-SweepPlan SweepPlan::from_json(const json& sweep, const std::string& file) { return build(sweep, file, {}); }
+SweepPlan SweepPlan::from_json(const json& sweep, const std::string& file) {
+  return build(sweep, file, {}, {});
+}
 
-SweepPlan SweepPlan::from_file(const std::string& path) {
+SweepPlan SweepPlan::from_file(const std::string& path, const std::vector<std::string>& overrides) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) {
     throw ConfigError(path, std::filesystem::exists(path, ec)
@@ -60,12 +75,15 @@ SweepPlan SweepPlan::from_file(const std::string& path) {
   buffer << in.rdbuf();
   if (!in) throw ConfigError(path, "cannot read the sweep file");
   SweepJson parsed = parse_sweep_json(buffer.str(), path);
-  return build(parsed.value, path, std::move(parsed.problems));
+  if (!overrides.empty()) parsed = apply_sweep_overrides(std::move(parsed), overrides, path);
+  return build(parsed.value, path, std::move(parsed.problems), parsed.overrides);
 }
 
-SweepPlan SweepPlan::build(const json& sweep, const std::string& file, std::vector<std::string> problems) {
+SweepPlan SweepPlan::build(const json& sweep, const std::string& file, std::vector<std::string> problems,
+                           const std::vector<SweepOverride>& overrides) {
   SweepPlan plan;
   plan.source_ = sweep;
+  for (const SweepOverride& o : overrides) plan.overrides_.push_back(o.text);
   const json empty;
   auto get = [&](const char* key) -> const json& {
     return sweep.is_object() && sweep.contains(key) ? sweep.at(key) : empty;
@@ -160,7 +178,9 @@ SweepPlan SweepPlan::build(const json& sweep, const std::string& file, std::vect
   }
 
   // 3. The axes.
-  plan.maps_ = sweep_detail::parse_maps(get("maps"), problems, plan.skipped_maps_);
+  sweep_detail::SweepPaths paths(file);
+  plan.maps_ = sweep_detail::parse_maps(get("maps"), paths, problems, plan.skipped_maps_);
+  plan.path_warnings_ = paths.warnings();
   plan.strategies_ = sweep_detail::parse_strategies(get("strategies"), problems);
   plan.planners_ = sweep_detail::parse_planners(get("planners"), problems);
   plan.robots_ = sweep_detail::parse_robots(get("robot"), problems);
@@ -235,9 +255,14 @@ SweepPlan SweepPlan::build(const json& sweep, const std::string& file, std::vect
 
   if (!problems.empty()) {
     const std::string where = file.empty() ? "sweep" : file;
-    std::string text = std::to_string(problems.size()) + (problems.size() == 1 ? " problem" : " problems") +
-                       " in the sweep:";
-    for (const auto& p : problems) text += sweep_detail::concat({"\n", where, ": ", p});
+    std::string text =
+        std::to_string(problems.size()) + (problems.size() == 1 ? " problem" : " problems") +
+        (overrides.empty() ? " in the sweep:" : " in the sweep with its command-line overrides:");
+    for (const auto& p : problems) {
+      const SweepOverride* origin = origin_of(p, overrides);
+      text += sweep_detail::concat(
+          {"\n", where, ": ", origin != nullptr ? override_label(origin->text) + ": " : std::string(), p});
+    }
     throw ConfigError(where, text);
   }
   return plan;

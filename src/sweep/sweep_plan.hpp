@@ -15,8 +15,11 @@
 ///   {"spec": "SPEC string"}, plus optional `label` (text for tables) and, for generators,
 ///   `seeds`: a sweep value (below) of generator seeds; the item then expands into one map per
 ///   seed, in the order of the values (a `seed` key next to `seeds` is an error). Relative
-///   file paths are relative to the current directory, as on the command line. Every map is
-///   loaded during validation and kept in memory for the whole sweep.
+///   paths (map files, a dataset's folder and id list) are relative to the sweep file's folder;
+///   one found only under the working directory (where sweeps used to name them from) is read
+///   from there with a warning (path_warnings()). They are kept as written in run keys, labels
+///   and runs.csv, so none of these depends on where the files lie. Every map is loaded during
+///   validation and kept in memory for the whole sweep.
 /// - `strategies` (required, non-empty list of {"name", "label"?, "params"?, "zip"?}): `params`
 ///   maps each strategy parameter to a sweep value. `zip` is a list of groups (lists of
 ///   parameter names) whose values vary together: the lists of one group must have equal
@@ -30,11 +33,16 @@
 /// - `sim`: the sim_params_from_json object (not swept). `progress_step_m` may also be given
 ///   at the top level (as the issue names it), but not in both places.
 /// - `repetitions`: integer from 1 to kMaxRepetitions, default 1. `seed`: unsigned integer, default 0.
-/// - `output`: {"dir": path (default "results/<name>"), "objective": "distance_to_final_
-///   coverage_m" (default) | "area_per_metre" | "energy"}.
+/// - `output`: {"dir": path (default "results/<name>"; relative to the working directory),
+///   "objective": "distance_to_final_coverage_m" (default) | "area_per_metre" | "energy"}.
+///
+/// Command-line overrides ("robot.battery=800", apply_sweep_overrides() in sweep_json_reader.hpp)
+/// change the parsed JSON before validation; source() and the manifest's sweep and hash are of
+/// the sweep so changed.
 ///
 /// Sweep values (strategy parameters, robot leaves, map seeds), see expand_values():
-/// - a scalar or an object without a "range" key: one value;
+/// - a scalar or an object without a "range" key: one value (where the robot takes an object,
+///   `sensor` and `energy`, an object is that object, so a "range" key in it is an unknown key);
 /// - a list: each element is one value, in order (so an array-valued strategy parameter is
 ///   written as a list of arrays, e.g. [[3, 4]] for the single value [3, 4]);
 /// - {"range": [lo, hi], "step": s}: lo, lo + s, ..., hi inclusive. `step` is required and
@@ -95,6 +103,7 @@
 
 #include "report/runs_schema.hpp"
 #include "sim/run_spec.hpp"
+#include "sweep/sweep_json_reader.hpp"
 
 namespace fsweep {
 inline namespace sweep {
@@ -246,20 +255,29 @@ struct SweepRun {
 /// A validated sweep. Cheap to query from many threads (all methods are const and pure).
 class SweepPlan {
  public:
-  /// Parses and validates `sweep` (read from `file`, used in messages). Every problem is
+  /// Parses and validates `sweep` (read from `file`: used in messages, and its folder is where
+  /// relative paths are found; "" or a bare name: the working directory). Every problem is
   /// collected and thrown at once as one ConfigError (where() = file) whose message lists
   /// them, one per line, "<file>: <JSON path>: <message>". Loads every map.
   static SweepPlan from_json(const nlohmann::json& sweep, const std::string& file);
-  /// Reads the file and calls from_json. A missing file names the file; bad JSON, a number
-  /// beyond a double and nesting deeper than kMaxSweepNesting name the file, line and column
-  /// (parse_sweep_json()); duplicate keys in one object are problems (JSON would keep only the
-  /// last).
-  static SweepPlan from_file(const std::string& path);
+  /// Reads the file, applies the command-line `overrides` ("PATH=VALUE", in order;
+  /// apply_sweep_overrides(), which throws for one that cannot be applied) and validates the
+  /// result as from_json does; a problem at or under an override's path is reported as
+  /// "<file>: override '<text>': <JSON path>: <message>". A missing file names the file; bad
+  /// JSON, a number beyond a double and nesting deeper than kMaxSweepNesting name the file,
+  /// line and column (parse_sweep_json()); duplicate keys in one object are problems (JSON
+  /// would keep only the last).
+  static SweepPlan from_file(const std::string& path, const std::vector<std::string>& overrides = {});
 
   [[nodiscard]] const std::string& name() const { return name_; }
   [[nodiscard]] const std::string& description() const { return description_; }
-  /// The sweep file's JSON as read.
+  /// The sweep file's JSON as read, with the overrides applied (paths as written).
   [[nodiscard]] const nlohmann::json& source() const { return source_; }
+  /// The command-line overrides applied to it, as given.
+  [[nodiscard]] const std::vector<std::string>& overrides() const { return overrides_; }
+  /// One warning per relative path found only under the working directory, not beside the sweep
+  /// file (sweep_table.hpp's sweep_warnings() lists them first).
+  [[nodiscard]] const std::vector<std::string>& path_warnings() const { return path_warnings_; }
   /// Output directory: "output": {"dir": ...} or results/<name>.
   [[nodiscard]] const std::string& output_dir() const { return output_dir_; }
   /// Ranking objective for best.csv: a name of runs_schema.hpp's kObjectives (default the first).
@@ -307,13 +325,15 @@ class SweepPlan {
 
  private:
   static SweepPlan build(const nlohmann::json& sweep, const std::string& file,
-                         std::vector<std::string> problems);
+                         std::vector<std::string> problems, const std::vector<SweepOverride>& overrides);
   [[nodiscard]] RunSpec spec_at(const RunCoordinates& c) const;
   [[nodiscard]] nlohmann::json key_json_of(const RunCoordinates& c, const RunSpec& spec) const;
 
   std::string name_;
   std::string description_;
   nlohmann::json source_;
+  std::vector<std::string> overrides_;
+  std::vector<std::string> path_warnings_;
   std::string output_dir_;
   std::string objective_{kObjectives[0].name};
   int repetitions_ = 1;

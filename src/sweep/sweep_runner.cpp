@@ -1,10 +1,8 @@
 #include "sweep/sweep_runner.hpp"
 
 #include <fcntl.h>
-#include <oneapi/tbb/blocked_range.h>
 #include <oneapi/tbb/global_control.h>
 #include <oneapi/tbb/info.h>
-#include <oneapi/tbb/parallel_for.h>
 #include <oneapi/tbb/parallel_pipeline.h>
 #include <oneapi/tbb/task_arena.h>
 #include <sys/file.h>
@@ -16,12 +14,10 @@
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <optional>
 #include <thread>
 
 #include "core/config_error.hpp"
-#include "core/random.hpp"
 #include "report/aggregate.hpp"
 #include "report/runs_schema.hpp"
 #include "sweep/csv_journal.hpp"
@@ -116,136 +112,6 @@ std::uint64_t shard_size(std::uint64_t n, std::uint64_t index, std::uint64_t cou
   return n > index ? (n - index - 1) / count + 1 : 0;
 }
 
-/// What survives of earlier invocations: the done runs, after repairing both files.
-struct Resumed {
-  DoneRuns done;
-  std::uint64_t failed = 0;  ///< done rows whose end_reason is `error`
-  /// The largest run_index of a done row; runs below it that are not done fill gaps.
-  std::optional<std::uint64_t> last_index;
-  bool in_order = true;  ///< the done rows are in ascending run_index order
-};
-
-/// A cell quoted in a message: at most 40 characters, non-printable bytes as '?'.
-std::string quoted_cell(std::string_view cell) {
-  constexpr std::size_t kMax = 40;
-  std::string out = "'";
-  for (const char c : cell.substr(0, kMax)) out += (c >= 0x20 && c < 0x7f) ? c : '?';
-  out += cell.size() > kMax ? "...'" : "'";
-  return out;
-}
-
-std::string field_count_reason(std::size_t got, std::size_t expected) {
-  return "the line has " + std::to_string(got) + (got == 1 ? " field" : " fields") +
-         ", where the header has " + std::to_string(expected);
-}
-
-/// Tells on stderr every line repair() dropped, and why.
-void report_dropped(const CsvJournal& journal, const CsvRepairStats& stats, const char* what) {
-  for (const CsvDroppedLines& d : stats.dropped_lines) {
-    std::fprintf(stderr, "fsweep: dropped %s: %s\n", d.describe(journal.path()).c_str(), what);
-  }
-}
-
-/// Refuses done rows whose run_key is not the key `plan` gives their run_index: their inputs
-/// changed since they ran (a map file edited: run keys cover the map's content; or keys of
-/// another fsweep version), so they are not this sweep's results. Keys are computed in parallel.
-void verify_done_keys(const SweepPlan& plan, const DoneRuns& done, const std::string& runs_path) {
-  const std::vector<DoneRuns::Row>& rows = done.rows();
-  std::vector<std::uint64_t> expected(rows.size());
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rows.size()), [&](const auto& range) {
-    for (std::size_t i = range.begin(); i != range.end(); ++i) {
-      expected[i] = parse_run_key(plan.run_key(rows[i].index)).value_or(0);
-    }
-  });
-  std::size_t stale = 0;
-  std::string examples;
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    if (rows[i].key == expected[i]) continue;
-    if (++stale <= 3) {
-      examples += (stale > 1 ? "; run " : "run ") + std::to_string(rows[i].index) + ": " +
-                  hex64(rows[i].key) + " in the file, " + hex64(expected[i]) + " now";
-    }
-  }
-  if (stale == 0) return;
-  throw ConfigError(runs_path, std::to_string(stale) + " of its " + std::to_string(rows.size()) +
-                                   " runs have another run_key than this sweep gives them (" + examples +
-                                   "): their inputs changed since they ran (an edited map file, or keys of "
-                                   "another fsweep version); use --fresh to start over, or another output "
-                                   "directory");
-}
-
-/// The shard a runner writes: runs i with i % count == index.
-struct ShardOf {
-  std::uint64_t index = 0;
-  std::uint64_t count = 1;
-};
-
-Resumed repair_outputs(const SweepPlan& plan, ShardOf shard, const SweepTable& table, CsvJournal& runs,
-                       CsvJournal& progress) {
-  Resumed r;
-  const std::size_t fields = table.columns().size();
-  const std::size_t key_col = table.column(kRunKeyColumn);
-  const std::size_t index_col = table.column(kRunIndexColumn);
-  const std::size_t end_col = table.column(kEndReasonColumn);
-  const std::size_t progress_key_col = SweepTable::progress_column(kRunKeyColumn);
-  const std::size_t progress_index_col = SweepTable::progress_column(kRunIndexColumn);
-  const std::string error(to_string(EndReason::Error));
-  std::vector<bool> seen;  // by run_index: a row for it was kept
-  const CsvRepairStats run_stats = runs.repair(
-      [&](const std::vector<std::string>& f) -> std::string {
-        if (f.size() != fields) return field_count_reason(f.size(), fields);
-        const auto key = parse_run_key(f[key_col]);
-        if (!key) return "its run_key " + quoted_cell(f[key_col]) + " is not 16 hexadecimal digits";
-        const auto index = parse_run_index(f[index_col]);
-        if (!index) return "its run_index " + quoted_cell(f[index_col]) + " is not a whole number";
-        if (*index >= plan.run_count()) {
-          return "its run_index " + f[index_col] + " is not below the sweep's " +
-                 std::to_string(plan.run_count()) + " runs";
-        }
-        if (*index % shard.count != shard.index) {
-          return "its run_index " + f[index_col] + " is not of shard " + std::to_string(shard.index) + "/" +
-                 std::to_string(shard.count);
-        }
-        const auto slot = static_cast<std::size_t>(*index / shard.count);
-        if (slot >= seen.size()) seen.resize(slot + 1, false);
-        if (seen[slot]) return "run " + f[index_col] + " has a row earlier in the file";
-        seen[slot] = true;
-        r.done.add(*key, *index);
-        if (r.last_index && *index < *r.last_index) r.in_order = false;
-        r.last_index = std::max(r.last_index.value_or(0), *index);
-        if (f[end_col] == error) ++r.failed;
-        return {};
-      },
-      [&] {
-        r.done.seal();
-        verify_done_keys(plan, r.done, runs.path());  // refuses before runs.csv is touched
-      });
-  report_dropped(runs, run_stats, "its run is done again (if it is this sweep's), in run order");
-  const CsvRepairStats progress_stats =
-      progress.repair([&](const std::vector<std::string>& f) -> std::string {
-        if (f.size() != SweepTable::kProgressFields)
-          return field_count_reason(f.size(), SweepTable::kProgressFields);
-        const auto key = parse_run_key(f[progress_key_col]);
-        if (!key) return "its run_key " + quoted_cell(f[progress_key_col]) + " is not 16 hexadecimal digits";
-        const auto index = parse_run_index(f[progress_index_col]);
-        if (!index) return "its run_index " + quoted_cell(f[progress_index_col]) + " is not a whole number";
-        if (!r.done.contains(*key, *index)) {
-          return "run " + std::to_string(*index) + " (run_key " + f[progress_key_col] +
-                 ") has no complete row in runs.csv (it did not finish, or its row was dropped)";
-        }
-        return {};
-      });
-  report_dropped(progress, progress_stats, "its run's progress is written again with the run");
-  return r;
-}
-
-/// True when the CSV file at `path` has a line after its header.
-bool has_rows(const std::string& path) {
-  std::ifstream in(path);
-  std::string line;
-  return std::getline(in, line) && std::getline(in, line);
-}
-
 /// One run moving through the pipeline.
 struct Job {
   std::uint64_t index = 0;
@@ -289,21 +155,24 @@ RunnerReport run_sweep(const SweepPlan& plan, const RunnerOptions& options) {
 
   const std::string manifest_path = dir + "/manifest.json";
   const std::string hash = sweep_hash(plan.source());
+  const ShardOf shard{options.shard_index, options.shard_count};
+  const SweepTable table(plan);
+  nlohmann::json sessions = nlohmann::json::array();
   if (options.fresh) {
     for (const char* f : kOutputFiles) fs::remove(dir + "/" + f);
   } else if (const auto old = read_manifest(manifest_path)) {
+    sessions = manifest_sessions(*old);
     const std::string old_hash = (*old)["sweep_hash"].get<std::string>();
     if (old_hash != hash) {
-      throw ConfigError(dir, "holds the outputs of a different sweep file (hash " + old_hash + ", this one " +
-                                 hash + "); use --fresh to start over, or another output directory");
-    }
-    if (!old->contains("maps") && has_rows(dir + "/runs.csv")) {
+      report.kept = extend_outputs(plan, shard, table, dir, *old);  // refuses unless it only adds runs
+      report.extended_from = old_hash;
+    } else if (!old->contains("maps") && has_rows(dir + "/runs.csv")) {
       throw ConfigError(dir,
                         "holds the results of an older fsweep: its manifest.json does not record the maps' "
                         "content, and its run keys differ from this version's; use --fresh to start over, or "
                         "another output directory");
-    }
-    if (const auto changed = changed_maps(*old, plan); !changed.empty() && has_rows(dir + "/runs.csv")) {
+    } else if (const auto changed = changed_maps(*old, plan);
+               !changed.empty() && has_rows(dir + "/runs.csv")) {
       std::string list;
       for (const std::string& c : changed) list += (list.empty() ? "" : "; ") + c;
       throw ConfigError(dir, "holds the results of other maps than this sweep's (" + list +
@@ -311,10 +180,9 @@ RunnerReport run_sweep(const SweepPlan& plan, const RunnerOptions& options) {
     }
   }
 
-  const SweepTable table(plan);
   CsvJournal runs(dir + "/runs.csv", table.header());
   CsvJournal progress(dir + "/progress.csv", SweepTable::progress_header());
-  Resumed resumed = repair_outputs(plan, {options.shard_index, options.shard_count}, table, runs, progress);
+  Resumed resumed = repair_outputs(plan, shard, table, runs, progress);
 
   ManifestInfo info;
   info.sweep_file = options.sweep_file;
@@ -323,6 +191,7 @@ RunnerReport run_sweep(const SweepPlan& plan, const RunnerOptions& options) {
   info.shard_count = options.shard_count;
   info.start_utc = utc_now_iso8601();
   info.status = "running";
+  info.sessions = std::move(sessions);
   info.runs.total = shard_size(plan.run_count(), options.shard_index, options.shard_count);
   info.runs.done = resumed.done.size();
   info.runs.failed = resumed.failed;
@@ -369,34 +238,27 @@ RunnerReport run_sweep(const SweepPlan& plan, const RunnerOptions& options) {
     job.rows = table.run(plan, plan.run(job.index));
     return job;
   };
-  // Runs below the last done one fill gaps (rows dropped by the repair): they are held and
-  // both files are rewritten in run order (temp file and rename) before the first run past the
-  // done ones is appended, or at the end.
+  // A run below the largest run_index in the files (a gap a dropped row left, a new run of an
+  // extended sweep) is appended like any other; both files are put in run order (temp file and
+  // rename) once the runs end, also when interrupted.
   const std::size_t index_col = table.column(kRunIndexColumn);
   const std::size_t progress_index_col = SweepTable::progress_column(kRunIndexColumn);
-  std::vector<std::pair<std::uint64_t, std::string>> held_runs;
-  std::vector<std::pair<std::uint64_t, std::string>> held_progress;
+  std::optional<std::uint64_t> last_index = resumed.last_index;
   bool reorder = !resumed.in_order;
   const auto put_in_order = [&] {
-    if (!reorder && held_runs.empty()) return;
-    progress.rewrite_in_order(progress_index_col, std::move(held_progress));  // progress first, as always
-    runs.rewrite_in_order(index_col, std::move(held_runs));
-    held_progress.clear();
-    held_runs.clear();
+    if (!reorder) return;
+    progress.rewrite_in_order(progress_index_col);  // progress first, as always
+    runs.rewrite_in_order(index_col);
     reorder = false;
   };
-  auto write = [&](Job job) {
+  auto write = [&](const Job& job) {
     ++report.ran;
     if (job.rows.failed) ++report.failed;
-    if (resumed.last_index && job.index < *resumed.last_index) {
-      held_progress.emplace_back(job.index, std::move(job.rows.progress_rows));
-      held_runs.emplace_back(job.index, std::move(job.rows.run_row));
-    } else {
-      put_in_order();
-      progress.append(job.rows.progress_rows);
-      runs.append(job.rows.run_row);
-      flush_both();  // two write(2) calls per run: nothing next to a simulation
-    }
+    if (last_index && job.index < *last_index) reorder = true;
+    last_index = std::max(last_index.value_or(0), job.index);
+    progress.append(job.rows.progress_rows);
+    runs.append(job.rows.run_row);
+    flush_both();  // two write(2) calls per run: nothing next to a simulation
     const std::uint64_t s = skipped.load();
     meter.update(s + report.ran, s);
   };
@@ -421,6 +283,9 @@ RunnerReport run_sweep(const SweepPlan& plan, const RunnerOptions& options) {
   } catch (...) {
     info.status = "failed";
     info.end_utc = utc_now_iso8601();
+    info.runs.ran = report.ran;
+    info.runs.ran_failed = report.failed;
+    info.wall_s = std::chrono::duration<double>(Clock::now() - wall_start).count();
     try {
       flush_both();
       write_manifest(manifest_path, manifest_json(plan, info));
@@ -440,6 +305,7 @@ RunnerReport run_sweep(const SweepPlan& plan, const RunnerOptions& options) {
   info.runs.ran = report.ran;
   info.runs.done = report.skipped + report.ran;
   info.runs.failed = resumed.failed + report.failed;
+  info.runs.ran_failed = report.failed;
   info.end_utc = utc_now_iso8601();
   info.wall_s = report.wall_s;
   info.runs_per_s = report.runs_per_s;

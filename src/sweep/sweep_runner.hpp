@@ -25,8 +25,12 @@
 /// - `manifest.json` (manifest.hpp): the sweep file's contents and FNV-1a hash, run counts
 ///   (total, done, skipped as already done, ran, failed), git revision, compiler, library
 ///   versions, host, CPU model, threads, start and end time (UTC, ISO 8601), wall seconds,
-///   runs/s, status ("running" while running, then "complete", "interrupted" or "failed").
-///   Written at the start and at the end, each time through a temp file and rename.
+///   runs/s, status ("running" while running, then "complete", "interrupted" or "failed"), and
+///   `sessions`: one entry per invocation on the directory, oldest first (start, end, status,
+///   sweep_hash, sweep file, version, host, threads, shard, runs simulated, wall seconds, runs/s),
+///   so the history of a resumed or extended sweep is kept; the top-level timing fields are over
+///   all sessions (manifest_json()). Written at the start and at the end, each time through a
+///   temp file and rename; `fresh` starts the history over.
 /// - `summary.csv`, `progress_summary.csv`, `best.csv`: written by aggregate.hpp after a
 ///   complete, unsharded run.
 /// - The exact weight searches' files (weight_search_runner.hpp: searches.json,
@@ -60,15 +64,31 @@
 /// (truncated when they form its tail, rewritten through a temp file otherwise). Runs are then
 /// dispatched in index order, skipping a run whose key is among the done ones (each done row
 /// skips one run: a sweep listing the same configuration twice keeps both). A run below the
-/// largest done run_index fills a gap (a dropped row): its rows are held in memory, and before
-/// the first run past the done ones is written (or at the end, also when interrupted) both
-/// files are rewritten in run_index order with them merged in (progress.csv first, each
-/// through a temp file and rename, so a kill meanwhile leaves complete files that the next
-/// resume repairs; held runs are then simulated again). Done rows out of run_index order are
-/// put in order the same way. So the resumed files are byte-identical to an uninterrupted
-/// run's (timing columns aside). Rows of keys this sweep does not have are kept (in run_index
-/// order). If the sweep file's hash differs from the manifest's, the runner refuses unless
-/// `fresh`.
+/// largest run_index in the files (a gap a dropped row left, a new run of an extended sweep) is
+/// appended like any other, and once the runs end (also when interrupted) both files are
+/// rewritten in run_index order (CsvJournal::rewrite_in_order(); progress.csv first, each
+/// through a temp file and rename, so a kill meanwhile leaves complete files, out of order, that
+/// the next run puts in order the same way). Done rows out of run_index order are put in order
+/// the same way. So the resumed files are byte-identical to an uninterrupted run's (timing
+/// columns aside).
+///
+/// Extending: when the sweep file's hash differs from the manifest's (and not `fresh`), the
+/// outputs are of another version of the sweep file. It is an extension when every done row's
+/// run_key is the key the changed sweep gives one of its runs (of the same shard): repetitions,
+/// map seeds, values, maps or strategy entries added. The done rows are found by
+/// RunPlacement (done_runs.hpp) from the changed plan's keys (computed in parallel until every
+/// done row has its place), and both files are rewritten in the changed sweep's run order
+/// (rewrite_in_order() again): progress rows renumbered, runs.csv rows under the changed
+/// sweep's header with their cells up to end_reason described by it (SweepTable::describe():
+/// run_index, labels, config columns) and their outcome and metric cells kept; then the run goes
+/// on as a resume, so only the new runs are simulated. A place follows from the keys alone, so a
+/// kill during the rewrite is repaired by the next run. Refused with a ConfigError before any
+/// file is touched: done runs the changed sweep does not have (removed or changed: how many, and
+/// one or two of them by map, strategy, parameters and repetition of the earlier sweep rebuilt
+/// from the manifest), done runs of a shard directory that belong to other shards of the changed
+/// sweep (run indices change with the plan), a map whose content changed (changed_map_contents()),
+/// outcome or metric columns of another build, and sweeps with exact weight searches (before or
+/// after: their files are of the earlier sweep's instances).
 ///
 /// Signals: SIGINT/SIGTERM stop dispatching new runs; runs in flight finish and are written,
 /// the files are flushed, the manifest says "interrupted", and run_sweep returns with
@@ -131,6 +151,11 @@ struct RunnerReport {
   double wall_s = 0.0;
   double runs_per_s = 0.0;  ///< ran / wall_s
   std::string out_dir;      ///< where the files are (with the shard subdirectory)
+  /// The sweep_hash of the earlier version of the sweep file whose outputs this run extended
+  /// (Extending, above); empty when the sweep file had not changed.
+  std::string extended_from;
+  /// Of those outputs, the finished runs kept (in the changed sweep's run order).
+  std::uint64_t kept = 0;
   /// The sweep's exact weight searches, run after its runs (when those were not interrupted).
   SearchRunReport searches;
   /// Their files were already there (searches.json), so they were not run again.
@@ -138,9 +163,9 @@ struct RunnerReport {
 };
 
 /// Runs the plan. Throws ConfigError for unusable outputs (unwritable directory, another runner
-/// on it, a sweep file changed since the outputs were made without `fresh`, runs.csv with other
-/// columns) and for bad options; write errors during the run also throw ConfigError naming the
-/// file (the manifest then says "failed").
+/// on it, a sweep file changed since the outputs were made other than by adding runs, without
+/// `fresh`; runs.csv with other columns) and for bad options; write errors during the run also
+/// throw ConfigError naming the file (the manifest then says "failed").
 [[nodiscard]] RunnerReport run_sweep(const SweepPlan& plan, const RunnerOptions& options);
 
 }  // namespace sweep

@@ -56,10 +56,14 @@ std::string StarOptimum::check_text() const {
 }
 
 StarOptimum star_optimum(const SweepMap& map, const RobotParams& robot) {
+  return star_optimum(*map.map, map.free_space, robot);
+}
+
+StarOptimum star_optimum(const WorldMap& world, bool free_space, const RobotParams& robot) {
   StarOptimum out;
-  if (!map.free_space || !std::isfinite(robot.battery_capacity)) return out;
+  if (!free_space || !std::isfinite(robot.battery_capacity)) return out;
   const EnergyModel& e = robot.energy;
-  const double resolution_m = map.map->resolution_m;
+  const double resolution_m = world.resolution_m;
   const double per_metre = e.per_metre + e.per_cell / resolution_m;
   const double sensor_m = robot.sensor.range_m;
   if (!(per_metre > 0.0) || !(sensor_m > 0.0)) return out;
@@ -76,7 +80,6 @@ StarOptimum star_optimum(const SweepMap& map, const RobotParams& robot) {
   out.needed_cells = static_cast<int>(std::ceil((range_m / 2.0 + sensor_m) / resolution_m - kTolerance)) + 1;
   // The free generator's interior is a rectangle, so the four axis directions from the dock
   // decide whether the disc lies inside it.
-  const WorldMap& world = *map.map;
   const Cell dock = robot.dock.value_or(world.start);
   out.half_width_cells = std::numeric_limits<int>::max();
   for (const Cell step : {Cell{1, 0}, Cell{-1, 0}, Cell{0, 1}, Cell{0, -1}}) {
@@ -98,6 +101,19 @@ double optimal_distance_m(const SweepMap& map, const RunSpec& spec) {
   return star_optimum(map, spec.robot).optimum_m;
 }
 
+std::string clipped_free_space_warning(const std::string& map_label, const WorldMap& world,
+                                       const RobotParams& robot, const std::string& robot_label,
+                                       const StarOptimum& check) {
+  const Cell dock = robot.dock.value_or(world.start);
+  return "map '" + map_label + "' (" + std::to_string(world.width()) + "x" + std::to_string(world.height()) +
+         " cells of " + format_number(world.resolution_m) + " m, dock " + std::to_string(dock.x) + ";" +
+         std::to_string(dock.y) + ")" + (robot_label.empty() ? std::string() : ", robot " + robot_label) +
+         ": clips the free-space optimum: the disc the robot can reach (radius r/2) and its sensor "
+         "band need a half-width of " +
+         std::to_string(check.needed_cells) + " cells (r/2 + r_s + 1 cell), the map has " +
+         std::to_string(check.half_width_cells) + "; optimal_distance_m and competitive_ratio stay empty";
+}
+
 std::vector<std::string> clipped_free_space_warnings(const SweepPlan& plan) {
   std::vector<std::string> out;
   for (const SweepMap& map : plan.maps()) {
@@ -105,19 +121,10 @@ std::vector<std::string> clipped_free_space_warnings(const SweepPlan& plan) {
     for (const RobotVariant& robot : plan.robots()) {
       const StarOptimum check = star_optimum(map, robot.params);
       if (check.status != StarOptimum::Status::Clipped) continue;
-      const WorldMap& world = *map.map;
-      const Cell dock = robot.params.dock.value_or(world.start);
-      out.push_back(
-          "map '" + map.label + "' (" + std::to_string(world.width()) + "x" + std::to_string(world.height()) +
-          " cells of " + format_number(world.resolution_m) + " m, dock " + std::to_string(dock.x) + ";" +
-          std::to_string(dock.y) + ")" +
-          (plan.robots().size() > 1 ? ", robot " + robot.label : std::string()) +
-          ": clips the free-space optimum: the disc the robot can reach (radius r/2) and its sensor "
-          "band need a half-width of " +
-          std::to_string(check.needed_cells) + " cells (r/2 + r_s + 1 cell), the map has " +
-          std::to_string(check.half_width_cells) +
-          "; optimal_distance_m and competitive_ratio stay empty (optimum_check in runs.csv, "
-          "summary.csv and best.csv)");
+      out.push_back(clipped_free_space_warning(map.label, *map.map, robot.params,
+                                               plan.robots().size() > 1 ? robot.label : std::string(),
+                                               check) +
+                    " (optimum_check in runs.csv, summary.csv and best.csv)");
     }
   }
   return out;
@@ -179,7 +186,7 @@ std::vector<std::string> identical_repetition_warnings(const SweepPlan& plan) {
 }
 
 std::vector<std::string> sweep_warnings(const SweepPlan& plan) {
-  std::vector<std::string> out;
+  std::vector<std::string> out = plan.path_warnings();
   for (const SkippedMap& m : plan.skipped_maps()) {
     out.push_back(m.where + ": skipped plan " + m.file + " (\"on_bad_map\": \"skip\"): " + m.reason);
   }
@@ -270,13 +277,16 @@ std::size_t SweepTable::progress_column(std::string_view name) {
   return static_cast<std::size_t>(it - columns.begin());
 }
 
-RunRows SweepTable::run(const SweepPlan& plan, const SweepRun& run) const {
-  const std::uint64_t index = run.at.index;
-  const std::string& run_key = run.key;
-  RunRows out;
+std::vector<std::string> SweepTable::describe(const SweepPlan& plan, const SweepRun& run) const {
   std::vector<std::string> fields(columns_.size());
-  fields[position_.at(kRunIndexColumn)] = std::to_string(index);
-  fields[position_.at(kRunKeyColumn)] = run_key;
+  fill_description(plan, run, fields);
+  return fields;
+}
+
+void SweepTable::fill_description(const SweepPlan& plan, const SweepRun& run,
+                                  std::vector<std::string>& fields) const {
+  fields[position_.at(kRunIndexColumn)] = std::to_string(run.at.index);
+  fields[position_.at(kRunKeyColumn)] = run.key;
   const auto set = [&](const std::string& name, std::string value) {
     const auto it = position_.find(name);
     if (it == position_.end()) {
@@ -286,25 +296,35 @@ RunRows SweepTable::run(const SweepPlan& plan, const SweepRun& run) const {
     }
     fields[it->second] = std::move(value);
   };
+  const RunSpec& spec = run.spec;
+  const RunCoordinates& at = run.at;
+  set(kMapClassColumn, plan.maps().at(at.map).map_class);
+  // The entry's label, plus "+rr", "+seg" for the heuristics on (src/sim/heuristics.hpp).
+  const std::string heuristics = heuristics_text(spec.heuristics.value_or(Heuristics{}));
+  set(kStrategyLabelColumn,
+      plan.strategies().at(at.strategy_entry).label + (heuristics.empty() ? "" : "+" + heuristics));
+  for (auto& [name, value] : config_columns(spec)) set(name, std::move(value));
+  const StarOptimum star = star_optimum(plan.maps().at(at.map), spec.robot);
+  if (star.status != StarOptimum::Status::NotApplicable) set(kOptimumCheckColumn, star.check_text());
+}
+
+RunRows SweepTable::run(const SweepPlan& plan, const SweepRun& run) const {
+  const std::uint64_t index = run.at.index;
+  RunRows out;
+  std::vector<std::string> fields(columns_.size());
   try {
+    fill_description(plan, run, fields);  // what a throw leaves filled stays in the error row
     const RunSpec& spec = run.spec;
-    const RunCoordinates& at = run.at;
-    set(kMapClassColumn, plan.maps().at(at.map).map_class);
-    // The entry's label, plus "+rr", "+seg" for the heuristics on (src/sim/heuristics.hpp).
-    const std::string heuristics = heuristics_text(spec.heuristics.value_or(Heuristics{}));
-    set(kStrategyLabelColumn,
-        plan.strategies().at(at.strategy_entry).label + (heuristics.empty() ? "" : "+" + heuristics));
-    for (auto& [name, value] : config_columns(spec)) set(name, std::move(value));
-    const StarOptimum star = star_optimum(plan.maps().at(at.map), spec.robot);
-    if (star.status != StarOptimum::Status::NotApplicable) set(kOptimumCheckColumn, star.check_text());
+    const StarOptimum star = star_optimum(plan.maps().at(run.at.map), spec.robot);
     const RunResult result = simulate(spec);
-    for (auto& [name, value] : metric_columns(result)) set(name, std::move(value));
+    for (auto& [name, value] : metric_columns(result)) fields[position_.at(name)] = std::move(value);
     if (star.status == StarOptimum::Status::Ok) {
-      set(kSweepMetricColumns[0], format_number(star.optimum_m));
-      set(kSweepMetricColumns[1], format_number(result.metrics.distance_m / star.optimum_m));
+      fields[position_.at(kSweepMetricColumns[0])] = format_number(star.optimum_m);
+      fields[position_.at(kSweepMetricColumns[1])] =
+          format_number(result.metrics.distance_m / star.optimum_m);
     }
     out.failed = result.end == EndReason::Error;
-    const std::string prefix = std::to_string(index) + ',' + csv_field(run_key) + ',';
+    const std::string prefix = std::to_string(index) + ',' + csv_field(run.key) + ',';
     for (const ProgressSample& s : result.progress) out.progress_rows += prefix + progress_cells(s) + '\n';
   } catch (const std::exception& e) {
     // The run failed before producing a result: the metric cells stay empty.

@@ -61,7 +61,16 @@ class SweepTable {
   /// message as end_detail and the metric cells empty. Thread-safe (const).
   [[nodiscard]] RunRows run(const SweepPlan& plan, const SweepRun& run) const;
 
+  /// The cells of `run`'s runs.csv row that do not depend on its simulation: run_index, run_key,
+  /// map_class, strategy_label, its config columns and (in a sweep with a free-space map)
+  /// optimum_check; the outcome and metric cells are empty. Throws std::runtime_error when the
+  /// run has a config column outside the header (run() records that as an `error` row).
+  [[nodiscard]] std::vector<std::string> describe(const SweepPlan& plan, const SweepRun& run) const;
+
  private:
+  /// describe() into `fields` (the row's size), so that a throw leaves what was set before it.
+  void fill_description(const SweepPlan& plan, const SweepRun& run, std::vector<std::string>& fields) const;
+
   std::vector<std::string> columns_;
   std::unordered_map<std::string, std::size_t> position_;
 };
@@ -98,6 +107,16 @@ struct StarOptimum {
 /// half-width >= r/2 + r_s + 1 cell, else the run explores less than d* assumes (Clipped).
 [[nodiscard]] StarOptimum star_optimum(const SweepMap& map, const RobotParams& robot);
 
+/// The same for `world`, where `free_space` says whether it comes from the `free` generator
+/// (`fsweep sim`, which has no SweepMap).
+[[nodiscard]] StarOptimum star_optimum(const WorldMap& world, bool free_space, const RobotParams& robot);
+
+/// The warning for a Clipped `check` of `world` (named `map_label`; `robot_label` empty when the
+/// sweep has one robot variant): the map, the dock, both widths and what it costs.
+[[nodiscard]] std::string clipped_free_space_warning(const std::string& map_label, const WorldMap& world,
+                                                     const RobotParams& robot, const std::string& robot_label,
+                                                     const StarOptimum& check);
+
 /// star_optimum(map, spec.robot).optimum_m: d*, or NaN where it does not apply or the map clips it.
 [[nodiscard]] double optimal_distance_m(const SweepMap& map, const RunSpec& spec);
 
@@ -125,8 +144,9 @@ inline constexpr char kOptimumCheckColumn[] = "optimum_check";
 [[nodiscard]] std::vector<std::string> identical_repetition_warnings(const SweepPlan& plan);
 
 /// Every warning about `plan` that `expand`, `run` and `slurm` print and manifest.json keeps: one
-/// line per skipped dataset plan (SweepPlan::skipped_maps()), then clipped_free_space_warnings(),
-/// then identical_repetition_warnings().
+/// line per relative path read from the working directory (SweepPlan::path_warnings()), one per
+/// skipped dataset plan (SweepPlan::skipped_maps()), then clipped_free_space_warnings(), then
+/// identical_repetition_warnings().
 [[nodiscard]] std::vector<std::string> sweep_warnings(const SweepPlan& plan);
 
 /// Index of the run at the given axis positions (repetition 0): the inverse of

@@ -125,7 +125,11 @@ WorldMap load_houseexpo(const std::string& path, double resolution_m) {
   map.source = path;
   map.occupied = Grid<std::uint8_t>(static_cast<int>(width), static_cast<int>(height), 1);
   fill_polygon(map.occupied, cells, 0);
-  loader_detail::set_first_free_start(map);
+  // The start: a plan has none; the cell nearest the centre of the largest free region under the
+  // default motion rule (8-connected without corner cutting, so its regions are the 4-connected
+  // ones), rather than the first free cell, which lies in a corner of the outline.
+  map.start = region_centre_cell(largest_free_region(map, /*allow_corner_cutting=*/false));
+  if (map.start.x < 0) throw ConfigError(path, "the plan has no free cell, so there is no start cell");
   return map;
 }
 

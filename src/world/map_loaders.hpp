@@ -60,8 +60,11 @@ inline constexpr double kHouseExpoResolution = 0.04;
 /// below 29), shifted so the smallest x and y are 0, then filled as cv2.drawContours fills
 /// (polygon_fill.hpp). The map is the contour's bounding box plus a border of one wall cell
 /// (PseudoSLAM pads 25 pixels; outside the grid is a wall here anyway). Other keys are not
-/// read. The start is the first free cell in row-major order. Errors name the file and the JSON
-/// path (a vertex that is not two finite numbers, fewer than 3 vertices, a grid over 10^8 cells).
+/// read. A plan has no start; the map's start is region_centre_cell() of largest_free_region()
+/// without corner cutting (the default motion rule, whose regions are the 4-connected ones): the
+/// cell nearest the centroid of the largest free region, ties to the lowest row, then column.
+/// Errors name the file and the JSON path (a vertex that is not two finite numbers, fewer than 3
+/// vertices, a grid over 10^8 cells) or a plan without free cells.
 [[nodiscard]] WorldMap load_houseexpo(const std::string& path, double resolution_m = kHouseExpoResolution);
 
 /// One MovingAI scenario query.

@@ -23,9 +23,10 @@
 /// - Bitmaps: threshold defaults to 127 (Stage). With `mpp` or `size`, `res` is the cell size
 ///   to resample to (max-pooling; omitted: one pixel per cell, pixels must be square). With
 ///   neither, one pixel is one cell of `res` metres (default 1).
-/// - `start` overrides the source's start (generators: their default; files: the first free
-///   cell in row-major order); it must be a free cell inside the grid, or "random" where runs
-///   draw their own start (load_run_map_spec()).
+/// - `start` overrides the source's start (generators: their default; HouseExpo plans: the cell
+///   nearest the centre of their largest free region, load_houseexpo(); other files: the first
+///   free cell in row-major order); it must be a free cell inside the grid, or "random" where
+///   runs draw their own start (load_run_map_spec()).
 /// - Errors from loaders and generators are rethrown with the spec (or JSON path) in front.
 
 #include <nlohmann/json_fwd.hpp>

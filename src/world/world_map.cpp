@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <cstdio>
 #include <limits>
 #include <string_view>
@@ -91,6 +92,40 @@ Cell draw_region_cell(const Grid<std::uint8_t>& region, std::uint64_t seed) {
     --k;
   }
   return Cell{-1, -1};  // not reached: k < cells
+}
+
+Cell region_centre_cell(const Grid<std::uint8_t>& region) {
+  // 1. The cell count n and the coordinate sums; the centroid is (sum_x / n, sum_y / n).
+  std::int64_t n = 0;
+  std::int64_t sum_x = 0;
+  std::int64_t sum_y = 0;
+  for (int i = 0; i < region.size(); ++i) {
+    if (region[i] != 1) continue;
+    const Cell c = region.cell(i);
+    ++n;
+    sum_x += c.x;
+    sum_y += c.y;
+  }
+  if (n == 0) return Cell{-1, -1};
+  // 2. The cell minimising n^2 |c - centroid|^2 = (n x - sum_x)^2 + (n y - sum_y)^2, in integers:
+  // |n x - sum_x| < n * width <= 2^62 (a grid has fewer than 2^31 cells), its square below 2^124.
+  __extension__ typedef unsigned __int128 Scaled;  // a typedef: __extension__ (for -Wpedantic) takes no alias
+  const auto square = [](std::int64_t v) {
+    const auto a = static_cast<Scaled>(v < 0 ? -v : v);
+    return a * a;
+  };
+  Cell best{-1, -1};
+  Scaled best_d2 = 0;
+  for (int i = 0; i < region.size(); ++i) {
+    if (region[i] != 1) continue;
+    const Cell c = region.cell(i);
+    const Scaled d2 = square(n * c.x - sum_x) + square(n * c.y - sum_y);
+    if (best.x < 0 || d2 < best_d2) {  // strict: the lowest index wins ties
+      best_d2 = d2;
+      best = c;
+    }
+  }
+  return best;
 }
 
 Cell nearest_free_cell(const WorldMap& map, Cell near) {

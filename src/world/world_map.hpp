@@ -51,6 +51,13 @@ struct WorldMap {
 /// A map's `start: "random"` (map_spec.hpp) draws with the run seed from largest_free_region().
 [[nodiscard]] Cell draw_region_cell(const Grid<std::uint8_t>& region, std::uint64_t seed);
 
+/// The cell of `region` (cells that are 1) nearest (Euclidean) the centroid of its cells, the
+/// mean of their x and of their y; of equally near cells the lowest index (row, then column).
+/// Exact: distances are compared as integers scaled by the cell count. A region that bends
+/// around its centroid (an L, a ring) gets a cell of its own, not the centroid's. {-1, -1} when
+/// no cell is 1. HouseExpo plans start here in their largest free region (load_houseexpo()).
+[[nodiscard]] Cell region_centre_cell(const Grid<std::uint8_t>& region);
+
 /// The first free cell in row-major order nearest (Euclidean, ties by index) to `near`;
 /// used by generators that must guarantee a free start. Returns {-1,-1} when no cell is free.
 [[nodiscard]] Cell nearest_free_cell(const WorldMap& map, Cell near);

@@ -8,10 +8,13 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <regex>
 #include <string>
 
 #include "cli/fsweep_process.hpp"
+#include "core/csv_reader.hpp"
+#include "sim/competitive.hpp"
 
 namespace {
 
@@ -125,6 +128,48 @@ TEST(Cli, SimWithABeamLidarRecordsItsKeys) {
   EXPECT_NE(header.find("robot.sensor.model"), std::string::npos) << header;
   EXPECT_NE(header.find("robot.sensor.beams"), std::string::npos) << header;
   std::filesystem::remove_all(out);
+}
+
+/// run.csv's one row as column -> cell.
+std::map<std::string, std::string> run_row(const std::string& path) {
+  fsweep::CsvReader csv(path);
+  EXPECT_TRUE(csv.next()) << path;
+  std::map<std::string, std::string> row;
+  for (std::size_t i = 0; i < csv.header().size(); ++i) row[csv.header()[i]] = csv.fields().at(i);
+  return row;
+}
+
+TEST(Cli, SimOnAFreeMapRecordsTheStarOptimumAndWarnsWhenTheMapClipsIt) {
+  // r = 20 m, r_s = 2 m: d* needs a half-width of ceil(10 + 2) + 1 = 13 cells around the dock.
+  const std::string robot = " --robot battery=20 --robot sensor.range_m=2 --out ";
+  const std::string wide = temp_dir("sim_star_ok");
+  const Outcome ok = fsweep("sim --map free:w=41,h=41" + robot + wide);
+  ASSERT_EQ(ok.code, 0) << ok.output;
+  EXPECT_EQ(ok.output.find("warning"), std::string::npos) << ok.output;
+  EXPECT_NE(ok.output.find("free-space optimum (star pattern): "), std::string::npos) << ok.output;
+  const auto row = run_row(wide + "/run.csv");
+  EXPECT_EQ(row.at("optimum_check"), "ok");
+  const double optimum = std::stod(row.at("optimal_distance_m"));
+  EXPECT_DOUBLE_EQ(optimum, fsweep::star_pattern_optimum_m(20.0, 2.0));
+  EXPECT_DOUBLE_EQ(std::stod(row.at("competitive_ratio")), std::stod(row.at("distance_m")) / optimum);
+
+  const std::string narrow = temp_dir("sim_star_clipped");
+  const Outcome clipped = fsweep("sim --map free:w=21,h=21" + robot + narrow);
+  ASSERT_EQ(clipped.code, 0) << clipped.output;
+  EXPECT_NE(clipped.output.find("fsweep: warning: map 'free:w=21,h=21'"), std::string::npos)
+      << clipped.output;
+  EXPECT_NE(clipped.output.find("need a half-width of 13 cells"), std::string::npos) << clipped.output;
+  EXPECT_EQ(clipped.output.find("free-space optimum (star pattern)"), std::string::npos) << clipped.output;
+  const auto cut = run_row(narrow + "/run.csv");
+  EXPECT_EQ(cut.at("optimum_check").rfind("clipped: half-width ", 0), 0U) << cut.at("optimum_check");
+  EXPECT_EQ(cut.at("optimal_distance_m"), "");
+  EXPECT_EQ(cut.at("competitive_ratio"), "");
+
+  // Elsewhere (another map, or no battery limit) run.csv has none of these columns.
+  const std::string rooms = temp_dir("sim_star_na");
+  ASSERT_EQ(fsweep("sim --map free:w=21,h=21 --robot sensor.range_m=2 --out " + rooms).code, 0);
+  EXPECT_EQ(run_row(rooms + "/run.csv").count("optimum_check"), 0U);
+  for (const std::string& d : {wide, narrow, rooms}) std::filesystem::remove_all(d);
 }
 
 TEST(Cli, SimPngScaleOverTheImageLimitIsExit2BeforeAnyOutput) {

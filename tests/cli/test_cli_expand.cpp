@@ -122,4 +122,44 @@ TEST(CliExpand, CountsWithLeadingZerosAreDecimalNotOctal) {
   EXPECT_NE(r.output.find("runs from index 10, 1 run of 90:"), std::string::npos) << r.output;
 }
 
+TEST(CliExpand, ShowsItsOverridesAndWarnsAboutAMapReadFromTheWorkingDirectory) {
+  // <dir>/sub/s.json names maps/two_rooms.txt as sweeps did when paths followed the working
+  // directory: found under <dir>, read from there with a warning that says what to write.
+  const std::string dir = fsweep::testing::fresh_temp_dir("expand", "fallback");
+  std::filesystem::create_directories(dir + "/sub");
+  std::filesystem::create_directories(dir + "/maps");
+  std::filesystem::copy_file(FSWEEP_TEST_DATA "/two_rooms.txt", dir + "/maps/two_rooms.txt");
+  std::ofstream(dir + "/sub/s.json") << R"({"schema_version": 1, "name": "fallback",
+    "maps": [{"file": "maps/two_rooms.txt"}], "strategies": [{"name": "closest_frontier"}],
+    "robot": {"sensor": {"range_m": 3}}})";
+  const std::string warning =
+      "fsweep: warning: sub/s.json: /maps/0/file: 'maps/two_rooms.txt' is not beside the "
+      "sweep file (no " +
+      dir +
+      "/sub/maps/two_rooms.txt); read from the working directory "
+      "instead (" +
+      dir + "/maps/two_rooms.txt)";
+  Outcome r =
+      fsweep::testing::run_fsweep("expand sub/s.json repetitions=2 'robot.sensor.miss_probability=0.1'", dir);
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find("overrides: repetitions=2 robot.sensor.miss_probability=0.1\n"), std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("runs: 2\n"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find(warning), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("write '../maps/two_rooms.txt'"), std::string::npos) << r.output;
+  r = fsweep::testing::run_fsweep("run sub/s.json --quiet --out out", dir);
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(fsweep::testing::read_all(dir + "/out/manifest.json").find("is not beside the sweep file"),
+            std::string::npos);
+  // runs.csv names the map as the sweep does.
+  EXPECT_NE(fsweep::testing::read_all(dir + "/out/runs.csv").find(",maps/two_rooms.txt,"), std::string::npos);
+  // From another folder, neither holds it: both absolute paths named.
+  r = fsweep("expand " + dir + "/sub/s.json");
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find("/maps/0/file: no such file 'maps/two_rooms.txt': tried " + dir +
+                          "/sub/maps/two_rooms.txt (beside the sweep file) and "),
+            std::string::npos)
+      << r.output;
+}
+
 }  // namespace test_cli_expand

@@ -40,6 +40,8 @@ std::size_t occurrences(const std::string& text, const std::string& what) {
 TEST(CliReport, WritesOneSelfContainedPageOfTheResultDirectory) {
   const std::string dir = fsweep::testing::fresh_temp_dir("report", "page");
   const std::string out = make_result(dir);
+  // A rerun with nothing to do is a second session of the directory.
+  ASSERT_EQ(run_fsweep("run " + dir + "/sweep.json --quiet --out " + out).code, 0);
   const auto r = run_fsweep("report " + out);
   ASSERT_EQ(r.code, 0) << r.output;
   EXPECT_NE(r.output.find("wrote " + out + "/report.html (2 plots, 2 of 2 trajectories)"), std::string::npos)
@@ -50,6 +52,13 @@ TEST(CliReport, WritesOneSelfContainedPageOfTheResultDirectory) {
   EXPECT_NE(page.find(manifest["sweep_hash"].get<std::string>()), std::string::npos);
   EXPECT_NE(page.find(dir + "/sweep.json"), std::string::npos);
   EXPECT_NE(page.find("4 runs: complete 4"), std::string::npos);
+  // Both sessions; the speed is that of the one that ran the sweep, not the rerun's 0.
+  EXPECT_NE(page.find("total 4, done 4, ran 4 over 2 sessions (the last found 4 done), failed 0"),
+            std::string::npos);
+  EXPECT_NE(page.find("<p>Sessions (one per <code>fsweep run</code> on the directory, oldest first):</p>"),
+            std::string::npos);
+  EXPECT_NE(page.find("<th>runs per second</th><td>"), std::string::npos);
+  EXPECT_EQ(page.find("<th>runs per second</th><td>0 "), std::string::npos);
   // The sections, the figures of fsweep plot and both trajectories, every picture embedded.
   for (const char* id :
        {"id='what-ran'", "id='ranking'", "id='paired'", "id='best'", "id='summary'", "id='plot-progress'",

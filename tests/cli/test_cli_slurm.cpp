@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "cli/fsweep_process.hpp"
 
@@ -76,6 +77,83 @@ TEST(CliSlurm, WithoutSbatchWritesAndPrintsThePackedScripts) {
   EXPECT_TRUE(has(out.output, array)) << "the printed script differs from the file";
   EXPECT_TRUE(has(slurp(dir + "/out/slurm/merge.sbatch"), " merge " + abs_dir + "/out\n"));
   EXPECT_TRUE(fs::is_directory(dir + "/out/slurm/logs"));
+  fs::remove_all(dir);
+}
+
+/// The lines of `text` in order, from the first that starts with `first` to the first after it
+/// that starts with `last`, both included; empty when either is missing.
+std::vector<std::string> lines_between(const std::string& text, const std::string& first,
+                                       const std::string& last) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  std::string line;
+  while (std::getline(in, line)) {
+    if (out.empty() && !line.starts_with(first)) continue;
+    out.push_back(line);
+    if (out.size() > 1 && line.starts_with(last)) return out;
+  }
+  return {};
+}
+
+TEST(CliSlurm, ClusterOptionsReachBothScriptsInOrder) {
+  const std::string dir = fsweep::testing::fresh_temp_dir("slurm", "cluster");
+  const std::string sweep = write_sweep(dir);
+  // --sbatch --exclusive: a value that looks like an option, taken as the value (one per --sbatch);
+  // the sweep file after it stays the positional argument.
+  const auto r = run_fsweep(
+      "slurm --tasks 2 --dry-run --account proj_a --qos normal --gres gpu:1 --sbatch --exclusive "
+      "--sbatch '#SBATCH --constraint=a100' --setup 'module load gcc/12' --setup 'source "
+      "\"$HOME/venv/bin/activate\"' "
+      "--sbatch=--mail-type=END " +
+      sweep + " --out " + dir + "/out");
+  ASSERT_EQ(r.code, 0) << r.output;
+  const std::string array = slurp(dir + "/out/slurm/array.sbatch");
+  const std::vector<std::string> want_array_directives = {
+      "#SBATCH --cpus-per-task=1",
+      "#SBATCH --account=proj_a",
+      "#SBATCH --qos=normal",
+      "#SBATCH --gres=gpu:1",
+      "#SBATCH --output=" + dir + "/out/slurm/logs/%A_%a.out",
+      "#SBATCH --exclusive",
+      "#SBATCH --constraint=a100",
+      "#SBATCH --mail-type=END"};
+  EXPECT_EQ(lines_between(array, "#SBATCH --cpus-per-task", "#SBATCH --mail-type"), want_array_directives)
+      << array;
+  const std::vector<std::string> want_setup = {"# setup (fsweep slurm --setup), in order:", "set +u",
+                                               "module load gcc/12", "source \"$HOME/venv/bin/activate\"",
+                                               "set -u"};
+  EXPECT_EQ(lines_between(array, "# setup", "set -u"), want_setup) << array;
+  EXPECT_LT(array.find("set -u\nfailed=0"), array.find(" run " + sweep)) << array;
+  const std::string merge = slurp(dir + "/out/slurm/merge.sbatch");
+  const std::vector<std::string> want_merge_directives = {
+      "#SBATCH --cpus-per-task=1", "#SBATCH --account=proj_a",
+      "#SBATCH --qos=normal",      "#SBATCH --output=" + dir + "/out/slurm/logs/merge_%j.out",
+      "#SBATCH --exclusive",       "#SBATCH --constraint=a100",
+      "#SBATCH --mail-type=END"};
+  EXPECT_EQ(lines_between(merge, "#SBATCH --cpus-per-task", "#SBATCH --mail-type"), want_merge_directives)
+      << merge;
+  EXPECT_TRUE(has(merge, "module load gcc/12\nsource \"$HOME/venv/bin/activate\"\nexec ")) << merge;
+  fs::remove_all(dir);
+}
+
+TEST(CliSlurm, BadClusterOptionsAreExit2NamingTheOption) {
+  const std::string dir = fsweep::testing::fresh_temp_dir("slurm", "badcluster");
+  const std::string sweep = write_sweep(dir);
+  const auto refused = [&](const std::string& options, const std::string& part) {
+    const auto r = run_fsweep("slurm " + sweep + " --tasks 2 --dry-run --out " + dir + "/out " + options);
+    EXPECT_EQ(r.code, 2) << options << "\n" << r.output;
+    EXPECT_TRUE(has(r.output, part)) << options << "\n" << r.output;
+    EXPECT_FALSE(fs::exists(dir + "/out")) << options;
+  };
+  refused("--account 'my account'", "--account: must be a name of letters, digits, '_', '.' and '-'");
+  refused("--qos 'a$(reboot)'", "--qos: must be a name of letters, digits");
+  refused("--gres 'gpu:1 x'", "--gres: must not contain whitespace");
+  refused("--sbatch constraint=a100",
+          "--sbatch: 'constraint=a100' is not an sbatch option; allowed: --option or --option=value");
+  refused("--sbatch \"$(printf -- '--exclusive\\n--nodes=2')\"",
+          "--sbatch: '--exclusive\\n--nodes=2' is not");
+  refused("--sbatch --array=0-99", "--sbatch: '--array=0-99' sets --array, which fsweep slurm writes itself");
+  refused("--setup \"$(printf 'echo a\\necho b')\"", "--setup: 'echo a\\necho b' is not one line");
   fs::remove_all(dir);
 }
 

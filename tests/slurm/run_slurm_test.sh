@@ -4,7 +4,8 @@
 # (12 runs) through `fsweep slurm` twice -- 4 shards as 4 array tasks, and 4 shards packed into
 # 3 tasks (--max-array-size 3) -- then redoes one deleted shard by resubmitting its array index
 # alone, and checks that each merged result equals a local `fsweep run` apart from the timing
-# columns (*_time_s). Everything it starts (munged, slurmctld, slurmd, jobs) runs from a
+# columns (*_time_s). The first submission also passes --account, --qos, two --sbatch lines and
+# a --setup line, and checks that they reach the jobs (step 5b). Everything it starts (munged, slurmctld, slurmd, jobs) runs from a
 # temporary directory with its own config, socket and ports, and is stopped and removed on exit.
 #
 #   tests/slurm/run_slurm_test.sh [FSWEEP]    # FSWEEP: default $FSWEEP, else build/release/bin/fsweep
@@ -185,8 +186,20 @@ expect_completed() {  # expect_completed ID COUNT
   [ "$s" = " $2 COMPLETED;" ] || { show_logs "$tmp"/out*/slurm/logs/*; fail "job $1: states '$s', expected $2 COMPLETED"; }
 }
 
-mkdir -p "$tmp/out_array" "$tmp/out_packed"
-submit "$tmp/out_array" --tasks 4
+mkdir -p "$tmp/out_array" "$tmp/out_packed" "$tmp/setup"
+# The cluster options on the first sweep: an --sbatch line in each accepted form (--comment is
+# recorded by slurmctld; --export puts a variable into the jobs' environment), and a --setup
+# line that writes a file per job with that variable, so both are seen to take effect in the
+# jobs. --account and --qos: this Slurm has no accounting (AccountingStorageType=
+# accounting_storage/none), so it accepts any account and records it as given, and accepts a
+# QOS without recording it (the job shows QOS=(null): there is no QOS table without the
+# accounting database). Checked here: sbatch takes both directives and the account reaches the
+# job. Not checkable here: a cluster with accounting refusing an account or QOS the user may
+# not use (AccountingStorageEnforce), and the QOS the job then runs with.
+# shellcheck disable=SC2016  # $FSWEEP_..., $SLURM_... are for the jobs' shell
+submit "$tmp/out_array" --tasks 4 --account fsweep-test --qos normal \
+  --sbatch --comment=fsweep-slurm-test --sbatch '#SBATCH --export=ALL,FSWEEP_SLURM_TEST_SBATCH=from-sbatch-line' \
+  --setup 'echo "setup ran, sbatch line ${FSWEEP_SLURM_TEST_SBATCH:-not seen}" >'"$tmp"'/setup/job_${SLURM_ARRAY_TASK_ID:-merge}'
 a1=$array_id m1=$merge_id
 grep -q "^array: 4 tasks (MaxArraySize 1001, from scontrol show config), one shard each" "$tmp/out_array.log" ||
   { cat "$tmp/out_array.log"; fail "fsweep slurm --tasks 4 did not plan 4 array tasks from scontrol"; }
@@ -232,6 +245,30 @@ PY
 }
 compare "$tmp/out_array" || fail "the 4-task merge differs from the local run"
 compare "$tmp/out_packed" || fail "the packed merge differs from the local run"
+
+# 5b. The cluster options of the first sweep: the setup line ran in every job (4 array tasks and
+# the merge) before fsweep, and saw the variable of the --sbatch --export line; slurmctld
+# recorded the --sbatch --comment line and the account on both jobs; the QOS is in both
+# scripts (this Slurm does not record it, above).
+for job in 0 1 2 3 merge; do
+  got=$(cat "$tmp/setup/job_$job" 2>/dev/null)
+  [ "$got" = "setup ran, sbatch line from-sbatch-line" ] ||
+    { show_logs "$tmp"/out_array/slurm/logs/*; fail "job $job: the --setup line wrote '$got' ($tmp/setup/job_$job)"; }
+done
+for id in "$a1" "$m1"; do
+  record=$(scontrol -o show job "$id" | head -n 1)
+  for field in Comment=fsweep-slurm-test Account=fsweep-test; do
+    case " $record " in
+      *" $field "*) ;;
+      *) fail "job $id: no $field in its record ($record)" ;;
+    esac
+  done
+  log "job $id: $(echo "$record" | grep -o 'Account=[^ ]* QOS=[^ ]*')"
+done
+for script in array merge; do
+  grep -qx -- '#SBATCH --qos=normal' "$tmp/out_array/slurm/$script.sbatch" || fail "no --qos line in $script.sbatch"
+done
+log "--setup ran in all 5 jobs, --sbatch lines took effect, account recorded"
 
 # 6. A lost shard: merge reports it, resubmitting its array index alone redoes it.
 rm -rf "$tmp/out_array/shard-2-of-4" "$tmp/out_array/runs.csv" "$tmp/out_array/summary.csv"

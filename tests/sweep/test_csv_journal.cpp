@@ -197,18 +197,41 @@ TEST(CsvJournal, ADamagedRowsUnclosedQuoteCostsOnlyItsOwnLine) {
   fs::remove(path);
 }
 
-TEST(CsvJournal, RewriteInOrderSortsStablyAndMergesInserts) {
+TEST(CsvJournal, RewriteInOrderSortsStably) {
   const std::string path = temp_file("order");
-  write_file(path, "i,v\n0,a\n4,b\n2,c\n4,d\n");
+  write_file(path, "i,v\n0,a\n4,b\n2,c\n4,d\nx,y\n1,e\n");
   CsvJournal j(path, "i,v");
   (void)j.repair(fields_are(2));
-  j.append("5,e\n");
+  j.append("3,f\n");
   j.flush();  // the rewrite must reopen the file it appends to
-  j.rewrite_in_order(0, {{3, "3,x\n"}, {1, "1,y\n1,z\n"}, {4, "4,w\n"}});
-  EXPECT_EQ(read_file(path), "i,v\n0,a\n1,y\n1,z\n2,c\n3,x\n4,b\n4,d\n4,w\n5,e\n");
-  j.append("6,f\n");
+  j.rewrite_in_order(0);
+  EXPECT_EQ(read_file(path), "i,v\n0,a\n1,e\n2,c\n3,f\n4,b\n4,d\nx,y\n");  // no number: last
+  j.append("5,g\n");
   j.flush();
-  EXPECT_EQ(read_file(path), "i,v\n0,a\n1,y\n1,z\n2,c\n3,x\n4,b\n4,d\n4,w\n5,e\n6,f\n");
+  EXPECT_EQ(read_file(path), "i,v\n0,a\n1,e\n2,c\n3,f\n4,b\n4,d\nx,y\n5,g\n");
+  fs::remove(path);
+}
+
+TEST(CsvJournal, RewriteInOrderRenumbersDropsAndChangesTheHeader) {
+  const std::string path = temp_file("renumber");
+  write_file(path, "i,v\n0,a\n1,\"b,1\"\n2,c\n3,d\n");
+  CsvJournal j(path, "i,v");
+  (void)j.repair(fields_are(2));
+  // Run i becomes run 10 - 3 i with a new column; run 2 is left out.
+  CsvJournal::Rewrite rewrite;
+  rewrite.place = [](const std::vector<std::string>& f) -> std::optional<std::uint64_t> {
+    if (f[0] == "2") return std::nullopt;
+    return 10 - 3 * std::stoi(f[0]);
+  };
+  rewrite.fill = [](std::uint64_t index, std::vector<std::string>& f) {
+    f = {std::to_string(index), "new", f[1]};
+  };
+  rewrite.header = "i,w,v";
+  j.rewrite_in_order(0, rewrite);
+  EXPECT_EQ(read_file(path), "i,w,v\n1,new,d\n7,new,\"b,1\"\n10,new,a\n");
+  j.append("11,new,e\n");
+  j.flush();
+  EXPECT_EQ(read_file(path), "i,w,v\n1,new,d\n7,new,\"b,1\"\n10,new,a\n11,new,e\n");
   fs::remove(path);
 }
 

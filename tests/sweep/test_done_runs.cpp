@@ -1,4 +1,4 @@
-// DoneRuns: the runs a resumed sweep skips.
+// DoneRuns: the runs a resumed sweep skips; RunPlacement: where they go in an extended sweep.
 #include <gtest/gtest.h>
 
 #include "sweep/done_runs.hpp"
@@ -22,6 +22,50 @@ TEST(DoneRuns, FindsRowsByRunIndex) {
   ASSERT_EQ(d.size(), 3U);
   EXPECT_EQ(d.rows().front().index, 1U);
   EXPECT_EQ(d.rows().back().index, 9U);
+}
+
+TEST(RunPlacement, PlacesRowsByKeyInRunOrderAndNamesThoseWithoutAPlace) {
+  // Done rows (key, index): two of key 5 (a configuration two strategy entries reach), one of
+  // key 8, one of key 9 that the new plan does not have.
+  DoneRuns d;
+  d.add(5, 4);
+  d.add(8, 0);
+  d.add(5, 2);
+  d.add(9, 3);
+  d.seal();
+  RunPlacement p(d);
+  // The new plan's runs 0..7 have keys 1, 5, 8, 1, 5, 5, 2, 8.
+  const std::uint64_t keys[] = {1, 5, 8, 1, 5, 5, 2, 8};
+  for (std::uint64_t i = 0; i < 8; ++i) p.offer(i, keys[i]);
+  EXPECT_FALSE(p.complete());
+  p.seal();
+  EXPECT_EQ(p.placed(), 3U);
+  EXPECT_EQ(p.new_index(5, 2), 1U);  // the earlier row of key 5 takes the earlier run
+  EXPECT_EQ(p.new_index(5, 4), 4U);
+  EXPECT_EQ(p.new_index(8, 0), 2U);
+  EXPECT_FALSE(p.new_index(9, 3));
+  EXPECT_FALSE(p.new_index(5, 3));  // no done row, and no row of key 5 placed at run 3
+  // A row already renumbered (a kill between the rewrites of the two files) is found where it went.
+  EXPECT_EQ(p.new_index(8, 2), 2U);
+  EXPECT_EQ(p.new_index(5, 1), 1U);
+  const std::vector<DoneRuns::Row> unplaced = p.unplaced();
+  ASSERT_EQ(unplaced.size(), 1U);
+  EXPECT_EQ(unplaced[0].index, 3U);
+  EXPECT_EQ(unplaced[0].key, 9U);
+}
+
+TEST(RunPlacement, IsCompleteOnceEveryRowHasItsPlace) {
+  DoneRuns d;
+  d.add(3, 0);
+  d.seal();
+  RunPlacement p(d);
+  EXPECT_FALSE(p.complete());
+  p.offer(6, 3);
+  EXPECT_TRUE(p.complete());
+  p.offer(7, 3);  // a later run of the same key: nothing left to place
+  p.seal();
+  EXPECT_EQ(p.new_index(3, 0), 6U);
+  EXPECT_TRUE(p.unplaced().empty());
 }
 
 TEST(DoneRuns, ParsesKeysAndIndices) {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -115,6 +116,16 @@ TEST_F(MergeTest, ShardsMergeIntoTheUnshardedOutputs) {
     EXPECT_EQ(m["shard"]["merged_from"], n);
     // Throughput over the longest shard's wall time.
     EXPECT_DOUBLE_EQ(m["runs_per_s"].get<double>(), 6.0 / m["wall_s"].get<double>());
+    // Every shard's session, by start time.
+    ASSERT_EQ(m["sessions"].size(), n);
+    std::vector<bool> seen(n, false);
+    for (const json& session : m["sessions"]) {
+      EXPECT_EQ(session["shard"]["count"], n);
+      seen.at(session["shard"]["index"].get<std::size_t>()) = true;
+      EXPECT_LE(m["start_utc"].get<std::string>(), session["start_utc"].get<std::string>());
+    }
+    EXPECT_EQ(std::count(seen.begin(), seen.end(), true), static_cast<std::ptrdiff_t>(n));
+    EXPECT_EQ(m["start_utc"], m["sessions"][0]["start_utc"]);
     fs::remove_all(dir);
   }
 }

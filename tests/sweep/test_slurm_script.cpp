@@ -135,6 +135,105 @@ TEST(SlurmScript, OptionalDirectivesOnlyWhenGiven) {
   EXPECT_EQ(merge, want_merge);
 }
 
+TEST(SlurmScript, AccountQosGresAndSbatchLinesAreDirectivesInOrder) {
+  SlurmScriptOptions o = options();
+  o.partition = "gpu";
+  o.account = "proj-42_a.b";
+  o.qos = "long";
+  o.gres = "gpu:a100:1";
+  o.sbatch_lines = {"--constraint=a100&ib", "#SBATCH --exclusive", "#SBATCH   --mail-type=END,FAIL",
+                    "--mem-per-gpu=4G"};
+  const auto array = directives(render_slurm_array_script(o));
+  const std::vector<std::string> want = {
+      "--job-name=fsweep-big", "--array=0-3",
+      "--cpus-per-task=1",     "--partition=gpu",
+      "--account=proj-42_a.b", "--qos=long",
+      "--gres=gpu:a100:1",     "--output=/scratch/u/results/big/slurm/logs/%A_%a.out",
+      "--constraint=a100&ib",  "--exclusive",
+      "--mail-type=END,FAIL",  "--mem-per-gpu=4G"};
+  EXPECT_EQ(array, want);
+  // The merge job: the same account, qos and extra lines, no gres (it runs fsweep merge on one CPU).
+  const auto merge = directives(render_slurm_merge_script(o));
+  const std::vector<std::string> want_merge = {"--job-name=fsweep-big-merge",
+                                               "--cpus-per-task=1",
+                                               "--partition=gpu",
+                                               "--account=proj-42_a.b",
+                                               "--qos=long",
+                                               "--output=/scratch/u/results/big/slurm/logs/merge_%j.out",
+                                               "--constraint=a100&ib",
+                                               "--exclusive",
+                                               "--mail-type=END,FAIL",
+                                               "--mem-per-gpu=4G"};
+  EXPECT_EQ(merge, want_merge);
+}
+
+TEST(SlurmScript, SetupLinesRunAfterCdAndBeforeFsweepInOrder) {
+  SlurmScriptOptions o = options();
+  o.setup_lines = {"module load gcc/12", "source venv/bin/activate", "export OMP_NUM_THREADS=1 # one"};
+  const std::string setup = "module load gcc/12\nsource venv/bin/activate\nexport OMP_NUM_THREADS=1 # one\n";
+  const std::string array = render_slurm_array_script(o);
+  // In the array script, with `set -u` off around them (module and conda scripts read unset
+  // variables), after the directory change and before the shard loop.
+  EXPECT_TRUE(contains(array, "cd -- /home/u || exit 2\n# setup (fsweep slurm --setup), in order:\nset +u\n" +
+                                  setup + "set -u\nfailed=0\n"))
+      << array;
+  const std::string merge = render_slurm_merge_script(o);
+  EXPECT_TRUE(contains(merge, "cd -- /home/u || exit 2\n# setup (fsweep slurm --setup), in order:\n" + setup +
+                                  "exec /opt/fsweep/bin/fsweep merge /scratch/u/results/big\n"))
+      << merge;
+  // Without setup lines the scripts are as before.
+  EXPECT_FALSE(contains(render_slurm_array_script(options()), "setup"));
+  EXPECT_FALSE(contains(render_slurm_merge_script(options()), "setup"));
+}
+
+TEST(SlurmScript, BadAccountQosGresSbatchAndSetupLinesNameTheOption) {
+  const auto refused = [](auto edit, const std::string& option, const std::string& part) {
+    SlurmScriptOptions o = options();
+    edit(o);
+    for (const bool array : {true, false}) {
+      try {
+        (void)(array ? render_slurm_array_script(o) : render_slurm_merge_script(o));
+        ADD_FAILURE() << "accepted: " << part;
+      } catch (const ConfigError& e) {
+        EXPECT_EQ(e.where(), option) << e.what();
+        EXPECT_TRUE(contains(e.what(), part)) << e.what();
+      }
+    }
+  };
+  refused([](SlurmScriptOptions& o) { o.account = "a b"; }, "--account", "letters, digits");
+  refused([](SlurmScriptOptions& o) { o.account = "proj\n#SBATCH --exclusive"; }, "--account",
+          "'proj\\n#SBATCH --exclusive'");
+  refused([](SlurmScriptOptions& o) { o.qos = "high;rm"; }, "--qos", "letters, digits");
+  refused([](SlurmScriptOptions& o) { o.qos = std::string("lo\0ng", 5); }, "--qos", "'lo\\0ng'");
+  refused([](SlurmScriptOptions& o) { o.gres = "gpu:1 --exclusive"; }, "--gres", "whitespace");
+  refused([](SlurmScriptOptions& o) { o.gres = std::string("gpu\0", 4); }, "--gres", "NUL");
+  refused([](SlurmScriptOptions& o) { o.partition = std::string("a\0b", 3); }, "--partition", "NUL");
+  const std::string form = "allowed: --option or --option=value";
+  for (const std::string bad :
+       {"constraint=a100", "-C a100", "--constraint a100", "--constraint=a b", "--Constraint=x", "--", "--=x",
+        "--comment=\"x\"", "#SBATCH", "", "--exclusive\n--nodes=2", "#SBATCH\t--exclusive", "--x\\y"}) {
+    refused([&](SlurmScriptOptions& o) { o.sbatch_lines = {"--exclusive", bad}; }, "--sbatch", form);
+  }
+  // Directives fsweep writes itself, also abbreviated (sbatch reads --part as --partition).
+  refused([](SlurmScriptOptions& o) { o.sbatch_lines = {"--array=0-9"}; }, "--sbatch",
+          "sets --array, which fsweep slurm writes itself; the array covers the shards");
+  refused([](SlurmScriptOptions& o) { o.sbatch_lines = {"#SBATCH --part=debug"}; }, "--sbatch",
+          "sets --partition, which fsweep slurm writes itself; use --partition");
+  refused([](SlurmScriptOptions& o) { o.sbatch_lines = {"--output=/tmp/x"}; }, "--sbatch",
+          "the logs go to <out>/slurm/logs");
+  refused([](SlurmScriptOptions& o) { o.sbatch_lines = {"--cpus=4"}; }, "--sbatch", "use --cpus");
+  refused([](SlurmScriptOptions& o) { o.sbatch_lines = {"--acc=x"}; }, "--sbatch", "use --account");
+  for (const std::string& bad :
+       {std::string("echo a\necho b"), std::string("echo a\r"), std::string("a\0b", 3)}) {
+    refused([&](SlurmScriptOptions& o) { o.setup_lines = {"true", bad}; }, "--setup", "is not one line");
+  }
+  // Near misses that are fine: longer options beginning with a reserved name, any shell text.
+  SlurmScriptOptions o = options();
+  o.sbatch_lines = {"--mem-per-cpu=2G", "--time-min=10", "--gres-flags=enforce-binding", "--exclusive"};
+  o.setup_lines = {"", "cd \"$HOME\" && echo '$x' \\", "# a comment"};
+  EXPECT_NO_THROW((void)render_slurm_array_script(o));
+}
+
 TEST(SlurmScript, ShardsRunWithTheAllocatedCpusAndAbsolutePaths) {
   const std::string s = render_slurm_array_script(options());
   EXPECT_TRUE(contains(s, "cd -- /home/u || exit 2\n"));
@@ -272,6 +371,15 @@ TEST(SlurmScript, PackedTaskRunsItsShardsFromTheArrayIndex) {
     EXPECT_EQ(rc, 2) << out;
     EXPECT_FALSE(contains(out, "threads")) << out;
   }
+  // Setup lines run first, in order, with unset variables allowed, then the shards.
+  o.setup_lines = {"echo \"setup one ${FSWEEP_SURELY_UNSET_VARIABLE}\"", "echo setup two"};
+  const auto [setup_rc, setup_out] = run_as_task(dir, o, "0");
+  EXPECT_EQ(setup_rc, 0) << setup_out;
+  EXPECT_EQ(lines_starting_with(setup_out, "s"),
+            "setup one \nsetup two\nshard 0/7 threads 3\nshard 3/7 threads 3\n"
+            "shard 6/7 threads 3\n")
+      << setup_out;
+  o.setup_lines.clear();
   // A failing shard: the task still runs its other shards, then exits 1.
   const auto [rc, out] = run_as_task(dir, o, "1", /*fail_shard_one=*/true);
   EXPECT_EQ(rc, 1) << out;

@@ -197,5 +197,31 @@ TEST(SweepDatasets, RandomStartsAreRefusedOnFreeMaps) {
   EXPECT_EQ(problems_of(sweep_with("rooms:w=30,h=20,start=random")), "");
 }
 
+TEST(SweepDatasets, AFolderAndItsIdListAreFoundBesideTheSweepFileAndKeptAsWritten) {
+  // <root>/plans/{a,b}.json and ids.txt, and <root>/sweeps/s.json naming them "../plans".
+  const std::string root = plan_folder("beside", {});
+  const std::string plans = plan_folder("beside_plans", {"a", "b"});
+  fs::rename(plans, root + "/plans");
+  std::ofstream(root + "/plans/ids.txt") << "b\na\n";
+  fs::create_directories(root + "/sweeps");
+  json listed = sweep_with({{"dataset", "../plans"}, {"ids", "../plans/ids.txt"}, {"label", "two"}});
+  std::ofstream(root + "/sweeps/s.json") << listed.dump();
+  json every = sweep_with({{"dataset", "../plans"}});
+  std::ofstream(root + "/sweeps/every.json") << every.dump();
+  const fs::path before = fs::current_path();
+  fs::current_path(fs::temp_directory_path());
+  const SweepPlan plan = SweepPlan::from_file(root + "/sweeps/s.json");
+  const SweepPlan all = SweepPlan::from_file(root + "/sweeps/every.json");
+  fs::current_path(before);
+  EXPECT_TRUE(plan.path_warnings().empty());
+  ASSERT_EQ(plan.maps().size(), 2U);
+  EXPECT_EQ(plan.maps()[0].spec.at("file"), "../plans/b.json");  // run keys hash the path as written
+  EXPECT_EQ(plan.maps()[0].map->source, "../plans/b.json");
+  EXPECT_EQ(files_of(all), (std::vector<std::string>{"a", "b"}));
+  EXPECT_EQ(all.maps()[0].map_class, "dataset ../plans");
+  EXPECT_EQ(all.run_key(0), plan.run_key(1));
+  fs::remove_all(root);
+}
+
 }  // namespace test_sweep_datasets
 }  // namespace fsweep

@@ -2,11 +2,17 @@
 // robot variants, lazy decoding of huge sweeps, run keys.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <set>
 #include <string>
 
+#include "core/config_error.hpp"
 #include "core/random.hpp"
+#include "sweep/manifest.hpp"
 #include "sweep/sweep_plan.hpp"
+#include "sweep/sweep_table.hpp"
+#include "sweep/sweep_test_files.hpp"
 
 namespace fsweep {
 namespace {
@@ -259,6 +265,89 @@ TEST(SweepPlan, RunKeyIsTheSameForTheSameConfigurationInAnySweep) {
   ASSERT_EQ(o.run_count(), 4U);
   EXPECT_EQ(o.run_key(3), key);  // map 1, w1 = 10.0: defaults resolved, labels ignored
   EXPECT_NE(o.run_key(2), key);
+}
+
+TEST(SweepPlan, AnOverriddenSweepIsTheSweepItBecomesInHashAndKeys) {
+  const std::string dir = testing::fresh_dir("plan", "overridden");
+  testing::write_file(dir + "/s.json", cartesian().dump());
+  json written = cartesian();
+  written["robot"]["battery"] = 800;
+  written["seed"] = 3;
+  const SweepPlan overridden = SweepPlan::from_file(dir + "/s.json", {"robot.battery=800", "seed=3"});
+  const SweepPlan plain = SweepPlan::from_json(written, dir + "/w.json");
+  EXPECT_EQ(overridden.source(), written);
+  EXPECT_EQ(sweep_hash(overridden.source()), sweep_hash(written));  // so a resume with the same ones matches
+  ASSERT_EQ(overridden.run_count(), plain.run_count());
+  for (std::uint64_t i = 0; i < plain.run_count(); i += 7) EXPECT_EQ(overridden.run_key(i), plain.run_key(i));
+}
+
+/// A checkout-like folder: <root>/sweeps/s.json naming `file` for its map, and the ASCII map
+/// <root>/maps/two_rooms.txt.
+std::string checkout_with_sweep(const std::string& root, const std::string& file) {
+  std::filesystem::create_directories(root + "/sweeps");
+  std::filesystem::create_directories(root + "/maps");
+  std::filesystem::copy_file(FSWEEP_TEST_DATA "/two_rooms.txt", root + "/maps/two_rooms.txt");
+  testing::write_file(root + "/sweeps/s.json", R"({"schema_version": 1, "name": "t",
+      "maps": [{"file": ")" + file + R"(", "label": "rooms"}, ")" +
+                                                   file + R"(:res=0.5"],
+      "strategies": [{"name": "closest_frontier"}], "robot": {"sensor": {"range_m": 3}}})");
+  return root + "/sweeps/s.json";
+}
+
+TEST(SweepPlan, RelativePathsAreFoundBesideTheSweepFileAndKeptAsWritten) {
+  const std::string dir = testing::fresh_dir("plan", "relative");
+  const std::filesystem::path before = std::filesystem::current_path();
+  std::filesystem::current_path(std::filesystem::temp_directory_path());
+  const SweepPlan here = SweepPlan::from_file(checkout_with_sweep(dir + "/a", "../maps/two_rooms.txt"));
+  const SweepPlan there = SweepPlan::from_file(checkout_with_sweep(dir + "/b/c", "../maps/two_rooms.txt"));
+  std::filesystem::current_path(before);
+  EXPECT_TRUE(here.path_warnings().empty());
+  for (const SweepMap& m : here.maps()) {
+    EXPECT_EQ(m.spec["file"], "../maps/two_rooms.txt");  // what run keys hash
+    EXPECT_EQ(m.map->source, "../maps/two_rooms.txt");   // runs.csv's map column, the manifest
+  }
+  EXPECT_EQ(here.maps()[1].label, "../maps/two_rooms.txt:res=0.5");
+  // Two checkouts in different places: the same keys.
+  for (std::uint64_t i = 0; i < here.run_count(); ++i) EXPECT_EQ(here.run_key(i), there.run_key(i));
+}
+
+TEST(SweepPlan, APathOnlyUnderTheWorkingDirectoryIsReadFromThereWithAWarning) {
+  const std::string dir = testing::fresh_dir("plan", "fallback");
+  const std::string sweep = checkout_with_sweep(dir, "maps/two_rooms.txt");  // as sweeps used to be written
+  const std::filesystem::path before = std::filesystem::current_path();
+  std::filesystem::current_path(dir);
+  const SweepPlan plan = SweepPlan::from_file(sweep);
+  const SweepPlan written_beside = SweepPlan::from_json(plan.source(), "s.json");  // in the working directory
+  std::filesystem::current_path(before);
+  ASSERT_EQ(plan.path_warnings().size(), 2U);
+  EXPECT_EQ(plan.path_warnings()[0],
+            "/maps/0/file: 'maps/two_rooms.txt' is not beside the sweep file (no " + dir +
+                "/sweeps/maps/two_rooms.txt); read from the working directory instead (" + dir +
+                "/maps/two_rooms.txt), as sweeps were before relative paths followed the "
+                "sweep file; write '../maps/two_rooms.txt'");
+  EXPECT_EQ(plan.path_warnings()[1].rfind("/maps/1: 'maps/two_rooms.txt' is not beside the sweep file", 0),
+            0U);
+  EXPECT_EQ(sweep_warnings(plan).front(), plan.path_warnings().front());  // printed and in the manifest
+  EXPECT_TRUE(written_beside.path_warnings().empty());
+  EXPECT_EQ(plan.run_key(0), written_beside.run_key(0));
+}
+
+TEST(SweepPlan, ARelativePathInNeitherFolderNamesTheAbsolutePathsTried) {
+  const std::string dir = testing::fresh_dir("plan", "neither");
+  const std::string sweep = checkout_with_sweep(dir, "nowhere/x.txt");
+  std::string m;
+  try {
+    (void)SweepPlan::from_file(sweep);
+  } catch (const ConfigError& e) {
+    m = e.what();
+  }
+  const std::string cwd = std::filesystem::current_path().string();
+  EXPECT_NE(m.find(sweep + ": /maps/0/file: no such file 'nowhere/x.txt': tried " + dir +
+                   "/sweeps/nowhere/x.txt (beside the sweep file) and " + cwd +
+                   "/nowhere/x.txt (in the working directory)"),
+            std::string::npos)
+      << m;
+  EXPECT_NE(m.find(sweep + ": /maps/1: no such file 'nowhere/x.txt'"), std::string::npos) << m;
 }
 
 }  // namespace

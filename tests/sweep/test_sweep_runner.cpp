@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -21,6 +22,7 @@
 #include "core/config_error.hpp"
 #include "core/csv_format.hpp"
 #include "sweep/csv_journal.hpp"
+#include "sweep/merge.hpp"
 #include "sweep/sweep_plan.hpp"
 #include "sweep/sweep_runner.hpp"
 #include "sweep/sweep_table.hpp"
@@ -98,14 +100,17 @@ std::string joined_records(const std::vector<std::string>& recs) {
   return out;
 }
 
-/// The CSV text with the columns named `*_time_s` removed: they measure the machine, so they
-/// are the only cells allowed to differ between equivalent runs.
+/// The CSV text with the columns named `*_time_s` (and summary.csv's `*_time_s.<statistic>`)
+/// removed: they measure the machine, so they are the only cells allowed to differ between
+/// equivalent runs.
 std::string without_timing(const std::string& text) {
   const auto recs = records(text);
   if (recs.empty()) return {};
   const auto header = split_csv_line(recs[0]);
   std::vector<bool> keep(header.size());
-  for (std::size_t i = 0; i < header.size(); ++i) keep[i] = !header[i].ends_with("_time_s");
+  for (std::size_t i = 0; i < header.size(); ++i) {
+    keep[i] = !header[i].ends_with("_time_s") && header[i].find("_time_s.") == std::string::npos;
+  }
   std::string out;
   for (const auto& r : recs) {
     const auto f = split_csv_line(r);
@@ -677,7 +682,7 @@ TEST(SweepRunner, ManifestHasTheFields) {
   const json m = json::parse(read_file(dir + "/manifest.json"));
   for (const char* key : {"sweep", "sweep_file", "sweep_hash", "name", "runs", "git_revision", "compiler",
                           "libraries", "host", "cpu_model", "threads", "start_utc", "end_utc", "wall_s",
-                          "runs_per_s", "status", "seed", "objective"}) {
+                          "runs_per_s", "status", "seed", "objective", "sessions"}) {
     EXPECT_TRUE(m.contains(key)) << key;
   }
   EXPECT_EQ(m["sweep"], small_sweep());
@@ -768,6 +773,309 @@ TEST(SweepRunner, BadOptionsAreConfigErrors) {
   o.threads = -1;
   EXPECT_THROW((void)run_sweep(plan, o), ConfigError);
   fs::remove_all(o.out_dir);
+}
+
+/// The shape of sweeps/default.json, small: two map classes of generated maps with two seeds
+/// each, closest frontier and two energy-aware weight vectors, a sensor that misses cells (so
+/// that repetitions differ), a battery; 12 configurations.
+json default_shaped_sweep(int repetitions) {
+  json sweep = json::parse(R"({
+    "schema_version": 1,
+    "name": "extend_test",
+    "maps": [
+      {"generator": "rooms", "w": 30, "h": 24, "door": 3, "label": "rooms", "seeds": {"range": [1, 2], "step": 1}},
+      {"generator": "office", "w": 32, "h": 32, "label": "office", "seeds": {"range": [1, 2], "step": 1}}
+    ],
+    "strategies": [
+      {"name": "closest_frontier", "label": "CF"},
+      {"name": "energy_aware", "label": "EA free", "params": {"w1": 10, "w2": 0, "w3": 9, "w4": 20}},
+      {"name": "energy_aware", "label": "EA Manhattan", "params": {"w1": 220, "w2": 21, "w3": 104, "w4": 100}}
+    ],
+    "robot": {"sensor": {"range_m": 4, "miss_probability": 0.05}, "energy": "distance", "battery": 150},
+    "progress_step_m": 5,
+    "seed": 1
+  })");
+  sweep["repetitions"] = repetitions;
+  return sweep;
+}
+
+/// Expects the result files of `dir` to equal those of `ref` (timing columns aside).
+void expect_same_results(const std::string& dir, const std::string& ref) {
+  for (const char* f : {"runs.csv", "summary.csv", "progress_summary.csv", "best.csv"}) {
+    EXPECT_EQ(without_timing(read_file(dir + "/" + f)), without_timing(read_file(ref + "/" + f))) << f;
+  }
+  EXPECT_EQ(read_file(dir + "/progress.csv"), read_file(ref + "/progress.csv"));
+}
+
+TEST(SweepRunner, ExtendingAFinishedSweepRunsOnlyTheNewRunsAndEqualsAFreshSweep) {
+  // 3 repetitions grown to 4: the finished runs get other run indices (repetition is the
+  // fastest axis), so both files are rewritten in the new order.
+  const std::string dir = temp_dir("extend");
+  const std::string ref = temp_dir("extend_ref");
+  ASSERT_EQ(run(default_shaped_sweep(3), dir, 2).ran, 36U);
+  const json before = json::parse(read_file(dir + "/manifest.json"));
+  const RunnerReport grown = run(default_shaped_sweep(4), dir, 2);
+  EXPECT_EQ(grown.total, 48U);
+  EXPECT_EQ(grown.ran, 12U);
+  EXPECT_EQ(grown.skipped, 36U);
+  EXPECT_EQ(grown.kept, 36U);
+  EXPECT_EQ(grown.extended_from, before["sweep_hash"].get<std::string>());
+  EXPECT_FALSE(grown.interrupted);
+  ASSERT_EQ(run(default_shaped_sweep(4), ref, 2).ran, 48U);
+  expect_same_results(dir, ref);
+
+  // The manifest is the grown sweep's, and keeps the first session as it was.
+  const json m = json::parse(read_file(dir + "/manifest.json"));
+  EXPECT_EQ(m["sweep"], default_shaped_sweep(4));
+  ASSERT_EQ(m["sessions"].size(), 2U);
+  EXPECT_EQ(m["sessions"][0], before["sessions"][0]);
+  EXPECT_EQ(m["sessions"][0]["sweep_hash"], before["sweep_hash"]);
+  EXPECT_EQ(m["sessions"][1]["sweep_hash"], m["sweep_hash"]);
+  EXPECT_EQ(m["sessions"][1]["runs"]["ran"], 12U);
+  EXPECT_EQ(m["sessions"][1]["runs"]["skipped"], 36U);
+  EXPECT_EQ(m["runs"]["ran"], 48U);
+  EXPECT_EQ(m["runs"]["done"], 48U);
+  EXPECT_EQ(m["start_utc"], before["start_utc"]);
+
+  // Run again: nothing left to do.
+  const RunnerReport again = run(default_shaped_sweep(4), dir, 2);
+  EXPECT_EQ(again.ran, 0U);
+  EXPECT_TRUE(again.extended_from.empty());
+  expect_same_results(dir, ref);
+}
+
+TEST(SweepRunner, ExtendingTakesNewMapsStrategyEntriesColumnsAndLabels) {
+  // A map put first and a strategy entry with its own column (strategy.unit) put first, so every
+  // finished run moves; closest_frontier and the map class relabelled: labels are not in run keys,
+  // so the finished rows take the new ones.
+  const json base = json::parse(R"({
+    "schema_version": 1,
+    "name": "extend_entries",
+    "maps": [{"generator": "rooms", "w": 30, "h": 24, "door": 3, "label": "rooms", "seeds": [1, 2]}],
+    "strategies": [{"name": "closest_frontier", "label": "CF"}],
+    "robot": {"sensor": {"range_m": 4, "miss_probability": 0.05}},
+    "repetitions": 2,
+    "seed": 3
+  })");
+  json grown = base;
+  grown["maps"] = json::parse(R"([{"spec": "rooms:w=24,h=20,door=2,seed=2", "label": "small"},
+    {"generator": "rooms", "w": 30, "h": 24, "door": 3, "label": "rooms 30x24", "seeds": [1, 2]}])");
+  grown["strategies"] =
+      json::parse(R"([{"name": "energy_aware", "label": "EA cell", "params": {"unit": "cell"}},
+    {"name": "closest_frontier", "label": "closest"}])");
+  const std::string dir = temp_dir("extend_entries");
+  const std::string ref = temp_dir("extend_entries_ref");
+  ASSERT_EQ(run(base, dir, 2).ran, 4U);
+  ASSERT_EQ(read_file(dir + "/runs.csv").find("strategy.unit"), std::string::npos);
+  const RunnerReport r = run(grown, dir, 2);
+  EXPECT_EQ(r.kept, 4U);
+  EXPECT_EQ(r.ran, 8U);
+  ASSERT_EQ(run(grown, ref, 2).ran, 12U);
+  expect_same_results(dir, ref);
+  const std::vector<std::string> labels = column(read_file(dir + "/runs.csv"), "strategy_label");
+  EXPECT_EQ(std::count(labels.begin(), labels.end(), "closest"), 6);
+  const std::vector<std::string> classes = column(read_file(dir + "/runs.csv"), "map_class");
+  EXPECT_EQ(std::count(classes.begin(), classes.end(), "rooms 30x24"), 8);
+}
+
+TEST(SweepRunner, ASweepThatDropsOrChangesFinishedRunsIsRefusedAndNothingIsTouched) {
+  const std::string dir = temp_dir("shrink");
+  ASSERT_EQ(run(default_shaped_sweep(3), dir, 2).ran, 36U);
+  const std::string runs = read_file(dir + "/runs.csv");
+  const std::string progress = read_file(dir + "/progress.csv");
+  const std::string manifest = read_file(dir + "/manifest.json");
+  json changed = default_shaped_sweep(3);
+  changed["strategies"][1]["params"]["w1"] = 11;
+  json other_seed = default_shaped_sweep(4);
+  other_seed["seed"] = 2;
+  const std::vector<std::pair<json, std::vector<std::string>>> cases{
+      // 2 repetitions: the 12 runs of repetition 2 go; run 2 is the first configuration's.
+      {default_shaped_sweep(2),
+       {"which does not have 12 of its 36 finished runs (run 2 (map 'rooms seed=1', strategy 'CF', "
+        "repetition 2); run 5 (map 'rooms seed=1', strategy 'EA free' "
+        "{\"w1\":10,\"w2\":0,\"w3\":9,\"w4\":20}, "
+        "repetition 2); ...)"}},
+      // Another weight: EA free's 4 maps x 3 repetitions are other runs now.
+      {changed,
+       {"which does not have 12 of its 36 finished runs (run 3 (map 'rooms seed=1', strategy 'EA free'"}},
+      // Another sweep seed: every run seed, so every run, changed, although runs are added too.
+      {other_seed, {"which does not have 36 of its 36 finished runs"}}};
+  for (const auto& [sweep, parts] : cases) {
+    try {
+      (void)run(sweep, dir, 2);
+      ADD_FAILURE() << "accepted: " << sweep.dump();
+    } catch (const ConfigError& e) {
+      const std::string what = e.what();
+      for (const std::string& part :
+           {dir + ": holds the outputs of another version of this sweep file (sweep_hash ", parts.at(0),
+            std::string("not by removing or changing finished ones; use --fresh to start over, or another "
+                        "output directory")}) {
+        EXPECT_NE(what.find(part), std::string::npos) << part << "\nnot in: " << what;
+      }
+    }
+    EXPECT_EQ(read_file(dir + "/runs.csv"), runs);  // nothing touched
+    EXPECT_EQ(read_file(dir + "/progress.csv"), progress);
+    EXPECT_EQ(read_file(dir + "/manifest.json"), manifest);
+  }
+}
+
+TEST(SweepRunner, AShardIsExtendedOnTheChangedSweepsShard) {
+  // A map seed added to the last map class adds runs at the end: every finished run keeps its
+  // index, so each shard keeps its runs; the merge (into a directory holding the merge of the
+  // sweep before) equals an unsharded run. More repetitions move runs across shards: refused.
+  const std::string dir = temp_dir("extend_shards");
+  const std::string ref = temp_dir("extend_shards_ref");
+  json more_maps = default_shaped_sweep(3);
+  more_maps["maps"][1]["seeds"]["range"] = {1, 3};
+  const auto shard = [&](const json& sweep, std::uint64_t i) {
+    RunnerOptions o;
+    o.threads = 2;
+    o.out_dir = dir;
+    o.progress = false;
+    o.shard_index = i;
+    o.shard_count = 2;
+    return run_sweep(SweepPlan::from_json(sweep, "shards.json"), o);
+  };
+  for (std::uint64_t i = 0; i < 2; ++i) ASSERT_EQ(shard(default_shaped_sweep(3), i).ran, 18U);
+  ASSERT_TRUE(merge_shards(dir).written);
+  for (std::uint64_t i = 0; i < 2; ++i) {
+    const RunnerReport r = shard(more_maps, i);
+    EXPECT_EQ(r.kept, 18U);
+    EXPECT_EQ(r.ran, i == 0 ? 5U : 4U);  // runs 36..44
+  }
+  const MergeReport merged = merge_shards(dir);
+  ASSERT_TRUE(merged.written) << (merged.problems.empty() ? "" : merged.problems.front());
+  ASSERT_EQ(run(more_maps, ref, 2).ran, 45U);
+  expect_same_results(dir, ref);
+  const json m = json::parse(read_file(dir + "/manifest.json"));
+  EXPECT_EQ(m["sessions"].size(), 4U);  // both shards' sessions of both sweeps
+
+  json more_reps = more_maps;
+  more_reps["repetitions"] = 4;
+  const std::string shard_runs = read_file(dir + "/shard-0-of-2/runs.csv");
+  try {
+    (void)shard(more_reps, 0);
+    FAIL() << "runs of other shards were accepted";
+  } catch (const ConfigError& e) {
+    const std::string what = e.what();
+    for (const std::string& part :
+         {std::string("belong to other shards (run indices change with the sweep: run "),
+          std::string("extend the merged results instead")}) {
+      EXPECT_NE(what.find(part), std::string::npos) << part << "\nnot in: " << what;
+    }
+  }
+  EXPECT_EQ(read_file(dir + "/shard-0-of-2/runs.csv"), shard_runs);
+  // The merged directory is extended as a whole.
+  const RunnerReport whole = run(more_reps, dir, 2);
+  EXPECT_EQ(whole.kept, 45U);
+  EXPECT_EQ(whole.ran, 15U);
+}
+
+/// The records of `csv` (header first) whose field `column` is one of `keys`, as CSV text.
+std::string rows_of(const std::string& csv, const std::string& column_name,
+                    const std::set<std::string>& keys) {
+  const auto recs = records(csv);
+  const auto header = split_csv_line(recs.at(0));
+  const auto at =
+      static_cast<std::size_t>(std::find(header.begin(), header.end(), column_name) - header.begin());
+  std::string out = recs[0] + "\n";
+  for (std::size_t i = 1; i < recs.size(); ++i) {
+    if (keys.count(split_csv_line(recs[i]).at(at)) != 0) out += recs[i] + "\n";
+  }
+  return out;
+}
+
+TEST(SweepRunner, AKillWhileAnExtensionMovesTheRowsIsRepairedByTheNextRun) {
+  // The extension rewrites progress.csv, then runs.csv, then the manifest. A kill after the first
+  // or the second rewrite leaves the earlier sweep's manifest with moved rows; the next run
+  // finds every row's place again from its key.
+  const std::string old = temp_dir("kill_extend_old");
+  const std::string moved = temp_dir("kill_extend_moved");
+  const std::string ref = temp_dir("kill_extend_ref");
+  ASSERT_EQ(run(default_shaped_sweep(3), old, 2).ran, 36U);
+  fs::copy(old, moved);
+  ASSERT_EQ(run(default_shaped_sweep(4), moved, 2).ran, 12U);
+  ASSERT_EQ(run(default_shaped_sweep(4), ref, 2).ran, 48U);
+  const std::vector<std::string> old_keys = column(read_file(old + "/runs.csv"), "run_key");
+  const std::set<std::string> keys(old_keys.begin(), old_keys.end());
+  for (const bool runs_moved : {false, true}) {
+    SCOPED_TRACE(runs_moved ? "both files moved" : "progress.csv moved");
+    const std::string dir = temp_dir(runs_moved ? "kill_extend_both" : "kill_extend_progress");
+    fs::remove_all(dir);
+    fs::copy(old, dir);
+    write_file(dir + "/progress.csv", rows_of(read_file(moved + "/progress.csv"), "run_key", keys));
+    if (runs_moved) write_file(dir + "/runs.csv", rows_of(read_file(moved + "/runs.csv"), "run_key", keys));
+    const RunnerReport r = run(default_shaped_sweep(4), dir, 2);
+    EXPECT_EQ(r.kept, 36U);
+    EXPECT_EQ(r.ran, 12U);
+    expect_same_results(dir, ref);
+  }
+}
+
+TEST(SweepRunner, ASweepWithExactWeightSearchesIsNotExtended) {
+  const std::string dir = temp_dir("extend_search");
+  const json base = default_shaped_sweep(1);
+  ASSERT_EQ(run(base, dir, 2).ran, 12U);
+  const std::string runs = read_file(dir + "/runs.csv");
+  json with_search = base;
+  with_search["strategies"].push_back(json::parse(
+      R"({"name": "energy_aware", "label": "exact", "search": {"method": "exact", "mode": "best"}, "params": {}})"));
+  try {
+    (void)run(with_search, dir, 2);
+    FAIL() << "a sweep with a search was extended";
+  } catch (const ConfigError& e) {
+    EXPECT_NE(
+        std::string(e.what()).find("a sweep with exact weight searches (\"search\" entries) is not extended"),
+        std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(read_file(dir + "/runs.csv"), runs);
+}
+
+TEST(SweepRunner, TheManifestKeepsEverySession) {
+  const std::string dir = temp_dir("sessions");
+  const RunnerReport first = run(small_sweep(), dir, 2);
+  const json m1 = json::parse(read_file(dir + "/manifest.json"));
+  ASSERT_EQ(m1["sessions"].size(), 1U);
+  const json& s1 = m1["sessions"][0];
+  for (const char* key : {"start_utc", "end_utc", "status", "sweep_hash", "sweep_file", "fsweep_version",
+                          "git_revision", "host", "threads", "shard", "runs", "wall_s", "runs_per_s"}) {
+    EXPECT_TRUE(s1.contains(key)) << key;
+  }
+  EXPECT_EQ(s1["runs"]["ran"], 48U);
+  EXPECT_EQ(s1["start_utc"], m1["start_utc"]);
+  EXPECT_DOUBLE_EQ(s1["wall_s"].get<double>(), first.wall_s);
+  EXPECT_DOUBLE_EQ(s1["runs_per_s"].get<double>(), first.runs_per_s);
+
+  // A rerun with nothing to do is a session of its own: the first one's timing stays, and so do
+  // the top-level figures over the sessions that simulated runs.
+  const RunnerReport second = run(small_sweep(), dir, 1);
+  ASSERT_EQ(second.ran, 0U);
+  const json m2 = json::parse(read_file(dir + "/manifest.json"));
+  ASSERT_EQ(m2["sessions"].size(), 2U);
+  EXPECT_EQ(m2["sessions"][0], s1);
+  EXPECT_EQ(m2["sessions"][1]["runs"]["ran"], 0U);
+  EXPECT_EQ(m2["sessions"][1]["runs"]["skipped"], 48U);
+  EXPECT_EQ(m2["sessions"][1]["threads"], 1);
+  EXPECT_EQ(m2["threads"], 1);  // the last session's
+  EXPECT_EQ(m2["start_utc"], m1["start_utc"]);
+  EXPECT_EQ(m2["runs"]["ran"], 48U);
+  EXPECT_EQ(m2["runs"]["skipped"], 48U);
+  EXPECT_NEAR(m2["runs_per_s"].get<double>(), first.runs_per_s, 1e-9 * first.runs_per_s);
+  EXPECT_DOUBLE_EQ(m2["wall_s"].get<double>(), first.wall_s + second.wall_s);
+
+  // A manifest of an fsweep that kept only the last invocation: that one becomes the first session.
+  json old = m1;
+  old.erase("sessions");
+  write_file(dir + "/manifest.json", old.dump(2));
+  (void)run(small_sweep(), dir, 2);
+  const json m3 = json::parse(read_file(dir + "/manifest.json"));
+  ASSERT_EQ(m3["sessions"].size(), 2U);
+  for (const char* key : {"start_utc", "end_utc", "sweep_hash", "wall_s", "runs_per_s", "threads"}) {
+    EXPECT_EQ(m3["sessions"][0][key], m1[key]) << key;
+  }
+  EXPECT_EQ(m3["sessions"][0]["runs"]["ran"], 48U);
+  EXPECT_GT(m3["runs_per_s"].get<double>(), 0.0);
 }
 
 }  // namespace test_sweep_runner

@@ -194,6 +194,33 @@ TEST(SweepValidation, RobotProblemsAtTheirPaths) {
              "allowed: at most 2000 cells (2000.0 m)");
 }
 
+TEST(SweepValidation, AMisspeltKeyWhereTheRobotTakesAnObjectIsAnUnknownKeyNotARange) {
+  // {"range": ...} is a sweep range only where a value is swept; in the sensor and an energy model
+  // an object is that object, so a misspelt key gets the reader's message with the keys allowed
+  // (as `fsweep sim --robot sensor.range=5`).
+  json s = minimal();
+  s["robot"] = json::parse(R"({"sensor": {"range": 5}})");
+  std::string m = problems_of(s);
+  EXPECT_HAS(
+      m,
+      "/robot/sensor/range: unknown key 'range'; allowed: range_m, fov_deg, miss_probability, model, beams");
+  EXPECT_EQ(m.find("a range needs"), std::string::npos) << m;
+  s["robot"] = json::parse(R"({"sensor": {"range": [4, 8], "step": 2}})");
+  m = problems_of(s);
+  EXPECT_HAS(m, "/robot/sensor/range: unknown key 'range'; allowed: range_m, fov_deg");
+  EXPECT_HAS(m, "/robot/sensor/step: unknown key 'step'; allowed: range_m, fov_deg");
+  s["robot"] = json::parse(R"({"energy": {"preset": "distance", "range": 5}})");
+  m = problems_of(s);
+  EXPECT_HAS(m, "/robot/energy/range: unknown key 'range'");
+  EXPECT_EQ(m.find("a range needs"), std::string::npos) << m;
+  s["robot"] = json::parse(R"({"batery": [100, 200]})");  // an unknown key is no axis
+  EXPECT_HAS(problems_of(s), "/robot/batery: unknown key 'batery'; allowed: sensor, energy, battery, dock");
+  // Ranges where values are swept still are.
+  s["robot"] = json::parse(R"({"sensor": {"range_m": {"range": [4, 8], "step": 2}},
+                               "energy": {"preset": "distance", "per_metre": {"range": [1, 2], "step": 1}}})");
+  EXPECT_EQ(SweepPlan::from_json(s, "s.json").robots().size(), 6U);
+}
+
 TEST(SweepValidation, ProgressStepInTwoPlacesIsAProblem) {
   json s = minimal();
   s["progress_step_m"] = 2;
@@ -269,15 +296,19 @@ TEST(SweepValidation, FromFileReadsAValidSweep) {
   std::filesystem::remove(path);
 }
 
-TEST(SweepValidation, ShippedExamplesAreValid) {
-  // Examples name their map files relative to the repository (houseexpo.json), as the README
-  // runs them.
+TEST(SweepValidation, ShippedExamplesAreValidFromAnyWorkingDirectory) {
+  // Examples name their map files relative to their own folder (houseexpo.json), so they load
+  // from anywhere, without reading from the working directory.
   const std::filesystem::path before = std::filesystem::current_path();
-  std::filesystem::current_path(FSWEEP_SOURCE_DIR);
+  std::filesystem::current_path(std::filesystem::temp_directory_path());
   int n = 0;
-  for (const auto& entry : std::filesystem::directory_iterator("sweeps/examples")) {
+  for (const auto& entry : std::filesystem::directory_iterator(FSWEEP_SOURCE_DIR "/sweeps/examples")) {
     if (entry.path().extension() != ".json") continue;
-    EXPECT_NO_THROW((void)SweepPlan::from_file(entry.path().string())) << entry.path();
+    try {
+      EXPECT_TRUE(SweepPlan::from_file(entry.path().string()).path_warnings().empty()) << entry.path();
+    } catch (const ConfigError& e) {
+      ADD_FAILURE() << e.what();
+    }
     ++n;
   }
   std::filesystem::current_path(before);
@@ -302,25 +333,148 @@ TEST(SweepValidation, TheBaselineIsAStrategyEntrysLabel) {
   EXPECT_NE(problems_of(sweep).find("/baseline: value 3 not allowed"), std::string::npos);
 }
 
-TEST(SweepValidation, NoShippedSweepClipsTheFreeSpaceOptimumOrRepeatsIdenticalRuns) {
+TEST(SweepValidation, NoShippedSweepClipsTheFreeSpaceOptimumRepeatsIdenticalRunsOrNeedsTheCheckout) {
   // Every free map of the shipped sweeps holds the disc its robots can reach, the sensor band and
   // one cell (sweep_table.hpp's star_optimum()): no sweep prints the clipped-map warning; and no
-  // shipped sweep has repetitions with nothing random in them (sweep_table.hpp). The paper
-  // sweeps name their maps relative to the repository, so they load from there.
+  // shipped sweep has repetitions with nothing random in them (sweep_table.hpp). They name their
+  // map files relative to their own folder, so they load from any working directory without
+  // reading from it (no path warning).
   const std::filesystem::path before = std::filesystem::current_path();
-  std::filesystem::current_path(FSWEEP_SOURCE_DIR);
+  std::filesystem::current_path(std::filesystem::temp_directory_path());
   int n = 0;
-  for (const char* folder : {"sweeps", "sweeps/examples", "sweeps/paper"}) {
-    for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+  for (const char* folder : {"sweeps", "sweeps/examples", "sweeps/paper", "tests/slurm"}) {
+    for (const auto& entry :
+         std::filesystem::directory_iterator(std::string(FSWEEP_SOURCE_DIR "/") + folder)) {
       if (entry.path().extension() != ".json") continue;
       const SweepPlan plan = SweepPlan::from_file(entry.path().string());
       EXPECT_TRUE(clipped_free_space_warnings(plan).empty()) << entry.path();
       EXPECT_TRUE(identical_repetition_warnings(plan).empty()) << entry.path();
+      EXPECT_TRUE(plan.path_warnings().empty()) << entry.path();
       ++n;
     }
   }
   std::filesystem::current_path(before);
   EXPECT_GE(n, 30);
+}
+
+/// The ConfigError message of SweepPlan::from_file(path, overrides) ("" when it loads).
+std::string override_error(const std::string& path, const std::vector<std::string>& overrides) {
+  try {
+    (void)SweepPlan::from_file(path, overrides);
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+/// A sweep file of two strategies, for the override tests.
+std::string two_strategies(const std::string& name) {
+  return write_temp(name, R"({"schema_version": 1, "name": "t", "maps": ["free:w=20,h=20"],
+      "strategies": [{"name": "closest_frontier"}, {"name": "energy_aware", "params": {"w1": 10}}],
+      "robot": {"battery": 300, "sensor": {"range_m": 4}}})");
+}
+
+TEST(SweepValidation, OverridesSetValuesOfTheParsedSweepBeforeValidation) {
+  const std::string path = two_strategies("overrides.json");
+  const std::vector<std::string> overrides{"robot.battery=800",
+                                           "repetitions=5",
+                                           "strategies[1].params.w1=[1,2,3]",
+                                           "name=my_run",
+                                           "maps[0]=rooms:w=30,h=20,seed=1",
+                                           "robot.sensor.miss_probability=0.05",
+                                           "output.dir=\"out/x\""};
+  const SweepPlan plan = SweepPlan::from_file(path, overrides);
+  EXPECT_EQ(plan.overrides(), overrides);  // as given
+  EXPECT_EQ(plan.source()["robot"]["battery"], 800);
+  EXPECT_EQ(plan.source()["strategies"][1]["params"]["w1"], json::parse("[1, 2, 3]"));
+  EXPECT_EQ(plan.name(), "my_run");  // a bare string
+  EXPECT_EQ(plan.maps()[0].label, "rooms:w=30,h=20,seed=1");
+  EXPECT_EQ(plan.source()["robot"]["sensor"], json::parse(R"({"range_m": 4, "miss_probability": 0.05})"));
+  EXPECT_EQ(plan.output_dir(), "out/x");  // a key added, with the object on the way
+  EXPECT_EQ(plan.run_count(), (1U + 3U) * 5U);
+  // A later override may change part of an earlier one's value.
+  const SweepPlan later = SweepPlan::from_file(path, {R"(robot={"battery": 1})", "robot.battery=2"});
+  EXPECT_EQ(later.source()["robot"], json::parse(R"({"battery": 2})"));
+  std::filesystem::remove(path);
+}
+
+TEST(SweepValidation, AProblemAtOrUnderAnOverridesPathNamesTheOverride) {
+  const std::string path = two_strategies("override_problems.json");
+  const std::string m = override_error(path, {"robot.battery=-1", "repetitions=2", "strategies[1].params=5"});
+  EXPECT_HAS(m, path + ": 2 problems in the sweep with its command-line overrides:\n");
+  EXPECT_HAS(
+      m, "\n" + path +
+             ": override 'robot.battery=-1': /robot/battery: value -1 out of range; allowed: a number > 0");
+  EXPECT_HAS(m,
+             "\n" + path + ": override 'strategies[1].params=5': /strategies/1/params: expected an object");
+  EXPECT_HAS(override_error(path, {"robot.wheels=3"}),
+             path + ": override 'robot.wheels=3': /robot/wheels: unknown key 'wheels'");
+  // The file's own problems stay the file's.
+  const std::string bad_seed = write_temp("override_bad_seed.json", R"({"schema_version": 1, "name": "t",
+      "maps": ["free:w=20,h=20"], "strategies": [{"name": "closest_frontier"}], "seed": -1})");
+  EXPECT_EQ(override_error(bad_seed, {"repetitions=2"}),
+            bad_seed + ": 1 problem in the sweep with its command-line overrides:\n" + bad_seed +
+                ": /seed: value -1 not allowed; allowed: an integer in [0, 2^64)");
+  std::filesystem::remove(bad_seed);
+  const std::string misspelt = override_error(path, {"robot.sensor.range=5"});
+  EXPECT_HAS(misspelt,
+             "override 'robot.sensor.range=5': /robot/sensor/range: unknown key 'range'; allowed: range_m");
+  std::filesystem::remove(path);
+}
+
+TEST(SweepValidation, OverridesThatCannotBeAppliedAreRefusedNamingWhatIsInTheWay) {
+  const std::string path = two_strategies("override_refused.json");
+  const auto refused = [&](const std::string& text) { return override_error(path, {text}); };
+  EXPECT_EQ(refused("=5"), path + ": 1 override of the sweep cannot be applied:\n" + path +
+                               ": override '=5': the path before '=' is empty; allowed: PATH=VALUE, e.g. "
+                               "robot.battery=800");
+  EXPECT_HAS(refused("repetitions"), "override 'repetitions': expected PATH=VALUE");
+  EXPECT_HAS(refused("a..b=1"), "override 'a..b=1': empty key at character 3 of the path");
+  EXPECT_HAS(refused("a.=1"), "override 'a.=1': empty key at the end of the path");
+  EXPECT_HAS(refused("[0]=1"), "override '[0]=1': the path starts with '['");
+  EXPECT_HAS(refused("na me=1"), "override 'na me=1': ' ' at character 3 of the path is not allowed");
+  EXPECT_HAS(
+      refused("maps[99].w=3"),
+      "override 'maps[99].w=3': maps has 1 entry (maps[0]), so there is no maps[99]; allowed: an entry "
+      "that is there");
+  EXPECT_HAS(refused("strategies[2]=x"),
+             "strategies has 2 entries (strategies[0] to strategies[1]), so there is "
+             "no strategies[2]");
+  EXPECT_HAS(refused("maps[-1]=1"),
+             "override 'maps[-1]=1': '[' at character 5 of the path must be followed by a "
+             "list position and ']' (maps[0], maps[1], ...), got '-1'");
+  EXPECT_HAS(refused("x[=1"),
+             "override 'x[=1': '[' at character 2 of the path must be followed by a list "
+             "position and ']' (x[0], x[1], ...), got nothing");
+  EXPECT_HAS(refused("name.x=1"),
+             "override 'name.x=1': name is the string \"t\", not an object, so it has no key 'x'");
+  EXPECT_HAS(refused("robot[0]=1"),
+             "robot is an object, not a list, so there is no robot[0]; allowed: robot.KEY");
+  EXPECT_HAS(
+      refused("planners[0]=astar"),
+      "override 'planners[0]=astar': planners is not in the sweep, so there is no planners[0]; allowed: the "
+      "whole list, planners=[...]");
+  EXPECT_HAS(refused("strategies[0].params.w1=[1,"),
+             "override 'strategies[0].params.w1=[1,': value:1:4: invalid JSON");
+  EXPECT_HAS(refused("repetitions=1e400"), "number 1e400 is out of range");
+  EXPECT_HAS(refused("name=\xff"), "override 'name=\xff': the value is not UTF-8 text");
+  EXPECT_HAS(refused("robot=" + std::string(64, '[') + std::string(64, ']')),
+             "makes the sweep nested more than 64 levels deep");
+  // 10 MB: refused unread, the message cut.
+  const std::string huge = "name=" + std::string(10'000'000, 'x');
+  const std::string m = refused(huge);
+  EXPECT_HAS(m, "...' (10000005 characters): it is 10000005 characters long; allowed: at most 65536");
+  EXPECT_LT(m.size(), 600U);
+  // The same path twice: refused (as a key twice in a JSON object), every bad override listed.
+  const std::string twice = override_error(path, {"repetitions=2", "repetitions=3", "maps[5]=x"});
+  EXPECT_HAS(twice, "2 overrides of the sweep cannot be applied:");
+  EXPECT_HAS(
+      twice,
+      "override 'repetitions=3': sets the same path as override 'repetitions=2'; allowed: each path once");
+  // Duplicate keys in a value are problems, as in the file.
+  EXPECT_HAS(override_error(path, {R"(robot={"battery": 1, "battery": 2})"}),
+             "override 'robot={\"battery\": 1, \"battery\": 2}': /robot/battery: duplicate key 'battery'");
+  std::filesystem::remove(path);
 }
 
 }  // namespace test_sweep_validation

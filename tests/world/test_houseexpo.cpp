@@ -100,7 +100,9 @@ TEST(HouseExpo, HandComputedLShape) {
   EXPECT_DOUBLE_EQ(map.resolution_m, 0.5);
   EXPECT_EQ(rows_of(map.occupied, 0), (std::vector<std::string>{".......", ".xxxxx.", ".xxxxx.", ".xxxxx.",
                                                                 ".xxx...", ".xxx...", "......."}));
-  EXPECT_EQ(map.start, (Cell{1, 1}));  // the first free cell in row-major order
+  // One region of 21 cells; sums x 3 * 15 + 2 * 6 = 57, y 5 * 6 + 3 * 9 = 57: centroid
+  // (2.71, 2.71), nearest cell (3, 3).
+  EXPECT_EQ(map.start, (Cell{3, 3}));
 }
 
 TEST(HouseExpo, HandComputedTriangleAndOffset) {
@@ -168,6 +170,57 @@ TEST(HouseExpo, IsAMapSpecWithTheDatasetsResolutionByDefault) {
   EXPECT_EQ(coarse.start, (Cell{50, 40}));
   expect_config_error([] { (void)load_map_spec(kPlans + "house_expo_room_0000.json:threshold=3"); },
                       {"unknown key 'threshold'", "allowed: res, start"});
+}
+
+TEST(HouseExpo, ShippedPlansStartNearestTheCentreOfTheirLargestRegion) {
+  struct Expected {
+    const char* plan;
+    double res;
+    Cell start;  // as computed by region_centre_cell(); the loop below checks it against every cell
+  };
+  const std::vector<Expected> expected{
+      {"house_expo_room_0000.json", 0.04, Cell{134, 78}},
+      {"house_expo_room_0000.json", 0.1, Cell{54, 32}},
+      {"house_expo_room_1451.json", 0.04, Cell{142, 136}},
+      {"house_expo_room_1451.json", 0.1, Cell{57, 54}},
+  };
+  for (const Expected& e : expected) {
+    SCOPED_TRACE(std::string(e.plan) + " at " + std::to_string(e.res));
+    const WorldMap map = load_houseexpo(kPlans + e.plan, e.res);
+    EXPECT_EQ(map.start, e.start);
+    ASSERT_TRUE(map.is_free(map.start));
+    // In the largest region of the default motion rule (no corner cutting), and no cell of it
+    // nearer its centroid; of equally near cells (within rounding) none comes earlier.
+    const Grid<std::uint8_t> region = largest_free_region(map, false);
+    ASSERT_EQ(region.at(map.start), 1);
+    double n = 0.0;
+    double sum_x = 0.0;
+    double sum_y = 0.0;
+    for (int i = 0; i < region.size(); ++i) {
+      if (region[i] == 0) continue;
+      n += 1.0;
+      sum_x += region.cell(i).x;
+      sum_y += region.cell(i).y;
+    }
+    const auto d2 = [&](Cell c) {
+      const double dx = c.x - sum_x / n;
+      const double dy = c.y - sum_y / n;
+      return dx * dx + dy * dy;
+    };
+    const int start_index = region.index(map.start);
+    for (int i = 0; i < region.size(); ++i) {
+      if (region[i] == 0) continue;
+      EXPECT_GE(d2(region.cell(i)), d2(map.start) - (i < start_index ? -1e-12 : 1e-12)) << i;
+    }
+    // Stable: the same map loads with the same start; an explicit start still wins.
+    EXPECT_EQ(load_houseexpo(kPlans + e.plan, e.res).start, map.start);
+    const std::string spec = kPlans + e.plan + ":res=" + std::to_string(e.res) +
+                             ",start=" + std::to_string(map.start.x + 1) + ";" + std::to_string(map.start.y);
+    if (map.is_free(Cell{map.start.x + 1, map.start.y})) {
+      EXPECT_EQ(load_map_spec(spec).start, (Cell{map.start.x + 1, map.start.y}));
+    }
+    EXPECT_EQ(load_map_spec(kPlans + e.plan + ":res=" + std::to_string(e.res)).start, map.start);
+  }
 }
 
 TEST(HouseExpo, RandomStartsAreForRunsOnly) {

@@ -1,5 +1,5 @@
-// Ground-truth queries: free counts, reachability (corner cutting), nearest free cell, and the
-// fully known map.
+// Ground-truth queries: free counts, reachability (corner cutting), nearest free cell, the cell
+// nearest a region's centroid, and the fully known map.
 #include <gtest/gtest.h>
 
 #include "core/random.hpp"
@@ -71,6 +71,21 @@ TEST(NearestFreeCell, EuclideanWithTiesByIndex) {
   WorldMap full = parse_ascii_map("#.\n");
   full.occupied.fill(1);
   EXPECT_EQ(nearest_free_cell(full, Cell{0, 0}), (Cell{-1, -1}));
+}
+
+TEST(RegionCentreCell, NearestTheCentroidWithTiesByRowThenColumn) {
+  // A ring around an occupied cell: the centroid (1, 1) is a wall; (1, 0), (0, 1), (2, 1) and
+  // (1, 2) are 1 from it, and (1, 0) comes first in row-major order.
+  EXPECT_EQ(region_centre_cell(largest_free_region(parse_ascii_map("...\n.#.\n...\n"))), (Cell{1, 0}));
+  // Two cells side by side: the centroid (0.5, 0) is halfway, the left one (lower index) wins.
+  EXPECT_EQ(region_centre_cell(largest_free_region(parse_ascii_map("..\n"))), (Cell{0, 0}));
+  // An L: 4 cells in rows 0-1 (x 0..1), 8 in rows 2-3 (x 0..3); sums x 14, y 22 over 12 cells,
+  // centroid (1.17, 1.83): (1, 2) is 0.24 from it, (1, 1) 0.85.
+  EXPECT_EQ(region_centre_cell(largest_free_region(parse_ascii_map("..##\n..##\n....\n....\n"))),
+            (Cell{1, 2}));
+  // Only the largest region counts: the right room (8 cells, centroid (4.5, 0.5)), not the left.
+  EXPECT_EQ(region_centre_cell(largest_free_region(parse_ascii_map("..#....\n..#....\n"))), (Cell{4, 0}));
+  EXPECT_EQ(region_centre_cell(Grid<std::uint8_t>(3, 2, 0)), (Cell{-1, -1}));
 }
 
 TEST(FullyKnown, KnowsEveryCellOfTheGroundTruth) {
