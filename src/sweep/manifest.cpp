@@ -212,13 +212,25 @@ std::optional<nlohmann::json> read_manifest(const std::string& path) {
   return j;
 }
 
-std::vector<std::string> changed_map_contents(const nlohmann::json& manifest, const SweepPlan& plan) {
-  std::vector<std::string> out;
+namespace {
+
+/// The manifest's "maps" array, or null after adding the reason to `out` (an older fsweep's
+/// manifest records no maps).
+const nlohmann::json* recorded_maps(const nlohmann::json& manifest, std::vector<std::string>& out) {
   const nlohmann::json* recorded = manifest.contains("maps") ? &manifest["maps"] : nullptr;
   if (recorded == nullptr || !recorded->is_array()) {
     out.emplace_back("manifest.json does not record the maps' content (written by an older fsweep)");
-    return out;
+    return nullptr;
   }
+  return recorded;
+}
+
+}  // namespace
+
+std::vector<std::string> changed_map_contents(const nlohmann::json& manifest, const SweepPlan& plan) {
+  std::vector<std::string> out;
+  const nlohmann::json* recorded = recorded_maps(manifest, out);
+  if (recorded == nullptr) return out;
   for (const nlohmann::json& was : *recorded) {
     if (!was.is_object()) continue;
     const std::string label = was.value("label", std::string());
@@ -245,11 +257,8 @@ std::optional<std::string> read_manifest_hash(const std::string& path) {
 
 std::vector<std::string> changed_maps(const nlohmann::json& manifest, const SweepPlan& plan) {
   std::vector<std::string> out;
-  const nlohmann::json* recorded = manifest.contains("maps") ? &manifest["maps"] : nullptr;
-  if (recorded == nullptr || !recorded->is_array()) {
-    out.emplace_back("manifest.json does not record the maps' content (written by an older fsweep)");
-    return out;
-  }
+  const nlohmann::json* recorded = recorded_maps(manifest, out);
+  if (recorded == nullptr) return out;
   const auto& maps = plan.maps();
   for (std::size_t i = 0; i < std::max(maps.size(), recorded->size()); ++i) {
     const nlohmann::json* was = i < recorded->size() ? &(*recorded)[i] : nullptr;

@@ -192,17 +192,17 @@ def main():
     args = parser.parse_args()
     work = os.path.abspath(args.work or os.path.join(tempfile.gettempdir(), "fsweep-docs-work"))
     os.makedirs(work, exist_ok=True)
-    todo = args.page or pages()
+    chosen = args.page or pages()
     failures = []
     with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
-        results = {p: pool.submit(check_page, p, args.fsweep, work, args.long) for p in todo}
-        for page in todo:
+        results = {p: pool.submit(check_page, p, args.fsweep, work, args.long) for p in chosen}
+        for page in chosen:
             problems, ran, seconds = results[page].result()
             print(f"{page}: {ran} command blocks, {len(problems)} problems, {seconds:.1f} s")
             failures += problems
     for p in failures:
         print(f"FAIL {p}\n")
-    print(f"check_docs.py: {len(todo)} pages, {len(failures)} problems")
+    print(f"check_docs.py: {len(chosen)} pages, {len(failures)} problems")
     return 1 if failures else 0
 
 
