@@ -32,10 +32,10 @@ install:
 
 test:
 	@scripts/bootstrap release
-	cd build/release && ctest --output-on-failure -j 2 -L unit
-	cd build/release && ctest --output-on-failure -L slurm
+	cd build/release && ctest --output-on-failure -j 2 -L unit || { ../../scripts/ctest-failures .; exit 1; }
+	cd build/release && ctest --output-on-failure -L slurm || { ../../scripts/ctest-failures .; exit 1; }
 	@scripts/bootstrap asan
-	cd build/asan && ctest --output-on-failure -j 2 -L sanitize
+	cd build/asan && ctest --output-on-failure -j 2 -L sanitize || { ../../scripts/ctest-failures .; exit 1; }
 
 FUZZ_SECONDS ?= 300
 fuzz:

@@ -202,6 +202,9 @@ def main():
             failures += problems
     for p in failures:
         print(f"FAIL {p}\n")
+    # The first line of each problem again, last, for logs that keep only their end.
+    for p in failures:
+        print(f"FAIL {p.splitlines()[0][:300]}")
     print(f"check_docs.py: {len(chosen)} pages, {len(failures)} problems")
     return 1 if failures else 0
 
