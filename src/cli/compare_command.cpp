@@ -61,6 +61,10 @@ Command add_compare_command(CLI::App& app) {
                   "Slower means a time ratio above 1 + this (noise of shared machines)")
       ->check(non_negative())
       ->capture_default_str();
+  sub->add_option("--min-sweep-seconds", o->compare.min_judged_sweep_wall_s,
+                  "The sweep's throughput is judged only when the baseline sweep took at least this long")
+      ->check(non_negative())
+      ->capture_default_str();
   sub->add_flag("--strict-speed", o->compare.strict_speed,
                 "Slower fails even when the machines (host, CPU) differ");
   return [o] { return run_compare(*o); };

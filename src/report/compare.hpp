@@ -29,7 +29,8 @@
 ///    configuration of the baseline not in NEW is `missing`; both are failures. A configuration
 ///    only in NEW is `new` (not a failure). Different manifest sweep hashes are a warning.
 /// 4. Speed, as time ratios new / baseline (> 1 = slower): the sweep's seconds per run (manifest
-///    `wall_s / runs.ran`; not judged for a manifest merged from shards), each configuration's
+///    `wall_s / runs.ran`; not judged for a manifest merged from shards, or when the baseline's
+///    wall_s is below CompareOptions::min_judged_sweep_wall_s), each configuration's
 ///    median wall_time_s (informational, never a failure: a run's wall time depends on what
 ///    runs beside it; `not judged` when the baseline median is below
 ///    CompareOptions::min_judged_wall_time_s), and each
@@ -72,6 +73,9 @@ struct CompareOptions {
   /// Configurations whose baseline median wall_time_s is below this (seconds) are not judged
   /// on speed: timings of tiny runs are mostly noise.
   double min_judged_wall_time_s = 0.05;
+  /// The sweep's throughput is not judged when the baseline sweep's wall time is below this
+  /// (seconds): a sweep of a few seconds times mostly the process start and the machine's load.
+  double min_judged_sweep_wall_s = 10.0;
   /// At most this many differing runs are listed (as `run` checks) per configuration; the
   /// rest are counted.
   std::size_t listed_runs_per_config = 5;

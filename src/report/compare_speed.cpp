@@ -1,5 +1,6 @@
 #include "report/compare_speed.hpp"
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -72,6 +73,7 @@ ManifestFacts read_manifest_facts(const std::string& path) {
   m.status = string_at(j, "status");
   if (j.contains("threads") && j["threads"].is_number_integer()) m.threads = j["threads"].get<long long>();
   const auto wall_s = number_at(j, "wall_s");
+  m.wall_s = wall_s;
   std::optional<double> ran;
   if (j.contains("runs") && j["runs"].is_object()) ran = number_at(j["runs"], "ran");
   // A manifest merged from shards (merge.hpp) has the longest shard's wall time for runs spread
@@ -205,9 +207,21 @@ void add_sweep_speed_checks(CompareReport& report, const ManifestFacts& baseline
                               std::to_string(*current.threads) +
                               " (new): the sweep throughput is informational unless --strict-speed");
   }
-  report.checks.push_back(time_ratio_check("speed", "sweep", "seconds_per_run", baseline.seconds_per_run,
-                                           current.seconds_per_run, options.speed_tolerance,
-                                           options.strict_speed || (machine_ok && same_threads)));
+  CompareCheck sweep =
+      time_ratio_check("speed", "sweep", "seconds_per_run", baseline.seconds_per_run, current.seconds_per_run,
+                       options.speed_tolerance, options.strict_speed || (machine_ok && same_threads));
+  if (sweep.status != CheckStatus::NotJudged && baseline.wall_s &&
+      *baseline.wall_s < options.min_judged_sweep_wall_s) {
+    // A sweep of a few seconds times mostly the process start and whatever else the machine runs.
+    sweep.status = CheckStatus::NotJudged;
+    sweep.failure = false;
+    char why[160];
+    std::snprintf(why, sizeof(why),
+                  "the baseline sweep took %.3g s, below the %.3g s that are judged on speed",
+                  *baseline.wall_s, options.min_judged_sweep_wall_s);
+    report.notes.emplace_back(why);
+  }
+  report.checks.push_back(sweep);
   // 2. Micro-benchmarks, baseline order, then those only in NEW.
   if (!baseline_bench && !current_bench) return;
   if (!baseline_bench || !current_bench) {

@@ -17,6 +17,8 @@ struct ManifestFacts {
   std::string path;
   std::optional<std::string> sweep_hash, host, cpu_model, status;
   std::optional<long long> threads;
+  /// The sweep's wall time (manifest `wall_s`), seconds.
+  std::optional<double> wall_s;
   /// wall_s / runs.ran; nullopt when either is missing or not positive.
   std::optional<double> seconds_per_run;
 };

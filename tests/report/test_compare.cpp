@@ -185,7 +185,12 @@ class CompareTest : public ::testing::Test {
     fs::last_write_time(dir + "/summary.csv", fs::last_write_time(dir + "/runs.csv") - std::chrono::hours(1));
   }
 
-  [[nodiscard]] static CompareOptions options() { return {}; }
+  // The fixture's sweeps take well under a second: judge their throughput all the same.
+  [[nodiscard]] static CompareOptions options() {
+    CompareOptions o;
+    o.min_judged_sweep_wall_s = 0.0;
+    return o;
+  }
 
   [[nodiscard]] CompareReport compare(const CompareOptions& o = options()) const {
     return compare_dirs(new_, base_, o);
@@ -536,6 +541,33 @@ TEST_F(CompareTest, DifferentCpuModelInManifestIsAnotherMachine) {
   CompareOptions strict = options();
   strict.strict_speed = true;
   EXPECT_EQ(compare(strict).regressions, 1U);
+}
+
+TEST_F(CompareTest, ShortSweepsAreNotJudgedOnThroughput) {
+  json m = json::parse(read_file(new_ + "/manifest.json"));
+  m["wall_s"] = m["wall_s"].get<double>() * 3.0;  // 3x slower sweep on the same machine
+  write_file(new_ + "/manifest.json", m.dump(2));
+  EXPECT_EQ(compare().regressions, 1U);  // judged: the fixture's options judge any length
+  CompareOptions defaults;
+  const double base_wall = json::parse(read_file(base_ + "/manifest.json"))["wall_s"].get<double>();
+  ASSERT_LT(base_wall, defaults.min_judged_sweep_wall_s);
+  const CompareReport r = compare(defaults);
+  EXPECT_EQ(r.regressions, 0U) << format_compare_table(r);
+  bool found = false;
+  for (const auto& k : r.checks) {
+    if (k.kind != "speed" || k.name != "sweep") continue;
+    found = true;
+    EXPECT_EQ(k.status, CheckStatus::NotJudged);
+    EXPECT_FALSE(k.failure);
+    EXPECT_NEAR(*k.ratio, 3.0, 1e-9);  // still shown
+  }
+  EXPECT_TRUE(found);
+  ASSERT_FALSE(r.notes.empty());
+  EXPECT_NE(r.notes.back().find("below the 10 s that are judged on speed"), std::string::npos)
+      << r.notes.back();
+  // Strict speed does not judge noise either: the minimum is about what a timing can say.
+  defaults.strict_speed = true;
+  EXPECT_EQ(compare(defaults).regressions, 0U);
 }
 
 TEST_F(CompareTest, MergedShardsHaveNoSweepThroughput) {
