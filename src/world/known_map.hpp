@@ -43,6 +43,17 @@ class KnownMap {
     return true;
   }
 
+  /// Makes a known cell unknown again. For callers that reuse one map for many independent
+  /// scans (the visibility tables of the offline optimum, optimum/coverage_instance.hpp).
+  /// Returns true when the cell was known.
+  bool forget(int index) {
+    const CellState s = cells_[index];
+    if (s == CellState::Unknown) return false;
+    --(s == CellState::Occupied ? occupied_count_ : free_count_);
+    cells_[index] = CellState::Unknown;
+    return true;
+  }
+
   [[nodiscard]] int free_count() const { return free_count_; }
   [[nodiscard]] int occupied_count() const { return occupied_count_; }
   [[nodiscard]] int known_count() const { return free_count_ + occupied_count_; }

@@ -1,0 +1,415 @@
+#include "optimum/cover_route.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <queue>
+#include <utility>
+
+#include "core/random.hpp"
+#include "search/octile_grid.hpp"
+#include "world/sensor.hpp"
+
+namespace fsweep {
+inline namespace optimum {
+namespace {
+
+constexpr double kImproves = 1e-9;  // metres: a move must shorten the path by more than this
+
+/// Step 1: greedy set cover of the explorable targets the start's scan leaves.
+std::vector<int> greedy_viewpoints(const CoverageInstance& in) {
+  std::vector<std::uint8_t> covered(static_cast<std::size_t>(in.targets()), 0);
+  for (int t = 0; t < in.targets(); ++t) {
+    const auto from = in.seen_from.row(t);
+    if (std::none_of(from.begin(), from.end(),
+                     [&](int n) { return in.node_usable[static_cast<std::size_t>(n)] != 0; })) {
+      covered[static_cast<std::size_t>(t)] = 1;  // out of reach: nothing can cover it
+    }
+  }
+  if (in.start_node >= 0) {
+    for (const int t : in.sees.row(in.start_node)) covered[static_cast<std::size_t>(t)] = 1;
+  }
+  // Lazy greedy: gains only fall, so a popped node whose stored gain is still exact is the best.
+  std::priority_queue<std::pair<int, int>> heap;  // (gain, -node)
+  const auto gain = [&](int node) {
+    int g = 0;
+    for (const int t : in.sees.row(node)) g += covered[static_cast<std::size_t>(t)] == 0 ? 1 : 0;
+    return g;
+  };
+  for (int n = 0; n < in.nodes(); ++n) {
+    if (in.node_usable[static_cast<std::size_t>(n)] == 0) continue;
+    const int g = gain(n);
+    if (g > 0) heap.emplace(g, -n);
+  }
+  std::vector<int> chosen;
+  while (!heap.empty()) {
+    const auto [stored, negative] = heap.top();
+    heap.pop();
+    const int node = -negative;
+    const int now = gain(node);
+    if (now == 0) continue;
+    if (now < stored) {
+      heap.emplace(now, negative);
+      continue;
+    }
+    chosen.push_back(node);
+    for (const int t : in.sees.row(node)) covered[static_cast<std::size_t>(t)] = 1;
+  }
+  return chosen;
+}
+
+/// Distances between points (nodes), one field per point.
+struct PointDistances {
+  std::vector<int> points;                 // nodes
+  std::vector<std::vector<double>> field;  // per point: metres to every node
+  [[nodiscard]] double between(int a, int b) const {
+    return field[static_cast<std::size_t>(a)][static_cast<std::size_t>(points[static_cast<std::size_t>(b)])];
+  }
+};
+
+PointDistances distances_of(const CoverageInstance& in, std::vector<int> points) {
+  PointDistances d;
+  d.points = std::move(points);
+  for (const int node : d.points) {
+    const int cell = in.node_cell[static_cast<std::size_t>(node)];
+    d.field.push_back(node_distances_m(in, std::span<const int>(&cell, 1)));
+  }
+  return d;
+}
+
+/// Step 2: nearest neighbour from order[0] = 0 over points 1..n-1.
+std::vector<int> nearest_neighbour_order(const PointDistances& d) {
+  const int n = static_cast<int>(d.points.size());
+  std::vector<int> order{0};
+  std::vector<std::uint8_t> used(static_cast<std::size_t>(n), 0);
+  used[0] = 1;
+  for (int step = 1; step < n; ++step) {
+    int best = -1;
+    for (int p = 1; p < n; ++p) {
+      if (used[static_cast<std::size_t>(p)] == 0 &&
+          (best < 0 || d.between(order.back(), p) < d.between(order.back(), best))) {
+        best = p;
+      }
+    }
+    used[static_cast<std::size_t>(best)] = 1;
+    order.push_back(best);
+  }
+  return order;
+}
+
+/// One 2-opt pass on the open path; true when it improved.
+bool two_opt_pass(const PointDistances& d, std::vector<int>& o) {
+  bool improved = false;
+  const std::size_t n = o.size();
+  for (std::size_t i = 1; i + 1 < n; ++i) {
+    for (std::size_t j = i + 1; j < n; ++j) {
+      const double before = d.between(o[i - 1], o[i]) + (j + 1 < n ? d.between(o[j], o[j + 1]) : 0.0);
+      const double after = d.between(o[i - 1], o[j]) + (j + 1 < n ? d.between(o[i], o[j + 1]) : 0.0);
+      if (after < before - kImproves) {
+        std::reverse(o.begin() + static_cast<std::ptrdiff_t>(i),
+                     o.begin() + static_cast<std::ptrdiff_t>(j) + 1);
+        improved = true;
+      }
+    }
+  }
+  return improved;
+}
+
+/// One Or-opt pass (segments of 1-3 points moved elsewhere, either way round); true when it
+/// improved.
+bool or_opt_pass(const PointDistances& d, std::vector<int>& o) {
+  bool improved = false;
+  for (std::size_t len = 1; len <= 3; ++len) {
+    for (std::size_t i = 1; i + len <= o.size(); ++i) {
+      const std::size_t j = i + len - 1;  // segment o[i..j]
+      const bool at_end = j + 1 == o.size();
+      const double removed = d.between(o[i - 1], o[i]) + (at_end ? 0.0 : d.between(o[j], o[j + 1])) -
+                             (at_end ? 0.0 : d.between(o[i - 1], o[j + 1]));
+      std::vector<int> seg(o.begin() + static_cast<std::ptrdiff_t>(i),
+                           o.begin() + static_cast<std::ptrdiff_t>(j) + 1);
+      std::vector<int> rest(o.begin(), o.begin() + static_cast<std::ptrdiff_t>(i));
+      rest.insert(rest.end(), o.begin() + static_cast<std::ptrdiff_t>(j) + 1, o.end());
+      double best_gain = kImproves;
+      std::size_t best_at = 0;
+      bool best_reversed = false;
+      for (std::size_t k = 0; k < rest.size(); ++k) {  // insert after rest[k]
+        const bool end = k + 1 == rest.size();
+        for (const bool reversed : {false, true}) {
+          const int first = reversed ? seg.back() : seg.front();
+          const int last = reversed ? seg.front() : seg.back();
+          const double added = d.between(rest[k], first) + (end ? 0.0 : d.between(last, rest[k + 1])) -
+                               (end ? 0.0 : d.between(rest[k], rest[k + 1]));
+          if (removed - added > best_gain) {
+            best_gain = removed - added;
+            best_at = k;
+            best_reversed = reversed;
+          }
+        }
+      }
+      if (best_gain > kImproves) {
+        if (best_reversed) std::reverse(seg.begin(), seg.end());
+        rest.insert(rest.begin() + static_cast<std::ptrdiff_t>(best_at) + 1, seg.begin(), seg.end());
+        o = std::move(rest);
+        improved = true;
+      }
+    }
+  }
+  return improved;
+}
+
+void improve(const PointDistances& d, std::vector<int>& order, int max_passes) {
+  for (int pass = 0; pass < max_passes; ++pass) {
+    const bool a = two_opt_pass(d, order);
+    const bool b = or_opt_pass(d, order);
+    if (!a && !b) break;
+  }
+}
+
+/// Cells from node a to node b, without a's cell.
+std::vector<int> leg(const CoverageInstance& in, int a, int b) {
+  std::vector<int> path = shortest_path_cells(in, in.node_cell[static_cast<std::size_t>(a)],
+                                              in.node_cell[static_cast<std::size_t>(b)]);
+  if (!path.empty()) path.erase(path.begin());
+  return path;
+}
+
+/// True when the cells of `order`'s route see every explorable target (by the scans' tables).
+bool covers_all(const CoverageInstance& in, const PointDistances& d, const std::vector<int>& order) {
+  std::vector<std::uint8_t> seen(static_cast<std::size_t>(in.targets()), 0);
+  const auto mark = [&](int cell) {
+    for (const int t : in.sees.row(in.node_of_cell[static_cast<std::size_t>(cell)]))
+      seen[static_cast<std::size_t>(t)] = 1;
+  };
+  mark(in.node_cell[static_cast<std::size_t>(d.points[static_cast<std::size_t>(order[0])])]);
+  for (std::size_t k = 1; k < order.size(); ++k) {
+    for (const int c : leg(in, d.points[static_cast<std::size_t>(order[k - 1])],
+                           d.points[static_cast<std::size_t>(order[k])]))
+      mark(c);
+  }
+  for (int t = 0; t < in.targets(); ++t) {
+    if (seen[static_cast<std::size_t>(t)] != 0) continue;
+    const auto from = in.seen_from.row(t);
+    if (std::any_of(from.begin(), from.end(),
+                    [&](int n) { return in.node_usable[static_cast<std::size_t>(n)] != 0; }))
+      return false;
+  }
+  return true;
+}
+
+/// Step 3: drops viewpoints the rest of the route sees on its way. Returns true when it dropped
+/// one. `order` indexes d.points.
+bool prune(const CoverageInstance& in, const PointDistances& d, std::vector<int>& order) {
+  const std::size_t n = order.size();
+  if (n < 2) return false;
+  std::vector<std::vector<int>> legs(n);  // legs[k]: cells of the leg into order[k] (k >= 1)
+  std::vector<int> count(static_cast<std::size_t>(in.targets()), 0);
+  const auto add = [&](const std::vector<int>& cells, int sign) {
+    for (const int c : cells) {
+      for (const int t : in.sees.row(in.node_of_cell[static_cast<std::size_t>(c)]))
+        count[static_cast<std::size_t>(t)] += sign;
+    }
+  };
+  add({in.node_cell[static_cast<std::size_t>(d.points[static_cast<std::size_t>(order[0])])]}, 1);
+  for (std::size_t k = 1; k < n; ++k) {
+    legs[k] = leg(in, d.points[static_cast<std::size_t>(order[k - 1])],
+                  d.points[static_cast<std::size_t>(order[k])]);
+    add(legs[k], 1);
+  }
+  std::vector<std::uint8_t> dropped(n, 0);
+  bool any = false;
+  std::size_t prev = 0;  // the last kept position before k
+  for (std::size_t k = 1; k < n; ++k) {
+    std::size_t next = k + 1;
+    // Try dropping order[k]: the legs into k and into next become one leg prev -> next.
+    std::vector<int> joined;
+    if (next < n)
+      joined = leg(in, d.points[static_cast<std::size_t>(order[prev])],
+                   d.points[static_cast<std::size_t>(order[next])]);
+    add(legs[k], -1);
+    if (next < n) add(legs[next], -1);
+    add(joined, 1);
+    bool keeps = true;
+    for (int t = 0; t < in.targets() && keeps; ++t) {
+      if (count[static_cast<std::size_t>(t)] > 0) continue;
+      const auto from = in.seen_from.row(t);
+      keeps = std::none_of(from.begin(), from.end(),
+                           [&](int node) { return in.node_usable[static_cast<std::size_t>(node)] != 0; });
+    }
+    if (keeps) {
+      dropped[k] = 1;
+      any = true;
+      if (next < n) legs[next] = std::move(joined);
+      legs[k].clear();
+    } else {
+      add(joined, -1);
+      add(legs[k], 1);
+      if (next < n) add(legs[next], 1);
+      prev = k;
+    }
+  }
+  if (!any) return false;
+  std::vector<int> kept;
+  for (std::size_t k = 0; k < n; ++k) {
+    if (dropped[k] == 0) kept.push_back(order[k]);
+  }
+  order = std::move(kept);
+  return true;
+}
+
+/// Step 4: the optimal split of `order` (points after order[0]) into trips within `range_m`.
+/// Returns the positions in `order` where trips 2, 3, ... start; nullopt when some viewpoint
+/// cannot be reached and left within one charge.
+std::optional<std::vector<std::size_t>> split_trips(const PointDistances& d, const std::vector<int>& order,
+                                                    int dock_point, double range_m) {
+  const std::size_t m = order.size();      // positions 1..m-1 are viewpoints
+  std::vector<double> best(m, kInfinity);  // best[j]: visiting positions 1..j, back at the dock
+  std::vector<std::size_t> cut(m, 0);
+  best[0] = 0.0;
+  double final_best = m == 1 ? 0.0 : kInfinity;
+  std::size_t final_cut = 0;
+  for (std::size_t i = 1; i < m; ++i) {  // a trip starting at position i
+    if (best[i - 1] == kInfinity) continue;
+    const int from = i == 1 ? order[0] : dock_point;
+    double travel = d.between(from, order[i]);
+    for (std::size_t j = i; j < m; ++j) {
+      if (j > i) travel += d.between(order[j - 1], order[j]);
+      const double back = d.between(order[j], dock_point);
+      if (travel + back > range_m) break;
+      if (best[i - 1] + travel + back < best[j]) {
+        best[j] = best[i - 1] + travel + back;
+        cut[j] = i;
+      }
+      if (j + 1 == m && best[i - 1] + travel < final_best) {
+        final_best = best[i - 1] + travel;
+        final_cut = i;
+      }
+    }
+  }
+  if (final_best == kInfinity) return std::nullopt;
+  std::vector<std::size_t> starts;
+  for (std::size_t i = final_cut; i > 1; i = cut[i - 1]) starts.push_back(i);
+  std::reverse(starts.begin(), starts.end());
+  return starts;
+}
+
+/// The route's cells: legs between consecutive points, back to the dock before each trip start.
+CoverRoute assemble(const CoverageInstance& in, const PointDistances& d, const std::vector<int>& order,
+                    const std::vector<std::size_t>& trip_starts) {
+  CoverRoute r;
+  r.cells.push_back(in.node_cell[static_cast<std::size_t>(d.points[static_cast<std::size_t>(order[0])])]);
+  r.trip_starts.push_back(0);
+  std::size_t next_trip = 0;
+  int at = d.points[static_cast<std::size_t>(order[0])];
+  for (std::size_t k = 1; k < order.size(); ++k) {
+    if (next_trip < trip_starts.size() && trip_starts[next_trip] == k) {
+      const std::vector<int> home = leg(in, at, in.dock_node);
+      r.cells.insert(r.cells.end(), home.begin(), home.end());
+      at = in.dock_node;
+      r.trip_starts.push_back(r.cells.size() - 1);
+      ++next_trip;
+    }
+    const int to = d.points[static_cast<std::size_t>(order[k])];
+    const std::vector<int> cells = leg(in, at, to);
+    r.cells.insert(r.cells.end(), cells.begin(), cells.end());
+    r.viewpoints.push_back(to);
+    at = to;
+  }
+  return r;
+}
+
+}  // namespace
+
+RouteReplay replay_route(const CoverageInstance& in, const RunSpec& spec, std::span<const int> cells) {
+  RouteReplay r;
+  for (int t = 0; t < in.targets(); ++t) {
+    const auto from = in.seen_from.row(t);
+    if (std::any_of(from.begin(), from.end(),
+                    [&](int n) { return in.node_usable[static_cast<std::size_t>(n)] != 0; })) {
+      ++r.explorable;
+    }
+  }
+  if (cells.empty() || cells.front() != in.truth.index(in.start)) return r;
+  SensorParams noiseless = spec.robot.sensor;
+  noiseless.miss_probability = 0.0;
+  Sensor sensor(noiseless, in.resolution_m);
+  KnownMap known(in.width, in.height, in.resolution_m);
+  Rng unused(0);
+  const EnergyModel& energy = spec.robot.energy;
+  const double capacity = spec.robot.battery_capacity;
+  int heading = in.start_heading;
+  double used = 0.0;  // energy since the last charge
+  const auto sense = [&](Cell at) {
+    int fresh = 0;
+    for (const int c : sensor.scan(*spec.map, known, at, heading_angle(heading), unused)) {
+      const int t = in.target_of_cell[static_cast<std::size_t>(c)];
+      if (t >= 0) ++fresh;
+    }
+    if (fresh > 0) {
+      r.revealed += fresh;
+      r.distance_to_final_coverage_m = r.length_m;
+    }
+  };
+  sense(in.start);
+  for (std::size_t i = 1; i < cells.size(); ++i) {
+    const Cell a = in.truth.cell(cells[i - 1]);
+    const Cell b = in.truth.cell(cells[i]);
+    if (!octile_step_allowed(in.truth, a, b, in.allow_corner_cutting)) return r;
+    const int h = heading_of(b.x - a.x, b.y - a.y);
+    const double step_cells = step_length(h);
+    used += energy.turn(heading_difference(h, heading)) + energy.travel(step_cells, in.resolution_m);
+    heading = h;
+    r.length_m += step_cells * in.resolution_m;
+    if (used > capacity) r.battery_ok = false;
+    if (b == in.dock && i + 1 < cells.size()) {
+      used = 0.0;
+      if (r.revealed < r.explorable) ++r.trips;
+    }
+    if (r.revealed < r.explorable) sense(b);
+  }
+  // Targets out of reach are never revealed; anything else revealed counts (all are targets).
+  r.revealed = std::min(r.revealed, r.explorable);
+  r.valid = true;
+  return r;
+}
+
+CoverRoute cover_route(const CoverageInstance& in, const RunSpec& spec, const RouteOptions& options) {
+  std::vector<int> points{in.start_node};
+  const std::vector<int> viewpoints = greedy_viewpoints(in);
+  points.insert(points.end(), viewpoints.begin(), viewpoints.end());
+  int dock_point = -1;
+  if (in.limited_battery()) {
+    const auto it = std::find(points.begin(), points.end(), in.dock_node);
+    dock_point = static_cast<int>(it - points.begin());
+    if (it == points.end()) points.push_back(in.dock_node);
+  }
+  const PointDistances d = distances_of(in, points);
+  std::vector<int> order = nearest_neighbour_order(d);
+  if (dock_point >= 0 && dock_point != 0) {  // the dock is no viewpoint: keep it out of the order
+    order.erase(std::find(order.begin(), order.end(), dock_point));
+  }
+  improve(d, order, options.max_passes);
+  // Pruning keeps the coverage of the order it prunes; re-improving the order changes the paths
+  // between viewpoints and may lose some, so a re-improved order is kept only if it still covers.
+  for (int round = 0; round < 8; ++round) {
+    std::vector<int> pruned = order;
+    if (!prune(in, d, pruned)) break;
+    std::vector<int> improved = pruned;
+    improve(d, improved, options.max_passes);
+    order = covers_all(in, d, improved) ? std::move(improved) : std::move(pruned);
+  }
+  if (!in.limited_battery()) return assemble(in, d, order, {});
+  // Trips: the split on lengths, then the replay with turns; a split the turns break is redone
+  // with a smaller range per charge.
+  double range = in.range_per_charge_m;
+  for (int attempt = 0; attempt < 12; ++attempt) {
+    const auto starts = split_trips(d, order, dock_point, range);
+    if (!starts) break;
+    CoverRoute route = assemble(in, d, order, *starts);
+    if (replay_route(in, spec, route.cells).battery_ok) return route;
+    range *= 0.97;
+  }
+  return assemble(in, d, order, {});  // no split fits: the replay says battery_ok = false
+}
+
+}  // namespace optimum
+}  // namespace fsweep

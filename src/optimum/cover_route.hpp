@@ -1,0 +1,78 @@
+#pragma once
+/// @file cover_route.hpp
+/// Routes that reveal every explorable target (the upper bound of the offline optimum), and their
+/// replay through the simulation's sensor, which is what certifies them.
+///
+/// A route is built in four steps:
+/// 1. viewpoints: a greedy set cover of the explorable targets by usable nodes (the node that
+///    reveals the most targets not yet covered first; ties by node id), what the start's own scan
+///    reveals counted as covered;
+/// 2. order: a path from the start through the viewpoints, nearest neighbour first, then
+///    improved by 2-opt and Or-opt moves (segments of 1-3 viewpoints) on the shortest-path
+///    lengths between them until no move shortens it (RouteOptions::max_passes);
+/// 3. pruning: a viewpoint whose targets the rest of the route already sees on its way (the
+///    cells of the shortest paths between the other viewpoints) is dropped, and the order
+///    improved again;
+/// 4. trips, with a battery: the order is cut into trips from the dock by an optimal split
+///    (a shortest path over cut points, each trip's travel with its way back to the dock within
+///    one charge; the last trip's way back is not counted, as a run's distance to final coverage
+///    does not count it).
+/// The route is the cells of the shortest paths between consecutive points. replay_route() walks
+/// it with the run's Sensor (noiseless) and energy model: the upper bound is its distance to final
+/// coverage, and only a route whose replay reveals every explorable target within the battery
+/// is an upper bound.
+
+#include <cstddef>
+#include <span>
+#include <vector>
+
+#include "optimum/coverage_instance.hpp"
+#include "sim/run_spec.hpp"
+
+namespace fsweep {
+inline namespace optimum {
+
+struct RouteOptions {
+  /// Most improvement passes (2-opt then Or-opt over the whole order) per improvement.
+  int max_passes = 200;
+};
+
+struct CoverRoute {
+  /// Grid indices of the route's cells, from the start, one per step (consecutive cells are
+  /// 8-neighbours).
+  std::vector<int> cells;
+  /// Viewpoints (nodes) in visiting order.
+  std::vector<int> viewpoints;
+  /// Positions in `cells` where each trip starts (0, then the dock after each recharge).
+  std::vector<std::size_t> trip_starts;
+};
+
+/// What replaying a route shows.
+struct RouteReplay {
+  /// The route is a walk of allowed moves (octile_step_allowed) from the start.
+  bool valid = false;
+  /// Explorable targets (not out of reach) the replay revealed, and how many there are.
+  int revealed = 0;
+  int explorable = 0;
+  /// Metres walked when the last target was revealed (a run's distance_to_final_coverage_m),
+  /// and in all.
+  double distance_to_final_coverage_m = 0.0;
+  double length_m = 0.0;
+  /// Trips (1 + recharges at the dock before the final coverage), and whether every stretch
+  /// between recharges stayed within one charge by the run's energy model (turns included).
+  int trips = 1;
+  bool battery_ok = true;
+  [[nodiscard]] bool covers() const { return valid && revealed == explorable && battery_ok; }
+};
+
+/// Walks `cells` (grid indices, the first the start) with the run's noiseless Sensor and energy
+/// model, recharging on every arrival at the dock.
+[[nodiscard]] RouteReplay replay_route(const CoverageInstance& instance, const RunSpec& spec,
+                                       std::span<const int> cells);
+
+/// The best route the four steps above find (deterministic).
+[[nodiscard]] CoverRoute cover_route(const CoverageInstance& instance, const RunSpec& spec,
+                                     const RouteOptions& options = {});
+
+}  // namespace optimum
+}  // namespace fsweep

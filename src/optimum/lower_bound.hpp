@@ -1,0 +1,84 @@
+#pragma once
+/// @file lower_bound.hpp
+/// A certified lower bound on the offline coverage optimum (coverage_instance.hpp), from the
+/// start or from any state of a run.
+///
+/// Witnesses: target cells chosen so that no node sees two of them (their viewpoint sets
+/// seen_from are pairwise disjoint), hardest to see first (fewest viewpoints), at most
+/// LowerBoundOptions::max_witnesses. Any route that reveals every target stands, for each
+/// witness w still unrevealed, on some node of seen_from(w) (its "group"). Order the groups by
+/// the route's first visit: the part of the route from the robot to the first group is at least
+/// the distance to that group, and each part between two consecutive first visits at least the
+/// distance between the two groups (the shortest path between any node of one and any node of
+/// the other). So the route is at least the length of a path that starts at the robot and visits
+/// every group, in the graph whose edges are those group distances, and so at least:
+/// - the minimum spanning tree over the robot and the groups (a path is a spanning tree), and
+/// - the shortest such path over any subset of the groups (Held-Karp's dynamic programme, exact
+///   over at most 12 groups, used from the start where it is affordable),
+/// - and the distance to the farthest group.
+/// The bound ignores the battery (a relaxation: trips back to the dock only add length), so it
+/// is valid with any battery. Lengths are exact octile sums (search/grid_search.hpp); the bound
+/// is lowered by a relative 1e-9 against the rounding of the sums.
+///
+/// Cost per call (from_state): O(k^2) for k unrevealed witnesses, no search. Set-up: one
+/// multi-source Dijkstra per witness over the map, k^2 group distances.
+
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <vector>
+
+#include "optimum/coverage_instance.hpp"
+#include "world/known_map.hpp"
+
+namespace fsweep {
+inline namespace optimum {
+
+struct LowerBoundOptions {
+  /// Most witnesses (>= 1). More make the bound stronger and each call slower (k^2).
+  int max_witnesses = 96;
+  /// Groups of Held-Karp's exact path bound at the start (0: off; at most 16).
+  int held_karp_groups = 12;
+};
+
+class CoverageLowerBound {
+ public:
+  CoverageLowerBound(const CoverageInstance& instance, const LowerBoundOptions& options = {});
+
+  /// The bound from the start of a run: the robot on the start node, having revealed what the
+  /// start's scan reveals. Held-Karp included.
+  [[nodiscard]] double at_start() const { return at_start_; }
+
+  /// The bound from a run's state: the robot at `at` (a node), `known` the cells revealed so far
+  /// (a witness counts as revealed when its cell is known). The battery is not used (see above).
+  /// 0 when `at` is not a node or no witness is unrevealed.
+  [[nodiscard]] double from_state(Cell at, const KnownMap& known) const;
+
+  /// The bound from node `node` with open[k] != 0 for the witnesses k still unrevealed
+  /// (open.size() == witnesses().size()): the larger of the spanning-tree and farthest-group
+  /// bounds.
+  [[nodiscard]] double from_node(int node, std::span<const std::uint8_t> open) const;
+
+  /// The witnesses (target ids), in the order chosen.
+  [[nodiscard]] const std::vector<int>& witnesses() const { return witnesses_; }
+  /// Distance (metres) from node `node` to the group of witness k.
+  [[nodiscard]] double to_group_m(int k, int node) const {
+    return to_group_[static_cast<std::size_t>(k)][static_cast<std::size_t>(node)];
+  }
+
+ private:
+  /// Held-Karp over the `groups` (indices of witnesses) from node `node`.
+  [[nodiscard]] double held_karp(int node, const std::vector<int>& groups) const;
+
+  const CoverageInstance* instance_;
+  std::vector<int> witnesses_;
+  std::vector<std::vector<double>> to_group_;  // [k][node]
+  std::vector<double> between_;                // k x k, group to group
+  double at_start_ = 0.0;
+};
+
+/// The relative margin the bounds are lowered by against rounding.
+inline constexpr double kBoundRoundingMargin = 1e-9;
+
+}  // namespace optimum
+}  // namespace fsweep

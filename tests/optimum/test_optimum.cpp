@@ -1,0 +1,162 @@
+/// The offline optimum's bounds: exact against an exhaustive search written independently of the
+/// solver, never above a complete online run, and routes that reveal everything when replayed.
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <limits>
+#include <map>
+#include <memory>
+#include <queue>
+#include <set>
+
+#include "optimum/optimum.hpp"
+#include "search/octile_grid.hpp"
+#include "sim/simulation.hpp"
+#include "world/ascii_world.hpp"
+#include "world/map_spec.hpp"
+#include "world/sensor.hpp"
+
+namespace fsweep {
+namespace {
+
+RunSpec spec_of(WorldMap map, double range_m) {
+  RunSpec spec;
+  spec.map = std::make_shared<const WorldMap>(std::move(map));
+  spec.robot.sensor.range_m = range_m;
+  return spec;
+}
+
+/// The optimum by exhaustive search over (cell, set of revealed cells), written from the problem
+/// statement only: what a scan from each reachable cell reveals (the simulation's Sensor on an
+/// empty map), the targets as the union of those, Dijkstra over the states with the planners'
+/// moves. Returns +infinity when no route reveals every target.
+double brute_force_optimum(const RunSpec& spec) {
+  const WorldMap& map = *spec.map;
+  KnownMap truth(map.width(), map.height(), map.resolution_m);
+  for (int i = 0; i < map.width() * map.height(); ++i) truth.reveal(i, !map.is_free(i));
+  const Grid<std::uint8_t> reachable = reachable_free(map, map.start, spec.robot.allow_corner_cutting);
+  Sensor sensor(spec.robot.sensor, map.resolution_m);
+  Rng rng(1);
+  std::map<int, std::set<int>> sees;  // cell -> revealed cells
+  std::map<int, int> bit;             // target cell -> bit
+  for (int i = 0; i < map.width() * map.height(); ++i) {
+    if (reachable[i] == 0) continue;
+    KnownMap empty(map.width(), map.height(), map.resolution_m);
+    for (const int c : sensor.scan(map, empty, truth.cell(i), 0.0, rng)) {
+      sees[i].insert(c);
+      bit.emplace(c, 0);
+    }
+  }
+  int next = 0;
+  for (auto& [cell, b] : bit) b = next++;
+  EXPECT_LE(next, 64) << "too many targets for the brute force";
+  const std::uint64_t full = next == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << next) - 1;
+  const auto mask_of = [&](int cell) {
+    std::uint64_t m = 0;
+    for (const int c : sees[cell]) m |= std::uint64_t{1} << bit[c];
+    return m;
+  };
+  using Item = std::tuple<double, int, std::uint64_t>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<>> open;
+  std::map<std::pair<int, std::uint64_t>, double> best;
+  const int start = truth.index(map.start);
+  open.emplace(0.0, start, mask_of(start));
+  best[{start, mask_of(start)}] = 0.0;
+  while (!open.empty()) {
+    const auto [g, cell, mask] = open.top();
+    open.pop();
+    if (g > best[{cell, mask}]) continue;
+    if (mask == full) return g;
+    const Cell a = truth.cell(cell);
+    for (int dy = -1; dy <= 1; ++dy) {
+      for (int dx = -1; dx <= 1; ++dx) {
+        const Cell b{a.x + dx, a.y + dy};
+        if (!octile_step_allowed(truth, a, b, spec.robot.allow_corner_cutting)) continue;
+        const int nb = truth.index(b);
+        const double ng = g + (dx != 0 && dy != 0 ? kSqrt2 : 1.0) * map.resolution_m;
+        const std::uint64_t nm = mask | mask_of(nb);
+        const auto it = best.find({nb, nm});
+        if (it != best.end() && it->second <= ng) continue;
+        best[{nb, nm}] = ng;
+        open.emplace(ng, nb, nm);
+      }
+    }
+  }
+  return std::numeric_limits<double>::infinity();
+}
+
+const std::vector<std::vector<std::string>>& small_maps() {
+  static const std::vector<std::vector<std::string>> maps{
+      {"#######", "#S....#", "#######"},
+      {"#######", "#S.#..#", "#.....#", "#..#..#", "#######"},
+      {"########", "#S.....#", "####.###", "#......#", "########"},
+      {"#######", "#..#..#", "#.S...#", "#..#..#", "#######"},
+      {"#########", "#S#.....#", "#.#.###.#", "#...#...#", "#########"},
+      {"######", "#S...#", "#.##.#", "#....#", "######"},
+  };
+  return maps;
+}
+
+TEST(Optimum, ExactOnSmallMapsEqualsAnExhaustiveSearch) {
+  for (const double range : {1.5, 2.0, 3.0}) {
+    for (const auto& rows : small_maps()) {
+      const RunSpec spec = spec_of(test::ascii_world(rows), range);
+      const double truth = brute_force_optimum(spec);
+      const OptimumResult r = solve_optimum(spec);
+      SCOPED_TRACE(rows[1] + " range " + std::to_string(range));
+      EXPECT_TRUE(r.exact);
+      EXPECT_NEAR(r.lower_m, truth, 1e-9);
+      EXPECT_NEAR(r.upper_m, truth, 1e-9);
+      EXPECT_LT(r.time_s, 5.0);
+    }
+  }
+}
+
+TEST(Optimum, GeneratedSmallMapsAreExactAndAgreeWithTheExhaustiveSearch) {
+  for (int seed = 1; seed <= 6; ++seed) {
+    RunMap m = load_run_map_spec("rooms:w=9,h=7,door=1,min_room=3,seed=" + std::to_string(seed));
+    const RunSpec spec = spec_of(std::move(m.map), 2.0);
+    const OptimumResult r = solve_optimum(spec);
+    SCOPED_TRACE("seed " + std::to_string(seed) + " targets " + std::to_string(r.targets));
+    if (r.targets > 40) continue;
+    const double truth = brute_force_optimum(spec);
+    EXPECT_TRUE(r.exact);
+    EXPECT_NEAR(r.lower_m, truth, 1e-9);
+  }
+}
+
+/// Bounds, and every complete online run (completeness 1) at or above the lower bound.
+void check_runs_above_lower_bound(const std::string& map_spec, double range_m, int seeds) {
+  RunMap m = load_run_map_spec(map_spec);
+  RunSpec spec = spec_of(std::move(m.map), range_m);
+  const OptimumResult r = solve_optimum(spec);
+  SCOPED_TRACE(map_spec);
+  ASSERT_LE(r.lower_m, r.upper_m);
+  ASSERT_LT(r.upper_m, std::numeric_limits<double>::infinity());
+  const CoverageInstance in = build_coverage_instance(spec);
+  const RouteReplay replay = replay_route(in, spec, r.route);
+  EXPECT_TRUE(replay.covers());
+  EXPECT_DOUBLE_EQ(replay.distance_to_final_coverage_m, r.upper_m);
+  int checked = 0;
+  for (const char* strategy : {"closest_frontier", "energy_aware", "random_frontier", "widest_frontier"}) {
+    for (int seed = 1; seed <= seeds; ++seed) {
+      spec.strategy = configure_strategy(strategy, nullptr);
+      spec.seed = static_cast<std::uint64_t>(seed);
+      const RunResult run = simulate(spec);
+      if (run.end != EndReason::Complete || run.metrics.completeness < 1.0) continue;
+      ++checked;
+      EXPECT_GE(run.metrics.distance_to_final_coverage_m, r.lower_m) << strategy << " seed " << seed;
+    }
+  }
+  EXPECT_GT(checked, 0);
+}
+
+TEST(Optimum, CompleteRunsAreNeverBelowTheLowerBound) {
+  check_runs_above_lower_bound("rooms:w=30,h=24,door=2,seed=3", 4.0, 2);
+  check_runs_above_lower_bound("office:w=40,h=32,seed=2", 5.0, 2);
+  check_runs_above_lower_bound("random:w=24,h=24,p=0.2,seed=5", 3.0, 2);
+}
+
+}  // namespace
+}  // namespace fsweep
