@@ -6,13 +6,14 @@
 #                    every input parser for a few seconds)
 #   make fuzz      - fuzz every input parser longer (FUZZ_SECONDS each, default 300; fuzz/README.md)
 #   make docs-long - run the command blocks of the docs marked long too (docs/dev/docs-tests.md)
+#   make test-long - the long property tests (ctest label optimum-long; also in the nightly job)
 #   make tidy      - clang-tidy on src/ (.clang-tidy; every finding fails; also in the nightly job)
 #   make install PREFIX=DIR - install fsweep, its scripts, bash completion and docs (docs/install.md)
 # and the nightly regression job (docs/running.md, "Nightly regression checks"):
 #   make nightly   - build, run sweeps/nightly.json and the micro-benchmarks into results/nightly/,
 #                    compare them with results/baseline/nightly/ (exit 1 on a regression)
 #   make baseline  - the same suite and benchmarks, copied over results/baseline/nightly/
-.PHONY: run test build install bench fuzz docs-long tidy nightly baseline clean
+.PHONY: run test build install bench fuzz docs-long test-long tidy nightly baseline clean
 
 FSWEEP := build/release/bin/fsweep
 
@@ -47,6 +48,9 @@ tidy:
 
 docs-long: build
 	cd build/release && ctest --output-on-failure -L docs-long
+
+test-long: build
+	cd build/release && ctest --output-on-failure -L optimum-long
 
 bench: build
 	build/release/bin/fsweep_bench

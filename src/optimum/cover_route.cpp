@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <limits>
 #include <queue>
 #include <utility>
@@ -388,6 +389,7 @@ CoverRoute cover_route(const CoverageInstance& in, const RunSpec& spec, const Ro
     order.erase(std::find(order.begin(), order.end(), dock_point));
   }
   improve(d, order, options.max_passes);
+  const std::vector<int> unpruned = order;
   // Pruning keeps the coverage of the order it prunes; re-improving the order changes the paths
   // between viewpoints and may lose some, so a re-improved order is kept only if it still covers.
   for (int round = 0; round < 8; ++round) {
@@ -399,14 +401,21 @@ CoverRoute cover_route(const CoverageInstance& in, const RunSpec& spec, const Ro
   }
   if (!in.limited_battery()) return assemble(in, d, order, {});
   // Trips: the split on lengths, then the replay with turns; a split the turns break is redone
-  // with a smaller range per charge.
-  double range = in.range_per_charge_m;
-  for (int attempt = 0; attempt < 12; ++attempt) {
-    const auto starts = split_trips(d, order, dock_point, range);
-    if (!starts) break;
-    CoverRoute route = assemble(in, d, order, *starts);
-    if (replay_route(in, spec, route.cells).battery_ok) return route;
-    range *= 0.97;
+  // with a smaller range per charge. A trip's way home replaces the path between two viewpoints
+  // that pruning may have counted on, so the unpruned order is tried when the pruned one's
+  // trips miss a target.
+  for (const std::vector<int>* candidate :
+       std::initializer_list<const std::vector<int>*>{&order, &unpruned}) {
+    double range = in.range_per_charge_m;
+    for (int attempt = 0; attempt < 12; ++attempt) {
+      const auto starts = split_trips(d, *candidate, dock_point, range);
+      if (!starts) break;
+      CoverRoute route = assemble(in, d, *candidate, *starts);
+      const RouteReplay replay = replay_route(in, spec, route.cells);
+      if (replay.covers()) return route;
+      if (replay.battery_ok) break;  // covers less: the next candidate
+      range *= 0.97;
+    }
   }
   return assemble(in, d, order, {});  // no split fits: the replay says battery_ok = false
 }

@@ -121,6 +121,15 @@ CoverageInstance build_coverage_instance(const RunSpec& spec) {
         seen.emplace_back(target, node);
       }
     }
+    if (sees.size() > kMaxVisibilityPairs) {
+      throw ConfigError(
+          "map", "too large for the offline optimum: the scans from the first " + std::to_string(node + 1) +
+                     " of " + std::to_string(in.nodes()) + " reachable cells already see " +
+                     std::to_string(sees.size()) + " cells in all, above the limit of " +
+                     std::to_string(kMaxVisibilityPairs) +
+                     "; allowed: maps whose cells times the cells in sensor range stay below it (a "
+                     "coarser resolution or a shorter sensor range)");
+    }
     const std::vector<int> forget(revealed.begin(), revealed.end());
     for (const int cell : forget) scratch.forget(cell);
   }

@@ -101,10 +101,13 @@ struct CoverageInstance {
   }
 };
 
+/// Most (node, target) visibility pairs an instance holds (8 bytes each, twice): about 640 MB.
+inline constexpr std::size_t kMaxVisibilityPairs = 40'000'000;
+
 /// Builds the instance of `spec` (map, start, robot). Throws ConfigError: the map's checks of a
-/// run (RunSetup), a sensor the offline problem does not model ("robot/sensor/fov_deg" below 360,
-/// "robot/sensor/model" beams), a sensor range below one diagonal cell. miss_probability is
-/// ignored (the offline sensor is noiseless). Cost: one scan per reachable free cell.
+/// run (RunSetup), an instance above kMaxVisibilityPairs ("map"), a sensor the offline problem does not model
+/// ("robot/sensor/fov_deg" below 360, "robot/sensor/model" beams), a sensor range below one diagonal cell.
+/// miss_probability is ignored (the offline sensor is noiseless). Cost: one scan per reachable free cell.
 [[nodiscard]] CoverageInstance build_coverage_instance(const RunSpec& spec);
 
 /// Shortest path lengths (metres) over the true map from the nearest of `sources` (grid indices of

@@ -1,21 +1,33 @@
 #include "optimum/lower_bound.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 namespace fsweep {
 inline namespace optimum {
 namespace {
 
-/// Witnesses: explorable targets by fewest viewpoints (then by id), each taken when none of its
-/// viewpoints is a viewpoint of a witness taken before.
-std::vector<int> choose_witnesses(const CoverageInstance& in, int max_witnesses) {
+constexpr std::size_t kFarthestFirstCandidates = 4000;
+
+bool usable_target(const CoverageInstance& in, int t) {
+  const auto from = in.seen_from.row(t);
+  return std::any_of(from.begin(), from.end(),
+                     [&](int n) { return in.node_usable[static_cast<std::size_t>(n)] != 0; });
+}
+
+std::vector<int> group_cells(const CoverageInstance& in, int target) {
+  std::vector<int> cells;
+  for (const int n : in.seen_from.row(target)) cells.push_back(in.node_cell[static_cast<std::size_t>(n)]);
+  return cells;
+}
+
+/// Hardest to see first: explorable targets by fewest viewpoints (then id), each taken when none
+/// of its viewpoints is a viewpoint of a witness taken before.
+std::vector<int> fewest_viewpoints_first(const CoverageInstance& in, int max_witnesses) {
   std::vector<int> order;
   for (int t = 0; t < in.targets(); ++t) {
-    const auto from = in.seen_from.row(t);
-    const bool usable = std::any_of(from.begin(), from.end(),
-                                    [&](int n) { return in.node_usable[static_cast<std::size_t>(n)] != 0; });
-    if (usable) order.push_back(t);
+    if (usable_target(in, t)) order.push_back(t);
   }
   std::stable_sort(order.begin(), order.end(),
                    [&](int a, int b) { return in.seen_from.row(a).size() < in.seen_from.row(b).size(); });
@@ -34,19 +46,82 @@ std::vector<int> choose_witnesses(const CoverageInstance& in, int max_witnesses)
   return out;
 }
 
+/// Farthest first: the explorable target whose group is farthest from the start and the groups
+/// chosen so far (ties: fewer viewpoints, then id), disjoint from them, until none is farther
+/// than 0.
+std::vector<int> farthest_first(const CoverageInstance& in, int max_witnesses) {
+  // Candidates: the kFarthestFirstCandidates targets with the fewest viewpoints (each step reads
+  // every candidate's viewpoints: all targets' would cost the whole visibility table a step).
+  std::vector<int> candidates;
+  for (int t = 0; t < in.targets(); ++t) {
+    if (usable_target(in, t)) candidates.push_back(t);
+  }
+  std::stable_sort(candidates.begin(), candidates.end(),
+                   [&](int a, int b) { return in.seen_from.row(a).size() < in.seen_from.row(b).size(); });
+  if (candidates.size() > kFarthestFirstCandidates) candidates.resize(kFarthestFirstCandidates);
+  std::sort(candidates.begin(), candidates.end());
+  const int start_cell = in.node_cell[static_cast<std::size_t>(in.start_node)];
+  std::vector<double> near = node_distances_m(in, std::span<const int>(&start_cell, 1));
+  std::vector<std::uint8_t> taken(static_cast<std::size_t>(in.nodes()), 0);
+  std::vector<int> out;
+  while (static_cast<int>(out.size()) < max_witnesses) {
+    int best = -1;
+    double best_d = 0.0;
+    for (const int t : candidates) {
+      const auto from = in.seen_from.row(t);
+      double d = kInfinity;
+      bool free = true;
+      for (const int n : from) {
+        if (taken[static_cast<std::size_t>(n)] != 0) {
+          free = false;
+          break;
+        }
+        d = std::min(d, near[static_cast<std::size_t>(n)]);
+      }
+      if (!free || d == kInfinity || d <= 0.0) continue;
+      if (best < 0 || d > best_d || (d == best_d && from.size() < in.seen_from.row(best).size())) {
+        best = t;
+        best_d = d;
+      }
+    }
+    if (best < 0) break;
+    out.push_back(best);
+    for (const int n : in.seen_from.row(best)) taken[static_cast<std::size_t>(n)] = 1;
+    const std::vector<double> field = node_distances_m(in, group_cells(in, best));
+    for (std::size_t n = 0; n < near.size(); ++n) near[n] = std::min(near[n], field[n]);
+  }
+  return out;
+}
+
 }  // namespace
 
 CoverageLowerBound::CoverageLowerBound(const CoverageInstance& instance, const LowerBoundOptions& options)
-    : instance_(&instance), witnesses_(choose_witnesses(instance, std::max(1, options.max_witnesses))) {
-  const std::size_t k = witnesses_.size();
-  to_group_.reserve(k);
-  std::vector<int> cells;
-  for (const int w : witnesses_) {
-    cells.clear();
-    for (const int n : instance.seen_from.row(w))
-      cells.push_back(instance.node_cell[static_cast<std::size_t>(n)]);
-    to_group_.push_back(node_distances_m(instance, cells));
+    : instance_(&instance) {
+  if (instance.start_node < 0) return;
+  const int max_witnesses = std::max(1, options.max_witnesses);
+  // Both witness sets; the one with the larger bound from the start is kept.
+  std::vector<std::vector<int>> sets{farthest_first(instance, max_witnesses),
+                                     fewest_viewpoints_first(instance, max_witnesses)};
+  double best_bound = -1.0;
+  for (std::vector<int>& set : sets) {
+    CoverageLowerBound candidate(instance);
+    candidate.build(std::move(set), options);
+    if (candidate.at_start_ > best_bound) {
+      best_bound = candidate.at_start_;
+      *this = std::move(candidate);
+    }
   }
+}
+
+CoverageLowerBound::CoverageLowerBound(const CoverageInstance& instance) : instance_(&instance) {}
+
+void CoverageLowerBound::build(std::vector<int> witnesses, const LowerBoundOptions& options) {
+  const CoverageInstance& instance = *instance_;
+  witnesses_ = std::move(witnesses);
+  const std::size_t k = witnesses_.size();
+  to_group_.clear();
+  to_group_.reserve(k);
+  for (const int w : witnesses_) to_group_.push_back(node_distances_m(instance, group_cells(instance, w)));
   between_.assign(k * k, 0.0);
   for (std::size_t i = 0; i < k; ++i) {
     for (std::size_t j = 0; j < k; ++j) {
@@ -56,34 +131,47 @@ CoverageLowerBound::CoverageLowerBound(const CoverageInstance& instance, const L
       between_[i * k + j] = d;
     }
   }
-  if (instance.start_node < 0 || k == 0) return;
+  for (std::size_t i = 0; i < k; ++i) {  // symmetric: the smaller way (the grid's lengths are)
+    for (std::size_t j = i + 1; j < k; ++j) {
+      const double d = std::min(between_[i * k + j], between_[j * k + i]);
+      between_[i * k + j] = d;
+      between_[j * k + i] = d;
+    }
+  }
+  pi_.assign(k + 1, 0.0);
+  if (k == 0) return;
   // From the start: the witnesses the start's scan does not reveal.
-  std::vector<std::uint8_t> open(k, 1);
-  for (const int t : instance.sees.row(instance.start_node)) {
-    const auto it = std::find(witnesses_.begin(), witnesses_.end(), t);
-    if (it != witnesses_.end()) open[static_cast<std::size_t>(it - witnesses_.begin())] = 0;
+  std::vector<int> members;
+  const auto start_sees = instance.sees.row(instance.start_node);
+  for (std::size_t i = 0; i < k; ++i) {
+    if (!std::binary_search(start_sees.begin(), start_sees.end(), witnesses_[i]))
+      members.push_back(static_cast<int>(i));
+  }
+  std::vector<std::uint8_t> open(k, 0);
+  for (const int m : members) open[static_cast<std::size_t>(m)] = 1;
+  if (options.ascent_steps > 0 && members.size() >= 2) {
+    ascent_steps_ = options.ascent_steps;
+    pi_ = ascend(instance.start_node, members);
   }
   at_start_ = from_node(instance.start_node, open);
   // Held-Karp over the groups farthest from each other, chosen greedily from the start.
   const int want = std::clamp(options.held_karp_groups, 0, 16);
   std::vector<int> chosen;
   std::vector<double> nearest(k, kInfinity);  // to the start or a chosen group
-  for (std::size_t i = 0; i < k; ++i) {
-    if (open[i] != 0) nearest[i] = to_group_[i][static_cast<std::size_t>(instance.start_node)];
-  }
+  for (const int m : members)
+    nearest[static_cast<std::size_t>(m)] =
+        to_group_[static_cast<std::size_t>(m)][static_cast<std::size_t>(instance.start_node)];
   while (static_cast<int>(chosen.size()) < want) {
     int best = -1;
-    for (std::size_t i = 0; i < k; ++i) {
-      if (open[i] == 0 || std::find(chosen.begin(), chosen.end(), static_cast<int>(i)) != chosen.end())
-        continue;
-      if (best < 0 || nearest[i] > nearest[static_cast<std::size_t>(best)]) best = static_cast<int>(i);
+    for (const int m : members) {
+      if (std::find(chosen.begin(), chosen.end(), m) != chosen.end()) continue;
+      if (best < 0 || nearest[static_cast<std::size_t>(m)] > nearest[static_cast<std::size_t>(best)])
+        best = m;
     }
     if (best < 0) break;
     chosen.push_back(best);
-    for (std::size_t i = 0; i < k; ++i) {
-      nearest[i] = std::min(nearest[i], std::min(between_[static_cast<std::size_t>(best) * k + i],
-                                                 between_[i * k + static_cast<std::size_t>(best)]));
-    }
+    for (std::size_t i = 0; i < k; ++i)
+      nearest[i] = std::min(nearest[i], between_[static_cast<std::size_t>(best) * k + i]);
   }
   if (chosen.size() >= 2) at_start_ = std::max(at_start_, held_karp(instance.start_node, chosen));
 }
@@ -98,23 +186,15 @@ double CoverageLowerBound::from_state(Cell at, const KnownMap& known) const {
   return from_node(node, open);
 }
 
-double CoverageLowerBound::from_node(int node, std::span<const std::uint8_t> open) const {
+double CoverageLowerBound::spanning_tree(int node, const std::vector<int>& members, double* farthest) const {
   const std::size_t k = witnesses_.size();
-  // Prim over the robot (index k) and the open groups; distances between groups are taken as
-  // the smaller of the two directions (the grid's lengths are symmetric; the min keeps the bound
-  // valid whatever rounding does).
-  std::vector<int> members;
-  for (std::size_t i = 0; i < k; ++i) {
-    if (open[i] != 0) members.push_back(static_cast<int>(i));
-  }
-  if (members.empty()) return 0.0;
-  double farthest = 0.0;
   std::vector<double> key(members.size());
+  *farthest = 0.0;
   for (std::size_t m = 0; m < members.size(); ++m) {
     key[m] = to_group_[static_cast<std::size_t>(members[m])][static_cast<std::size_t>(node)];
-    farthest = std::max(farthest, key[m]);
+    *farthest = std::max(*farthest, key[m]);
   }
-  if (farthest == kInfinity) return kInfinity;  // a group the robot cannot reach: no route exists
+  if (*farthest == kInfinity) return kInfinity;
   std::vector<std::uint8_t> in_tree(members.size(), 0);
   double tree = 0.0;
   for (std::size_t step = 0; step < members.size(); ++step) {
@@ -126,12 +206,108 @@ double CoverageLowerBound::from_node(int node, std::span<const std::uint8_t> ope
     tree += key[best];
     const std::size_t b = static_cast<std::size_t>(members[best]);
     for (std::size_t m = 0; m < members.size(); ++m) {
-      if (in_tree[m] != 0) continue;
-      const std::size_t j = static_cast<std::size_t>(members[m]);
-      key[m] = std::min(key[m], std::min(between_[b * k + j], between_[j * k + b]));
+      if (in_tree[m] == 0) key[m] = std::min(key[m], between_[b * k + static_cast<std::size_t>(members[m])]);
     }
   }
-  return std::max(tree, farthest) * (1.0 - kBoundRoundingMargin);
+  return tree;
+}
+
+double CoverageLowerBound::one_tree(int node, const std::vector<int>& members, const std::vector<double>& pi,
+                                    std::vector<int>* degrees) const {
+  const std::size_t k = witnesses_.size();
+  const double pi_robot = pi[k];
+  // Prim over the robot (position members.size()) and the groups under penalised costs.
+  const std::size_t n = members.size();
+  std::vector<double> key(n);
+  std::vector<std::size_t> parent(n, n);  // n: the robot
+  for (std::size_t m = 0; m < n; ++m) {
+    const std::size_t g = static_cast<std::size_t>(members[m]);
+    key[m] = to_group_[g][static_cast<std::size_t>(node)] + pi_robot + pi[g];
+  }
+  std::vector<std::uint8_t> in_tree(n, 0);
+  double total = 0.0;
+  if (degrees != nullptr) degrees->assign(k + 1, 0);
+  for (std::size_t step = 0; step < n; ++step) {
+    std::size_t best = n;
+    for (std::size_t m = 0; m < n; ++m) {
+      if (in_tree[m] == 0 && (best == n || key[m] < key[best])) best = m;
+    }
+    if (key[best] == kInfinity) return kInfinity;
+    in_tree[best] = 1;
+    total += key[best];
+    const std::size_t b = static_cast<std::size_t>(members[best]);
+    if (degrees != nullptr) {
+      ++(*degrees)[b];
+      ++(*degrees)[parent[best] == n ? k : static_cast<std::size_t>(members[parent[best]])];
+    }
+    for (std::size_t m = 0; m < n; ++m) {
+      if (in_tree[m] != 0) continue;
+      const std::size_t g = static_cast<std::size_t>(members[m]);
+      const double c = between_[b * k + g] + pi[b] + pi[g];
+      if (c < key[m]) {
+        key[m] = c;
+        parent[m] = best;
+      }
+    }
+  }
+  // The dummy end: an edge to the robot and one to the group of least penalty, both of cost 0.
+  std::size_t least = static_cast<std::size_t>(members[0]);
+  for (const int m : members) {
+    if (pi[static_cast<std::size_t>(m)] < pi[least]) least = static_cast<std::size_t>(m);
+  }
+  total += pi_robot + pi[least];
+  if (degrees != nullptr) {
+    ++(*degrees)[k];
+    ++(*degrees)[least];
+  }
+  double penalties = pi_robot;
+  for (const int m : members) penalties += pi[static_cast<std::size_t>(m)];
+  return total - 2.0 * penalties;
+}
+
+std::vector<double> CoverageLowerBound::ascend(int node, const std::vector<int>& members) const {
+  const std::size_t k = witnesses_.size();
+  std::vector<double> pi(k + 1, 0.0);
+  std::vector<double> best_pi = pi;
+  std::vector<int> degrees;
+  double best = one_tree(node, members, pi, &degrees);
+  if (best == kInfinity) return pi;
+  // Step size: a fraction of the average edge of the tree, halved after 10 steps without gain.
+  double step = best / static_cast<double>(members.size() + 1) / 2.0;
+  int since_gain = 0;
+  for (int it = 0; it < ascent_steps_ && step > 1e-9; ++it) {
+    bool tour = true;
+    for (const int m : members) tour = tour && degrees[static_cast<std::size_t>(m)] == 2;
+    tour = tour && degrees[k] == 2;
+    if (tour) break;  // the 1-tree is a path: the bound is that path's length, as good as it gets
+    pi[k] += step * (degrees[k] - 2);
+    for (const int m : members)
+      pi[static_cast<std::size_t>(m)] += step * (degrees[static_cast<std::size_t>(m)] - 2);
+    const double value = one_tree(node, members, pi, &degrees);
+    if (value > best) {
+      best = value;
+      best_pi = pi;
+      since_gain = 0;
+    } else if (++since_gain >= 10) {
+      step /= 2.0;
+      since_gain = 0;
+    }
+  }
+  return best_pi;
+}
+
+double CoverageLowerBound::from_node(int node, std::span<const std::uint8_t> open) const {
+  std::vector<int> members;
+  for (std::size_t i = 0; i < witnesses_.size(); ++i) {
+    if (open[i] != 0) members.push_back(static_cast<int>(i));
+  }
+  if (members.empty()) return 0.0;
+  double farthest = 0.0;
+  const double tree = spanning_tree(node, members, &farthest);
+  if (tree == kInfinity) return kInfinity;  // a group the robot cannot reach: no route exists
+  double bound = std::max(tree, farthest);
+  if (ascent_steps_ > 0) bound = std::max(bound, one_tree(node, members, pi_, nullptr));
+  return bound * (1.0 - kBoundRoundingMargin);
 }
 
 double CoverageLowerBound::held_karp(int node, const std::vector<int>& groups) const {
@@ -150,10 +326,8 @@ double CoverageLowerBound::held_karp(int node, const std::vector<int>& groups) c
       const std::size_t a = static_cast<std::size_t>(groups[last]);
       for (std::size_t next = 0; next < g; ++next) {
         if ((mask & (std::size_t{1} << next)) != 0) continue;
-        const std::size_t b = static_cast<std::size_t>(groups[next]);
-        const double step = std::min(between_[a * k + b], between_[b * k + a]);
         double& slot = dp[(mask | (std::size_t{1} << next)) * g + next];
-        slot = std::min(slot, here + step);
+        slot = std::min(slot, here + between_[a * k + static_cast<std::size_t>(groups[next])]);
       }
     }
   }

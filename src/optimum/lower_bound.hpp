@@ -4,15 +4,19 @@
 /// start or from any state of a run.
 ///
 /// Witnesses: target cells chosen so that no node sees two of them (their viewpoint sets
-/// seen_from are pairwise disjoint), hardest to see first (fewest viewpoints), at most
-/// LowerBoundOptions::max_witnesses. Any route that reveals every target stands, for each
-/// witness w still unrevealed, on some node of seen_from(w) (its "group"). Order the groups by
-/// the route's first visit: the part of the route from the robot to the first group is at least
-/// the distance to that group, and each part between two consecutive first visits at least the
-/// distance between the two groups (the shortest path between any node of one and any node of
-/// the other). So the route is at least the length of a path that starts at the robot and visits
-/// every group, in the graph whose edges are those group distances, and so at least:
+/// seen_from are pairwise disjoint), at most LowerBoundOptions::max_witnesses: farthest first
+/// (each new witness the one whose group is farthest from the start and the groups already
+/// chosen, among the 4,000 targets with the fewest viewpoints), and, as a second set, hardest to see first
+/// (fewest viewpoints); the set with the larger bound from the start is kept. Any route that reveals every
+/// target stands, for each witness w still unrevealed, on some node of seen_from(w) (its "group"). Order the
+/// groups by the route's first visit: the part of the route from the robot to the first group is at least the
+/// distance to that group, and each part between two consecutive first visits at least the distance between
+/// the two groups (the shortest path between any node of one and any node of the other). So the route is at
+/// least the length of a path that starts at the robot and visits every group, in the graph whose edges are
+/// those group distances, and so at least:
 /// - the minimum spanning tree over the robot and the groups (a path is a spanning tree), and
+///   its Lagrangian strengthening, Held and Karp's 1-tree bound with penalties found by
+///   subgradient ascent from the start (valid for any penalties, so also from later states),
 /// - the shortest such path over any subset of the groups (Held-Karp's dynamic programme, exact
 ///   over at most 12 groups, used from the start where it is affordable),
 /// - and the distance to the farthest group.
@@ -37,13 +41,15 @@ inline namespace optimum {
 struct LowerBoundOptions {
   /// Most witnesses (>= 1). More make the bound stronger and each call slower (k^2).
   int max_witnesses = 96;
+  /// Subgradient steps of the 1-tree bound at the start (0: spanning tree only).
+  int ascent_steps = 200;
   /// Groups of Held-Karp's exact path bound at the start (0: off; at most 16).
   int held_karp_groups = 12;
 };
 
 class CoverageLowerBound {
  public:
-  CoverageLowerBound(const CoverageInstance& instance, const LowerBoundOptions& options = {});
+  CoverageLowerBound(const CoverageInstance& instance, const LowerBoundOptions& options);
 
   /// The bound from the start of a run: the robot on the start node, having revealed what the
   /// start's scan reveals. Held-Karp included.
@@ -69,11 +75,30 @@ class CoverageLowerBound {
  private:
   /// Held-Karp over the `groups` (indices of witnesses) from node `node`.
   [[nodiscard]] double held_karp(int node, const std::vector<int>& groups) const;
+  /// The Lagrangian 1-tree bound (Held and Karp 1970) on a path from `node` through the groups
+  /// `members` with penalties `pi` (one per witness, plus the robot's last): a spanning tree
+  /// over the robot and the groups under costs c(i, j) + pi_i + pi_j, plus the two edges of a
+  /// dummy end node (to the robot and to the group of least penalty, both of cost 0), minus
+  /// 2 x the penalties. A lower bound for any penalties. `degrees` (optional, same indexing as
+  /// pi) receives each node's degree in that tree.
+  [[nodiscard]] double one_tree(int node, const std::vector<int>& members, const std::vector<double>& pi,
+                                std::vector<int>* degrees) const;
+  /// Penalties that raise one_tree() from `node` (subgradient ascent, a fixed number of steps).
+  [[nodiscard]] std::vector<double> ascend(int node, const std::vector<int>& members) const;
+  /// from_node() without the 1-tree.
+  [[nodiscard]] double spanning_tree(int node, const std::vector<int>& members, double* farthest) const;
+
+  /// An empty bound over `instance`, filled by build().
+  explicit CoverageLowerBound(const CoverageInstance& instance);
+  /// The group distances, penalties and start bound of one witness set.
+  void build(std::vector<int> witnesses, const LowerBoundOptions& options);
 
   const CoverageInstance* instance_;
+  int ascent_steps_ = 0;
   std::vector<int> witnesses_;
   std::vector<std::vector<double>> to_group_;  // [k][node]
-  std::vector<double> between_;                // k x k, group to group
+  std::vector<double> between_;                // k x k, group to group (symmetric: the smaller way)
+  std::vector<double> pi_;                     // penalties found from the start (k + 1)
   double at_start_ = 0.0;
 };
 
