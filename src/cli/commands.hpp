@@ -11,6 +11,7 @@ namespace fsweep::cli {
 using Command = std::function<int()>;
 
 Command add_sim_command(CLI::App& app);
+Command add_optimum_command(CLI::App& app);
 Command add_plan_command(CLI::App& app);
 Command add_plan_compare_command(CLI::App& app);
 Command add_plan_bench_command(CLI::App& app);

@@ -74,7 +74,8 @@ void print_axes(const SweepPlan& plan) {
     std::cout << "  " << name << ": " << thousands(size) << '\n';
     std::vector<std::string> items;
     if (name == "maps") {
-      for (const auto& m : plan.maps()) items.push_back(m.label);
+      // "(competitive)": the offline optimum's columns (sweep_plan.hpp, `competitive`).
+      for (const auto& m : plan.maps()) items.push_back(m.label + (m.competitive ? " (competitive)" : ""));
     } else if (name == "strategy configurations") {
       for (const auto& e : plan.strategies()) {
         std::string groups;

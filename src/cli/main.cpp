@@ -40,6 +40,7 @@ int main(int argc, char** argv) try {
   app.require_subcommand(1);
   std::map<std::string, fsweep::cli::Command> commands;
   commands["sim"] = fsweep::cli::add_sim_command(app);
+  commands["optimum"] = fsweep::cli::add_optimum_command(app);
   commands["plan"] = fsweep::cli::add_plan_command(app);
   commands["plan-compare"] = fsweep::cli::add_plan_compare_command(app);
   commands["plan-bench"] = fsweep::cli::add_plan_bench_command(app);

@@ -18,6 +18,7 @@ enum class OutputKind {
   Compare,      ///< `fsweep compare --out`: compare.csv, compare.html
   Plots,        ///< `fsweep plot --out`: progress.png, metrics.png, heat maps
   Paired,       ///< `fsweep paired --out`: paired.csv, paired.json
+  Optimum,      ///< `fsweep optimum --out`: optimum.csv, route.png
 };
 
 /// A directory holding `shard-<i>-of-<n>` folders (a sharded sweep's --out) and no other

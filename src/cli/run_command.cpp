@@ -84,6 +84,11 @@ int run_command(const RunCommandOptions& o) {
   std::cout << std::endl;  // before the (possibly long) run
 
   const RunnerReport r = run_sweep(plan, options);
+  if (r.optima.needed > 0) {
+    std::cout << "offline optima: " << r.optima.needed << " map and robot pairs, " << r.optima.computed
+              << " computed in " << one_decimal(r.optima.seconds) << " s, " << r.optima.cached
+              << " read from " << kOptimumFile << "\n";
+  }
   if (!r.extended_from.empty()) {
     std::cout << "extended the results of an earlier version of the sweep file (sweep_hash "
               << r.extended_from << "): its " << r.kept << " finished runs kept, in this sweep's run order\n";
@@ -110,7 +115,8 @@ int run_command(const RunCommandOptions& o) {
   std::cout << "results in " << r.out_dir << "/ (runs.csv, progress.csv, manifest.json"
             << (!r.interrupted && options.shard_count == 1 ? ", summary.csv, progress_summary.csv, best.csv"
                                                            : "")
-            << (r.searches.searches > 0 ? ", " + join_names(r.searches.files) : std::string()) << ")\n";
+            << (r.searches.searches > 0 ? ", " + join_names(r.searches.files) : std::string())
+            << (plan.competitive() ? std::string(", ") + kOptimumFile : std::string()) << ")\n";
   if (r.interrupted) {
     std::cout << "rerun the same command to resume"
               << (o.sqlite ? " (results.sqlite is written once it is done)" : "") << "\n";

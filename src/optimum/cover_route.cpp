@@ -322,10 +322,12 @@ CoverRoute assemble(const CoverageInstance& in, const PointDistances& d, const s
 
 RouteReplay replay_route(const CoverageInstance& in, const RunSpec& spec, std::span<const int> cells) {
   RouteReplay r;
+  std::vector<std::uint8_t> explorable(static_cast<std::size_t>(in.targets()), 0);
   for (int t = 0; t < in.targets(); ++t) {
     const auto from = in.seen_from.row(t);
     if (std::any_of(from.begin(), from.end(),
                     [&](int n) { return in.node_usable[static_cast<std::size_t>(n)] != 0; })) {
+      explorable[static_cast<std::size_t>(t)] = 1;
       ++r.explorable;
     }
   }
@@ -343,7 +345,7 @@ RouteReplay replay_route(const CoverageInstance& in, const RunSpec& spec, std::s
     int fresh = 0;
     for (const int c : sensor.scan(*spec.map, known, at, heading_angle(heading), unused)) {
       const int t = in.target_of_cell[static_cast<std::size_t>(c)];
-      if (t >= 0) ++fresh;
+      if (t >= 0 && explorable[static_cast<std::size_t>(t)] != 0) ++fresh;  // out of reach: not counted
     }
     if (fresh > 0) {
       r.revealed += fresh;
@@ -367,8 +369,6 @@ RouteReplay replay_route(const CoverageInstance& in, const RunSpec& spec, std::s
     }
     if (r.revealed < r.explorable) sense(b);
   }
-  // Targets out of reach are never revealed; anything else revealed counts (all are targets).
-  r.revealed = std::min(r.revealed, r.explorable);
   r.valid = true;
   return r;
 }

@@ -17,9 +17,17 @@ namespace fsweep {
 inline namespace report {
 namespace {
 
-/// The metrics of the ranking besides the objective, when summary.csv has values of them.
-constexpr const char* kRankingMetrics[] = {"distance_m",        "energy",    "coverage", "explored_area_m2",
-                                           "competitive_ratio", "decisions", "recharges"};
+/// The metrics of the ranking besides the objective, when summary.csv has values of them (the
+/// offline optimum's ratios only in a sweep with a competitive map).
+constexpr const char* kRankingMetrics[] = {"distance_m",
+                                           "energy",
+                                           "coverage",
+                                           "explored_area_m2",
+                                           "competitive_ratio",
+                                           "competitive_ratio_min",
+                                           "competitive_ratio_max",
+                                           "decisions",
+                                           "recharges"};
 
 /// A table cell: its text (escaped when written) and whether it holds a number (right-aligned).
 struct Cell {

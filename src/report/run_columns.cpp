@@ -90,12 +90,13 @@ Columns metric_columns(const RunResult& r) {
   };
 }
 
-std::vector<std::string> sweep_runs_columns(const std::vector<std::string>& config_names) {
+std::vector<std::string> sweep_runs_columns(const std::vector<std::string>& config_names, bool competitive) {
   std::vector<std::string> out{kRunIndexColumn, kRunKeyColumn, kMapClassColumn, kStrategyLabelColumn};
   out.insert(out.end(), config_names.begin(), config_names.end());
   out.emplace_back(kSeedColumn);
   for (auto& [name, value] : metric_columns(RunResult{})) out.push_back(std::move(name));
   out.insert(out.end(), kSweepMetricColumns.begin(), kSweepMetricColumns.end());
+  if (competitive) out.insert(out.end(), kCompetitiveColumns.begin(), kCompetitiveColumns.end());
   return out;
 }
 

@@ -20,6 +20,8 @@ bool is_effort_column(std::string_view name) {
   return name.ends_with("_time_s") || name.ends_with("_expansions");
 }
 
+bool is_note_column(std::string_view name) { return name == kCompetitiveNoteColumn; }
+
 bool successful_end(std::string_view end_reason) {
   return end_reason == to_string(EndReason::Complete) || end_reason == to_string(EndReason::TargetReached);
 }
@@ -54,7 +56,7 @@ RunsHeader::RunsHeader(std::vector<std::string> names, const std::string& path)
     } else if (i == end_reason_ || static_cast<int>(i) == end_detail) {
       role = ColumnRole::Outcome;
       quality_.push_back(i);
-    } else if (i >= first_metric) {
+    } else if (i >= first_metric && !is_note_column(name)) {
       role = ColumnRole::Metric;
       metrics_.push_back(i);
       if (!is_effort_column(name)) quality_.push_back(i);

@@ -7,7 +7,8 @@
 ///
 /// Column order of a sweep's runs.csv (sweep_runs_columns()): run_index, run_key, map_class,
 /// strategy_label, the config columns of config_columns() over the sweep with seed last, the
-/// metric columns of metric_columns(), then optimal_distance_m and competitive_ratio.
+/// metric columns of metric_columns(), then optimal_distance_m and competitive_ratio, then, in a
+/// sweep with a competitive map (sweep_plan.hpp, "competitive"), kCompetitiveColumns.
 ///
 /// A header is read by position, so that files of older and newer builds (other metrics, other
 /// parameters) read alike (RunsHeader):
@@ -17,11 +18,13 @@
 ///   are repetitions of one configuration;
 /// - config: every other column before seed;
 /// - outcome: end_reason and end_detail (text);
-/// - metric: every column after end_detail (after end_reason without it), numbers; an empty or
+/// - metric: every column after end_detail (after end_reason without it) but the note columns,
+///   numbers; an empty or
 ///   `nan` cell has no value. Effort metrics are left out of exact comparisons: timings
 ///   (`*_time_s`, wall_time_s among them) measure the machine, search counters (`*_expansions`)
 ///   the engine's algorithms (a faster search settles fewer cells for the same run);
-/// - other: a column between seed and end_reason (none today), not read.
+/// - other: a column between seed and end_reason (none today) and the note columns after
+///   end_detail (is_note_column(): text saying why a metric is empty, competitive_note), not read.
 
 #include <array>
 #include <cstddef>
@@ -54,6 +57,14 @@ inline constexpr char kEndReasonColumn[] = "end_reason";
 inline constexpr char kEndDetailColumn[] = "end_detail";
 /// Metric columns only a sweep writes (sweep_runner.hpp), after metric_columns().
 inline constexpr std::array<const char*, 2> kSweepMetricColumns{"optimal_distance_m", "competitive_ratio"};
+/// The offline-optimum columns of a sweep with a competitive map (docs/results.md), after
+/// kSweepMetricColumns: the certified bounds on the offline optimum of the run's map and robot
+/// (optimum/optimum.hpp), whether they are equal, distance_to_final_coverage_m over each bound,
+/// and the note saying why the ratios are empty (a note column: text, role Other).
+inline constexpr std::array<const char*, 6> kCompetitiveColumns{
+    "optimum_lower_m",       "optimum_upper_m",       "optimum_exact",
+    "competitive_ratio_min", "competitive_ratio_max", "competitive_note"};
+inline constexpr char kCompetitiveNoteColumn[] = "competitive_note";
 /// progress.csv columns of one sample; a sweep's progress.csv starts with run_index, run_key.
 inline constexpr std::array<const char*, 4> kProgressColumns{"distance_m", "explored_area_m2", "coverage",
                                                              "energy"};
@@ -73,8 +84,10 @@ using Columns = std::vector<std::pair<std::string, std::string>>;
 [[nodiscard]] Columns metric_columns(const RunResult& result);
 
 /// A sweep's runs.csv columns for `config_names` (the union of the sweep's config_columns()
-/// names without seed, sweep_table.hpp), in the order of the file comment.
-[[nodiscard]] std::vector<std::string> sweep_runs_columns(const std::vector<std::string>& config_names);
+/// names without seed, sweep_table.hpp), in the order of the file comment; kCompetitiveColumns
+/// last when `competitive` (some map of the sweep is competitive).
+[[nodiscard]] std::vector<std::string> sweep_runs_columns(const std::vector<std::string>& config_names,
+                                                          bool competitive = false);
 
 /// A sweep's progress.csv columns: run_index, run_key, then kProgressColumns.
 [[nodiscard]] std::vector<std::string> sweep_progress_columns();
@@ -96,13 +109,17 @@ enum class ColumnRole {
   Instance,  ///< map, map.start, seed: pooled within a configuration
   Config,    ///< every other column before seed
   Outcome,   ///< end_reason, end_detail
-  Metric,    ///< every column after end_detail: numbers
-  Other,     ///< between seed and end_reason: not read
+  Metric,    ///< every column after end_detail but the note columns: numbers
+  Other,     ///< between seed and end_reason, and the note columns: not read
 };
 
 /// True for the effort columns: timings (`*_time_s`, wall_time_s among them), which measure the
 /// machine, and search counters (`*_expansions`), which measure the engine's algorithms.
 [[nodiscard]] bool is_effort_column(std::string_view name);
+
+/// True for the text columns among the metrics, which are not read as numbers (role Other):
+/// competitive_note.
+[[nodiscard]] bool is_note_column(std::string_view name);
 
 /// True for the end reasons that count as a success: `complete` and `target_reached`.
 [[nodiscard]] bool successful_end(std::string_view end_reason);

@@ -392,10 +392,12 @@ std::uint64_t extend_outputs(const SweepPlan& plan, ShardOf shard, const SweepTa
   if (!key_col || !index_col || !end_col || !outcome(*end_col) ||
       !std::equal(columns.begin() + static_cast<std::ptrdiff_t>(*end_col), columns.end(),
                   table.columns().begin() + static_cast<std::ptrdiff_t>(new_end))) {
-    throw ConfigError(runs_path,
-                      "its outcome and metric columns differ from this build's (made by another fsweep?), "
-                      "so its runs cannot join the changed sweep's" +
-                          start_over);
+    throw ConfigError(
+        runs_path,
+        "its outcome and metric columns differ from this sweep's (made by another fsweep, or the sweep's "
+        "\"competitive\" maps changed from none to some or back?), "
+        "so its runs cannot join the changed sweep's" +
+            start_over);
   }
   // 3. The done runs: each must have its place in the changed sweep's shard.
   CsvJournal runs(runs_path, header);

@@ -11,6 +11,7 @@
 #include "core/random.hpp"
 #include "planners/ompl_planner.hpp"
 #include "sweep/csv_journal.hpp"
+#include "sweep/optimum_table.hpp"
 #include "sweep/sweep_plan.hpp"
 #include "sweep/sweep_table.hpp"
 
@@ -129,7 +130,10 @@ nlohmann::json manifest_json(const SweepPlan& plan, const ManifestInfo& info) {
   j["maps"] = nlohmann::json::array();
   for (const SweepMap& m : plan.maps()) {
     j["maps"].push_back({{"label", m.label}, {"source", m.map->source}, {"content_hash", m.content_hash}});
+    // The resolved `competitive` of each map, in a sweep that has one (older manifests stay as they were).
+    if (plan.competitive()) j["maps"].back()["competitive"] = m.competitive;
   }
+  if (plan.competitive()) j["optimum_solver"] = optimum_solver_version();
   j["skipped_maps"] = nlohmann::json::array();
   for (const SkippedMap& m : plan.skipped_maps()) {
     j["skipped_maps"].push_back({{"where", m.where}, {"file", m.file}, {"reason", m.reason}});

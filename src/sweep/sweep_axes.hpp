@@ -61,10 +61,11 @@ class SweepPaths {
 };
 
 /// `maps`: loads every map (see sweep_plan.hpp), relative paths found by `paths`; plans of
-/// dataset items skipped by `"on_bad_map": "skip"` go to `skipped`.
+/// dataset items skipped by `"on_bad_map": "skip"` go to `skipped`. `competitive`: the sweep's
+/// top-level setting, which an item's own `competitive` overrides (SweepMap::competitive).
 [[nodiscard]] std::vector<SweepMap> parse_maps(const nlohmann::json& maps, SweepPaths& paths,
                                                std::vector<std::string>& problems,
-                                               std::vector<SkippedMap>& skipped);
+                                               std::vector<SkippedMap>& skipped, bool competitive = false);
 
 /// `strategies`: entries with their parameter groups, each axis value validated.
 [[nodiscard]] std::vector<StrategyEntry> parse_strategies(const nlohmann::json& strategies,

@@ -105,8 +105,23 @@ void take_loaded(SweepMap& m, RunMap loaded, const std::string& opened = {},
 /// Keys of a dataset item (besides `dataset`).
 const std::vector<std::string>& dataset_keys() {
   static const std::vector<std::string> kKeys{"ids",   "sample",     "sample_seed", "res",
-                                              "start", "on_bad_map", "label"};
+                                              "start", "on_bad_map", "label",       "competitive"};
   return kKeys;
+}
+
+/// A map item's `competitive` (sweep_plan.hpp): its value, else `otherwise` (the sweep's); a value
+/// that is not a boolean is a problem.
+bool item_competitive(const json& item, const std::string& where, bool otherwise,
+                      std::vector<std::string>& problems) {
+  if (!item.is_object() || !item.contains("competitive")) return otherwise;
+  const json& v = item.at("competitive");
+  if (!v.is_boolean()) {
+    problems.push_back(where + "/competitive: value " + value_text(v) +
+                       " not allowed; allowed: true (compute the offline optimum of the item's maps: the "
+                       "optimum_* and competitive_ratio_min/max columns) or false");
+    return otherwise;
+  }
+  return v.get<bool>();
 }
 
 /// A plan of a dataset: its file as the sweep names it (the dataset folder as written, then the
@@ -217,8 +232,9 @@ std::vector<DatasetPlan> dataset_plans(const json& item, const std::string& wher
 /// A dataset item (sweep_plan.hpp, "maps"): one map class of HouseExpo plans. Appends its maps
 /// to `out`; plans that fail to load are problems, or skipped with `"on_bad_map": "skip"`.
 void parse_dataset(const json& item, const std::string& where, SweepPaths& paths, std::vector<SweepMap>& out,
-                   std::vector<std::string>& problems, std::vector<SkippedMap>& skipped) {
+                   std::vector<std::string>& problems, std::vector<SkippedMap>& skipped, bool competitive) {
   const std::size_t before = problems.size();
+  competitive = item_competitive(item, where, competitive, problems);
   for (const auto& [key, value] : item.items()) {
     if (key != "dataset" &&
         std::find(dataset_keys().begin(), dataset_keys().end(), key) == dataset_keys().end()) {
@@ -278,6 +294,7 @@ void parse_dataset(const json& item, const std::string& where, SweepPaths& paths
       continue;
     }
     m.spec = canonical(source);
+    m.competitive = competitive;
     m.map_class = map_class;
     m.label = spec_text(source);
     out.push_back(std::move(m));
@@ -337,7 +354,7 @@ std::optional<std::string> SweepPaths::resolve(const std::string& written, Kind 
 }
 
 std::vector<SweepMap> parse_maps(const json& maps, SweepPaths& paths, std::vector<std::string>& problems,
-                                 std::vector<SkippedMap>& skipped) {
+                                 std::vector<SkippedMap>& skipped, bool competitive) {
   std::vector<SweepMap> out;
   if (!maps.is_array() || maps.empty()) {
     problems.push_back("/maps: expected a non-empty list of maps (SPEC strings or objects), got " +
@@ -354,7 +371,7 @@ std::vector<SweepMap> parse_maps(const json& maps, SweepPaths& paths, std::vecto
     }
     if (item.is_object() && item.contains("dataset")) {
       const std::size_t first = out.size();
-      parse_dataset(item, where, paths, out, problems, skipped);
+      parse_dataset(item, where, paths, out, problems, skipped, competitive);
       for (std::size_t k = first; k < out.size(); ++k) {
         if (!seen.emplace(out[k].spec.dump(), where).second) {
           problems.push_back(where + ": plan " + out[k].label +
@@ -370,11 +387,12 @@ std::vector<SweepMap> parse_maps(const json& maps, SweepPaths& paths, std::vecto
     json base = json::object();
     std::string label;
     const std::size_t before = problems.size();
+    const bool item_is_competitive = item_competitive(item, where, competitive, problems);
     if (item.is_string()) {
       spec_string = item.get<std::string>();
     } else {
       for (const auto& [k, v] : item.items()) {
-        if (k != "label" && k != "seeds") base[k] = v;
+        if (k != "label" && k != "seeds" && k != "competitive") base[k] = v;
       }
       if (item.contains("label")) {
         if (item["label"].is_string()) {
@@ -385,7 +403,8 @@ std::vector<SweepMap> parse_maps(const json& maps, SweepPaths& paths, std::vecto
       }
       if (base.contains("spec")) {
         if (base.size() != 1) {
-          problems.push_back(where + ": with \"spec\" the only other keys allowed are label, seeds");
+          problems.push_back(where +
+                             ": with \"spec\" the only other keys allowed are label, seeds, competitive");
         } else if (!base["spec"].is_string()) {
           problems.push_back(where + "/spec: expected a SPEC string, got " + value_text(base["spec"]));
         } else {
@@ -458,6 +477,7 @@ std::vector<SweepMap> parse_maps(const json& maps, SweepPaths& paths, std::vecto
         break;
       }
       m.spec = canonical(source);
+      m.competitive = item_is_competitive;
       m.free_space = source.value("generator", json("")) == "free";
       if (m.free_space && m.start_regions) {
         problems.push_back(where +

@@ -31,7 +31,7 @@ using sweep_detail::value_text;
 
 const std::vector<std::string> kTopLevelKeys = {
     "schema_version", "name", "description",     "maps",        "strategies", "baseline", "planners",
-    "robot",          "sim",  "progress_step_m", "repetitions", "seed",       "output"};
+    "robot",          "sim",  "progress_step_m", "repetitions", "seed",       "output",   "competitive"};
 
 bool valid_name(const std::string& name) {
   if (name.empty() || name == "." || name == "..") return false;
@@ -137,6 +137,18 @@ SweepPlan SweepPlan::build(const json& sweep, const std::string& file, std::vect
       plan.seed_ = s.get<std::uint64_t>();
     }
   }
+  bool competitive = false;
+  if (const json& c = get("competitive"); !c.is_null()) {
+    if (!c.is_boolean()) {
+      problems.push_back(
+          "/competitive: value " + value_text(c) +
+          " not allowed; allowed: true (compute the offline optimum of every map: the optimum_* "
+          "and competitive_ratio_min/max columns; a map item's own \"competitive\" wins) or "
+          "false");
+    } else {
+      competitive = c.get<bool>();
+    }
+  }
   plan.output_dir_ = "results/" + plan.name_;
   if (const json& o = get("output"); !o.is_null()) {
     try {
@@ -179,7 +191,7 @@ SweepPlan SweepPlan::build(const json& sweep, const std::string& file, std::vect
 
   // 3. The axes.
   sweep_detail::SweepPaths paths(file);
-  plan.maps_ = sweep_detail::parse_maps(get("maps"), paths, problems, plan.skipped_maps_);
+  plan.maps_ = sweep_detail::parse_maps(get("maps"), paths, problems, plan.skipped_maps_, competitive);
   plan.path_warnings_ = paths.warnings();
   plan.strategies_ = sweep_detail::parse_strategies(get("strategies"), problems);
   plan.planners_ = sweep_detail::parse_planners(get("planners"), problems);
@@ -416,6 +428,10 @@ json SweepPlan::search_instance_json(const SearchUnit& unit, std::size_t instanc
         v.size() == 1 ? json(v.front()) : json{{"from", v.front()}, {"to", v.back()}, {"values", v.size()}};
   }
   return out;
+}
+
+bool SweepPlan::competitive() const {
+  return std::any_of(maps_.begin(), maps_.end(), [](const SweepMap& m) { return m.competitive; });
 }
 
 std::vector<std::pair<std::string, std::uint64_t>> SweepPlan::axes() const {

@@ -35,6 +35,8 @@
 /// - `repetitions`: integer from 1 to kMaxRepetitions, default 1. `seed`: unsigned integer, default 0.
 /// - `output`: {"dir": path (default "results/<name>"; relative to the working directory),
 ///   "objective": "distance_to_final_coverage_m" (default) | "area_per_metre" | "energy"}.
+/// - `competitive`: boolean, default false: whether the maps are competitive (SweepMap::competitive);
+///   a map item (object) may give its own `competitive`, which wins. Not part of run keys.
 ///
 /// Command-line overrides ("robot.battery=800", apply_sweep_overrides() in sweep_json_reader.hpp)
 /// change the parsed JSON before validation; source() and the manifest's sweep and hash are of
@@ -144,6 +146,9 @@ struct SweepMap {
   /// content_hash() of `map` as 16 hex digits: run keys cover it, so an edited map file changes
   /// its runs' keys; manifest.json records it per map ("maps") and a resume refuses a change.
   std::string content_hash;
+  /// Its runs get the offline optimum's columns (runs_schema.hpp's kCompetitiveColumns,
+  /// optimum_table.hpp): the sweep's `competitive`, or its item's.
+  bool competitive = false;
   /// True for the `free` generator (the star-pattern optimum of docs/dev/architecture.md, "Sweeps, keys,
   /// shards and the weight search" applies).
   bool free_space = false;
@@ -316,6 +321,8 @@ class SweepPlan {
   [[nodiscard]] std::vector<std::pair<std::string, std::uint64_t>> axes() const;
 
   [[nodiscard]] const std::vector<SweepMap>& maps() const { return maps_; }
+  /// True when some map is competitive (SweepMap::competitive): runs.csv has kCompetitiveColumns.
+  [[nodiscard]] bool competitive() const;
   /// Plans of dataset items skipped because they failed to load (manifest.json, the CLI's warnings).
   [[nodiscard]] const std::vector<SkippedMap>& skipped_maps() const { return skipped_maps_; }
   [[nodiscard]] const std::vector<StrategyEntry>& strategies() const { return strategies_; }

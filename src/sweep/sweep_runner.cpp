@@ -14,6 +14,7 @@
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <thread>
 
@@ -42,7 +43,7 @@ constexpr const char* kOutputFiles[] = {
     "runs.csv",           "progress.csv",         "manifest.json",    "summary.csv",
     "best.csv",           "progress_summary.csv", "searches.json",    "behaviours.csv",
     "search_summary.csv", "search_best.csv",      "search_ranks.csv", "search_heatmaps.csv",
-    "vectors.csv",        "search_journal.jsonl", "results.sqlite"};
+    "vectors.csv",        "search_journal.jsonl", "results.sqlite",   kOptimumFile};
 
 /// Set by SIGINT/SIGTERM while run_sweep runs (a signal handler can only reach a global).
 std::atomic<bool> stop_requested{false};  // NOLINT(cppcoreguidelines-avoid-non-const-global-variables)
@@ -156,7 +157,7 @@ RunnerReport run_sweep(const SweepPlan& plan, const RunnerOptions& options) {
   const std::string manifest_path = dir + "/manifest.json";
   const std::string hash = sweep_hash(plan.source());
   const ShardOf shard{options.shard_index, options.shard_count};
-  const SweepTable table(plan);
+  SweepTable table(plan);
   nlohmann::json sessions = nlohmann::json::array();
   if (options.fresh) {
     for (const char* f : kOutputFiles) fs::remove(dir + "/" + f);
@@ -197,6 +198,14 @@ RunnerReport run_sweep(const SweepPlan& plan, const RunnerOptions& options) {
   info.runs.failed = resumed.failed;
   write_manifest(manifest_path, manifest_json(plan, info));
   report.total = info.runs.total;
+
+  // The offline optima of the runs on competitive maps, once per key before the runs (so the
+  // workers only read them), from optimum.csv or computed; none when every run is done.
+  if (plan.competitive() && resumed.done.size() < info.runs.total) {
+    table.use_optima(std::make_shared<const OptimumTable>(
+        OptimumTable::prepare(plan, dir, options.shard_index, options.shard_count,
+                              std::min(threads, tbb::info::default_concurrency()), report.optima)));
+  }
 
   // 2. The pipeline: dispatch in index order (skipping done runs), simulate in parallel, write
   //    in index order.

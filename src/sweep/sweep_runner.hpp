@@ -31,6 +31,11 @@
 ///   so the history of a resumed or extended sweep is kept; the top-level timing fields are over
 ///   all sessions (manifest_json()). Written at the start and at the end, each time through a
 ///   temp file and rename; `fresh` starts the history over.
+///   In a sweep with a competitive map (sweep_plan.hpp, `competitive`), runs.csv ends with
+///   runs_schema.hpp's kCompetitiveColumns: the offline optimum's bounds of the run's map and
+///   robot and distance_to_final_coverage_m over them (optimum_table.hpp, docs/results.md).
+/// - `optimum.csv` (competitive maps only): the cache of the offline optima (optimum_table.hpp),
+///   computed before the runs for the keys the (shard's) runs need and missing from it.
 /// - `summary.csv`, `progress_summary.csv`, `best.csv`: written by aggregate.hpp after a
 ///   complete, unsharded run.
 /// - The exact weight searches' files (weight_search_runner.hpp: searches.json,
@@ -106,6 +111,7 @@
 #include <cstdint>
 #include <string>
 
+#include "sweep/optimum_table.hpp"
 #include "sweep/sweep_plan.hpp"
 #include "sweep/weight_search_runner.hpp"
 
@@ -160,6 +166,9 @@ struct RunnerReport {
   SearchRunReport searches;
   /// Their files were already there (searches.json), so they were not run again.
   bool searches_done_before = false;
+  /// The offline optima of the runs on competitive maps (optimum_table.hpp), prepared before the
+  /// runs: all zero in a sweep without a competitive map or with every run already done.
+  OptimumReport optima;
 };
 
 /// Runs the plan. Throws ConfigError for unusable outputs (unwritable directory, another runner

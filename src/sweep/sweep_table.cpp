@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <set>
 #include <stdexcept>
 
@@ -259,7 +260,8 @@ SweepTable::SweepTable(const SweepPlan& plan) {
     config.emplace_back(kOptimumCheckColumn);
   }
   // 3. The whole row (runs_schema.hpp's order).
-  for (const auto& name : sweep_runs_columns(config)) {
+  competitive_ = plan.competitive();
+  for (const auto& name : sweep_runs_columns(config, competitive_)) {
     if (position_.emplace(name, columns_.size()).second) columns_.push_back(name);
   }
 }
@@ -308,6 +310,21 @@ void SweepTable::fill_description(const SweepPlan& plan, const SweepRun& run,
   if (star.status != StarOptimum::Status::NotApplicable) set(kOptimumCheckColumn, star.check_text());
 }
 
+void SweepTable::fill_competitive(const SweepPlan& plan, const SweepRun& run, const RunResult* result,
+                                  std::vector<std::string>& fields) const {
+  if (!competitive_) return;
+  const SweepMap& map = plan.maps().at(run.at.map);
+  std::optional<OptimumBounds> solved;
+  const OptimumBounds* optimum = nullptr;
+  if (map.competitive) {
+    optimum = optima_ ? optima_->find(run.spec) : nullptr;
+    if (optimum == nullptr) optimum = &solved.emplace(compute_optimum(run.spec));
+  }
+  std::vector<std::string> cells = competitive_cells(map, optimum, result);
+  for (std::size_t i = 0; i < kCompetitiveColumns.size(); ++i)
+    fields[position_.at(kCompetitiveColumns[i])] = std::move(cells[i]);
+}
+
 RunRows SweepTable::run(const SweepPlan& plan, const SweepRun& run) const {
   const std::uint64_t index = run.at.index;
   RunRows out;
@@ -323,6 +340,7 @@ RunRows SweepTable::run(const SweepPlan& plan, const SweepRun& run) const {
       fields[position_.at(kSweepMetricColumns[1])] =
           format_number(result.metrics.distance_m / star.optimum_m);
     }
+    fill_competitive(plan, run, &result, fields);
     out.failed = result.end == EndReason::Error;
     const std::string prefix = std::to_string(index) + ',' + csv_field(run.key) + ',';
     for (const ProgressSample& s : result.progress) out.progress_rows += prefix + progress_cells(s) + '\n';
@@ -330,6 +348,13 @@ RunRows SweepTable::run(const SweepPlan& plan, const SweepRun& run) const {
     // The run failed before producing a result: the metric cells stay empty.
     for (const auto& [name, value] : metric_columns(RunResult{})) fields[position_.at(name)].clear();
     for (const char* name : kSweepMetricColumns) fields[position_.at(name)].clear();
+    for (const char* name : kCompetitiveColumns) {
+      if (competitive_) fields[position_.at(name)].clear();
+    }
+    try {
+      fill_competitive(plan, run, nullptr, fields);
+    } catch (const std::exception&) {  // NOLINT(bugprone-empty-catch): the run's error is the one to report
+    }
     fields[position_.at(kEndReasonColumn)] = std::string(to_string(EndReason::Error));
     fields[position_.at(kEndDetailColumn)] = e.what();
     out.progress_rows.clear();

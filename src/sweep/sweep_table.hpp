@@ -5,12 +5,14 @@
 
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <unordered_map>
 #include <vector>
 
 #include "report/runs_schema.hpp"
+#include "sweep/optimum_table.hpp"
 #include "sweep/sweep_plan.hpp"
 
 namespace fsweep {
@@ -29,7 +31,8 @@ struct RunRows {
 /// runs.csv columns of one sweep, in runs_schema.hpp's order (sweep_runs_columns()):
 /// `run_index, run_key, map_class, strategy_label`, the union of config_columns(), in a sweep
 /// with a free-space map `optimum_check` (kOptimumCheckColumn), seed, the metric columns,
-/// `optimal_distance_m, competitive_ratio`.
+/// `optimal_distance_m, competitive_ratio`, and in a sweep with a competitive map (SweepPlan::
+/// competitive()) the offline optimum's kCompetitiveColumns (optimum_table.hpp).
 ///
 /// The union is taken over one representative run per (strategy entry, planner, robot variant),
 /// in that order: the config columns depend on those and not on the map, the parameter values or
@@ -56,9 +59,15 @@ class SweepTable {
   /// Position of a runs.csv column; throws std::out_of_range for an unknown name.
   [[nodiscard]] std::size_t column(std::string_view name) const;
 
+  /// The offline optima run() reads for runs on competitive maps (prepared before the runs,
+  /// OptimumTable::prepare()). A key it lacks (or without a table) is solved by run() itself, to
+  /// the same value. Not thread-safe: set it before the runs.
+  void use_optima(std::shared_ptr<const OptimumTable> optima) { optima_ = std::move(optima); }
+
   /// Simulates `run` (resolved by plan.run()) and formats its rows. Never throws for a failing
   /// run: an exception from the plugins or the simulation becomes an `error` row with the
-  /// message as end_detail and the metric cells empty. Thread-safe (const).
+  /// message as end_detail and the metric cells empty (the optimum's bounds stay, for a
+  /// competitive map). Thread-safe (const).
   [[nodiscard]] RunRows run(const SweepPlan& plan, const SweepRun& run) const;
 
   /// The cells of `run`'s runs.csv row that do not depend on its simulation: run_index, run_key,
@@ -71,8 +80,14 @@ class SweepTable {
   /// describe() into `fields` (the row's size), so that a throw leaves what was set before it.
   void fill_description(const SweepPlan& plan, const SweepRun& run, std::vector<std::string>& fields) const;
 
+  /// kCompetitiveColumns of `run` into `fields` (a sweep with a competitive map only).
+  void fill_competitive(const SweepPlan& plan, const SweepRun& run, const RunResult* result,
+                        std::vector<std::string>& fields) const;
+
   std::vector<std::string> columns_;
   std::unordered_map<std::string, std::size_t> position_;
+  bool competitive_ = false;
+  std::shared_ptr<const OptimumTable> optima_;
 };
 
 /// Whether the star-pattern optimum d* (sim/competitive.hpp) applies to a run, and its value.

@@ -274,15 +274,15 @@ TEST(Cli, BashCompletionCompletesCommandsAndTheirOptions) {
 TEST(Cli, UnknownCommandIsNamedWithTheCommandsAllowed) {
   const Outcome r = fsweep("frobnicate");
   EXPECT_EQ(r.code, 2) << r.output;
-  EXPECT_NE(r.output.find(
-                "fsweep: error: unknown command 'frobnicate'; allowed: sim, plan, plan-compare, "
-                "plan-bench, run, expand, aggregate, merge, compare, paired, slurm, plot, report, describe, "
-                "export-sqlite, version, completion"),
+  EXPECT_NE(r.output.find("fsweep: error: unknown command 'frobnicate'; allowed: sim, optimum, plan, "
+                          "plan-compare, plan-bench, run, expand, aggregate, merge, compare, paired, slurm, "
+                          "plot, report, describe, export-sqlite, version, completion"),
             std::string::npos)
       << r.output;
   const Outcome none = fsweep("");
   EXPECT_EQ(none.code, 2) << none.output;
-  EXPECT_NE(none.output.find("fsweep: error: a command is required; allowed: sim, plan,"), std::string::npos)
+  EXPECT_NE(none.output.find("fsweep: error: a command is required; allowed: sim, optimum, plan,"),
+            std::string::npos)
       << none.output;
 }
 

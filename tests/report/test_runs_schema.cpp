@@ -86,6 +86,29 @@ TEST(RunsHeader, MetricsFollowEndReasonWithoutEndDetailAndColumnsAfterSeedAreNot
   EXPECT_EQ(h.names_of(h.quality()), (std::vector<std::string>{"end_reason", "energy"}));
 }
 
+TEST(RunsHeader, TheCompetitiveColumnsAreMetricsButTheNoteWhichIsNotRead) {
+  std::vector<std::string> header = sweep_runs_columns({"map", "strategy"}, true);
+  const RunsHeader h(header, "runs.csv");
+  for (const char* name : kCompetitiveColumns) {
+    const int c = h.column(name);
+    ASSERT_GE(c, 0) << name;
+    EXPECT_EQ(h.role(static_cast<std::size_t>(c)),
+              std::string_view(name) == kCompetitiveNoteColumn ? ColumnRole::Other : ColumnRole::Metric)
+        << name;
+  }
+  EXPECT_TRUE(is_note_column("competitive_note"));
+  EXPECT_FALSE(is_note_column("competitive_ratio_max"));
+  EXPECT_EQ(metric_direction("competitive_ratio_max"), Direction::Minimize);
+  EXPECT_EQ(metric_direction("competitive_ratio_min"), Direction::Minimize);
+  EXPECT_EQ(metric_unit("optimum_lower_m"), "m");
+  // Without a competitive map: none of them.
+  const std::vector<std::string> plain = sweep_runs_columns({"map", "strategy"});
+  EXPECT_EQ(
+      std::vector<std::string>(header.begin(), header.begin() + static_cast<std::ptrdiff_t>(plain.size())),
+      plain);
+  EXPECT_EQ(header.size(), plain.size() + kCompetitiveColumns.size());
+}
+
 TEST(RunsHeader, MissingRequiredColumnIsNamedAtTheHeaderLine) {
   EXPECT_EQ(config_error([] {
               (void)RunsHeader({"run_key", "strategy", "end_reason"}, "a/runs.csv");

@@ -21,6 +21,7 @@
 
 #include "core/config_error.hpp"
 #include "core/csv_format.hpp"
+#include "report/paired.hpp"
 #include "sweep/csv_journal.hpp"
 #include "sweep/merge.hpp"
 #include "sweep/sweep_plan.hpp"
@@ -596,6 +597,136 @@ TEST(SweepRunner, CompetitiveRatioColumns) {
     EXPECT_TRUE(ratio[i].empty()) << i;
   }
   fs::remove_all(dir);
+}
+
+/// Two competitive room maps (seeds 1, 2) and one that is not, closest frontier and
+/// energy-aware, sensor 4 m: 6 runs.
+json competitive_sweep() {
+  return json::parse(R"({
+    "schema_version": 1,
+    "name": "offline_optimum_test",
+    "competitive": true,
+    "maps": [{"generator": "rooms", "w": 30, "h": 24, "door": 2, "seeds": [1, 2]},
+             {"spec": "rooms:w=24,h=20,door=2,seed=3", "competitive": false}],
+    "strategies": [{"name": "closest_frontier"}, {"name": "energy_aware"}],
+    "robot": {"sensor": {"range_m": 4}},
+    "repetitions": 1
+  })");
+}
+
+TEST(SweepRunner, OfflineOptimumColumnsAreCertifiedCachedAndTheSameResumedShardedOrOnOneThread) {
+  const std::string dir = temp_dir("offline_optimum");
+  const RunnerReport first = run(competitive_sweep(), dir, 2);
+  ASSERT_EQ(first.ran, 6U);
+  EXPECT_EQ(first.optima.needed, 2U);  // one per competitive map: one robot, a fixed start
+  EXPECT_EQ(first.optima.computed, 2U);
+  EXPECT_EQ(first.optima.cached, 0U);
+  const std::string csv = read_file(dir + "/runs.csv");
+  const auto header = split_csv_line(records(csv).at(0));
+  ASSERT_GE(header.size(), kCompetitiveColumns.size());
+  EXPECT_EQ(std::vector<std::string>(header.end() - static_cast<std::ptrdiff_t>(kCompetitiveColumns.size()),
+                                     header.end()),
+            std::vector<std::string>(kCompetitiveColumns.begin(), kCompetitiveColumns.end()));
+  const auto lower = column(csv, "optimum_lower_m");
+  const auto upper = column(csv, "optimum_upper_m");
+  const auto exact = column(csv, "optimum_exact");
+  const auto ratio_min = column(csv, "competitive_ratio_min");
+  const auto ratio_max = column(csv, "competitive_ratio_max");
+  const auto note = column(csv, "competitive_note");
+  const auto end = column(csv, "end_reason");
+  const auto completeness = column(csv, "completeness");
+  const auto distance = column(csv, "distance_to_final_coverage_m");
+  ASSERT_EQ(note.size(), 6U);
+  int with_ratio = 0;
+  for (std::size_t i = 0; i < 4; ++i) {  // the competitive maps' runs: bounds always
+    SCOPED_TRACE("run " + std::to_string(i) + ", note '" + note[i] + "'");
+    ASSERT_FALSE(lower[i].empty());
+    ASSERT_FALSE(upper[i].empty());
+    EXPECT_TRUE(exact[i] == "0" || exact[i] == "1");
+    EXPECT_LE(std::stod(lower[i]), std::stod(upper[i]));
+    const bool solved = end[i] == "complete" && std::stod(completeness[i]) >= 1.0;
+    EXPECT_EQ(!ratio_max[i].empty(), solved);
+    EXPECT_EQ(!ratio_min[i].empty(), solved);
+    if (!solved) {
+      EXPECT_FALSE(note[i].empty());
+      continue;
+    }
+    ++with_ratio;
+    EXPECT_TRUE(note[i].empty());
+    // The lower bound is never above a run that revealed every observable cell.
+    EXPECT_GE(std::stod(ratio_max[i]), 1.0 - 1e-9);
+    EXPECT_LE(std::stod(ratio_min[i]), std::stod(ratio_max[i]));
+    EXPECT_DOUBLE_EQ(std::stod(ratio_max[i]), std::stod(distance[i]) / std::stod(lower[i]));
+    EXPECT_DOUBLE_EQ(std::stod(ratio_min[i]), std::stod(distance[i]) / std::stod(upper[i]));
+  }
+  EXPECT_GT(with_ratio, 0);
+  for (std::size_t i = 4; i < 6; ++i) {  // the map that is not competitive
+    EXPECT_EQ(note[i], "map not competitive");
+    EXPECT_TRUE(lower[i].empty() && upper[i].empty() && exact[i].empty() && ratio_min[i].empty() &&
+                ratio_max[i].empty());
+  }
+  // The cache: one row per key; the manifest records the resolved setting.
+  EXPECT_EQ(data_rows(dir + "/optimum.csv"), 2U);
+  const json manifest = json::parse(read_file(dir + "/manifest.json"));
+  EXPECT_EQ(manifest["maps"][0]["competitive"], true);
+  EXPECT_EQ(manifest["maps"][2]["competitive"], false);
+  EXPECT_TRUE(manifest.contains("optimum_solver"));
+  // summary.csv carries the numeric columns, not the note.
+  const std::string summary = read_file(dir + "/summary.csv");
+  EXPECT_NE(summary.find("competitive_ratio_max.median"), std::string::npos);
+  EXPECT_NE(summary.find("optimum_lower_m.mean"), std::string::npos);
+  EXPECT_EQ(summary.find("competitive_note"), std::string::npos);
+  // fsweep paired compares the ratios (smaller is better).
+  PairedOptions paired;
+  paired.metrics = {"competitive_ratio_min", "competitive_ratio_max"};
+  paired.resamples = 100;
+  EXPECT_EQ(paired_comparison(dir, paired).metrics, paired.metrics);
+
+  // Resumed with half of the runs done: the cache is read, nothing is solved, the same rows.
+  const std::string resumed = temp_dir("offline_optimum_resumed");
+  const auto recs = records(csv);
+  write_file(resumed + "/runs.csv", joined_records({recs.begin(), recs.begin() + 4}));
+  fs::copy_file(dir + "/progress.csv", resumed + "/progress.csv");
+  fs::copy_file(dir + "/manifest.json", resumed + "/manifest.json");
+  fs::copy_file(dir + "/optimum.csv", resumed + "/optimum.csv");
+  const RunnerReport again = run(competitive_sweep(), resumed, 2);
+  EXPECT_EQ(again.ran, 3U);
+  EXPECT_EQ(again.optima.cached, 2U);
+  EXPECT_EQ(again.optima.computed, 0U);
+  expect_same_outputs(dir, resumed);
+  // A finished sweep solves nothing.
+  EXPECT_EQ(run(competitive_sweep(), resumed, 2).optima.needed, 0U);
+
+  // One thread, no cache: solved again, to the same cells.
+  const std::string single = temp_dir("offline_optimum_single");
+  const RunnerReport one = run(competitive_sweep(), single, 1);
+  EXPECT_EQ(one.optima.computed, 2U);
+  expect_same_outputs(dir, single);
+  for (const char* c : {"map_hash", "robot", "lower_m", "upper_m", "exact"})  // time_s aside
+    EXPECT_EQ(column(read_file(single + "/optimum.csv"), c), column(read_file(dir + "/optimum.csv"), c)) << c;
+
+  // Shards solve the keys of their own runs; merged, the unsharded rows.
+  const std::string sharded = temp_dir("offline_optimum_sharded");
+  for (std::uint64_t s = 0; s < 2; ++s) {
+    RunnerOptions o;
+    o.threads = 2;
+    o.out_dir = sharded;
+    o.progress = false;
+    o.shard_index = s;
+    o.shard_count = 2;
+    EXPECT_EQ(run_sweep(SweepPlan::from_json(competitive_sweep(), "test.json"), o).optima.needed, 2U);
+  }
+  ASSERT_TRUE(merge_shards(sharded).written);
+  EXPECT_EQ(without_timing(read_file(sharded + "/runs.csv")), without_timing(csv));
+
+  // A sweep without a competitive map has none of the columns and no optimum.csv.
+  json plain = competitive_sweep();
+  plain.erase("competitive");
+  const std::string none = temp_dir("offline_optimum_none");
+  EXPECT_EQ(run(plain, none, 2).optima.needed, 0U);
+  EXPECT_EQ(read_file(none + "/runs.csv").find("optimum_lower_m"), std::string::npos);
+  EXPECT_FALSE(fs::exists(none + "/optimum.csv"));
+  for (const std::string& d : {dir, resumed, single, sharded, none}) fs::remove_all(d);
 }
 
 TEST(SweepRunner, AFreeMapThatClipsTheReachableDiscOrItsSensorBandHasNoOptimumAndSaysWhy) {

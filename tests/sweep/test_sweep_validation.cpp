@@ -51,6 +51,43 @@ std::string from_file_error(const std::string& path) {
 
 #define EXPECT_HAS(haystack, needle) EXPECT_NE((haystack).find(needle), std::string::npos) << (haystack)
 
+TEST(SweepValidation, CompetitiveIsABooleanAtTheTopOrPerMapItemAndTheItemWins) {
+  json s = minimal();
+  s["competitive"] = "yes";
+  s["maps"] = json::parse(R"(["free:w=20,h=20", {"spec": "rooms:w=30,h=24,door=2,seed=1", "competitive": 1},
+                              {"dataset": "nowhere", "competitive": null}])");
+  const std::string p = problems_of(s);
+  EXPECT_HAS(p, "s.json: /competitive: value \"yes\" not allowed; allowed: true");
+  EXPECT_HAS(p, "s.json: /maps/1/competitive: value 1 not allowed; allowed: true");
+  EXPECT_HAS(p, "s.json: /maps/2/competitive: value null not allowed");
+  // Resolved: the top-level value, unless the item gives its own; not part of run keys.
+  s = minimal();
+  s["competitive"] = true;
+  s["maps"] =
+      json::parse(R"(["free:w=20,h=20", {"spec": "rooms:w=30,h=24,door=2,seed=1", "competitive": false},
+                              {"generator": "rooms", "w": 30, "h": 24, "seeds": [2, 3]}])");
+  const SweepPlan plan = SweepPlan::from_json(s, "s.json");
+  ASSERT_EQ(plan.maps().size(), 4U);
+  EXPECT_TRUE(plan.maps()[0].competitive);
+  EXPECT_FALSE(plan.maps()[1].competitive);
+  EXPECT_TRUE(plan.maps()[2].competitive);
+  EXPECT_TRUE(plan.maps()[3].competitive);
+  EXPECT_TRUE(plan.competitive());
+  json plain = s;
+  plain.erase("competitive");
+  plain["maps"][1].erase("competitive");
+  const SweepPlan without = SweepPlan::from_json(plain, "s.json");
+  EXPECT_FALSE(without.competitive());
+  for (std::uint64_t i = 0; i < plan.run_count(); ++i) EXPECT_EQ(plan.run_key(i), without.run_key(i));
+  // The columns: only with a competitive map, last, after the free-space ones.
+  const std::vector<std::string> with = SweepTable(plan).columns();
+  const std::vector<std::string> none = SweepTable(without).columns();
+  EXPECT_EQ(std::vector<std::string>(with.begin(), with.begin() + static_cast<std::ptrdiff_t>(none.size())),
+            none);
+  EXPECT_EQ(std::vector<std::string>(with.begin() + static_cast<std::ptrdiff_t>(none.size()), with.end()),
+            std::vector<std::string>(kCompetitiveColumns.begin(), kCompetitiveColumns.end()));
+}
+
 TEST(SweepValidation, ReportsEveryProblemAtOnceWithPathsAndAllowedValues) {
   json s = minimal();
   s["colour"] = "red";
