@@ -31,9 +31,10 @@ install:
 	@scripts/bootstrap release fsweep
 	cmake --install build/release --prefix "$(PREFIX)"
 
+# The GoogleTest suites and fuzz replays run once, sanitized (label also-sanitized: tests/CMakeLists.txt).
 test:
-	@scripts/bootstrap release
-	cd build/release && ctest --output-on-failure -j 2 -L unit || { ../../scripts/ctest-failures .; exit 1; }
+	@scripts/bootstrap release fsweep fsweep_bench
+	cd build/release && ctest --output-on-failure -j 2 -L unit -LE also-sanitized || { ../../scripts/ctest-failures .; exit 1; }
 	cd build/release && ctest --output-on-failure -L slurm || { ../../scripts/ctest-failures .; exit 1; }
 	@scripts/bootstrap asan
 	cd build/asan && ctest --output-on-failure -j 2 -L sanitize || { ../../scripts/ctest-failures .; exit 1; }

@@ -24,7 +24,6 @@
 #include "report/runs_schema.hpp"
 #include "sim/trajectory_image.hpp"
 #include "world/map_spec.hpp"
-#include "world/sensor.hpp"
 
 namespace fsweep::cli {
 namespace {
@@ -62,38 +61,23 @@ CoverageInstance build_instance(const RunSpec& spec) {
 /// A number cell: empty for +-infinity and NaN (no value), else every digit.
 std::string finite_cell(double v) { return std::isfinite(v) ? format_number(v) : std::string(); }
 
-/// The route replayed for the picture: what it reveals (the run's sensor, noiseless), its length,
-/// its recharges at the dock (every arrival there with steps still to go, as replay_route()).
+/// The route as a run's result for the picture: its cells, what it reveals and its recharges
+/// (replay_route(), the run's sensor without misses).
 RunResult route_result(const RunSpec& spec, const CoverageInstance& in, const OptimumResult& r) {
-  const WorldMap& map = *spec.map;
+  RouteReplay replay = replay_route(in, spec, r.route);
   RunResult out;
   out.end = EndReason::Complete;
-  out.dock = spec.robot.dock.value_or(map.start);
-  out.final_known = KnownMap(map.width(), map.height(), map.resolution_m);
-  SensorParams noiseless = spec.robot.sensor;
-  noiseless.miss_probability = 0.0;
-  Sensor sensor(noiseless, map.resolution_m);
-  Rng unused(0);
-  int heading = spec.robot.start_heading;
-  double length_m = 0.0;
-  for (std::size_t i = 0; i < r.route.size(); ++i) {
-    const Cell c{r.route[i] % map.width(), r.route[i] / map.width()};
-    if (i > 0) {
-      const Cell p = out.trajectory.back();
-      heading = heading_of(c.x - p.x, c.y - p.y);
-      length_m += step_length(heading) * map.resolution_m;
-      if (c == out.dock && i + 1 < r.route.size()) out.recharge_steps.push_back(static_cast<int>(i));
-    }
-    out.trajectory.push_back(c);
-    (void)sensor.scan(map, out.final_known, c, heading_angle(heading), unused);
-  }
+  out.dock = in.dock;
+  for (const int cell : r.route) out.trajectory.push_back(in.truth.cell(cell));
+  out.recharge_steps = std::move(replay.recharge_steps);
   RunMetrics& m = out.metrics;
-  m.distance_m = length_m;
-  m.distance_to_final_coverage_m = r.upper_m;
+  m.distance_m = replay.length_m;
+  m.distance_to_final_coverage_m = replay.distance_to_final_coverage_m;
   m.recharges = static_cast<int>(out.recharge_steps.size());
   int known_nodes = 0;
-  for (const int cell : in.node_cell) known_nodes += out.final_known.is_free(cell) ? 1 : 0;
+  for (const int cell : in.node_cell) known_nodes += replay.known.is_free(cell) ? 1 : 0;
   m.coverage = in.nodes() > 0 ? static_cast<double>(known_nodes) / in.nodes() : 1.0;
+  out.final_known = std::move(replay.known);
   return out;
 }
 

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <system_error>
 #include <vector>
@@ -11,6 +10,7 @@
 #include "core/json_text.hpp"
 #include "sweep/manifest.hpp"
 #include "sweep/merge.hpp"
+#include "sweep/optimum_table.hpp"
 
 namespace fsweep {
 namespace {
@@ -75,17 +75,13 @@ std::optional<OutputDirContents> output_dir_contents(const std::string& dir) {
     return OutputDirContents{OutputKind::Paired, "the output of fsweep paired (" +
                                                      present(dir, {"paired.csv", "paired.json"}) + ")"};
   }
-  // optimum.csv is also a competitive sweep's cache of bounds (sweep/optimum_table.hpp), whose
-  // header starts with "solver"; `fsweep optimum`'s starts with "map".
   if (has(dir, "optimum.csv") || has(dir, "route.png")) {
-    std::string header;
-    std::ifstream in(fs::path(dir) / "optimum.csv");
-    std::getline(in, header);
-    if (header.rfind("solver,", 0) == 0 && !has(dir, "route.png")) {
-      return OutputDirContents{OutputKind::Sweep, "the offline optimum's bounds of a sweep (optimum.csv)"};
-    }
     return OutputDirContents{OutputKind::Optimum, "the output of fsweep optimum (" +
                                                       present(dir, {"optimum.csv", "route.png"}) + ")"};
+  }
+  if (has(dir, kOptimaFile)) {  // a competitive sweep stopped before its first run ended
+    return OutputDirContents{OutputKind::Sweep,
+                             std::string("the offline optima of a sweep (") + kOptimaFile + ")"};
   }
   if (const std::vector<std::string> shards = shard_folders(dir); !shards.empty()) {
     return OutputDirContents{OutputKind::Sweep, "the shards of a sweep (" + join_names(shards) + ")"};

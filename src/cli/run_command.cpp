@@ -87,7 +87,7 @@ int run_command(const RunCommandOptions& o) {
   if (r.optima.needed > 0) {
     std::cout << "offline optima: " << r.optima.needed << " map and robot pairs, " << r.optima.computed
               << " computed in " << one_decimal(r.optima.seconds) << " s, " << r.optima.cached
-              << " read from " << kOptimumFile << "\n";
+              << " read from " << kOptimaFile << "\n";
   }
   if (!r.extended_from.empty()) {
     std::cout << "extended the results of an earlier version of the sweep file (sweep_hash "
@@ -116,7 +116,7 @@ int run_command(const RunCommandOptions& o) {
             << (!r.interrupted && options.shard_count == 1 ? ", summary.csv, progress_summary.csv, best.csv"
                                                            : "")
             << (r.searches.searches > 0 ? ", " + join_names(r.searches.files) : std::string())
-            << (plan.competitive() ? std::string(", ") + kOptimumFile : std::string()) << ")\n";
+            << (plan.competitive() ? std::string(", ") + kOptimaFile : std::string()) << ")\n";
   if (r.interrupted) {
     std::cout << "rerun the same command to resume"
               << (o.sqlite ? " (results.sqlite is written once it is done)" : "") << "\n";

@@ -21,11 +21,7 @@ constexpr double kImproves = 1e-9;  // metres: a move must shorten the path by m
 std::vector<int> greedy_viewpoints(const CoverageInstance& in) {
   std::vector<std::uint8_t> covered(static_cast<std::size_t>(in.targets()), 0);
   for (int t = 0; t < in.targets(); ++t) {
-    const auto from = in.seen_from.row(t);
-    if (std::none_of(from.begin(), from.end(),
-                     [&](int n) { return in.node_usable[static_cast<std::size_t>(n)] != 0; })) {
-      covered[static_cast<std::size_t>(t)] = 1;  // out of reach: nothing can cover it
-    }
+    if (!in.is_explorable(t)) covered[static_cast<std::size_t>(t)] = 1;  // nothing can cover it
   }
   if (in.start_node >= 0) {
     for (const int t : in.sees.row(in.start_node)) covered[static_cast<std::size_t>(t)] = 1;
@@ -188,11 +184,7 @@ bool covers_all(const CoverageInstance& in, const PointDistances& d, const std::
       mark(c);
   }
   for (int t = 0; t < in.targets(); ++t) {
-    if (seen[static_cast<std::size_t>(t)] != 0) continue;
-    const auto from = in.seen_from.row(t);
-    if (std::any_of(from.begin(), from.end(),
-                    [&](int n) { return in.node_usable[static_cast<std::size_t>(n)] != 0; }))
-      return false;
+    if (seen[static_cast<std::size_t>(t)] == 0 && in.is_explorable(t)) return false;
   }
   return true;
 }
@@ -230,12 +222,8 @@ bool prune(const CoverageInstance& in, const PointDistances& d, std::vector<int>
     if (next < n) add(legs[next], -1);
     add(joined, 1);
     bool keeps = true;
-    for (int t = 0; t < in.targets() && keeps; ++t) {
-      if (count[static_cast<std::size_t>(t)] > 0) continue;
-      const auto from = in.seen_from.row(t);
-      keeps = std::none_of(from.begin(), from.end(),
-                           [&](int node) { return in.node_usable[static_cast<std::size_t>(node)] != 0; });
-    }
+    for (int t = 0; t < in.targets() && keeps; ++t)
+      keeps = count[static_cast<std::size_t>(t)] > 0 || !in.is_explorable(t);
     if (keeps) {
       dropped[k] = 1;
       any = true;
@@ -322,20 +310,12 @@ CoverRoute assemble(const CoverageInstance& in, const PointDistances& d, const s
 
 RouteReplay replay_route(const CoverageInstance& in, const RunSpec& spec, std::span<const int> cells) {
   RouteReplay r;
-  std::vector<std::uint8_t> explorable(static_cast<std::size_t>(in.targets()), 0);
-  for (int t = 0; t < in.targets(); ++t) {
-    const auto from = in.seen_from.row(t);
-    if (std::any_of(from.begin(), from.end(),
-                    [&](int n) { return in.node_usable[static_cast<std::size_t>(n)] != 0; })) {
-      explorable[static_cast<std::size_t>(t)] = 1;
-      ++r.explorable;
-    }
-  }
+  r.explorable = in.explorable_count();
   if (cells.empty() || cells.front() != in.truth.index(in.start)) return r;
   SensorParams noiseless = spec.robot.sensor;
   noiseless.miss_probability = 0.0;
   Sensor sensor(noiseless, in.resolution_m);
-  KnownMap known(in.width, in.height, in.resolution_m);
+  r.known = KnownMap(in.width, in.height, in.resolution_m);
   Rng unused(0);
   const EnergyModel& energy = spec.robot.energy;
   const double capacity = spec.robot.battery_capacity;
@@ -343,9 +323,9 @@ RouteReplay replay_route(const CoverageInstance& in, const RunSpec& spec, std::s
   double used = 0.0;  // energy since the last charge
   const auto sense = [&](Cell at) {
     int fresh = 0;
-    for (const int c : sensor.scan(*spec.map, known, at, heading_angle(heading), unused)) {
+    for (const int c : sensor.scan(*spec.map, r.known, at, heading_angle(heading), unused)) {
       const int t = in.target_of_cell[static_cast<std::size_t>(c)];
-      if (t >= 0 && explorable[static_cast<std::size_t>(t)] != 0) ++fresh;  // out of reach: not counted
+      if (t >= 0 && in.is_explorable(t)) ++fresh;  // out of reach: not counted
     }
     if (fresh > 0) {
       r.revealed += fresh;
@@ -365,6 +345,7 @@ RouteReplay replay_route(const CoverageInstance& in, const RunSpec& spec, std::s
     if (used > capacity) r.battery_ok = false;
     if (b == in.dock && i + 1 < cells.size()) {
       used = 0.0;
+      r.recharge_steps.push_back(static_cast<int>(i));
       if (r.revealed < r.explorable) ++r.trips;
     }
     if (r.revealed < r.explorable) sense(b);

@@ -28,6 +28,7 @@
 
 #include "optimum/coverage_instance.hpp"
 #include "sim/run_spec.hpp"
+#include "world/known_map.hpp"
 
 namespace fsweep {
 inline namespace optimum {
@@ -62,6 +63,11 @@ struct RouteReplay {
   /// between recharges stayed within one charge by the run's energy model (turns included).
   int trips = 1;
   bool battery_ok = true;
+  /// The steps (positions in the route) at which it arrives at the dock and recharges, with
+  /// steps still to go.
+  std::vector<int> recharge_steps;
+  /// What the route revealed (up to the final coverage).
+  KnownMap known;
   [[nodiscard]] bool covers() const { return valid && revealed == explorable && battery_ok; }
 };
 

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/config_error.hpp"
+#include "core/csv_format.hpp"
 #include "core/random.hpp"
 #include "search/grid_search.hpp"
 #include "search/octile_grid.hpp"
@@ -15,26 +16,6 @@ namespace fsweep {
 inline namespace optimum {
 namespace {
 
-/// Dijkstra over the true map from any number of cells (the contract of grid_search.hpp).
-class AllCellsEnvironment {
- public:
-  using Cost = OctileCost;
-  static constexpr bool kZeroHeuristic = true;
-  AllCellsEnvironment(const KnownMap& known, bool allow_corner_cutting)
-      : known_(known), allow_corner_cutting_(allow_corner_cutting) {}
-  [[nodiscard]] int state_count() const { return known_.size(); }
-  [[nodiscard]] static Cost heuristic(int /*state*/) { return {}; }
-  [[nodiscard]] static Visit visit(int /*state*/, double /*g*/) { return Visit::Expand; }
-  template <typename Sink>
-  void for_each_successor(int state, Sink&& sink) const {
-    for_each_octile_neighbour<Cost>(known_, state, allow_corner_cutting_, sink);
-  }
-
- private:
-  const KnownMap& known_;
-  bool allow_corner_cutting_;
-};
-
 void check_sensor(const SensorParams& s) {
   if (s.model != SensorModel::Grid) {
     throw ConfigError(
@@ -44,7 +25,7 @@ void check_sensor(const SensorParams& s) {
   }
   if (s.fov_deg < 360.0) {
     throw ConfigError("robot/sensor/fov_deg",
-                      "value " + std::to_string(s.fov_deg) +
+                      "value " + format_number(s.fov_deg) +
                           ": the offline optimum models a 360-degree sensor only (what a "
                           "narrower one sees depends on the heading); allowed: 360");
   }
@@ -67,7 +48,7 @@ CompressedRows rows_of(int row_count, std::vector<std::pair<int, int>>& pairs) {
 
 }  // namespace
 
-CoverageInstance build_coverage_instance(const RunSpec& spec) {
+CoverageInstance build_coverage_instance(const RunSpec& spec, std::size_t max_visibility_pairs) {
   check_sensor(spec.robot.sensor);
   const RunSetup setup(spec);
   check_sensor_range(setup);
@@ -121,12 +102,12 @@ CoverageInstance build_coverage_instance(const RunSpec& spec) {
         seen.emplace_back(target, node);
       }
     }
-    if (sees.size() > kMaxVisibilityPairs) {
+    if (sees.size() > max_visibility_pairs) {
       throw ConfigError(
           "map", "too large for the offline optimum: the scans from the first " + std::to_string(node + 1) +
                      " of " + std::to_string(in.nodes()) + " reachable cells already see " +
                      std::to_string(sees.size()) + " cells in all, above the limit of " +
-                     std::to_string(kMaxVisibilityPairs) +
+                     std::to_string(max_visibility_pairs) +
                      "; allowed: maps whose cells times the cells in sensor range stay below it (a "
                      "coarser resolution or a shorter sensor range)");
     }
@@ -149,18 +130,20 @@ CoverageInstance build_coverage_instance(const RunSpec& spec) {
           2.0 * from_dock[static_cast<std::size_t>(node)] <= in.range_per_charge_m * (1.0 + 1e-12) ? 1 : 0;
     }
   }
+  in.explorable.assign(static_cast<std::size_t>(in.targets()), 0);
   for (int t = 0; t < in.targets(); ++t) {
     const auto from = in.seen_from.row(t);
     const bool reachable = std::any_of(from.begin(), from.end(), [&](int node) {
       return in.node_usable[static_cast<std::size_t>(node)] != 0;
     });
+    in.explorable[static_cast<std::size_t>(t)] = reachable ? 1 : 0;
     if (!reachable) ++in.out_of_reach;
   }
   return in;
 }
 
 std::vector<double> node_distances_m(const CoverageInstance& instance, std::span<const int> sources) {
-  AllCellsEnvironment env(instance.truth, instance.allow_corner_cutting);
+  const OctileFieldEnvironment env(instance.truth, instance.allow_corner_cutting);
   OctileDistanceSearch search;
   std::vector<SearchSeedT<OctileCost>> seeds;
   seeds.reserve(sources.size());

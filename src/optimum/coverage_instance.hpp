@@ -85,7 +85,9 @@ struct CoverageInstance {
   /// Per node: 1 when a round trip dock -> node -> dock fits in one charge (all 1 without a
   /// battery).
   std::vector<std::uint8_t> node_usable;
-  /// Targets seen from no usable node (their count): nothing can reveal them.
+  /// Per target: 1 when some usable node sees it (the explorable targets, those a route must
+  /// reveal); the others, out_of_reach of them, nothing can reveal.
+  std::vector<std::uint8_t> explorable;
   int out_of_reach = 0;
 
   [[nodiscard]] int nodes() const { return static_cast<int>(node_cell.size()); }
@@ -96,6 +98,10 @@ struct CoverageInstance {
   [[nodiscard]] int node_at(Cell c) const {
     return truth.in_bounds(c) ? node_of_cell[static_cast<std::size_t>(truth.index(c))] : -1;
   }
+  [[nodiscard]] bool is_explorable(int target) const {
+    return explorable[static_cast<std::size_t>(target)] != 0;
+  }
+  [[nodiscard]] int explorable_count() const { return targets() - out_of_reach; }
   [[nodiscard]] bool limited_battery() const {
     return range_per_charge_m < std::numeric_limits<double>::infinity();
   }
@@ -105,10 +111,12 @@ struct CoverageInstance {
 inline constexpr std::size_t kMaxVisibilityPairs = 40'000'000;
 
 /// Builds the instance of `spec` (map, start, robot). Throws ConfigError: the map's checks of a
-/// run (RunSetup), an instance above kMaxVisibilityPairs ("map"), a sensor the offline problem does not model
+/// run (RunSetup), an instance above `max_visibility_pairs` ("map"), a sensor the offline problem does not
+/// model
 /// ("robot/sensor/fov_deg" below 360, "robot/sensor/model" beams), a sensor range below one diagonal cell.
 /// miss_probability is ignored (the offline sensor is noiseless). Cost: one scan per reachable free cell.
-[[nodiscard]] CoverageInstance build_coverage_instance(const RunSpec& spec);
+[[nodiscard]] CoverageInstance build_coverage_instance(
+    const RunSpec& spec, std::size_t max_visibility_pairs = kMaxVisibilityPairs);
 
 /// Shortest path lengths (metres) over the true map from the nearest of `sources` (grid indices of
 /// free cells) to every node; +infinity where unreachable. The planners' moves and costs (exact

@@ -52,14 +52,11 @@ ExactResult exact_cover(const CoverageInstance& in, const CoverageLowerBound& bo
   // Bits: the explorable targets, by id.
   std::vector<int> bit_of(static_cast<std::size_t>(in.targets()), -1);
   std::vector<int> target_of_bit;
+  if (in.explorable_count() > kExactMaxTargets) return result;
   for (int t = 0; t < in.targets(); ++t) {
-    const auto from = in.seen_from.row(t);
-    if (std::any_of(from.begin(), from.end(),
-                    [&](int n) { return in.node_usable[static_cast<std::size_t>(n)] != 0; })) {
-      if (static_cast<int>(target_of_bit.size()) == kExactMaxTargets) return result;
-      bit_of[static_cast<std::size_t>(t)] = static_cast<int>(target_of_bit.size());
-      target_of_bit.push_back(t);
-    }
+    if (!in.is_explorable(t)) continue;
+    bit_of[static_cast<std::size_t>(t)] = static_cast<int>(target_of_bit.size());
+    target_of_bit.push_back(t);
   }
   const int bits = static_cast<int>(target_of_bit.size());
   const std::uint64_t full = bits == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << bits) - 1;

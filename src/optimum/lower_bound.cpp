@@ -10,10 +10,15 @@ namespace {
 
 constexpr std::size_t kFarthestFirstCandidates = 4000;
 
-bool usable_target(const CoverageInstance& in, int t) {
-  const auto from = in.seen_from.row(t);
-  return std::any_of(from.begin(), from.end(),
-                     [&](int n) { return in.node_usable[static_cast<std::size_t>(n)] != 0; });
+/// The explorable targets, fewest viewpoints first (then by id): the hardest to see first.
+std::vector<int> explorable_by_fewest_viewpoints(const CoverageInstance& in) {
+  std::vector<int> order;
+  for (int t = 0; t < in.targets(); ++t) {
+    if (in.is_explorable(t)) order.push_back(t);
+  }
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return in.seen_from.row(a).size() < in.seen_from.row(b).size(); });
+  return order;
 }
 
 std::vector<int> group_cells(const CoverageInstance& in, int target) {
@@ -25,12 +30,7 @@ std::vector<int> group_cells(const CoverageInstance& in, int target) {
 /// Hardest to see first: explorable targets by fewest viewpoints (then id), each taken when none
 /// of its viewpoints is a viewpoint of a witness taken before.
 std::vector<int> fewest_viewpoints_first(const CoverageInstance& in, int max_witnesses) {
-  std::vector<int> order;
-  for (int t = 0; t < in.targets(); ++t) {
-    if (usable_target(in, t)) order.push_back(t);
-  }
-  std::stable_sort(order.begin(), order.end(),
-                   [&](int a, int b) { return in.seen_from.row(a).size() < in.seen_from.row(b).size(); });
+  const std::vector<int> order = explorable_by_fewest_viewpoints(in);
   std::vector<std::uint8_t> taken(static_cast<std::size_t>(in.nodes()), 0);
   std::vector<int> out;
   for (const int t : order) {
@@ -52,12 +52,7 @@ std::vector<int> fewest_viewpoints_first(const CoverageInstance& in, int max_wit
 std::vector<int> farthest_first(const CoverageInstance& in, int max_witnesses) {
   // Candidates: the kFarthestFirstCandidates targets with the fewest viewpoints (each step reads
   // every candidate's viewpoints: all targets' would cost the whole visibility table a step).
-  std::vector<int> candidates;
-  for (int t = 0; t < in.targets(); ++t) {
-    if (usable_target(in, t)) candidates.push_back(t);
-  }
-  std::stable_sort(candidates.begin(), candidates.end(),
-                   [&](int a, int b) { return in.seen_from.row(a).size() < in.seen_from.row(b).size(); });
+  std::vector<int> candidates = explorable_by_fewest_viewpoints(in);
   if (candidates.size() > kFarthestFirstCandidates) candidates.resize(kFarthestFirstCandidates);
   std::sort(candidates.begin(), candidates.end());
   const int start_cell = in.node_cell[static_cast<std::size_t>(in.start_node)];

@@ -4,42 +4,17 @@
 
 namespace fsweep {
 inline namespace search {
-namespace {
-
-/// Dijkstra environment of the field: cells are states, the octile moves of octile_grid.hpp, no
-/// heuristic, every visited cell expanded.
-class OctileMoves {
- public:
-  OctileMoves(const KnownMap& known, bool allow_corner_cutting)
-      : known_(known), allow_corner_cutting_(allow_corner_cutting) {}
-
-  using Cost = OctileCost;
-  [[nodiscard]] int state_count() const { return known_.size(); }
-  static constexpr bool kZeroHeuristic = true;
-  [[nodiscard]] static Cost heuristic(int /*state*/) { return {}; }
-  static Visit visit(int /*state*/, double /*g*/) { return Visit::Expand; }
-  template <typename Sink>
-  void for_each_successor(int state, Sink&& sink) const {
-    for_each_octile_neighbour<Cost>(known_, state, allow_corner_cutting_, sink);
-  }
-
- private:
-  const KnownMap& known_;
-  bool allow_corner_cutting_;
-};
-
-}  // namespace
 
 void IncrementalDistanceField::reset(const KnownMap& known, Cell source, bool allow_corner_cutting) {
   resolution_m_ = known.resolution_m();
   allow_corner_cutting_ = allow_corner_cutting;
   // A source that is not known free runs from no state: every distance reads as infinite.
-  const OctileMoves env(known, allow_corner_cutting_);
+  const OctileFieldEnvironment env(known, allow_corner_cutting_);
   expansions_ = search_.run(env, known.is_free(source) ? known.index(source) : -1).expansions;
 }
 
 void IncrementalDistanceField::update(const KnownMap& known, std::span<const int> revealed) {
-  const OctileMoves env(known, allow_corner_cutting_);
+  const OctileFieldEnvironment env(known, allow_corner_cutting_);
   search_.reopen();
   const int w = known.width();
   const int h = known.height();

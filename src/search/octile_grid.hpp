@@ -105,6 +105,30 @@ inline void for_each_octile_neighbour(const KnownMap& known, int index, bool all
   if ((moves & 128U) != 0) sink(index - w + 1, kDiagonal);
 }
 
+/// The Dijkstra environment of a field over known free space (the contract of grid_search.hpp):
+/// cells are states, the moves above at exact costs (OctileCost), no heuristic, every settled
+/// cell expanded. Run from one cell or from several (a multi-source field).
+class OctileFieldEnvironment {
+ public:
+  using Cost = OctileCost;
+  static constexpr bool kZeroHeuristic = true;
+
+  OctileFieldEnvironment(const KnownMap& known, bool allow_corner_cutting)
+      : known_(known), allow_corner_cutting_(allow_corner_cutting) {}
+
+  [[nodiscard]] int state_count() const { return known_.size(); }
+  [[nodiscard]] static Cost heuristic(int /*state*/) { return {}; }
+  static Visit visit(int /*state*/, double /*g*/) { return Visit::Expand; }
+  template <typename Sink>
+  void for_each_successor(int state, Sink&& sink) const {
+    for_each_octile_neighbour<Cost>(known_, state, allow_corner_cutting_, sink);
+  }
+
+ private:
+  const KnownMap& known_;
+  bool allow_corner_cutting_;
+};
+
 /// The search environment of one query to a goal cell over known free space (the contract of
 /// grid_search.hpp): cells are states, the moves above at exact costs (OctileCost), the goal
 /// ends the search; the heuristic is the octile length to the goal for A* (exact and

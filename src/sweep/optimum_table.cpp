@@ -29,13 +29,13 @@ namespace fsweep {
 inline namespace sweep {
 namespace {
 
-/// optimum.csv's columns; the first three are the key.
+/// optima.csv's columns; the first three are the key.
 constexpr const char* kOptimumColumns[] = {
     "solver",  "map_hash", "robot",        "lower_m",      "upper_m",          "exact", "error",
     "targets", "nodes",    "lower_method", "upper_method", "exact_expansions", "time_s"};
 constexpr std::size_t kOptimumColumnCount = std::size(kOptimumColumns);
 
-/// The entries of optimum.csv of `solver`, by key; a file that does not read is named on stderr
+/// The entries of optima.csv of `solver`, by key; a file that does not read is named on stderr
 /// and counts as empty (it is rewritten).
 std::map<std::string, OptimumBounds> read_cache(const std::string& path, const std::string& solver) {
   std::map<std::string, OptimumBounds> out;
@@ -44,7 +44,7 @@ std::map<std::string, OptimumBounds> read_cache(const std::string& path, const s
   try {
     CsvReader in(path);
     if (in.header() != std::vector<std::string>(std::begin(kOptimumColumns), std::end(kOptimumColumns)))
-      throw ConfigError(path + ":1", "not the columns of this build's optimum.csv");
+      throw ConfigError(path + ":1", "not the columns of this build's optima.csv");
     while (in.next()) {
       const std::vector<std::string>& f = in.fields();
       if (f.size() != kOptimumColumnCount) throw ConfigError(in.where(), "wrong number of fields");
@@ -112,6 +112,8 @@ std::string optimum_solver_version() {
 std::string optimum_key(const RunSpec& spec) {
   nlohmann::json robot = spec.robot;
   if (!spec.robot.dock) robot["dock"] = nlohmann::json{spec.map->start.x, spec.map->start.y};
+  // The offline sensor is noiseless: runs that differ only in their misses share one optimum.
+  if (robot.contains("sensor")) robot["sensor"].erase("miss_probability");
   return hex64(content_hash(*spec.map)) + '\n' + robot.dump();
 }
 
@@ -184,7 +186,7 @@ OptimumTable OptimumTable::prepare(const SweepPlan& plan, const std::string& dir
   report.needed = specs.size();
   // 2. The cache, then the missing keys.
   const std::string solver = optimum_solver_version();
-  const std::string path = dir + "/" + kOptimumFile;
+  const std::string path = dir + "/" + kOptimaFile;
   std::map<std::string, OptimumBounds> all = read_cache(path, solver);
   std::vector<const RunSpec*> missing;
   for (const RunSpec& spec : specs) {

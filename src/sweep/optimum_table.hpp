@@ -2,18 +2,19 @@
 /// @file optimum_table.hpp
 /// The offline optimum of a sweep's competitive maps (sweep_plan.hpp, `competitive`): certified
 /// bounds from optimum/optimum.hpp per (map instance, robot), computed once before the runs and
-/// kept in the output directory's `optimum.csv`, and the runs.csv cells they give
+/// kept in the output directory's `optima.csv`, and the runs.csv cells they give
 /// (runs_schema.hpp's kCompetitiveColumns; docs/results.md).
 ///
 /// Key: the map instance's content_hash() (size, resolution, start and cells: a random start is
 /// part of it), the robot's resolved JSON (to_json(RobotParams), the dock resolved to the map's
-/// start) and optimum_solver_version() (the solver's options; a change recomputes). The solver
-/// runs with the library's deterministic budgets and never a deadline, one key per thread, so a
-/// value is a pure function of its key: a resumed sweep, the shards of a sharded sweep and an
-/// unsharded run write the same cells for any thread count, whether a value was computed or read
-/// from the cache (numbers are written as the shortest text that reads back to the same double).
+/// start, without the sensor's miss_probability, which the noiseless offline robot ignores) and
+/// optimum_solver_version() (the solver's options; a change recomputes). The solver runs with the library's
+/// deterministic budgets and never a deadline, one key per thread, so a value is a pure function of its key:
+/// a resumed sweep, the shards of a sharded sweep and an unsharded run write the same cells for any thread
+/// count, whether a value was computed or read from the cache (numbers are written as the shortest text that
+/// reads back to the same double).
 ///
-/// optimum.csv: `solver,map_hash,robot,lower_m,upper_m,exact,error` plus informative columns
+/// optima.csv: `solver,map_hash,robot,lower_m,upper_m,exact,error` plus informative columns
 /// (targets, nodes, lower_method, upper_method, exact_expansions, time_s), one row per key, sorted
 /// by key; rewritten whole (temp file and rename) after each computed key, so a kill keeps what
 /// was computed. A file that does not read (another layout, a torn record) is set aside with a
@@ -32,9 +33,9 @@ namespace fsweep {
 inline namespace sweep {
 
 /// The cache file in an output directory (a shard's directory for a shard).
-inline constexpr char kOptimumFile[] = "optimum.csv";
+inline constexpr char kOptimaFile[] = "optima.csv";
 
-/// The solver and its options, as optimum.csv keys record them.
+/// The solver and its options, as optima.csv keys record them.
 [[nodiscard]] std::string optimum_solver_version();
 
 /// The bounds of one key.
@@ -47,7 +48,7 @@ struct OptimumBounds {
   /// The solver refused the instance (its ConfigError's message: a limited field of view, the
   /// beam model, ...); empty otherwise.
   std::string error;
-  /// Informative (optimum.csv only).
+  /// Informative (optima.csv only).
   int targets = 0;
   int nodes = 0;
   std::string lower_method;
@@ -66,7 +67,7 @@ struct OptimumBounds {
 /// What prepare_optima() did.
 struct OptimumReport {
   std::size_t needed = 0;    ///< keys of the shard's runs on competitive maps
-  std::size_t cached = 0;    ///< of those, read from optimum.csv
+  std::size_t cached = 0;    ///< of those, read from optima.csv
   std::size_t computed = 0;  ///< of those, computed now
   double seconds = 0.0;      ///< wall time of the computations
 };
@@ -78,7 +79,7 @@ class OptimumTable {
   [[nodiscard]] const OptimumBounds* find(const RunSpec& spec) const;
   [[nodiscard]] std::size_t size() const { return entries_.size(); }
 
-  /// Reads `<dir>/optimum.csv` (entries of this solver version), computes the keys the runs of
+  /// Reads `<dir>/optima.csv` (entries of this solver version), computes the keys the runs of
   /// shard `shard_index` of `shard_count` on competitive maps need that it lacks (`threads` at
   /// a time, each solve single-threaded) and rewrites the file. Nothing is read or written when
   /// no map of `plan` is competitive.

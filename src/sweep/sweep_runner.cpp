@@ -43,7 +43,7 @@ constexpr const char* kOutputFiles[] = {
     "runs.csv",           "progress.csv",         "manifest.json",    "summary.csv",
     "best.csv",           "progress_summary.csv", "searches.json",    "behaviours.csv",
     "search_summary.csv", "search_best.csv",      "search_ranks.csv", "search_heatmaps.csv",
-    "vectors.csv",        "search_journal.jsonl", "results.sqlite",   kOptimumFile};
+    "vectors.csv",        "search_journal.jsonl", "results.sqlite",   kOptimaFile};
 
 /// Set by SIGINT/SIGTERM while run_sweep runs (a signal handler can only reach a global).
 std::atomic<bool> stop_requested{false};  // NOLINT(cppcoreguidelines-avoid-non-const-global-variables)
@@ -200,7 +200,7 @@ RunnerReport run_sweep(const SweepPlan& plan, const RunnerOptions& options) {
   report.total = info.runs.total;
 
   // The offline optima of the runs on competitive maps, once per key before the runs (so the
-  // workers only read them), from optimum.csv or computed; none when every run is done.
+  // workers only read them), from optima.csv or computed; none when every run is done.
   if (plan.competitive() && resumed.done.size() < info.runs.total) {
     table.use_optima(std::make_shared<const OptimumTable>(
         OptimumTable::prepare(plan, dir, options.shard_index, options.shard_count,

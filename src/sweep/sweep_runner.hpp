@@ -34,7 +34,7 @@
 ///   In a sweep with a competitive map (sweep_plan.hpp, `competitive`), runs.csv ends with
 ///   runs_schema.hpp's kCompetitiveColumns: the offline optimum's bounds of the run's map and
 ///   robot and distance_to_final_coverage_m over them (optimum_table.hpp, docs/results.md).
-/// - `optimum.csv` (competitive maps only): the cache of the offline optima (optimum_table.hpp),
+/// - `optima.csv` (competitive maps only): the cache of the offline optima (optimum_table.hpp),
 ///   computed before the runs for the keys the (shard's) runs need and missing from it.
 /// - `summary.csv`, `progress_summary.csv`, `best.csv`: written by aggregate.hpp after a
 ///   complete, unsharded run.

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 
@@ -116,6 +117,25 @@ TEST(CliCompare, StrictSpeedMakesAnotherMachinesSlowdownFail) {
   EXPECT_EQ(r.code, 1) << r.output;
   r = run_fsweep("compare " + dir + "/new " + dir + "/base --strict-speed --speed-tolerance 2.5");
   EXPECT_EQ(r.code, 0) << r.output;
+  fs::remove_all(dir);
+}
+
+TEST(CliCompare, ASweepOfASecondIsNotJudgedOnThroughputUnlessAsked) {
+  const std::string dir = fsweep::testing::fresh_temp_dir("compare", "short");
+  make_dirs(dir);
+  // The same sweep, three times slower on the same machine: noise for a sweep of a few runs.
+  const std::string manifest = read_all(dir + "/new/manifest.json");
+  auto j = nlohmann::json::parse(manifest);
+  j["wall_s"] = j["wall_s"].get<double>() * 3.0;
+  std::ofstream(dir + "/new/manifest.json", std::ios::trunc) << j.dump(2);
+  auto r = run_fsweep("compare " + dir + "/new " + dir + "/base");
+  EXPECT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find("that are judged on speed"), std::string::npos) << r.output;
+  r = run_fsweep("compare " + dir + "/new " + dir + "/base --min-sweep-seconds 0");
+  EXPECT_EQ(r.code, 1) << r.output;
+  r = run_fsweep("compare " + dir + "/new " + dir + "/base --min-sweep-seconds -1");
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find("--min-sweep-seconds"), std::string::npos) << r.output;
   fs::remove_all(dir);
 }
 

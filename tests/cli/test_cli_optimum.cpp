@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <limits>
 #include <map>
 #include <string>
@@ -120,6 +121,13 @@ TEST(CliOptimum, BadInputsAreExit2NamingTheOptionBeforeAnyFile) {
   EXPECT_EQ(r.code, 2) << r.output;
   EXPECT_NE(r.output.find("holds the output of fsweep sim"), std::string::npos) << r.output;
   EXPECT_FALSE(std::filesystem::exists(sim_dir + "/optimum.csv"));
+  // A competitive sweep's cache of optima alone (a sweep stopped before its first run) is a sweep's.
+  const std::string sweep_dir = fresh_temp_dir("optimum", "sweep");
+  std::filesystem::create_directories(sweep_dir);
+  std::ofstream(sweep_dir + "/optima.csv") << "solver,map_hash,robot\n";
+  const CliOutcome s = run_fsweep("optimum --map free:w=8,h=6 --out " + sweep_dir);
+  EXPECT_EQ(s.code, 2) << s.output;
+  EXPECT_NE(s.output.find("the offline optima of a sweep (optima.csv)"), std::string::npos) << s.output;
 }
 
 }  // namespace test_cli_optimum

@@ -11,6 +11,7 @@
 #include <queue>
 #include <set>
 
+#include "core/config_error.hpp"
 #include "optimum/optimum.hpp"
 #include "search/octile_grid.hpp"
 #include "sim/simulation.hpp"
@@ -211,6 +212,50 @@ TEST(Optimum, TheLowerBoundFromAStateIsNeverAboveTheRestOfACompleteRun) {
           << strategy << " step " << i;
     }
   }
+}
+
+TEST(Optimum, CellsOutOfTheBatterysReachAreCountedAndTheBoundsAreForTheRest) {
+  RunMap m = load_run_map_spec("rooms:w=40,h=30,door=2,seed=4");
+  RunSpec spec = spec_of(std::move(m.map), 4.0);
+  spec.robot.battery_capacity = 40.0;  // 20 m out and back: the far rooms are out of reach
+  const CoverageInstance in = build_coverage_instance(spec);
+  ASSERT_GT(in.out_of_reach, 0);
+  EXPECT_EQ(in.explorable_count(), in.targets() - in.out_of_reach);
+  for (int t = 0; t < in.targets(); ++t) {  // out of reach: seen from no node within half a charge
+    if (in.is_explorable(t)) continue;
+    for (const int n : in.seen_from.row(t)) EXPECT_EQ(in.node_usable[static_cast<std::size_t>(n)], 0);
+  }
+  const OptimumResult r = solve_optimum(in, spec, OptimumOptions{});
+  EXPECT_EQ(r.out_of_reach, in.out_of_reach);
+  EXPECT_LE(r.lower_m, r.upper_m);
+  ASSERT_LT(r.upper_m, std::numeric_limits<double>::infinity());
+  const RouteReplay replay = replay_route(in, spec, r.route);
+  EXPECT_TRUE(replay.covers());
+  EXPECT_EQ(replay.explorable, in.explorable_count());
+}
+
+TEST(Optimum, RefusesSensorsItDoesNotModelAndInstancesAboveTheSizeLimit) {
+  RunMap m = load_run_map_spec("rooms:w=30,h=24,door=2,seed=3");
+  RunSpec spec = spec_of(std::move(m.map), 4.0);
+  const auto path_of = [&](const RunSpec& s, std::size_t limit) {
+    try {
+      (void)build_coverage_instance(s, limit);
+    } catch (const ConfigError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  RunSpec narrow = spec;
+  narrow.robot.sensor.fov_deg = 90.0;
+  EXPECT_NE(path_of(narrow, kMaxVisibilityPairs).find("robot/sensor/fov_deg: value 90:"), std::string::npos)
+      << path_of(narrow, kMaxVisibilityPairs);
+  RunSpec beams = spec;
+  beams.robot.sensor.model = SensorModel::Beams;
+  EXPECT_NE(path_of(beams, kMaxVisibilityPairs).find("robot/sensor/model"), std::string::npos);
+  const std::string big = path_of(spec, 1000);
+  EXPECT_NE(big.find("map: too large for the offline optimum"), std::string::npos) << big;
+  EXPECT_NE(big.find("above the limit of 1000"), std::string::npos) << big;
+  EXPECT_EQ(path_of(spec, kMaxVisibilityPairs), "no error");
 }
 
 /// The long version (ctest label optimum-long, make test-long, the nightly job): many maps, all

@@ -543,6 +543,15 @@ TEST_F(CompareTest, DifferentCpuModelInManifestIsAnotherMachine) {
   EXPECT_EQ(compare(strict).regressions, 1U);
 }
 
+/// The sweep throughput check of a report (a test failure when there is none).
+CompareCheck sweep_speed_check(const CompareReport& r) {
+  for (const auto& k : r.checks) {
+    if (k.kind == "speed" && k.name == "sweep") return k;
+  }
+  ADD_FAILURE() << "no sweep throughput check";
+  return {};
+}
+
 TEST_F(CompareTest, ShortSweepsAreNotJudgedOnThroughput) {
   json m = json::parse(read_file(new_ + "/manifest.json"));
   m["wall_s"] = m["wall_s"].get<double>() * 3.0;  // 3x slower sweep on the same machine
@@ -553,15 +562,11 @@ TEST_F(CompareTest, ShortSweepsAreNotJudgedOnThroughput) {
   ASSERT_LT(base_wall, defaults.min_judged_sweep_wall_s);
   const CompareReport r = compare(defaults);
   EXPECT_EQ(r.regressions, 0U) << format_compare_table(r);
-  bool found = false;
-  for (const auto& k : r.checks) {
-    if (k.kind != "speed" || k.name != "sweep") continue;
-    found = true;
-    EXPECT_EQ(k.status, CheckStatus::NotJudged);
-    EXPECT_FALSE(k.failure);
-    EXPECT_NEAR(*k.ratio, 3.0, 1e-9);  // still shown
-  }
-  EXPECT_TRUE(found);
+  const CompareCheck sweep = sweep_speed_check(r);
+  EXPECT_EQ(sweep.status, CheckStatus::NotJudged);
+  EXPECT_FALSE(sweep.failure);
+  ASSERT_TRUE(sweep.ratio.has_value());
+  EXPECT_NEAR(*sweep.ratio, 3.0, 1e-9);  // still shown
   ASSERT_FALSE(r.notes.empty());
   EXPECT_NE(r.notes.back().find("below the 10 s that are judged on speed"), std::string::npos)
       << r.notes.back();
@@ -578,14 +583,9 @@ TEST_F(CompareTest, MergedShardsHaveNoSweepThroughput) {
   write_file(new_ + "/manifest.json", m.dump(2));
   const CompareReport r = compare();
   EXPECT_EQ(r.regressions, 0U) << format_compare_table(r);
-  bool found = false;
-  for (const auto& k : r.checks) {
-    if (k.kind != "speed" || k.name != "sweep") continue;
-    found = true;
-    EXPECT_EQ(k.status, CheckStatus::NotJudged);
-    EXPECT_TRUE(k.current.empty());
-  }
-  EXPECT_TRUE(found);
+  const CompareCheck sweep = sweep_speed_check(r);
+  EXPECT_EQ(sweep.status, CheckStatus::NotJudged);
+  EXPECT_TRUE(sweep.current.empty());
 }
 
 TEST_F(CompareTest, BadInputIsAConfigErrorNamingTheFile) {

@@ -76,6 +76,17 @@ RunnerReport run(const json& sweep, const std::string& dir, int threads, bool fr
   return run_sweep(SweepPlan::from_json(sweep, "test.json"), o);
 }
 
+/// Shard `index` of `count` of `sweep` into `dir` on 2 threads.
+RunnerReport run_shard(const json& sweep, const std::string& dir, std::uint64_t index, std::uint64_t count) {
+  RunnerOptions o;
+  o.threads = 2;
+  o.out_dir = dir;
+  o.progress = false;
+  o.shard_index = index;
+  o.shard_count = count;
+  return run_sweep(SweepPlan::from_json(sweep, "test.json"), o);
+}
+
 /// CSV records (quoted newlines stay inside their record), without the newlines.
 std::vector<std::string> records(const std::string& text) {
   std::vector<std::string> out;
@@ -666,7 +677,7 @@ TEST(SweepRunner, OfflineOptimumColumnsAreCertifiedCachedAndTheSameResumedSharde
                 ratio_max[i].empty());
   }
   // The cache: one row per key; the manifest records the resolved setting.
-  EXPECT_EQ(data_rows(dir + "/optimum.csv"), 2U);
+  EXPECT_EQ(data_rows(dir + "/optima.csv"), 2U);
   const json manifest = json::parse(read_file(dir + "/manifest.json"));
   EXPECT_EQ(manifest["maps"][0]["competitive"], true);
   EXPECT_EQ(manifest["maps"][2]["competitive"], false);
@@ -688,7 +699,7 @@ TEST(SweepRunner, OfflineOptimumColumnsAreCertifiedCachedAndTheSameResumedSharde
   write_file(resumed + "/runs.csv", joined_records({recs.begin(), recs.begin() + 4}));
   fs::copy_file(dir + "/progress.csv", resumed + "/progress.csv");
   fs::copy_file(dir + "/manifest.json", resumed + "/manifest.json");
-  fs::copy_file(dir + "/optimum.csv", resumed + "/optimum.csv");
+  fs::copy_file(dir + "/optima.csv", resumed + "/optima.csv");
   const RunnerReport again = run(competitive_sweep(), resumed, 2);
   EXPECT_EQ(again.ran, 3U);
   EXPECT_EQ(again.optima.cached, 2U);
@@ -703,29 +714,22 @@ TEST(SweepRunner, OfflineOptimumColumnsAreCertifiedCachedAndTheSameResumedSharde
   EXPECT_EQ(one.optima.computed, 2U);
   expect_same_outputs(dir, single);
   for (const char* c : {"map_hash", "robot", "lower_m", "upper_m", "exact"})  // time_s aside
-    EXPECT_EQ(column(read_file(single + "/optimum.csv"), c), column(read_file(dir + "/optimum.csv"), c)) << c;
+    EXPECT_EQ(column(read_file(single + "/optima.csv"), c), column(read_file(dir + "/optima.csv"), c)) << c;
 
   // Shards solve the keys of their own runs; merged, the unsharded rows.
   const std::string sharded = temp_dir("offline_optimum_sharded");
-  for (std::uint64_t s = 0; s < 2; ++s) {
-    RunnerOptions o;
-    o.threads = 2;
-    o.out_dir = sharded;
-    o.progress = false;
-    o.shard_index = s;
-    o.shard_count = 2;
-    EXPECT_EQ(run_sweep(SweepPlan::from_json(competitive_sweep(), "test.json"), o).optima.needed, 2U);
-  }
+  for (std::uint64_t s = 0; s < 2; ++s)
+    EXPECT_EQ(run_shard(competitive_sweep(), sharded, s, 2).optima.needed, 2U);
   ASSERT_TRUE(merge_shards(sharded).written);
   EXPECT_EQ(without_timing(read_file(sharded + "/runs.csv")), without_timing(csv));
 
-  // A sweep without a competitive map has none of the columns and no optimum.csv.
+  // A sweep without a competitive map has none of the columns and no optima.csv.
   json plain = competitive_sweep();
   plain.erase("competitive");
   const std::string none = temp_dir("offline_optimum_none");
   EXPECT_EQ(run(plain, none, 2).optima.needed, 0U);
   EXPECT_EQ(read_file(none + "/runs.csv").find("optimum_lower_m"), std::string::npos);
-  EXPECT_FALSE(fs::exists(none + "/optimum.csv"));
+  EXPECT_FALSE(fs::exists(none + "/optima.csv"));
   for (const std::string& d : {dir, resumed, single, sharded, none}) fs::remove_all(d);
 }
 
@@ -853,14 +857,8 @@ TEST(SweepRunner, ShardsPartitionTheRuns) {
     merged[0] = ref_rows[0];
     std::vector<int> seen(48, 0);
     for (std::uint64_t s = 0; s < n; ++s) {
-      RunnerOptions o;
-      o.threads = 2;
-      o.out_dir = dir;
-      o.progress = false;
-      o.shard_index = s;
-      o.shard_count = n;
       const std::uint64_t size = s < 48 ? (48 - s - 1) / n + 1 : 0;
-      const RunnerReport r = run_sweep(SweepPlan::from_json(small_sweep(), ""), o);
+      const RunnerReport r = run_shard(small_sweep(), dir, s, n);
       EXPECT_EQ(r.total, size);
       EXPECT_EQ(r.ran, size);
       EXPECT_EQ(r.out_dir, n == 1 ? dir : dir + "/shard-" + std::to_string(s) + "-of-" + std::to_string(n));
@@ -878,7 +876,7 @@ TEST(SweepRunner, ShardsPartitionTheRuns) {
       }
       if (s == n / 2) {  // resume: nothing left to do, files unchanged
         const std::string before = read_file(r.out_dir + "/runs.csv");
-        const RunnerReport again = run_sweep(SweepPlan::from_json(small_sweep(), ""), o);
+        const RunnerReport again = run_shard(small_sweep(), dir, s, n);
         EXPECT_EQ(again.ran, 0U);
         EXPECT_EQ(again.skipped, size);
         EXPECT_EQ(read_file(r.out_dir + "/runs.csv"), before);
@@ -1058,15 +1056,7 @@ TEST(SweepRunner, AShardIsExtendedOnTheChangedSweepsShard) {
   const std::string ref = temp_dir("extend_shards_ref");
   json more_maps = default_shaped_sweep(3);
   more_maps["maps"][1]["seeds"]["range"] = {1, 3};
-  const auto shard = [&](const json& sweep, std::uint64_t i) {
-    RunnerOptions o;
-    o.threads = 2;
-    o.out_dir = dir;
-    o.progress = false;
-    o.shard_index = i;
-    o.shard_count = 2;
-    return run_sweep(SweepPlan::from_json(sweep, "shards.json"), o);
-  };
+  const auto shard = [&](const json& sweep, std::uint64_t i) { return run_shard(sweep, dir, i, 2); };
   for (std::uint64_t i = 0; i < 2; ++i) ASSERT_EQ(shard(default_shaped_sweep(3), i).ran, 18U);
   ASSERT_TRUE(merge_shards(dir).written);
   for (std::uint64_t i = 0; i < 2; ++i) {

@@ -37,6 +37,23 @@ TEST(WorldMap, ContentHashCoversCellsSizeResolutionAndStartButNotTheSource) {
     EXPECT_NE(content_hash(*m), content_hash(base));
 }
 
+TEST(KnownMap, ForgetMakesACellUnknownAgainAndKeepsTheCounts) {
+  KnownMap known(3, 2, 1.0);
+  EXPECT_TRUE(known.reveal(0, false));
+  EXPECT_TRUE(known.reveal(4, true));
+  EXPECT_EQ(known.free_count(), 1);
+  EXPECT_EQ(known.occupied_count(), 1);
+  EXPECT_TRUE(known.forget(4));
+  EXPECT_TRUE(known.is_unknown(4));
+  EXPECT_EQ(known.occupied_count(), 0);
+  EXPECT_FALSE(known.forget(4));  // already unknown
+  EXPECT_TRUE(known.forget(0));
+  EXPECT_EQ(known.known_count(), 0);
+  EXPECT_EQ(known, KnownMap(3, 2, 1.0));  // as new
+  EXPECT_TRUE(known.reveal(0, true));     // and revealed again, differently
+  EXPECT_EQ(known.occupied_count(), 1);
+}
+
 TEST(WorldMap, FreeCountCountsFreeCells) { EXPECT_EQ(parse_ascii_map("#..\n.#.\n").free_count(), 4); }
 
 TEST(ReachableFree, DiagonalGapIsClosedWithoutCornerCutting) {
