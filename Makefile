@@ -31,7 +31,7 @@ install:
 	@scripts/bootstrap release fsweep
 	cmake --install build/release --prefix "$(PREFIX)"
 
-# The GoogleTest suites and fuzz replays run once, sanitized (label also-sanitized: tests/CMakeLists.txt).
+# The GoogleTest suites and fuzz replays run once, sanitized (label unit-also-sanitized: tests/CMakeLists.txt).
 test:
 	@scripts/bootstrap release fsweep fsweep_bench
 	cd build/release && ctest --output-on-failure -j 2 -L unit -LE also-sanitized || { ../../scripts/ctest-failures .; exit 1; }
