@@ -245,6 +245,96 @@ bool prune(const CoverageInstance& in, const PointDistances& d, std::vector<int>
   return true;
 }
 
+/// The route's points as nodes, in order.
+std::vector<int> nodes_of(const PointDistances& d, const std::vector<int>& order) {
+  std::vector<int> nodes;
+  nodes.reserve(order.size());
+  for (const int p : order) nodes.push_back(d.points[static_cast<std::size_t>(p)]);
+  return nodes;
+}
+
+/// Step 3b: moves each viewpoint (nodes[1..]) to the usable node that sees every target only its
+/// two legs see and is closest to its neighbours on the route (the sum of the two leg lengths),
+/// when that shortens the route. The new legs pass through the new node, whose scan reveals what
+/// the old legs alone revealed, so the route keeps its coverage. Returns true when it moved one.
+bool relocate(const CoverageInstance& in, std::vector<int>& nodes) {
+  const std::size_t n = nodes.size();
+  if (n < 2) return false;
+  std::vector<std::vector<int>> legs(n);  // legs[k]: the cells of the leg into nodes[k] (k >= 1)
+  std::vector<int> count(static_cast<std::size_t>(in.targets()), 0);
+  const auto add = [&](const std::vector<int>& cells, int sign) {
+    for (const int c : cells) {
+      for (const int t : in.sees.row(in.node_of_cell[static_cast<std::size_t>(c)]))
+        count[static_cast<std::size_t>(t)] += sign;
+    }
+  };
+  add({in.node_cell[static_cast<std::size_t>(nodes[0])]}, 1);
+  for (std::size_t k = 1; k < n; ++k) {
+    legs[k] = leg(in, nodes[k - 1], nodes[k]);
+    add(legs[k], 1);
+  }
+  const auto field_from = [&](int node) {
+    const int cell = in.node_cell[static_cast<std::size_t>(node)];
+    return node_distances_m(in, std::span<const int>(&cell, 1));
+  };
+  std::vector<double> from_prev = field_from(nodes[0]);
+  std::vector<int> hits(static_cast<std::size_t>(in.nodes()), 0);
+  bool moved = false;
+  for (std::size_t k = 1; k < n; ++k) {
+    const bool last = k + 1 == n;
+    std::vector<double> from_next = last ? std::vector<double>{} : field_from(nodes[k + 1]);
+    const auto cost = [&](int node) {
+      return from_prev[static_cast<std::size_t>(node)] +
+             (last ? 0.0 : from_next[static_cast<std::size_t>(node)]);
+    };
+    // The targets only legs k and k + 1 see.
+    add(legs[k], -1);
+    if (!last) add(legs[k + 1], -1);
+    std::vector<int> only;
+    for (const std::vector<int>* cells : {&legs[k], last ? nullptr : &legs[k + 1]}) {
+      if (cells == nullptr) continue;
+      for (const int c : *cells) {
+        for (const int t : in.sees.row(in.node_of_cell[static_cast<std::size_t>(c)])) {
+          if (count[static_cast<std::size_t>(t)] == 0 && in.is_explorable(t)) {
+            count[static_cast<std::size_t>(t)] = -1;  // listed once
+            only.push_back(t);
+          }
+        }
+      }
+    }
+    for (const int t : only) count[static_cast<std::size_t>(t)] = 0;
+    // The usable nodes that see all of them (every node when none).
+    int best = nodes[k];
+    double best_cost = cost(nodes[k]);
+    for (const int t : only) {
+      for (const int v : in.seen_from.row(t)) ++hits[static_cast<std::size_t>(v)];
+    }
+    const int need = static_cast<int>(only.size());
+    for (int v = 0; v < in.nodes(); ++v) {
+      if (hits[static_cast<std::size_t>(v)] != need || in.node_usable[static_cast<std::size_t>(v)] == 0)
+        continue;
+      const double c = cost(v);
+      if (c < best_cost - kImproves) {
+        best = v;
+        best_cost = c;
+      }
+    }
+    for (const int t : only) {
+      for (const int v : in.seen_from.row(t)) hits[static_cast<std::size_t>(v)] = 0;
+    }
+    if (best != nodes[k]) {
+      nodes[k] = best;
+      legs[k] = leg(in, nodes[k - 1], best);
+      if (!last) legs[k + 1] = leg(in, best, nodes[k + 1]);
+      moved = true;
+    }
+    add(legs[k], 1);
+    if (!last) add(legs[k + 1], 1);
+    from_prev = field_from(nodes[k]);
+  }
+  return moved;
+}
+
 /// Step 4: the optimal split of `order` (points after order[0]) into trips within `range_m`.
 /// Returns the positions in `order` where trips 2, 3, ... start; nullopt when some viewpoint
 /// cannot be reached and left within one charge.
@@ -354,51 +444,98 @@ RouteReplay replay_route(const CoverageInstance& in, const RunSpec& spec, std::s
   return r;
 }
 
+namespace {
+
+/// Points (the start first, the dock last when it is no viewpoint) and an order over them.
+struct Plan {
+  PointDistances d;
+  std::vector<int> order;
+  int dock_point = -1;  // the dock's index in d.points, -1 without a battery
+};
+
+Plan plan_of(const CoverageInstance& in, std::vector<int> points) {
+  Plan plan;
+  for (std::size_t p = 0; p < points.size(); ++p) plan.order.push_back(static_cast<int>(p));
+  if (in.limited_battery()) {
+    const auto it = std::find(points.begin(), points.end(), in.dock_node);
+    plan.dock_point = static_cast<int>(it - points.begin());
+    if (it == points.end()) points.push_back(in.dock_node);  // no viewpoint: not in the order
+  }
+  plan.d = distances_of(in, std::move(points));
+  return plan;
+}
+
+double path_length(const Plan& plan) {
+  double length = 0.0;
+  for (std::size_t k = 1; k < plan.order.size(); ++k)
+    length += plan.d.between(plan.order[k - 1], plan.order[k]);
+  return length;
+}
+
+/// Steps 2 and 3 on `plan`'s order: improvement, then pruning rounds. Pruning and relocation keep
+/// the coverage of the order they change; improving the order changes the paths between viewpoints
+/// and may lose some, so an improved order is kept only if it still covers.
+void improve_and_prune(const CoverageInstance& in, Plan& plan, int max_passes) {
+  std::vector<int> improved = plan.order;
+  improve(plan.d, improved, max_passes);
+  if (covers_all(in, plan.d, improved)) plan.order = std::move(improved);
+  for (int round = 0; round < 8; ++round) {
+    std::vector<int> pruned = plan.order;
+    if (!prune(in, plan.d, pruned)) break;
+    std::vector<int> improved = pruned;
+    improve(plan.d, improved, max_passes);
+    plan.order = covers_all(in, plan.d, improved) ? std::move(improved) : std::move(pruned);
+  }
+}
+
+}  // namespace
+
 CoverRoute cover_route(const CoverageInstance& in, const RunSpec& spec, const RouteOptions& options) {
   std::vector<int> points{in.start_node};
   const std::vector<int> viewpoints = greedy_viewpoints(in);
   points.insert(points.end(), viewpoints.begin(), viewpoints.end());
-  int dock_point = -1;
-  if (in.limited_battery()) {
-    const auto it = std::find(points.begin(), points.end(), in.dock_node);
-    dock_point = static_cast<int>(it - points.begin());
-    if (it == points.end()) points.push_back(in.dock_node);
+  Plan plan = plan_of(in, points);
+  plan.order = nearest_neighbour_order(plan.d);
+  if (plan.dock_point >= static_cast<int>(points.size())) {  // the dock is no viewpoint
+    plan.order.erase(std::find(plan.order.begin(), plan.order.end(), plan.dock_point));
   }
-  const PointDistances d = distances_of(in, points);
-  std::vector<int> order = nearest_neighbour_order(d);
-  if (dock_point >= 0 && dock_point != 0) {  // the dock is no viewpoint: keep it out of the order
-    order.erase(std::find(order.begin(), order.end(), dock_point));
+  improve(plan.d, plan.order, options.max_passes);
+  const Plan unpruned = plan;
+  improve_and_prune(in, plan, options.max_passes);
+  // Step 3b: viewpoints moved towards their neighbours, then the order improved and pruned
+  // again, while that shortens the path.
+  std::vector<Plan> tried;
+  for (int round = 0; round < options.max_relocations; ++round) {
+    std::vector<int> nodes = nodes_of(plan.d, plan.order);
+    if (!relocate(in, nodes)) break;
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    Plan next = plan_of(in, nodes);
+    improve_and_prune(in, next, options.max_passes);
+    if (path_length(next) >= path_length(plan) - kImproves) break;
+    tried.push_back(std::move(plan));
+    plan = std::move(next);
   }
-  improve(d, order, options.max_passes);
-  const std::vector<int> unpruned = order;
-  // Pruning keeps the coverage of the order it prunes; re-improving the order changes the paths
-  // between viewpoints and may lose some, so a re-improved order is kept only if it still covers.
-  for (int round = 0; round < 8; ++round) {
-    std::vector<int> pruned = order;
-    if (!prune(in, d, pruned)) break;
-    std::vector<int> improved = pruned;
-    improve(d, improved, options.max_passes);
-    order = covers_all(in, d, improved) ? std::move(improved) : std::move(pruned);
-  }
-  if (!in.limited_battery()) return assemble(in, d, order, {});
+  if (!in.limited_battery()) return assemble(in, plan.d, plan.order, {});
   // Trips: the split on lengths, then the replay with turns; a split the turns break is redone
   // with a smaller range per charge. A trip's way home replaces the path between two viewpoints
-  // that pruning may have counted on, so the unpruned order is tried when the pruned one's
-  // trips miss a target.
-  for (const std::vector<int>* candidate :
-       std::initializer_list<const std::vector<int>*>{&order, &unpruned}) {
+  // that pruning or relocation may have counted on, so the earlier plans, down to the unpruned
+  // order, are tried when one's trips miss a target.
+  std::vector<const Plan*> candidates{&plan};
+  for (auto it = tried.rbegin(); it != tried.rend(); ++it) candidates.push_back(&*it);
+  candidates.push_back(&unpruned);
+  for (const Plan* candidate : candidates) {
     double range = in.range_per_charge_m;
     for (int attempt = 0; attempt < 12; ++attempt) {
-      const auto starts = split_trips(d, *candidate, dock_point, range);
+      const auto starts = split_trips(candidate->d, candidate->order, candidate->dock_point, range);
       if (!starts) break;
-      CoverRoute route = assemble(in, d, *candidate, *starts);
+      CoverRoute route = assemble(in, candidate->d, candidate->order, *starts);
       const RouteReplay replay = replay_route(in, spec, route.cells);
       if (replay.covers()) return route;
       if (replay.battery_ok) break;  // covers less: the next candidate
       range *= 0.97;
     }
   }
-  return assemble(in, d, order, {});  // no split fits: the replay says battery_ok = false
+  return assemble(in, plan.d, plan.order, {});  // no split fits: the replay says battery_ok = false
 }
 
 }  // namespace optimum

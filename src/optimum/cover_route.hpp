@@ -3,7 +3,7 @@
 /// Routes that reveal every explorable target (the upper bound of the offline optimum), and their
 /// replay through the simulation's sensor, which is what certifies them.
 ///
-/// A route is built in four steps:
+/// A route is built in these steps:
 /// 1. viewpoints: a greedy set cover of the explorable targets by usable nodes (the node that
 ///    reveals the most targets not yet covered first; ties by node id), what the start's own scan
 ///    reveals counted as covered;
@@ -13,6 +13,9 @@
 /// 3. pruning: a viewpoint whose targets the rest of the route already sees on its way (the
 ///    cells of the shortest paths between the other viewpoints) is dropped, and the order
 ///    improved again;
+/// 3b. moves (RouteOptions::max_relocations rounds): each viewpoint moves to the usable node that
+///    sees every target only its two legs see and is nearest its two neighbours on the route
+///    (relocate()); the order is then improved and pruned again, while that shortens the path;
 /// 4. trips, with a battery: the order is cut into trips from the dock by an optimal split
 ///    (a shortest path over cut points, each trip's travel with its way back to the dock within
 ///    one charge; the last trip's way back is not counted, as a run's distance to final coverage
@@ -36,6 +39,8 @@ inline namespace optimum {
 struct RouteOptions {
   /// Most improvement passes (2-opt then Or-opt over the whole order) per improvement.
   int max_passes = 200;
+  /// Most rounds of step 3b (viewpoints moved, then the order improved and pruned again).
+  int max_relocations = 20;
 };
 
 struct CoverRoute {

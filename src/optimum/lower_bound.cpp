@@ -2,7 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <iterator>
 #include <numeric>
+
+#include "core/random.hpp"
+#include "search/octile_grid.hpp"
 
 namespace fsweep {
 inline namespace optimum {
@@ -90,6 +95,70 @@ std::vector<int> farthest_first(const CoverageInstance& in, int max_witnesses) {
 
 }  // namespace
 
+double sweep_bound(const CoverageInstance& in) {
+  if (in.start_node < 0 || in.dock_node < 0) return 0.0;
+  // The reveal rate: the most targets one step reveals that the scan before it had not, per metre.
+  double rate = 0.0;  // targets per metre
+  double longest_step = 0.0;
+  std::vector<int> fresh;
+  for (int n = 0; n < in.nodes(); ++n) {
+    const Cell a = in.cell_of_node(n);
+    const auto before = in.sees.row(n);
+    for (int h = 0; h < 8; ++h) {
+      const Cell b{a.x + kDirections[static_cast<std::size_t>(h)].x,
+                   a.y + kDirections[static_cast<std::size_t>(h)].y};
+      const int m = in.node_at(b);
+      if (m < 0 || !octile_step_allowed(in.truth, a, b, in.allow_corner_cutting)) continue;
+      const auto after = in.sees.row(m);
+      fresh.clear();
+      std::set_difference(after.begin(), after.end(), before.begin(), before.end(),
+                          std::back_inserter(fresh));
+      const double length = step_length(h) * in.resolution_m;
+      rate = std::max(rate, static_cast<double>(fresh.size()) / length);
+      longest_step = std::max(longest_step, length);
+    }
+  }
+  // Targets the start's scan leaves, by their groups' distance from the dock.
+  const int dock_cell = in.node_cell[static_cast<std::size_t>(in.dock_node)];
+  const std::vector<double> from_dock = node_distances_m(in, std::span<const int>(&dock_cell, 1));
+  std::vector<std::uint8_t> seen_at_start(static_cast<std::size_t>(in.targets()), 0);
+  for (const int t : in.sees.row(in.start_node)) seen_at_start[static_cast<std::size_t>(t)] = 1;
+  std::vector<double> far;  // per target still to reveal: its group's distance from the dock
+  for (int t = 0; t < in.targets(); ++t) {
+    if (!in.is_explorable(t) || seen_at_start[static_cast<std::size_t>(t)] != 0) continue;
+    double d = kInfinity;
+    for (const int n : in.seen_from.row(t)) d = std::min(d, from_dock[static_cast<std::size_t>(n)]);
+    far.push_back(d);
+  }
+  if (far.empty() || rate <= 0.0) return 0.0;
+  std::sort(far.begin(), far.end(), std::greater<>());
+  const double s = longest_step;
+  const double delta = from_dock[static_cast<std::size_t>(in.start_node)];
+  const double range = in.range_per_charge_m;
+  double best = 0.0;
+  for (std::size_t i = 0; i < far.size(); ++i) {
+    if (i + 1 < far.size() && far[i + 1] == far[i]) continue;  // the last of equal distances
+    const double rho = far[i];
+    const double need = static_cast<double>(i + 1) / rate;  // metres of steps ending at >= rho
+    const double first_overhead = std::max(0.0, rho - s - delta);
+    int trips = 1;
+    if (in.limited_battery()) {
+      const double last_capacity = range - rho + s;
+      const double first_capacity = range - 2.0 * rho + s + delta;
+      const double middle_capacity = range - 2.0 * rho + s;
+      if (need > last_capacity + delta) {  // more than one stretch, from the start, holds
+        trips = 2;
+        const double rest = need - last_capacity - std::max(0.0, first_capacity);
+        if (rest > 0.0 && middle_capacity > 0.0) trips += static_cast<int>(std::ceil(rest / middle_capacity));
+      }
+    }
+    double overhead = first_overhead;
+    if (trips >= 2) overhead += std::max(0.0, rho - s) + (trips - 2) * std::max(0.0, 2.0 * rho - s);
+    best = std::max(best, need + overhead);
+  }
+  return best * (1.0 - kBoundRoundingMargin);
+}
+
 CoverageLowerBound::CoverageLowerBound(const CoverageInstance& instance, const LowerBoundOptions& options)
     : instance_(&instance) {
   if (instance.start_node < 0) return;
@@ -106,17 +175,65 @@ CoverageLowerBound::CoverageLowerBound(const CoverageInstance& instance, const L
       *this = std::move(candidate);
     }
   }
+  improve_witnesses(options);
+  sweep_bound_ = sweep_bound(instance);
+  at_start_ = std::max(at_start_, sweep_bound_);
 }
 
 CoverageLowerBound::CoverageLowerBound(const CoverageInstance& instance) : instance_(&instance) {}
 
+void CoverageLowerBound::improve_witnesses(const LowerBoundOptions& options) {
+  if (witnesses_.empty() || options.witness_swaps <= 0) return;
+  const CoverageInstance& instance = *instance_;
+  std::vector<int> pool = explorable_by_fewest_viewpoints(instance);
+  if (pool.size() > kFarthestFirstCandidates) pool.resize(kFarthestFirstCandidates);
+  // Trials are scored by a quicker bound: a quarter of the ascent, from the current penalties,
+  // without Held-Karp; the set found is then bounded in full, and kept if that is higher.
+  LowerBoundOptions quick = options;
+  quick.ascent_steps = std::max(1, options.ascent_steps / 4);
+  quick.held_karp_groups = 0;
+  const CoverageLowerBound original = *this;
+  finish(quick, pi_);
+  Rng rng = make_rng(0, "optimum/witness-swaps");
+  for (int trial = 0; trial < options.witness_swaps; ++trial) {
+    const std::size_t k = witnesses_.size();
+    const std::size_t at = uniform_below(rng, k + 1);  // k: a new witness
+    const int target = pool[uniform_below(rng, pool.size())];
+    if (std::find(witnesses_.begin(), witnesses_.end(), target) != witnesses_.end()) continue;
+    if (at == k && static_cast<int>(k) >= options.max_witnesses) continue;
+    CoverageLowerBound candidate(instance);
+    candidate.witnesses_ = witnesses_;
+    candidate.to_group_ = to_group_;
+    std::vector<double> warm = pi_;
+    std::vector<double> field = node_distances_m(instance, group_cells(instance, target));
+    if (at == k) {
+      candidate.witnesses_.push_back(target);
+      candidate.to_group_.push_back(std::move(field));
+      warm.insert(warm.begin() + static_cast<std::ptrdiff_t>(k), 0.0);  // before the robot's
+    } else {
+      candidate.witnesses_[at] = target;
+      candidate.to_group_[at] = std::move(field);
+      warm[at] = 0.0;
+    }
+    candidate.finish(quick, warm);
+    if (candidate.at_start_ > at_start_) *this = std::move(candidate);
+  }
+  finish(options, {});
+  if (at_start_ < original.at_start_) *this = original;
+}
+
 void CoverageLowerBound::build(std::vector<int> witnesses, const LowerBoundOptions& options) {
   const CoverageInstance& instance = *instance_;
   witnesses_ = std::move(witnesses);
-  const std::size_t k = witnesses_.size();
   to_group_.clear();
-  to_group_.reserve(k);
+  to_group_.reserve(witnesses_.size());
   for (const int w : witnesses_) to_group_.push_back(node_distances_m(instance, group_cells(instance, w)));
+  finish(options, {});
+}
+
+void CoverageLowerBound::finish(const LowerBoundOptions& options, const std::vector<double>& warm) {
+  const CoverageInstance& instance = *instance_;
+  const std::size_t k = witnesses_.size();
   between_.assign(k * k, 0.0);
   for (std::size_t i = 0; i < k; ++i) {
     for (std::size_t j = 0; j < k; ++j) {
@@ -146,7 +263,7 @@ void CoverageLowerBound::build(std::vector<int> witnesses, const LowerBoundOptio
   for (const int m : members) open[static_cast<std::size_t>(m)] = 1;
   if (options.ascent_steps > 0 && members.size() >= 2) {
     ascent_steps_ = options.ascent_steps;
-    pi_ = ascend(instance.start_node, members);
+    pi_ = ascend(instance.start_node, members, warm);
   }
   at_start_ = from_node(instance.start_node, open);
   // Held-Karp over the groups farthest from each other, chosen greedily from the start.
@@ -260,9 +377,10 @@ double CoverageLowerBound::one_tree(int node, const std::vector<int>& members, c
   return total - 2.0 * penalties;
 }
 
-std::vector<double> CoverageLowerBound::ascend(int node, const std::vector<int>& members) const {
+std::vector<double> CoverageLowerBound::ascend(int node, const std::vector<int>& members,
+                                               const std::vector<double>& warm) const {
   const std::size_t k = witnesses_.size();
-  std::vector<double> pi(k + 1, 0.0);
+  std::vector<double> pi = warm.size() == k + 1 ? warm : std::vector<double>(k + 1, 0.0);
   std::vector<double> best_pi = pi;
   std::vector<int> degrees;
   double best = one_tree(node, members, pi, &degrees);

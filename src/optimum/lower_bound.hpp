@@ -3,7 +3,7 @@
 /// A certified lower bound on the offline coverage optimum (coverage_instance.hpp), from the
 /// start or from any state of a run.
 ///
-/// Witnesses: target cells chosen so that no node sees two of them (their viewpoint sets
+/// Witnesses: target cells, at first chosen so that no node sees two of them (their viewpoint sets
 /// seen_from are pairwise disjoint), at most LowerBoundOptions::max_witnesses: farthest first
 /// (each new witness the one whose group is farthest from the start and the groups already
 /// chosen, among the 4,000 targets with the fewest viewpoints), and, as a second set, hardest to see first
@@ -20,8 +20,13 @@
 /// - the shortest such path over any subset of the groups (Held-Karp's dynamic programme, exact
 ///   over at most 12 groups, used from the start where it is affordable),
 /// - and the distance to the farthest group.
-/// The bound ignores the battery (a relaxation: trips back to the dock only add length), so it
-/// is valid with any battery. Lengths are exact octile sums (search/grid_search.hpp); the bound
+/// The witness set then goes through a seeded local search (LowerBoundOptions::witness_swaps):
+/// swapping one witness for another target, or adding one, is kept when the bound from the start
+/// rises. Witnesses need not have disjoint groups for the bound to hold (groups that share a node
+/// are 0 apart); disjoint groups are only what makes them useful.
+/// The bound from a state ignores the battery (a relaxation: trips back to the dock only add
+/// length), so it is valid with any battery. From the start it is also at least sweep_bound(),
+/// which counts the battery. Lengths are exact octile sums (search/grid_search.hpp); the bound
 /// is lowered by a relative 1e-9 against the rounding of the sums.
 ///
 /// Cost per call (from_state): O(k^2) for k unrevealed witnesses, no search. Set-up: one
@@ -45,7 +50,25 @@ struct LowerBoundOptions {
   int ascent_steps = 200;
   /// Groups of Held-Karp's exact path bound at the start (0: off; at most 16).
   int held_karp_groups = 12;
+  /// Trials of the witness search at the start: each replaces one witness by a random target
+  /// among the hardest to see (or adds it) and keeps the change when the bound from the start
+  /// rises (a seeded, deterministic search; 0: off). One distance field per trial.
+  int witness_swaps = 1000;
 };
+
+/// The sweep bound from the start: a step from node a to node b reveals at most the targets b's
+/// scan sees and a's does not; `rate` is the most of those per metre over every allowed step of
+/// the map. Let d(t) be the distance from the dock to the nearest node that sees target t, and
+/// N(rho) the targets the start's scan leaves with d(t) >= rho. Each is revealed by a step that
+/// ends at least rho from the dock, so such steps add up to at least N(rho) / rate metres. A
+/// stretch between two charges (range R per charge) spends at least rho - s getting there (s the
+/// longest step; from the start, delta nearer the dock) and rho coming back (not on the last
+/// stretch), so it holds at most R - 2 rho + s metres of such steps (R - rho + s on the last,
+/// R - 2 rho + s + delta on the first, R - rho + s + delta when it is the only one); the fewest stretches
+/// that hold N(rho) / rate, with their ways there and back, give the bound at rho; the largest over all rho
+/// is kept. Without a battery it is N(rho) / rate plus the way there. Cost: one set difference per step of
+/// the map.
+[[nodiscard]] double sweep_bound(const CoverageInstance& instance);
 
 class CoverageLowerBound {
  public:
@@ -54,6 +77,8 @@ class CoverageLowerBound {
   /// The bound from the start of a run: the robot on the start node, having revealed what the
   /// start's scan reveals. Held-Karp included.
   [[nodiscard]] double at_start() const { return at_start_; }
+  /// sweep_bound() from the start; at_start() is at least this.
+  [[nodiscard]] double start_sweep_bound() const { return sweep_bound_; }
 
   /// The bound from a run's state: the robot at `at` (a node), `known` the cells revealed so far
   /// (a witness counts as revealed when its cell is known). The battery is not used (see above).
@@ -83,8 +108,10 @@ class CoverageLowerBound {
   /// pi) receives each node's degree in that tree.
   [[nodiscard]] double one_tree(int node, const std::vector<int>& members, const std::vector<double>& pi,
                                 std::vector<int>* degrees) const;
-  /// Penalties that raise one_tree() from `node` (subgradient ascent, a fixed number of steps).
-  [[nodiscard]] std::vector<double> ascend(int node, const std::vector<int>& members) const;
+  /// Penalties that raise one_tree() from `node` (subgradient ascent, a fixed number of steps),
+  /// from `warm` when it holds one penalty per witness and the robot's, else from 0.
+  [[nodiscard]] std::vector<double> ascend(int node, const std::vector<int>& members,
+                                           const std::vector<double>& warm) const;
   /// from_node() without the 1-tree.
   [[nodiscard]] double spanning_tree(int node, const std::vector<int>& members, double* farthest) const;
 
@@ -92,6 +119,10 @@ class CoverageLowerBound {
   explicit CoverageLowerBound(const CoverageInstance& instance);
   /// The group distances, penalties and start bound of one witness set.
   void build(std::vector<int> witnesses, const LowerBoundOptions& options);
+  /// build() once to_group_ holds the witnesses' distance fields; the ascent starts from `warm`.
+  void finish(const LowerBoundOptions& options, const std::vector<double>& warm);
+  /// The witness search (LowerBoundOptions::witness_swaps).
+  void improve_witnesses(const LowerBoundOptions& options);
 
   const CoverageInstance* instance_;
   int ascent_steps_ = 0;
@@ -100,6 +131,7 @@ class CoverageLowerBound {
   std::vector<double> between_;                // k x k, group to group (symmetric: the smaller way)
   std::vector<double> pi_;                     // penalties found from the start (k + 1)
   double at_start_ = 0.0;
+  double sweep_bound_ = 0.0;
 };
 
 /// The relative margin the bounds are lowered by against rounding.

@@ -102,10 +102,11 @@ std::string bound_cell(double v) { return std::isfinite(v) ? format_number(v) : 
 
 std::string optimum_solver_version() {
   const OptimumOptions o;
-  return "optimum-1 witnesses=" + std::to_string(o.lower.max_witnesses) +
+  return "optimum-2 witnesses=" + std::to_string(o.lower.max_witnesses) +
          " ascent=" + std::to_string(o.lower.ascent_steps) +
          " held_karp=" + std::to_string(o.lower.held_karp_groups) +
-         " passes=" + std::to_string(o.route.max_passes) +
+         " swaps=" + std::to_string(o.lower.witness_swaps) + " passes=" + std::to_string(o.route.max_passes) +
+         " relocations=" + std::to_string(o.route.max_relocations) +
          " expansions=" + std::to_string(o.exact.max_expansions);
 }
 
