@@ -4,7 +4,9 @@
 #include <cmath>
 #include <initializer_list>
 #include <limits>
+#include <memory>
 #include <queue>
+#include <unordered_map>
 #include <utility>
 
 #include "core/random.hpp"
@@ -17,8 +19,10 @@ namespace {
 
 constexpr double kImproves = 1e-9;  // metres: a move must shorten the path by more than this
 
-/// Step 1: greedy set cover of the explorable targets the start's scan leaves.
-std::vector<int> greedy_viewpoints(const CoverageInstance& in) {
+/// Step 1: greedy set cover of the explorable targets the start's scan leaves. With `noise`, each
+/// node's gain is scaled by its own factor drawn from [1 - noise, 1 + noise) (a restart's
+/// different cover).
+std::vector<int> greedy_viewpoints(const CoverageInstance& in, Rng* rng, double noise) {
   std::vector<std::uint8_t> covered(static_cast<std::size_t>(in.targets()), 0);
   for (int t = 0; t < in.targets(); ++t) {
     if (!in.is_explorable(t)) covered[static_cast<std::size_t>(t)] = 1;  // nothing can cover it
@@ -28,10 +32,17 @@ std::vector<int> greedy_viewpoints(const CoverageInstance& in) {
   }
   // Lazy greedy: gains only fall, so a popped node whose stored gain is still exact is the best.
   std::priority_queue<std::pair<int, int>> heap;  // (gain, -node)
+  std::vector<double> scale;
+  if (rng != nullptr) {
+    scale.resize(static_cast<std::size_t>(in.nodes()));
+    for (double& f : scale) f = 1.0 - noise + 2.0 * noise * uniform01(*rng);
+  }
+  // Gains only fall as targets are covered, with or without the scale: the lazy greedy holds.
   const auto gain = [&](int node) {
     int g = 0;
     for (const int t : in.sees.row(node)) g += covered[static_cast<std::size_t>(t)] == 0 ? 1 : 0;
-    return g;
+    if (g == 0 || scale.empty()) return g;
+    return std::max(1, static_cast<int>(g * scale[static_cast<std::size_t>(node)]));
   };
   for (int n = 0; n < in.nodes(); ++n) {
     if (in.node_usable[static_cast<std::size_t>(n)] == 0) continue;
@@ -55,22 +66,46 @@ std::vector<int> greedy_viewpoints(const CoverageInstance& in) {
   return chosen;
 }
 
+/// Distance fields from nodes, computed once per node and shared (one route's steps move few
+/// viewpoints, so most fields are asked for again). Emptied when it holds kMaxCachedFields.
+class FieldCache {
+ public:
+  explicit FieldCache(const CoverageInstance& in) : in_(&in) {}
+  std::shared_ptr<const std::vector<double>> from(int node) {
+    auto it = fields_.find(node);
+    if (it != fields_.end()) return it->second;
+    if (fields_.size() >= kMaxCachedFields) fields_.clear();
+    work_ += static_cast<std::uint64_t>(in_->nodes());
+    const int cell = in_->node_cell[static_cast<std::size_t>(node)];
+    auto field =
+        std::make_shared<const std::vector<double>>(node_distances_m(*in_, std::span<const int>(&cell, 1)));
+    fields_.emplace(node, field);
+    return field;
+  }
+  /// Nodes of the fields computed so far (a machine-independent measure of the work done).
+  [[nodiscard]] std::uint64_t work() const { return work_; }
+
+ private:
+  static constexpr std::size_t kMaxCachedFields = 2048;
+  const CoverageInstance* in_;
+  std::unordered_map<int, std::shared_ptr<const std::vector<double>>> fields_;
+  std::uint64_t work_ = 0;
+};
+
 /// Distances between points (nodes), one field per point.
 struct PointDistances {
-  std::vector<int> points;                 // nodes
-  std::vector<std::vector<double>> field;  // per point: metres to every node
+  std::vector<int> points;                                        // nodes
+  std::vector<std::shared_ptr<const std::vector<double>>> field;  // per point: metres to every node
   [[nodiscard]] double between(int a, int b) const {
-    return field[static_cast<std::size_t>(a)][static_cast<std::size_t>(points[static_cast<std::size_t>(b)])];
+    return (
+        *field[static_cast<std::size_t>(a)])[static_cast<std::size_t>(points[static_cast<std::size_t>(b)])];
   }
 };
 
-PointDistances distances_of(const CoverageInstance& in, std::vector<int> points) {
+PointDistances distances_of(FieldCache& fields, std::vector<int> points) {
   PointDistances d;
   d.points = std::move(points);
-  for (const int node : d.points) {
-    const int cell = in.node_cell[static_cast<std::size_t>(node)];
-    d.field.push_back(node_distances_m(in, std::span<const int>(&cell, 1)));
-  }
+  for (const int node : d.points) d.field.push_back(fields.from(node));
   return d;
 }
 
@@ -257,7 +292,7 @@ std::vector<int> nodes_of(const PointDistances& d, const std::vector<int>& order
 /// two legs see and is closest to its neighbours on the route (the sum of the two leg lengths),
 /// when that shortens the route. The new legs pass through the new node, whose scan reveals what
 /// the old legs alone revealed, so the route keeps its coverage. Returns true when it moved one.
-bool relocate(const CoverageInstance& in, std::vector<int>& nodes) {
+bool relocate(const CoverageInstance& in, FieldCache& fields, std::vector<int>& nodes) {
   const std::size_t n = nodes.size();
   if (n < 2) return false;
   std::vector<std::vector<int>> legs(n);  // legs[k]: the cells of the leg into nodes[k] (k >= 1)
@@ -273,19 +308,15 @@ bool relocate(const CoverageInstance& in, std::vector<int>& nodes) {
     legs[k] = leg(in, nodes[k - 1], nodes[k]);
     add(legs[k], 1);
   }
-  const auto field_from = [&](int node) {
-    const int cell = in.node_cell[static_cast<std::size_t>(node)];
-    return node_distances_m(in, std::span<const int>(&cell, 1));
-  };
-  std::vector<double> from_prev = field_from(nodes[0]);
+  std::shared_ptr<const std::vector<double>> from_prev = fields.from(nodes[0]);
   std::vector<int> hits(static_cast<std::size_t>(in.nodes()), 0);
   bool moved = false;
   for (std::size_t k = 1; k < n; ++k) {
     const bool last = k + 1 == n;
-    std::vector<double> from_next = last ? std::vector<double>{} : field_from(nodes[k + 1]);
+    const std::shared_ptr<const std::vector<double>> from_next = last ? nullptr : fields.from(nodes[k + 1]);
     const auto cost = [&](int node) {
-      return from_prev[static_cast<std::size_t>(node)] +
-             (last ? 0.0 : from_next[static_cast<std::size_t>(node)]);
+      return (*from_prev)[static_cast<std::size_t>(node)] +
+             (last ? 0.0 : (*from_next)[static_cast<std::size_t>(node)]);
     };
     // The targets only legs k and k + 1 see.
     add(legs[k], -1);
@@ -330,7 +361,7 @@ bool relocate(const CoverageInstance& in, std::vector<int>& nodes) {
     }
     add(legs[k], 1);
     if (!last) add(legs[k + 1], 1);
-    from_prev = field_from(nodes[k]);
+    from_prev = fields.from(nodes[k]);
   }
   return moved;
 }
@@ -453,7 +484,7 @@ struct Plan {
   int dock_point = -1;  // the dock's index in d.points, -1 without a battery
 };
 
-Plan plan_of(const CoverageInstance& in, std::vector<int> points) {
+Plan plan_of(const CoverageInstance& in, FieldCache& fields, std::vector<int> points) {
   Plan plan;
   for (std::size_t p = 0; p < points.size(); ++p) plan.order.push_back(static_cast<int>(p));
   if (in.limited_battery()) {
@@ -461,7 +492,7 @@ Plan plan_of(const CoverageInstance& in, std::vector<int> points) {
     plan.dock_point = static_cast<int>(it - points.begin());
     if (it == points.end()) points.push_back(in.dock_node);  // no viewpoint: not in the order
   }
-  plan.d = distances_of(in, std::move(points));
+  plan.d = distances_of(fields, std::move(points));
   return plan;
 }
 
@@ -488,13 +519,15 @@ void improve_and_prune(const CoverageInstance& in, Plan& plan, int max_passes) {
   }
 }
 
-}  // namespace
-
-CoverRoute cover_route(const CoverageInstance& in, const RunSpec& spec, const RouteOptions& options) {
+/// Steps 1-4 from one cover: the restart `restart` (0: the plain greedy cover).
+CoverRoute one_route(const CoverageInstance& in, const RunSpec& spec, const RouteOptions& options,
+                     int restart, FieldCache& fields) {
   std::vector<int> points{in.start_node};
-  const std::vector<int> viewpoints = greedy_viewpoints(in);
+  Rng rng = make_rng(static_cast<std::uint64_t>(restart), "optimum/route-restart");
+  const std::vector<int> viewpoints =
+      greedy_viewpoints(in, restart == 0 ? nullptr : &rng, options.restart_noise);
   points.insert(points.end(), viewpoints.begin(), viewpoints.end());
-  Plan plan = plan_of(in, points);
+  Plan plan = plan_of(in, fields, points);
   plan.order = nearest_neighbour_order(plan.d);
   if (plan.dock_point >= static_cast<int>(points.size())) {  // the dock is no viewpoint
     plan.order.erase(std::find(plan.order.begin(), plan.order.end(), plan.dock_point));
@@ -507,9 +540,9 @@ CoverRoute cover_route(const CoverageInstance& in, const RunSpec& spec, const Ro
   std::vector<Plan> tried;
   for (int round = 0; round < options.max_relocations; ++round) {
     std::vector<int> nodes = nodes_of(plan.d, plan.order);
-    if (!relocate(in, nodes)) break;
+    if (!relocate(in, fields, nodes)) break;
     nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
-    Plan next = plan_of(in, nodes);
+    Plan next = plan_of(in, fields, nodes);
     improve_and_prune(in, next, options.max_passes);
     if (path_length(next) >= path_length(plan) - kImproves) break;
     tried.push_back(std::move(plan));
@@ -536,6 +569,28 @@ CoverRoute cover_route(const CoverageInstance& in, const RunSpec& spec, const Ro
     }
   }
   return assemble(in, plan.d, plan.order, {});  // no split fits: the replay says battery_ok = false
+}
+
+}  // namespace
+
+CoverRoute cover_route(const CoverageInstance& in, const RunSpec& spec, const RouteOptions& options) {
+  CoverRoute best;
+  double best_m = kInfinity;
+  bool best_covers = false;
+  FieldCache fields(in);  // shared by the restarts: their covers share many viewpoints
+  for (int restart = 0; restart < std::max(1, options.restarts); ++restart) {
+    CoverRoute route = one_route(in, spec, options, restart, fields);
+    const RouteReplay replay = replay_route(in, spec, route.cells);
+    const bool better = replay.covers() ? (!best_covers || replay.distance_to_final_coverage_m < best_m)
+                                        : (restart == 0);  // a route that misses: only as the last resort
+    if (better) {
+      best_covers = replay.covers();
+      best_m = replay.distance_to_final_coverage_m;
+      best = std::move(route);
+    }
+    if (fields.work() > options.restart_work) break;
+  }
+  return best;
 }
 
 }  // namespace optimum

@@ -20,6 +20,8 @@
 ///    (a shortest path over cut points, each trip's travel with its way back to the dock within
 ///    one charge; the last trip's way back is not counted, as a run's distance to final coverage
 ///    does not count it).
+/// The steps run from RouteOptions::restarts different covers (step 1 with seeded random gains),
+/// and the shortest route whose replay covers is kept.
 /// The route is the cells of the shortest paths between consecutive points. replay_route() walks
 /// it with the run's Sensor (noiseless) and energy model: the upper bound is its distance to final
 /// coverage, and only a route whose replay reveals every explorable target within the battery
@@ -41,6 +43,15 @@ struct RouteOptions {
   int max_passes = 200;
   /// Most rounds of step 3b (viewpoints moved, then the order improved and pruned again).
   int max_relocations = 20;
+  /// Routes built (>= 1), each from its own cover: the first from the plain greedy cover, the
+  /// others from greedy covers whose gains are scaled by seeded random factors in
+  /// [1 - restart_noise, 1 + restart_noise); the shortest whose replay covers is kept.
+  int restarts = 64;
+  double restart_noise = 0.3;
+  /// No restart begins once the distance fields computed so far hold this many nodes in all (a
+  /// deterministic budget: on a map of 7,000 free cells about 30,000 fields, on one of 26,000
+  /// about 8,000).
+  std::uint64_t restart_work = 200'000'000;
 };
 
 struct CoverRoute {
@@ -81,7 +92,7 @@ struct RouteReplay {
 [[nodiscard]] RouteReplay replay_route(const CoverageInstance& instance, const RunSpec& spec,
                                        std::span<const int> cells);
 
-/// The best route the four steps above find (deterministic).
+/// The best route the steps above find over the restarts (deterministic).
 [[nodiscard]] CoverRoute cover_route(const CoverageInstance& instance, const RunSpec& spec,
                                      const RouteOptions& options = {});
 

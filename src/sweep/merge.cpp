@@ -19,6 +19,7 @@
 #include "sweep/csv_journal.hpp"
 #include "sweep/done_runs.hpp"
 #include "sweep/manifest.hpp"
+#include "sweep/optimum_table.hpp"
 #include "sweep/sweep_plan.hpp"
 #include "sweep/weight_search_runner.hpp"
 
@@ -125,6 +126,9 @@ MergeReport merge_shards(const std::string& dir, const std::string& objective) {
                         "shard index " + std::to_string(s.index) + " is not below " + std::to_string(n));
   }
   for (Shard& s : shards) s.manifest = read_json(s.dir + "/manifest.json");
+  std::vector<std::string> dirs;
+  dirs.reserve(shards.size());
+  for (const Shard& s : shards) dirs.push_back(s.dir);
   for (const Shard& s : shards) {
     if (s.manifest["sweep_hash"] != shards.front().manifest["sweep_hash"]) {
       throw ConfigError(dir, "shards of different sweeps (sweep_hash " +
@@ -284,13 +288,11 @@ MergeReport merge_shards(const std::string& dir, const std::string& objective) {
       }
     }
   } else if (!plan->search_units().empty()) {
-    std::vector<std::string> dirs;
-    dirs.reserve(shards.size());
-    for (const Shard& s : shards) dirs.push_back(s.dir);
     report.searches = merge_weight_searches(*plan, dir, dirs).searches;
   }
   write_file_atomically(dir + "/runs.csv", runs_text);
   write_file_atomically(dir + "/progress.csv", progress_text);
+  (void)merge_optima(dir, dirs);  // a resume in the merged folder reads them
   write_manifest(dir + "/manifest.json", manifest);
   aggregate(dir, AggregateOptions{objective});
   report.written = true;

@@ -107,6 +107,8 @@ std::string optimum_solver_version() {
          " held_karp=" + std::to_string(o.lower.held_karp_groups) +
          " swaps=" + std::to_string(o.lower.witness_swaps) + " passes=" + std::to_string(o.route.max_passes) +
          " relocations=" + std::to_string(o.route.max_relocations) +
+         " restarts=" + std::to_string(o.route.restarts) + " noise=" + format_number(o.route.restart_noise) +
+         " restart_work=" + std::to_string(o.route.restart_work) +
          " expansions=" + std::to_string(o.exact.max_expansions);
 }
 
@@ -219,6 +221,21 @@ OptimumTable OptimumTable::prepare(const SweepPlan& plan, const std::string& dir
   }
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return table;
+}
+
+std::size_t merge_optima(const std::string& dir, const std::vector<std::string>& shard_dirs) {
+  const std::string solver = optimum_solver_version();
+  std::map<std::string, OptimumBounds> all;
+  bool any = false;
+  for (const std::string& shard : shard_dirs) {
+    const std::string path = shard + "/" + kOptimaFile;
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec)) continue;
+    any = true;
+    for (auto& [key, b] : read_cache(path, solver)) all.emplace(key, std::move(b));  // the same for any shard
+  }
+  if (any) write_cache(dir + "/" + kOptimaFile, solver, all);
+  return all.size();
 }
 
 std::vector<std::string> competitive_cells(const SweepMap& map, const OptimumBounds* optimum,

@@ -90,6 +90,11 @@ class OptimumTable {
   std::map<std::string, OptimumBounds> entries_;  ///< by optimum_key()
 };
 
+/// Writes `<dir>/optima.csv` with the entries of this solver version found in the shards'
+/// optima.csv files (any shard's entry of a key: the solver is deterministic), when any shard has
+/// the file. Returns the entries written.
+std::size_t merge_optima(const std::string& dir, const std::vector<std::string>& shard_dirs);
+
 /// The kCompetitiveColumns cells of a run of `map` (in that order): empty with the note "map not
 /// competitive" for a map that is not; else the bounds (`optimum` null: the run failed before
 /// any was known) and, for a run that ended complete with completeness 1 (`result`; null: the run

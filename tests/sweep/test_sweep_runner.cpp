@@ -722,6 +722,9 @@ TEST(SweepRunner, OfflineOptimumColumnsAreCertifiedCachedAndTheSameResumedSharde
     EXPECT_EQ(run_shard(competitive_sweep(), sharded, s, 2).optima.needed, 2U);
   ASSERT_TRUE(merge_shards(sharded).written);
   EXPECT_EQ(without_timing(read_file(sharded + "/runs.csv")), without_timing(csv));
+  // The merged folder holds the shards' optima (for a later resume or a changed sweep there).
+  for (const char* c : {"map_hash", "robot", "lower_m", "upper_m", "exact"})
+    EXPECT_EQ(column(read_file(sharded + "/optima.csv"), c), column(read_file(dir + "/optima.csv"), c)) << c;
 
   // A sweep without a competitive map has none of the columns and no optima.csv.
   json plain = competitive_sweep();
