@@ -6,7 +6,7 @@
 #                    every input parser for a few seconds)
 #   make fuzz      - fuzz every input parser longer (FUZZ_SECONDS each, default 300; fuzz/README.md)
 #   make docs-long - run the command blocks of the docs marked long too (docs/dev/docs-tests.md)
-#   make test-long - the long property tests (ctest label optimum-long; also in the nightly job)
+#   make test-long - the long property tests (ctest label long; also in the nightly job)
 #   make tidy      - clang-tidy on src/ (.clang-tidy; every finding fails; also in the nightly job)
 #   make install PREFIX=DIR - install fsweep, its scripts, bash completion and docs (docs/install.md)
 # and the nightly regression job (docs/running.md, "Nightly regression checks"):
@@ -51,7 +51,7 @@ docs-long: build
 	cd build/release && ctest --output-on-failure -L docs-long
 
 test-long: build
-	cd build/release && ctest --output-on-failure -L optimum-long
+	cd build/release && ctest --output-on-failure -L '^long$$'
 
 bench: build
 	build/release/bin/fsweep_bench

@@ -67,7 +67,7 @@ TEST(CliOptimum, TinyMapIsSolvedExactly) {
 
 TEST(CliOptimum, RoomsMapBoundsWriteEveryColumnAndTheRoute) {
   const std::string out = fresh_temp_dir("optimum", "rooms");
-  const std::string map = "rooms:w=30,h=24,door=2,seed=3";
+  const std::string map = "rooms:w=20,h=16,door=2,seed=3";
   const CliOutcome r = run_fsweep("optimum --map " + map + " --robot sensor.range_m=4 --out " + out);
   ASSERT_EQ(r.code, 0) << r.output;
   for (const char* text : {"lower bound: ", "upper bound: ", " m (covering route)", "gap: ", "exact: ",

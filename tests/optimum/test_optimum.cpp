@@ -128,6 +128,22 @@ TEST(Optimum, GeneratedSmallMapsAreExactAndAgreeWithTheExhaustiveSearch) {
   }
 }
 
+/// The solver as the short tests run it: 250 of the witness search's 1,000 trials and 4 of the
+/// route's 64 covers (both only tighten a bound, and every test still checks the bounds it gets).
+/// The long test and the benchmarks run the defaults.
+OptimumOptions short_test_options() {
+  OptimumOptions o;
+  o.lower.witness_swaps = 250;
+  o.route.restarts = 4;
+  return o;
+}
+
+/// The options check_runs_above_lower_bound() solves with (the long test sets the defaults).
+OptimumOptions& check_options() {
+  static OptimumOptions options = short_test_options();
+  return options;
+}
+
 /// Bounds, and every complete online run (completeness 1) at or above the lower bound.
 int check_runs_above_lower_bound(const std::string& map_spec, double range_m, int seeds,
                                  double battery = std::numeric_limits<double>::infinity(),
@@ -136,7 +152,7 @@ int check_runs_above_lower_bound(const std::string& map_spec, double range_m, in
   RunSpec spec = spec_of(std::move(m.map), range_m);
   spec.robot.battery_capacity = battery;
   spec.robot.sensor.miss_probability = miss_probability;
-  const OptimumResult r = solve_optimum(spec);
+  const OptimumResult r = solve_optimum(spec, check_options());
   SCOPED_TRACE(map_spec);
   EXPECT_LE(r.lower_m, r.upper_m);
   EXPECT_LT(r.upper_m, std::numeric_limits<double>::infinity());
@@ -170,7 +186,7 @@ TEST(Optimum, WithABatteryTheRouteIsSplitIntoTripsThatReplayWithinEachCharge) {
   RunMap m = load_run_map_spec("rooms:w=40,h=30,door=2,seed=4");
   RunSpec spec = spec_of(std::move(m.map), 4.0);
   spec.robot.battery_capacity = 150.0;
-  const OptimumResult r = solve_optimum(spec, OptimumOptions{});
+  const OptimumResult r = solve_optimum(spec, short_test_options());
   ASSERT_LT(r.upper_m, std::numeric_limits<double>::infinity());
   EXPECT_GT(r.trips, 1);
   const CoverageInstance in = build_coverage_instance(spec);
@@ -181,7 +197,7 @@ TEST(Optimum, WithABatteryTheRouteIsSplitIntoTripsThatReplayWithinEachCharge) {
   // Without the battery the optimum can only be shorter: the same lower bound holds.
   RunSpec unlimited = spec;
   unlimited.robot.battery_capacity = std::numeric_limits<double>::infinity();
-  EXPECT_LE(solve_optimum(unlimited, OptimumOptions{}).lower_m, r.upper_m);
+  EXPECT_LE(solve_optimum(unlimited, short_test_options()).lower_m, r.upper_m);
   EXPECT_GT(check_runs_above_lower_bound("rooms:w=40,h=30,door=2,seed=4", 4.0, 1, 150.0), 0);
 }
 
@@ -201,7 +217,7 @@ TEST(Optimum, TheWitnessSearchTheViewpointMovesAndTheRestartsOnlyTightenTheBound
     LowerBoundOptions without_search;
     without_search.witness_swaps = 0;
     const double plain = CoverageLowerBound(in, without_search).at_start();
-    const double searched = CoverageLowerBound(in, LowerBoundOptions{}).at_start();
+    const double searched = CoverageLowerBound(in, short_test_options().lower).at_start();
     EXPECT_GE(searched, plain);
     raised += searched > plain ? 1 : 0;
     RouteOptions one_cover;
@@ -211,7 +227,8 @@ TEST(Optimum, TheWitnessSearchTheViewpointMovesAndTheRestartsOnlyTightenTheBound
     const double unmoved =
         replay_route(in, spec, cover_route(in, spec, without_moves).cells).distance_to_final_coverage_m;
     const RouteReplay moved = replay_route(in, spec, cover_route(in, spec, one_cover).cells);
-    const RouteReplay restarted = replay_route(in, spec, cover_route(in, spec, RouteOptions{}).cells);
+    const RouteReplay restarted =
+        replay_route(in, spec, cover_route(in, spec, short_test_options().route).cells);
     ASSERT_TRUE(moved.covers());
     ASSERT_TRUE(restarted.covers());
     EXPECT_LE(moved.distance_to_final_coverage_m, unmoved);
@@ -230,11 +247,11 @@ TEST(Optimum, TheSweepBoundHoldsWithAndWithoutABattery) {
   RunSpec spec = spec_of(std::move(m.map), 2.0);
   spec.robot.battery_capacity = 50.0;
   const CoverageInstance in = build_coverage_instance(spec);
-  const CoverageLowerBound bound(in, LowerBoundOptions{});
+  const CoverageLowerBound bound(in, short_test_options().lower);
   EXPECT_GT(sweep_bound(in), 0.0);
   EXPECT_EQ(bound.start_sweep_bound(), sweep_bound(in));
   EXPECT_GE(bound.at_start(), bound.start_sweep_bound());
-  EXPECT_EQ(solve_optimum(spec).lower_method, "sweep bound");
+  EXPECT_EQ(solve_optimum(spec, short_test_options()).lower_method, "sweep bound");
   EXPECT_GT(check_runs_above_lower_bound("free:w=25,h=25", 2.0, 1, 50.0), 0);
   EXPECT_GT(check_runs_above_lower_bound("free:w=25,h=25", 2.0, 1), 0);
 }
@@ -312,9 +329,10 @@ TEST(Optimum, RefusesSensorsItDoesNotModelAndInstancesAboveTheSizeLimit) {
   EXPECT_EQ(path_of(spec, kMaxVisibilityPairs), "no error");
 }
 
-/// The long version (ctest label optimum-long, make test-long, the nightly job): many maps, all
+/// The long version (ctest label long, make test-long, the nightly job): many maps, all
 /// strategies, sensor misses and a battery.
 TEST(OptimumLong, DISABLED_CompleteRunsAreNeverBelowTheLowerBoundOnManyMaps) {
+  check_options() = OptimumOptions{};  // the defaults (this test runs alone, under its label)
   int checked = 0;
   for (int seed = 1; seed <= 12; ++seed) {
     const std::string s = std::to_string(seed);

@@ -112,7 +112,8 @@ std::vector<double> integers(int from, int to, int step = 1) {
   return v;
 }
 
-TEST(ExactSearch, EveryVectorOfASmallBoxBehavesAsItsRunAlone) {
+// Long (label long: make test-long, the nightly job); the shorter boxes below run in make test.
+TEST(ExactSearchLong, DISABLED_EveryVectorOfASmallBoxBehavesAsItsRunAlone) {
   const RunSpec spec = spec_on("office:w=32,h=32,seed=3", 120.0);
   // Small enough for the sanitizer pass (-O0), which runs every vector's simulation too.
   const WeightGrid grid({integers(0, 4), integers(0, 4), integers(0, 4), integers(0, 4)});

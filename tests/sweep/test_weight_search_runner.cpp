@@ -271,7 +271,8 @@ TEST(WeightSearchRunner, AHeatMapCellNamesTheFirstOfTheBehavioursTiedAtItsBest) 
   std::filesystem::remove_all(dir);
 }
 
-TEST(WeightSearchRunner, TargetSeekingIsSearchedAsEquationTwelveOverDecimalWeights) {
+// Long (label long: make test-long, the nightly job).
+TEST(WeightSearchLong, DISABLED_TargetSeekingIsSearchedAsEquationTwelveOverDecimalWeights) {
   // Arvanitakis' equation 12 is linear in (w1, w2, w3): a box of decimal weights, with a target
   // (one cell step per decision) and without (pure exploration), against the brute force.
   const std::vector<std::string> names{"w1", "w2", "w3"};
