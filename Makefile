@@ -33,7 +33,7 @@ install:
 
 # The GoogleTest suites and fuzz replays run once, sanitized (label unit-also-sanitized: tests/CMakeLists.txt).
 test:
-	@scripts/bootstrap release fsweep fsweep_bench
+	@scripts/bootstrap release fsweep
 	cd build/release && ctest --output-on-failure -j 2 -L unit -LE also-sanitized || { ../../scripts/ctest-failures .; exit 1; }
 	cd build/release && ctest --output-on-failure -L slurm || { ../../scripts/ctest-failures .; exit 1; }
 	@scripts/bootstrap asan

@@ -139,7 +139,8 @@ TEST(ExactSearch, TheSpecsOwnWeightsDoNotMatterEvenWithoutABattery) {
   expect_agrees_with_brute_force(spec, grid, "office, unlimited battery");
 }
 
-TEST(ExactSearch, IsTheSameForAnyThreadCount) {
+// Long (label long: make test-long, the nightly job).
+TEST(ExactSearchLong, DISABLED_IsTheSameForAnyThreadCount) {
   const RunSpec spec = spec_on("office:w=32,h=32,seed=3", 120.0);
   const WeightGrid grid({integers(0, 20, 4), integers(0, 20, 5), integers(0, 20, 4), integers(0, 20, 5)});
   ExactSearchStats one_stats;
@@ -158,7 +159,8 @@ TEST(ExactSearch, IsTheSameForAnyThreadCount) {
   EXPECT_EQ(one_stats.forks + 1, one.size());
 }
 
-TEST(ExactSearch, AClassIsSearchedJointlyAsTheCommonRefinementOfItsInstances) {
+// Long (label long: make test-long, the nightly job).
+TEST(ExactSearchLong, DISABLED_AClassIsSearchedJointlyAsTheCommonRefinementOfItsInstances) {
   // Two maps searched together: two vectors share a joint behaviour exactly when they share a
   // behaviour on each map alone, and the joint behaviour's run on each map is that behaviour's.
   const std::vector<RunSpec> instances{spec_on("office:w=32,h=32,seed=3", 120.0),

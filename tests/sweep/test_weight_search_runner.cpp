@@ -316,7 +316,8 @@ std::vector<std::string> journal_lines(const std::string& journal, std::size_t* 
   return lines;
 }
 
-TEST(WeightSearchRunner, ShardsMergeIntoExactlyTheFilesOfOneSearch) {
+// Long (label long: make test-long, the nightly job).
+TEST(WeightSearchLong, DISABLED_ShardsMergeIntoExactlyTheFilesOfOneSearch) {
   // A map class searched whole and as 3 shards (their parts of one behaviour joined by its
   // trace), in both modes: every CSV file of the merge is the unsharded one, byte for byte.
   const json box = {
