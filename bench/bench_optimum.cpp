@@ -13,7 +13,9 @@
 ///   `rooms:w=9,h=7,door=1,min_room=3,seed=2`, sensor 2 m).
 ///
 /// Counters: `lower_m`, `upper_m`, `gap` ((upper - lower) / lower, 0 when exact), `exact` (1 when
-/// the bounds meet), `explorable` (cells the route must reveal).
+/// the bounds meet), `explorable` (cells the route must reveal), and `upper_one_cover_m`: the
+/// covering route from the plain greedy cover alone (RouteOptions::restarts 1; computed after the
+/// timing), 0 when its replay misses a cell.
 
 #include <benchmark/benchmark.h>
 
@@ -22,6 +24,8 @@
 #include <utility>
 #include <vector>
 
+#include "optimum/cover_route.hpp"
+#include "optimum/coverage_instance.hpp"
 #include "optimum/optimum.hpp"
 #include "world/map_spec.hpp"
 
@@ -70,6 +74,13 @@ void optimum(benchmark::State& state, const OptimumCase& c) {
   state.counters["gap"] = r.gap();
   state.counters["exact"] = r.exact ? 1.0 : 0.0;
   state.counters["explorable"] = r.targets - r.out_of_reach;
+  // Outside the timing: the upper bound of the plain greedy cover alone (RouteOptions::restarts
+  // 1), what the other covers add.
+  const CoverageInstance in = build_coverage_instance(spec);
+  RouteOptions plain;
+  plain.restarts = 1;
+  const RouteReplay one = replay_route(in, spec, cover_route(in, spec, plain).cells);
+  state.counters["upper_one_cover_m"] = one.covers() ? one.distance_to_final_coverage_m : 0.0;
 }
 
 const bool kOptimumRegistered = [] {

@@ -19,18 +19,15 @@ double limit_cells(const DistanceQuery& query, double resolution_m) {
   return query.max_distance_m / resolution_m * (1.0 + 1e-12) + kSlackCells;
 }
 
-/// Dijkstra environment of one compute(): cells are states, octile moves, no heuristic, and the
-/// early-stop rule of DistanceQuery::stop_at_first_of in visit().
-class FieldEnvironment {
+/// Dijkstra environment of one compute(): the octile moves, no heuristic, and the early-stop rule
+/// of DistanceQuery::stop_at_first_of in visit().
+class FieldEnvironment : public OctileMoves {
  public:
   /// `all_targets` > 0: settle-all mode (stop once that many distinct targets are settled);
   /// 0: nearest-target mode. `is_target`: null for no early stop.
   FieldEnvironment(const KnownMap& known, bool allow_corner_cutting, const std::vector<bool>* is_target,
                    int all_targets)
-      : known_(known),
-        allow_corner_cutting_(allow_corner_cutting),
-        is_target_(is_target),
-        remaining_targets_(all_targets) {}
+      : OctileMoves(known, allow_corner_cutting), is_target_(is_target), remaining_targets_(all_targets) {}
 
   /// Settle-all mode only: reports settled targets to `watcher` and lets it stop the search.
   /// `positions`: (cell, position) of every target, sorted (DistanceField's member).
@@ -40,8 +37,6 @@ class FieldEnvironment {
     resolution_m_ = resolution_m;
   }
 
-  using Cost = OctileCost;
-  [[nodiscard]] int state_count() const { return known_.size(); }
   static constexpr bool kZeroHeuristic = true;
   [[nodiscard]] static Cost heuristic(int /*state*/) { return {}; }
 
@@ -58,11 +53,6 @@ class FieldEnvironment {
       nearest_target_g_ = g;
     }
     return Visit::Expand;
-  }
-
-  template <typename Sink>
-  void for_each_successor(int state, Sink&& sink) const {
-    for_each_octile_neighbour<Cost>(known_, state, allow_corner_cutting_, sink);
   }
 
  private:
@@ -83,8 +73,6 @@ class FieldEnvironment {
     return true;
   }
 
-  const KnownMap& known_;
-  bool allow_corner_cutting_;
   const std::vector<bool>* is_target_;  // null: no early stop
   double nearest_target_g_ = -1.0;      // cells; < 0 until the first target is settled
   int remaining_targets_ = 0;           // settle-all mode: distinct targets not yet settled

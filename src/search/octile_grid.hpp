@@ -105,20 +105,18 @@ inline void for_each_octile_neighbour(const KnownMap& known, int index, bool all
   if ((moves & 128U) != 0) sink(index - w + 1, kDiagonal);
 }
 
-/// The Dijkstra environment of a field over known free space (the contract of grid_search.hpp):
-/// cells are states, the moves above at exact costs (OctileCost), no heuristic, every settled
-/// cell expanded. Run from one cell or from several (a multi-source field).
-class OctileFieldEnvironment {
+/// The states and successors of a search environment over known free space (the contract of
+/// grid_search.hpp): cells are states, the moves above at exact costs (OctileCost). The
+/// environments below, and the distance fields' own (distance_field.cpp), add their heuristic
+/// and stop rule to it.
+class OctileMoves {
  public:
   using Cost = OctileCost;
-  static constexpr bool kZeroHeuristic = true;
 
-  OctileFieldEnvironment(const KnownMap& known, bool allow_corner_cutting)
+  OctileMoves(const KnownMap& known, bool allow_corner_cutting)
       : known_(known), allow_corner_cutting_(allow_corner_cutting) {}
 
   [[nodiscard]] int state_count() const { return known_.size(); }
-  [[nodiscard]] static Cost heuristic(int /*state*/) { return {}; }
-  static Visit visit(int /*state*/, double /*g*/) { return Visit::Expand; }
   template <typename Sink>
   void for_each_successor(int state, Sink&& sink) const {
     for_each_octile_neighbour<Cost>(known_, state, allow_corner_cutting_, sink);
@@ -129,24 +127,30 @@ class OctileFieldEnvironment {
   bool allow_corner_cutting_;
 };
 
-/// The search environment of one query to a goal cell over known free space (the contract of
-/// grid_search.hpp): cells are states, the moves above at exact costs (OctileCost), the goal
-/// ends the search; the heuristic is the octile length to the goal for A* (exact and
+/// The Dijkstra environment of a field over known free space: the moves above, no heuristic,
+/// every settled cell expanded. Run from one cell or from several (a multi-source field).
+class OctileFieldEnvironment : public OctileMoves {
+ public:
+  static constexpr bool kZeroHeuristic = true;
+  using OctileMoves::OctileMoves;
+  [[nodiscard]] static Cost heuristic(int /*state*/) { return {}; }
+  static Visit visit(int /*state*/, double /*g*/) { return Visit::Expand; }
+};
+
+/// The search environment of one query to a goal cell over known free space: the moves above,
+/// the goal ends the search; the heuristic is the octile length to the goal for A* (exact and
 /// consistent) and 0 for Dijkstra (declared, so the search uses its Dijkstra open list).
 template <bool kAStar>
-class OctileGoalEnvironment {
+class OctileGoalEnvironment : public OctileMoves {
  public:
-  using Cost = OctileCost;
   static constexpr bool kZeroHeuristic = !kAStar;
 
   OctileGoalEnvironment(const KnownMap& known, Cell goal, bool allow_corner_cutting)
-      : known_(known),
+      : OctileMoves(known, allow_corner_cutting),
         goal_(goal),
         goal_index_(known.index(goal)),
-        cells_(known.width()),
-        allow_corner_cutting_(allow_corner_cutting) {}
+        cells_(known.width()) {}
 
-  [[nodiscard]] int state_count() const { return known_.size(); }
   [[nodiscard]] Cost heuristic(int state) const {
     if constexpr (kAStar) {
       return octile_cost(cells_.cell(state), goal_);
@@ -157,17 +161,11 @@ class OctileGoalEnvironment {
   [[nodiscard]] Visit visit(int state, double /*g*/) const {
     return state == goal_index_ ? Visit::Goal : Visit::Expand;
   }
-  template <typename Sink>
-  void for_each_successor(int state, Sink&& sink) const {
-    for_each_octile_neighbour<Cost>(known_, state, allow_corner_cutting_, sink);
-  }
 
  private:
-  const KnownMap& known_;
   Cell goal_;
   int goal_index_;
   CellIndexer cells_;
-  bool allow_corner_cutting_;
 };
 
 }  // namespace search

@@ -241,6 +241,20 @@ TEST(Optimum, TheWitnessSearchTheViewpointMovesAndTheRestartsOnlyTightenTheBound
   EXPECT_GT(restarts_helped, 0);
 }
 
+TEST(Optimum, NoRestartBeginsOnceTheWorkBudgetIsSpent) {
+  // A budget the first route spends: the route of the plain cover alone, whatever `restarts` says.
+  RunMap m = load_run_map_spec("rooms:w=30,h=24,door=2,seed=3");
+  const RunSpec spec = spec_of(std::move(m.map), 4.0);
+  const CoverageInstance in = build_coverage_instance(spec);
+  RouteOptions spent;
+  spent.restart_work = 0;
+  RouteOptions one;
+  one.restarts = 1;
+  const std::vector<int> plain = cover_route(in, spec, one).cells;
+  EXPECT_EQ(cover_route(in, spec, spent).cells, plain);
+  EXPECT_NE(cover_route(in, spec, RouteOptions{}).cells, plain);  // so the budget mattered
+}
+
 TEST(Optimum, TheSweepBoundHoldsWithAndWithoutABattery) {
   // In free space the sweep bound is the larger one; no complete run is below it.
   RunMap m = load_run_map_spec("free:w=25,h=25");

@@ -17,6 +17,7 @@
 #include "sweep/sweep_plan.hpp"
 #include "sweep/sweep_runner.hpp"
 #include "sweep/sweep_test_files.hpp"
+#include "sweep/sweep_test_run.hpp"
 
 namespace fsweep {
 namespace {
@@ -42,13 +43,7 @@ json tiny_sweep() {
 }
 
 void run(const json& sweep, const std::string& dir, std::uint64_t shard, std::uint64_t count) {
-  RunnerOptions o;
-  o.threads = 2;
-  o.out_dir = dir;
-  o.progress = false;
-  o.shard_index = shard;
-  o.shard_count = count;
-  (void)run_sweep(SweepPlan::from_json(sweep, "test.json"), o);
+  (void)testing::run_test_shard(sweep, dir, shard, count);
 }
 
 /// Lines of a CSV text (runs.csv has no quoted newlines) with the `*_time_s` columns removed:

@@ -28,6 +28,7 @@
 #include "sweep/sweep_runner.hpp"
 #include "sweep/sweep_table.hpp"
 #include "sweep/sweep_test_files.hpp"
+#include "sweep/sweep_test_run.hpp"
 
 extern char** environ;  // NOLINT(readability-redundant-declaration): for posix_spawn
 
@@ -68,22 +69,8 @@ json long_sweep() {
 }
 
 RunnerReport run(const json& sweep, const std::string& dir, int threads, bool fresh = false) {
-  RunnerOptions o;
-  o.threads = threads;
-  o.out_dir = dir;
-  o.progress = false;
+  RunnerOptions o = testing::quiet_runner(dir, threads);
   o.fresh = fresh;
-  return run_sweep(SweepPlan::from_json(sweep, "test.json"), o);
-}
-
-/// Shard `index` of `count` of `sweep` into `dir` on 2 threads.
-RunnerReport run_shard(const json& sweep, const std::string& dir, std::uint64_t index, std::uint64_t count) {
-  RunnerOptions o;
-  o.threads = 2;
-  o.out_dir = dir;
-  o.progress = false;
-  o.shard_index = index;
-  o.shard_count = count;
   return run_sweep(SweepPlan::from_json(sweep, "test.json"), o);
 }
 
@@ -196,10 +183,7 @@ TEST(SweepRunnerChild, RunsTheSweepNamedInTheEnvironment) {
   const char* sweep = std::getenv(kChildSweepEnv);
   const char* out = std::getenv(kChildOutEnv);
   if (sweep == nullptr || out == nullptr) GTEST_SKIP() << "only runs as the child of ResumeAfterSigkill";
-  RunnerOptions o;
-  o.threads = 2;
-  o.out_dir = out;
-  o.progress = false;
+  RunnerOptions o = testing::quiet_runner(out);
   (void)run_sweep(SweepPlan::from_file(sweep), o);
 }
 
@@ -719,7 +703,7 @@ TEST(SweepRunner, OfflineOptimumColumnsAreCertifiedCachedAndTheSameResumedSharde
   // Shards solve the keys of their own runs; merged, the unsharded rows.
   const std::string sharded = temp_dir("offline_optimum_sharded");
   for (std::uint64_t s = 0; s < 2; ++s)
-    EXPECT_EQ(run_shard(competitive_sweep(), sharded, s, 2).optima.needed, 2U);
+    EXPECT_EQ(testing::run_test_shard(competitive_sweep(), sharded, s, 2).optima.needed, 2U);
   ASSERT_TRUE(merge_shards(sharded).written);
   EXPECT_EQ(without_timing(read_file(sharded + "/runs.csv")), without_timing(csv));
   // The merged folder holds the shards' optima (for a later resume or a changed sweep there).
@@ -861,7 +845,7 @@ TEST(SweepRunner, ShardsPartitionTheRuns) {
     std::vector<int> seen(48, 0);
     for (std::uint64_t s = 0; s < n; ++s) {
       const std::uint64_t size = s < 48 ? (48 - s - 1) / n + 1 : 0;
-      const RunnerReport r = run_shard(small_sweep(), dir, s, n);
+      const RunnerReport r = testing::run_test_shard(small_sweep(), dir, s, n);
       EXPECT_EQ(r.total, size);
       EXPECT_EQ(r.ran, size);
       EXPECT_EQ(r.out_dir, n == 1 ? dir : dir + "/shard-" + std::to_string(s) + "-of-" + std::to_string(n));
@@ -879,7 +863,7 @@ TEST(SweepRunner, ShardsPartitionTheRuns) {
       }
       if (s == n / 2) {  // resume: nothing left to do, files unchanged
         const std::string before = read_file(r.out_dir + "/runs.csv");
-        const RunnerReport again = run_shard(small_sweep(), dir, s, n);
+        const RunnerReport again = testing::run_test_shard(small_sweep(), dir, s, n);
         EXPECT_EQ(again.ran, 0U);
         EXPECT_EQ(again.skipped, size);
         EXPECT_EQ(read_file(r.out_dir + "/runs.csv"), before);
@@ -1059,7 +1043,9 @@ TEST(SweepRunner, AShardIsExtendedOnTheChangedSweepsShard) {
   const std::string ref = temp_dir("extend_shards_ref");
   json more_maps = default_shaped_sweep(3);
   more_maps["maps"][1]["seeds"]["range"] = {1, 3};
-  const auto shard = [&](const json& sweep, std::uint64_t i) { return run_shard(sweep, dir, i, 2); };
+  const auto shard = [&](const json& sweep, std::uint64_t i) {
+    return testing::run_test_shard(sweep, dir, i, 2);
+  };
   for (std::uint64_t i = 0; i < 2; ++i) ASSERT_EQ(shard(default_shaped_sweep(3), i).ran, 18U);
   ASSERT_TRUE(merge_shards(dir).written);
   for (std::uint64_t i = 0; i < 2; ++i) {

@@ -24,6 +24,7 @@
 #include "sweep/sweep_plan.hpp"
 #include "sweep/sweep_runner.hpp"
 #include "sweep/sweep_test_files.hpp"
+#include "sweep/sweep_test_run.hpp"
 
 namespace fsweep {
 namespace test_weight_search_runner {  // not anonymous: unity builds
@@ -68,10 +69,7 @@ json search_and_grid(const json& maps, const json& box, const json& rank, int re
 /// Runs `sweep` into a fresh directory and returns it.
 std::string run(const json& sweep, const std::string& name) {
   const std::string dir = testing::fresh_dir("search", name);
-  RunnerOptions o;
-  o.threads = 2;
-  o.out_dir = dir;
-  o.progress = false;
+  RunnerOptions o = testing::quiet_runner(dir);
   const RunnerReport r = run_sweep(SweepPlan::from_json(sweep, "search.json"), o);
   EXPECT_EQ(r.searches.searches, 1U);
   return dir;
@@ -343,10 +341,7 @@ TEST(WeightSearchLong, DISABLED_ShardsMergeIntoExactlyTheFilesOfOneSearch) {
     }
     const std::string dir = testing::fresh_dir("search", "sharded_" + variant);
     for (std::uint64_t i = 0; i < 3; ++i) {
-      RunnerOptions o;
-      o.threads = 2;
-      o.out_dir = dir;
-      o.progress = false;
+      RunnerOptions o = testing::quiet_runner(dir);
       o.shard_index = i;
       o.shard_count = 3;
       (void)run_sweep(SweepPlan::from_json(sweep, "search.json"), o);
@@ -473,10 +468,7 @@ TEST(WeightSearchRunner, AKilledBestSearchResumesWithItsJournalAsIncumbent) {
     testing::write_file(dir + "/search_journal.jsonl", kept);
     for (const char* f : {"behaviours.csv", "search_best.csv", "searches.json"})
       std::filesystem::remove(dir + "/" + f);
-    RunnerOptions o;
-    o.threads = 2;
-    o.out_dir = dir;
-    o.progress = false;
+    RunnerOptions o = testing::quiet_runner(dir);
     (void)run_sweep(SweepPlan::from_json(sweep, "search.json"), o);
     EXPECT_EQ(testing::read_file(dir + "/behaviours.csv"), behaviours) << cut;
     EXPECT_EQ(testing::read_file(dir + "/search_best.csv"), best) << cut;
@@ -595,10 +587,7 @@ TEST(WeightSearchRunner, AKilledSearchResumesFromItsJournalWithTheSameFiles) {
     for (const auto& f : files) std::filesystem::remove(dir + "/" + f);
     std::filesystem::remove(dir + "/searches.json");
 
-    RunnerOptions o;
-    o.threads = 2;
-    o.out_dir = dir;
-    o.progress = false;
+    RunnerOptions o = testing::quiet_runner(dir);
     const RunnerReport again = run_sweep(SweepPlan::from_json(sweep, "search.json"), o);
     EXPECT_EQ(again.searches.behaviours, behaviours) << what;
     const json resumed = json::parse(testing::read_file(dir + "/searches.json"))["searches"][0];
@@ -632,10 +621,7 @@ TEST(WeightSearchRunner, InterruptStopsTheSearchAndTheRerunResumesIt) {
   testing::InterruptWhen interrupter([&] {
     return std::filesystem::exists(journal) && journal_lines(testing::read_file(journal)).size() >= 4;
   });
-  RunnerOptions o;
-  o.threads = 2;
-  o.out_dir = dir;
-  o.progress = false;
+  RunnerOptions o = testing::quiet_runner(dir);
   const RunnerReport first = run_sweep(SweepPlan::from_json(sweep, "search.json"), o);
   interrupter.join();
   ASSERT_TRUE(first.interrupted) << "the search finished before the interrupt";
