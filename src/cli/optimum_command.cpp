@@ -44,7 +44,7 @@ struct OptimumCliOptions {
 constexpr double kMaxTimeLimitS = 1e9;
 
 /// build_coverage_instance() with its robot problems named as the option that gave them:
-/// "robot/sensor/fov_deg: ..." becomes "--robot: sensor.fov_deg: ...".
+/// "robot/sensor/model: ..." becomes "--robot: sensor.model: ...".
 CoverageInstance build_instance(const RunSpec& spec) {
   try {
     return build_coverage_instance(spec);
@@ -208,9 +208,8 @@ Command add_optimum_command(CLI::App& app) {
   sub->add_option(
       "--robot", o->robot,
       "Robot setting key=value (repeatable): sensor.range_m, energy (distance|mei2006|pioneer3dx), "
-      "battery, dock=[x,y], start_heading, allow_corner_cutting; the sensor must be the grid "
-      "model with fov_deg 360 (sensor.miss_probability is ignored: the offline sensor never "
-      "misses)");
+      "battery, dock=[x,y], start_heading, allow_corner_cutting, sensor.fov_deg; the sensor must be "
+      "the grid model (sensor.miss_probability is ignored: the offline sensor never misses)");
   sub->add_option("--seed", o->seed, "Seed of a random start (start=random), as `fsweep sim --seed`")
       ->capture_default_str();
   sub->add_option("--out", o->out, "Output directory")->capture_default_str();

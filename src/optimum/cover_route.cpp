@@ -5,6 +5,7 @@
 #include <initializer_list>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <queue>
 #include <unordered_map>
 #include <utility>
@@ -402,25 +403,60 @@ std::optional<std::vector<std::size_t>> split_trips(const PointDistances& d, con
   return starts;
 }
 
-/// The route's cells: legs between consecutive points, back to the dock before each trip start.
+/// With a field of view below 360 degrees, the robot on the route's last cell turns to face, in
+/// turn, headings whose fields of view together with its arrival heading's go round the circle
+/// (45-degree headings, fov rounded down to them): each by a step to the neighbour behind that
+/// heading and back. `heading` is the heading on arrival, updated. Headings whose neighbour cannot
+/// be stepped to are left out (the replay then says whether the route still covers).
+void look_around(const CoverageInstance& in, std::vector<int>& cells, int& heading) {
+  if (in.fov_deg >= 360.0) return;
+  const int step = std::clamp(static_cast<int>(in.fov_deg / 45.0), 1, 4);  // in 45-degree headings
+  const int turns = (8 + step - 1) / step;
+  const Cell at = in.truth.cell(cells.back());
+  const int first = heading;
+  for (int i = 1; i < turns; ++i) {
+    const int h = (first + i * step) % 8;
+    const Cell behind{at.x - kDirections[static_cast<std::size_t>(h)].x,
+                      at.y - kDirections[static_cast<std::size_t>(h)].y};
+    if (in.node_at(behind) < 0 || !octile_step_allowed(in.truth, at, behind, in.allow_corner_cutting))
+      continue;
+    cells.push_back(in.truth.index(behind));
+    cells.push_back(in.truth.index(at));
+    heading = h;
+  }
+}
+
+/// Appends `path` (cells after the route's last) and follows the heading.
+void walk(const CoverageInstance& in, std::vector<int>& cells, const std::vector<int>& path, int& heading) {
+  for (const int c : path) {
+    const Cell a = in.truth.cell(cells.back());
+    const Cell b = in.truth.cell(c);
+    heading = heading_of(b.x - a.x, b.y - a.y);
+    cells.push_back(c);
+  }
+}
+
+/// The route's cells: legs between consecutive points, back to the dock before each trip start,
+/// looking around at the start and each viewpoint with a field of view below 360 degrees.
 CoverRoute assemble(const CoverageInstance& in, const PointDistances& d, const std::vector<int>& order,
                     const std::vector<std::size_t>& trip_starts) {
   CoverRoute r;
   r.cells.push_back(in.node_cell[static_cast<std::size_t>(d.points[static_cast<std::size_t>(order[0])])]);
   r.trip_starts.push_back(0);
+  int heading = in.start_heading;
+  look_around(in, r.cells, heading);
   std::size_t next_trip = 0;
   int at = d.points[static_cast<std::size_t>(order[0])];
   for (std::size_t k = 1; k < order.size(); ++k) {
     if (next_trip < trip_starts.size() && trip_starts[next_trip] == k) {
-      const std::vector<int> home = leg(in, at, in.dock_node);
-      r.cells.insert(r.cells.end(), home.begin(), home.end());
+      walk(in, r.cells, leg(in, at, in.dock_node), heading);
       at = in.dock_node;
       r.trip_starts.push_back(r.cells.size() - 1);
       ++next_trip;
     }
     const int to = d.points[static_cast<std::size_t>(order[k])];
-    const std::vector<int> cells = leg(in, at, to);
-    r.cells.insert(r.cells.end(), cells.begin(), cells.end());
+    walk(in, r.cells, leg(in, at, to), heading);
+    look_around(in, r.cells, heading);
     r.viewpoints.push_back(to);
     at = to;
   }
@@ -464,7 +500,7 @@ RouteReplay replay_route(const CoverageInstance& in, const RunSpec& spec, std::s
     heading = h;
     r.length_m += step_cells * in.resolution_m;
     if (used > capacity) r.battery_ok = false;
-    if (b == in.dock && i + 1 < cells.size()) {
+    if (in.limited_battery() && b == in.dock && i + 1 < cells.size()) {
       used = 0.0;
       r.recharge_steps.push_back(static_cast<int>(i));
       if (r.revealed < r.explorable) ++r.trips;
@@ -519,6 +555,57 @@ void improve_and_prune(const CoverageInstance& in, Plan& plan, int max_passes) {
   }
 }
 
+/// Viewpoints for the explorable targets `replay` left unrevealed (the legs home to the dock
+/// replace legs between viewpoints that pruning or relocation counted on): for each such target,
+/// in id order and unless a viewpoint added before sees it, the usable node that sees it with the
+/// cheapest insertion into `plan`'s order (as one trip: an insertion cost that counts the legs to
+/// and from the dock made the route longer on the maps tried). Returns the new order's nodes; empty when none
+/// is missing or a target has no usable viewpoint.
+std::vector<int> with_missing_viewpoints(const CoverageInstance& in, const Plan& plan,
+                                         const RouteReplay& replay) {
+  std::vector<std::pair<std::size_t, int>> inserts;  // (before position k of the order, node)
+  std::vector<std::uint8_t> handled(static_cast<std::size_t>(in.targets()), 0);
+  const std::size_t m = plan.order.size();
+  for (int t = 0; t < in.targets(); ++t) {
+    if (!in.is_explorable(t) || handled[static_cast<std::size_t>(t)] != 0 ||
+        !replay.known.is_unknown(in.target_cell[static_cast<std::size_t>(t)]))
+      continue;
+    // Insertion costs from the distance fields of the plan's points (the lengths are symmetric).
+    double best_cost = kInfinity;
+    std::pair<std::size_t, int> best{0, -1};
+    for (const int v : in.seen_from.row(t)) {
+      if (in.node_usable[static_cast<std::size_t>(v)] == 0) continue;
+      const auto to = [&](int point) {
+        return (*plan.d.field[static_cast<std::size_t>(point)])[static_cast<std::size_t>(v)];
+      };
+      const auto detour = [&](int a, int b) { return to(a) + to(b) - plan.d.between(a, b); };
+      for (std::size_t k = 1; k <= m; ++k) {
+        const double cost = k == m ? to(plan.order[k - 1]) : detour(plan.order[k - 1], plan.order[k]);
+        if (cost < best_cost) {
+          best_cost = cost;
+          best = {k, v};
+        }
+      }
+    }
+    if (best.second < 0) return {};
+    inserts.push_back(best);
+    for (const int seen : in.sees.row(best.second)) handled[static_cast<std::size_t>(seen)] = 1;
+  }
+  if (inserts.empty()) return {};
+  std::stable_sort(inserts.begin(), inserts.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<int> nodes;
+  std::size_t next = 0;
+  for (std::size_t k = 0; k <= m; ++k) {
+    for (; next < inserts.size() && inserts[next].first == k; ++next) nodes.push_back(inserts[next].second);
+    if (k < m) nodes.push_back(plan.d.points[static_cast<std::size_t>(plan.order[k])]);
+  }
+  return nodes;
+}
+
+/// Rounds of with_missing_viewpoints() per candidate order.
+constexpr int kRepairRounds = 4;
+
 /// Steps 1-4 from one cover: the restart `restart` (0: the plain greedy cover).
 CoverRoute one_route(const CoverageInstance& in, const RunSpec& spec, const RouteOptions& options,
                      int restart, FieldCache& fields) {
@@ -548,27 +635,43 @@ CoverRoute one_route(const CoverageInstance& in, const RunSpec& spec, const Rout
     tried.push_back(std::move(plan));
     plan = std::move(next);
   }
-  if (!in.limited_battery()) return assemble(in, plan.d, plan.order, {});
+  // With the 360-degree sensor and no battery the order covers by construction (covers_all()).
+  if (!in.limited_battery() && in.fov_deg >= 360.0) return assemble(in, plan.d, plan.order, {});
   // Trips: the split on lengths, then the replay with turns; a split the turns break is redone
   // with a smaller range per charge. A trip's way home replaces the path between two viewpoints
-  // that pruning or relocation may have counted on, so the earlier plans, down to the unpruned
-  // order, are tried when one's trips miss a target.
+  // that pruning or relocation may have counted on (and a narrow field of view does not see what
+  // the 360-degree tables say the legs see), so targets the replay misses get viewpoints back
+  // (with_missing_viewpoints(), a few rounds), and then the earlier plans, down to the unpruned
+  // order, are tried.
   std::vector<const Plan*> candidates{&plan};
   for (auto it = tried.rbegin(); it != tried.rend(); ++it) candidates.push_back(&*it);
   candidates.push_back(&unpruned);
   for (const Plan* candidate : candidates) {
-    double range = in.range_per_charge_m;
-    for (int attempt = 0; attempt < 12; ++attempt) {
-      const auto starts = split_trips(candidate->d, candidate->order, candidate->dock_point, range);
-      if (!starts) break;
-      CoverRoute route = assemble(in, candidate->d, candidate->order, *starts);
-      const RouteReplay replay = replay_route(in, spec, route.cells);
-      if (replay.covers()) return route;
-      if (replay.battery_ok) break;  // covers less: the next candidate
-      range *= 0.97;
+    Plan repaired = *candidate;
+    for (int round = 0; round <= kRepairRounds; ++round) {
+      double range = in.range_per_charge_m;
+      std::optional<RouteReplay> missed;
+      for (int attempt = 0; attempt < 12; ++attempt) {
+        const auto starts = in.limited_battery()
+                                ? split_trips(repaired.d, repaired.order, repaired.dock_point, range)
+                                : std::optional<std::vector<std::size_t>>(std::in_place);
+        if (!starts) break;
+        CoverRoute route = assemble(in, repaired.d, repaired.order, *starts);
+        RouteReplay replay = replay_route(in, spec, route.cells);
+        if (replay.covers()) return route;
+        if (replay.battery_ok) {  // covers less
+          missed = std::move(replay);
+          break;
+        }
+        range *= 0.97;
+      }
+      if (!missed || round == kRepairRounds) break;
+      std::vector<int> nodes = with_missing_viewpoints(in, repaired, *missed);
+      if (nodes.empty()) break;
+      repaired = plan_of(in, fields, std::move(nodes));
     }
   }
-  return assemble(in, plan.d, plan.order, {});  // no split fits: the replay says battery_ok = false
+  return assemble(in, plan.d, plan.order, {});  // none covers: the replay says why
 }
 
 }  // namespace

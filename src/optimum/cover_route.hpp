@@ -19,7 +19,10 @@
 /// 4. trips, with a battery: the order is cut into trips from the dock by an optimal split
 ///    (a shortest path over cut points, each trip's travel with its way back to the dock within
 ///    one charge; the last trip's way back is not counted, as a run's distance to final coverage
-///    does not count it).
+///    does not count it). A leg home replaces a leg between two viewpoints that pruning or a move
+///    may have counted on: targets the trips' replay leaves unrevealed get viewpoints back, each the
+///    usable node that sees it with the cheapest insertion into the order, and the order is split
+///    again (a few rounds).
 /// The steps run from RouteOptions::restarts different covers (step 1 with seeded random gains),
 /// and the shortest route whose replay covers is kept.
 /// The route is the cells of the shortest paths between consecutive points. replay_route() walks

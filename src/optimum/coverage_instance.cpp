@@ -23,12 +23,6 @@ void check_sensor(const SensorParams& s) {
         "the offline optimum models the grid sensor only (what a beam lidar sees depends on the "
         "heading a route arrives with); allowed: \"grid\"");
   }
-  if (s.fov_deg < 360.0) {
-    throw ConfigError("robot/sensor/fov_deg",
-                      "value " + format_number(s.fov_deg) +
-                          ": the offline optimum models a 360-degree sensor only (what a "
-                          "narrower one sees depends on the heading); allowed: 360");
-  }
 }
 
 /// Rows from (row, item) pairs sorted by row then item.
@@ -84,9 +78,12 @@ CoverageInstance build_coverage_instance(const RunSpec& spec, std::size_t max_vi
                       "the dock " + cell_text(in.dock) + " is not a free cell reachable from the start");
   }
 
-  // What each node sees: one noiseless scan on an empty copy of the map, then forgotten.
+  // What each node sees: one noiseless scan on an empty copy of the map, then forgotten; with a
+  // narrower field of view, the 360-degree scan (what the node sees facing any way).
+  in.fov_deg = spec.robot.sensor.fov_deg;
   SensorParams noiseless = spec.robot.sensor;
   noiseless.miss_probability = 0.0;
+  noiseless.fov_deg = 360.0;
   Sensor sensor(noiseless, in.resolution_m);
   KnownMap scratch(in.width, in.height, in.resolution_m);
   Rng unused(0);

@@ -20,9 +20,13 @@
 /// get no ratio.
 ///
 /// Viewpoints ("nodes"): the cells of R, the only cells a robot stands on. What a node sees is
-/// one scan from it on the true map (sensor.hpp's grid model; a 360-degree field of view, so
-/// the heading does not matter). A limited field of view and the beam model are refused: what
-/// a scan sees then depends on the heading the route arrives with.
+/// one scan from it on the true map (sensor.hpp's grid model) with a 360-degree field of view.
+/// With a narrower one (fov_deg), that is what the node sees facing every way, so the tables
+/// describe a relaxation: a route of the narrower sensor reveals no more than the same route
+/// with the 360-degree one, and the lower bounds, computed on the tables, hold for it. Routes
+/// (cover_route.hpp) then turn round on their viewpoints, and only their replay with the run's
+/// own sensor certifies them. The beam model is refused: what it sees between its beams is not
+/// what a grid scan sees.
 ///
 /// Battery: the robot recharges at the dock as runs do. Its range per charge is the capacity
 /// divided by the cheapest energy per metre (turns cost extra energy, never less), so a node
@@ -64,6 +68,8 @@ struct CoverageInstance {
   bool allow_corner_cutting = false;
   Cell start{};
   int start_heading = 0;
+  /// The run's field of view (degrees); the tables are those of a 360-degree scan.
+  double fov_deg = 360.0;
   Cell dock{};
   /// The true map, every cell known: the searches and the replays run on it.
   KnownMap truth;
@@ -111,9 +117,8 @@ struct CoverageInstance {
 inline constexpr std::size_t kMaxVisibilityPairs = 40'000'000;
 
 /// Builds the instance of `spec` (map, start, robot). Throws ConfigError: the map's checks of a
-/// run (RunSetup), an instance above `max_visibility_pairs` ("map"), a sensor the offline problem does not
-/// model
-/// ("robot/sensor/fov_deg" below 360, "robot/sensor/model" beams), a sensor range below one diagonal cell.
+/// run (RunSetup), an instance above `max_visibility_pairs` ("map"), the beam sensor
+/// ("robot/sensor/model"), a sensor range below one diagonal cell.
 /// miss_probability is ignored (the offline sensor is noiseless). Cost: one scan per reachable free cell.
 [[nodiscard]] CoverageInstance build_coverage_instance(
     const RunSpec& spec, std::size_t max_visibility_pairs = kMaxVisibilityPairs);

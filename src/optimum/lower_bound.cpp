@@ -15,6 +15,9 @@ namespace {
 
 constexpr std::size_t kFarthestFirstCandidates = 4000;
 
+/// The trip bound's spacings between witnesses' groups, as shares of the range per charge.
+constexpr double kTripSpacings[] = {0.0, 1.0 / 64, 1.0 / 32, 1.0 / 16, 1.0 / 8, 1.0 / 4};
+
 /// The explorable targets, fewest viewpoints first (then by id): the hardest to see first.
 std::vector<int> explorable_by_fewest_viewpoints(const CoverageInstance& in) {
   std::vector<int> order;
@@ -159,6 +162,99 @@ double sweep_bound(const CoverageInstance& in) {
   return best * (1.0 - kBoundRoundingMargin);
 }
 
+namespace {
+
+/// A target the start's scan leaves and its group's distance from the dock.
+struct TripCandidate {
+  double delta;
+  int target;
+};
+
+/// trip_bound() over the witnesses taken, farthest first, from `candidates` (farthest first) when
+/// their groups are at least `spacing` metres from those of the witnesses taken before.
+double trip_bound_spaced(const CoverageInstance& in, const std::vector<TripCandidate>& candidates,
+                         const std::vector<double>& start_field, double spacing) {
+  const auto group_distance = [&](const std::vector<double>& field, int target) {
+    double d = kInfinity;
+    for (const int n : in.seen_from.row(target)) d = std::min(d, field[static_cast<std::size_t>(n)]);
+    return d;
+  };
+  const double limit = in.range_per_charge_m * (1.0 + kBoundRoundingMargin);
+  std::vector<std::uint8_t> alive(candidates.size(), 1);
+  std::vector<double> deltas;
+  std::vector<double> between;     // the witnesses' group distances, each pair once
+  std::vector<double> from_start;  // each witness's group from the start
+  std::vector<int> taken;
+  for (std::size_t c = 0; c < candidates.size(); ++c) {
+    if (alive[c] == 0) continue;
+    const TripCandidate w = candidates[c];
+    const std::vector<double> field = node_distances_m(in, group_cells(in, w.target));
+    for (const int earlier : taken) between.push_back(group_distance(field, earlier));
+    taken.push_back(w.target);
+    deltas.push_back(w.delta);
+    from_start.push_back(group_distance(start_field, w.target));
+    for (std::size_t o = c + 1; o < candidates.size(); ++o) {
+      if (alive[o] == 0) continue;
+      const double d = group_distance(field, candidates[o].target);
+      // Served together, a trip is at least delta_w + d + delta_o long.
+      if (!(w.delta + d + candidates[o].delta > limit) || d < spacing) alive[o] = 0;
+    }
+  }
+  if (taken.empty()) return 0.0;
+  // The trips that may hold several witnesses: the last (it need not come back) and, from a start
+  // away from the dock, the first. A path through k groups is at least its first group's distance
+  // plus the k - 1 shortest group distances; each such trip holds at most the most k that fit.
+  std::sort(between.begin(), between.end());
+  const double nearest = *std::min_element(deltas.begin(), deltas.end());
+  const auto most_groups = [&](double lead) {
+    std::size_t k = 0;
+    double length = lead;
+    while (k < taken.size()) {
+      if (k > 0) length += between[k - 1];  // k - 1 < n (n - 1) / 2 for k < n
+      if (length > limit) break;
+      ++k;
+    }
+    return k;
+  };
+  std::size_t special = most_groups(nearest);
+  if (in.start_node != in.dock_node)
+    special += most_groups(*std::min_element(from_start.begin(), from_start.end()) + nearest);
+  // Every other witness has a trip of its own, out from the dock and back.
+  double bound = 0.0;
+  for (std::size_t i = special; i < deltas.size(); ++i) bound += 2.0 * deltas[i];  // deltas: descending
+  return bound * (1.0 - kBoundRoundingMargin);
+}
+
+}  // namespace
+
+double trip_bound(const CoverageInstance& in) {
+  if (!in.limited_battery() || in.start_node < 0 || in.dock_node < 0) return 0.0;
+  const int dock_cell = in.node_cell[static_cast<std::size_t>(in.dock_node)];
+  const std::vector<double> from_dock = node_distances_m(in, std::span<const int>(&dock_cell, 1));
+  const auto start_sees = in.sees.row(in.start_node);
+  // Candidates: the targets the start's scan leaves, farthest group from the dock first.
+  std::vector<TripCandidate> candidates;
+  for (int t = 0; t < in.targets(); ++t) {
+    if (!in.is_explorable(t) || std::binary_search(start_sees.begin(), start_sees.end(), t)) continue;
+    double d = kInfinity;
+    for (const int n : in.seen_from.row(t)) d = std::min(d, from_dock[static_cast<std::size_t>(n)]);
+    if (d > 0.0 && d < kInfinity) candidates.push_back({d, t});
+  }
+  std::stable_sort(candidates.begin(), candidates.end(), [&](const TripCandidate& a, const TripCandidate& b) {
+    if (a.delta != b.delta) return a.delta > b.delta;
+    return in.seen_from.row(a.target).size() < in.seen_from.row(b.target).size();
+  });
+  const int start_cell = in.node_cell[static_cast<std::size_t>(in.start_node)];
+  const std::vector<double> start_field =
+      in.start_node == in.dock_node ? from_dock : node_distances_m(in, std::span<const int>(&start_cell, 1));
+  // Witnesses close together let the last trip hold many of them; spaced farther apart, fewer
+  // are taken but fewer fit in one trip. The best of a few spacings is kept.
+  double best = 0.0;
+  for (const double share : kTripSpacings)
+    best = std::max(best, trip_bound_spaced(in, candidates, start_field, share * in.range_per_charge_m));
+  return best;
+}
+
 CoverageLowerBound::CoverageLowerBound(const CoverageInstance& instance, const LowerBoundOptions& options)
     : instance_(&instance) {
   if (instance.start_node < 0) return;
@@ -177,7 +273,8 @@ CoverageLowerBound::CoverageLowerBound(const CoverageInstance& instance, const L
   }
   improve_witnesses(options);
   sweep_bound_ = sweep_bound(instance);
-  at_start_ = std::max(at_start_, sweep_bound_);
+  trip_bound_ = trip_bound(instance);
+  at_start_ = std::max({at_start_, sweep_bound_, trip_bound_});
 }
 
 CoverageLowerBound::CoverageLowerBound(const CoverageInstance& instance) : instance_(&instance) {}

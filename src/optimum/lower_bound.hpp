@@ -25,9 +25,9 @@
 /// rises. Witnesses need not have disjoint groups for the bound to hold (groups that share a node
 /// are 0 apart); disjoint groups are only what makes them useful.
 /// The bound from a state ignores the battery (a relaxation: trips back to the dock only add
-/// length), so it is valid with any battery. From the start it is also at least sweep_bound(),
-/// which counts the battery. Lengths are exact octile sums (search/grid_search.hpp); the bound
-/// is lowered by a relative 1e-9 against the rounding of the sums.
+/// length), so it is valid with any battery. From the start it is also at least sweep_bound()
+/// and trip_bound(), which count the battery. Lengths are exact octile sums (search/grid_search.hpp); the
+/// bound is lowered by a relative 1e-9 against the rounding of the sums.
 ///
 /// Cost per call (from_state): O(k^2) for k unrevealed witnesses, no search. Set-up: one
 /// multi-source Dijkstra per witness over the map, k^2 group distances.
@@ -70,6 +70,21 @@ struct LowerBoundOptions {
 /// the map.
 [[nodiscard]] double sweep_bound(const CoverageInstance& instance);
 
+/// The trip bound from the start, with a battery (0 without): every target must be seen from a
+/// node of its group, and a trip from the dock that reaches the group of target t is at least
+/// 2 delta(t) long (delta(t): the group's distance from the dock). Witnesses are taken farthest
+/// group first, each only when no trip within one charge (range R) can reach its group and the
+/// group of any witness taken before (delta_a + d(a, b) + delta_b > R, d the group distance), so
+/// every trip out from the dock and back holds at most one of them. Only the last trip (it need
+/// not come back) and, from a start away from the dock, the first can hold several: at most the
+/// most k whose shortest path through k groups (the nearest group's distance plus the k - 1
+/// shortest group distances) fits in one charge. The bound is 2 delta summed over the witnesses
+/// but those (the farthest) the two trips may hold. Witnesses close together let the last trip
+/// hold many, so the witnesses are taken again with their groups at least a spacing apart (0,
+/// 1/64, ..., 1/4 of the range per charge) and the largest bound kept. Cost per spacing: one
+/// distance field per witness and a pass over the candidates' viewpoints for each.
+[[nodiscard]] double trip_bound(const CoverageInstance& instance);
+
 class CoverageLowerBound {
  public:
   CoverageLowerBound(const CoverageInstance& instance, const LowerBoundOptions& options);
@@ -79,6 +94,8 @@ class CoverageLowerBound {
   [[nodiscard]] double at_start() const { return at_start_; }
   /// sweep_bound() from the start; at_start() is at least this.
   [[nodiscard]] double start_sweep_bound() const { return sweep_bound_; }
+  /// trip_bound() from the start; at_start() is at least this.
+  [[nodiscard]] double start_trip_bound() const { return trip_bound_; }
 
   /// The bound from a run's state: the robot at `at` (a node), `known` the cells revealed so far
   /// (a witness counts as revealed when its cell is known). The battery is not used (see above).
@@ -132,6 +149,7 @@ class CoverageLowerBound {
   std::vector<double> pi_;                     // penalties found from the start (k + 1)
   double at_start_ = 0.0;
   double sweep_bound_ = 0.0;
+  double trip_bound_ = 0.0;
 };
 
 /// The relative margin the bounds are lowered by against rounding.

@@ -31,9 +31,11 @@ OptimumResult solve_optimum(const CoverageInstance& in, const RunSpec& spec, con
   const CoverageLowerBound bound(in, options.lower);
   r.witnesses = static_cast<int>(bound.witnesses().size());
   r.lower_m = bound.at_start();
-  r.lower_method = bound.start_sweep_bound() > 0.0 && bound.start_sweep_bound() >= bound.at_start()
-                       ? "sweep bound"
-                       : "witness bound";
+  r.lower_method = "witness bound";
+  if (bound.start_sweep_bound() > 0.0 && bound.start_sweep_bound() >= bound.at_start())
+    r.lower_method = "sweep bound";
+  if (bound.start_trip_bound() > 0.0 && bound.start_trip_bound() >= bound.at_start())
+    r.lower_method = "trip bound";
   r.upper_m = kInfinity;
 
   const CoverRoute route = cover_route(in, spec, options.route);

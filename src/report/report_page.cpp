@@ -334,6 +334,7 @@ std::string report_html(const ReportPage& page) {
   const ResultDir& r = page.result;
   const std::string name = field(r.manifest, "/sweep/name");
   const std::vector<PageImage> trajectories = trajectory_images(page);
+  const std::string optimum = optimum_html(r.dir + "/runs.csv");
   std::ostringstream out;
   out << html_page_start(
       "fsweep report: " + name,
@@ -354,6 +355,7 @@ std::string report_html(const ReportPage& page) {
   out << "<ul class='contents'><li><a href='#what-ran'>What ran</a></li><li><a href='#ranking'>Ranking per "
          "map "
          "class</a></li>";
+  if (!optimum.empty()) out << "<li><a href='#optimum'>The offline optimum</a></li>";
   if (page.paired || !page.paired_note.empty()) out << "<li><a href='#paired'>Paired comparisons</a></li>";
   if (r.search_best) out << "<li><a href='#searches'>Exact weight searches</a></li>";
   out << "<li><a href='#plots'>Plots</a><ul>";
@@ -375,6 +377,7 @@ std::string report_html(const ReportPage& page) {
          "pooled), "
          "best first; numbers rounded for reading.</p>\n"
       << ranking_html(r);
+  if (!optimum.empty()) out << "<h2 id='optimum'>The offline optimum</h2>\n" << optimum;
   if (page.paired) {
     out << "<h2 id='paired'>Paired comparisons</h2>\n" << paired_html(*page.paired, page.paired_note);
   } else if (!page.paired_note.empty()) {

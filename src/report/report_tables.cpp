@@ -4,6 +4,8 @@
 #include "report/report_tables.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -329,6 +331,97 @@ std::string paired_html(const PairedTable& table, const std::string& baseline_fr
   flush();
   for (const auto& note : table.notes) out << "<p>Note: " << html_escape(note) << "</p>\n";
   return out.str();
+}
+
+std::string optimum_html(const std::string& runs_csv) {
+  CsvReader in(runs_csv);
+  const int lower = in.column("optimum_lower_m");
+  if (lower < 0) return {};
+  const std::size_t upper = in.require_column("optimum_upper_m");
+  const std::size_t exact = in.require_column("optimum_exact");
+  const std::size_t map = in.require_column("map");
+  const std::size_t ratio_min = in.require_column("competitive_ratio_min");
+  const std::size_t note = in.require_column(kCompetitiveNoteColumn);
+  const int star = in.column("optimal_distance_m");
+  std::vector<std::size_t> robot;
+  for (std::size_t c = 0; c < in.header().size(); ++c) {
+    if (in.header()[c].starts_with("robot.")) robot.push_back(c);
+  }
+  // One row per map instance and robot, in the order of first appearance.
+  struct Row {
+    std::vector<std::string> robot;
+    std::string map, lower, upper, exact, star;
+    int runs = 0;
+    int with_ratio = 0;
+    std::map<std::string, int> notes;
+  };
+  std::vector<Row> rows;
+  std::map<std::vector<std::string>, std::size_t> row_of;
+  while (in.next()) {
+    const std::vector<std::string>& f = in.fields();
+    if (f[note] == "map not competitive") continue;
+    std::vector<std::string> key{f[map]};
+    for (const std::size_t c : robot) key.push_back(f[c]);
+    auto [it, added] = row_of.try_emplace(key, rows.size());
+    if (added) {
+      Row r;
+      r.map = f[map];
+      for (const std::size_t c : robot) r.robot.push_back(f[c]);
+      r.lower = f[static_cast<std::size_t>(lower)];
+      r.upper = f[upper];
+      r.exact = f[exact];
+      if (star >= 0) r.star = f[static_cast<std::size_t>(star)];
+      rows.push_back(std::move(r));
+    }
+    Row& r = rows[it->second];
+    ++r.runs;
+    if (!f[ratio_min].empty()) ++r.with_ratio;
+    if (!f[note].empty()) ++r.notes[f[note]];
+  }
+  if (rows.empty()) return {};
+  // The robot columns that differ between rows name the robot.
+  std::vector<std::size_t> differ;
+  for (std::size_t k = 0; k < robot.size(); ++k) {
+    if (std::any_of(rows.begin(), rows.end(), [&](const Row& r) { return r.robot[k] != rows[0].robot[k]; }))
+      differ.push_back(k);
+  }
+  const bool any_star = std::any_of(rows.begin(), rows.end(), [](const Row& r) { return !r.star.empty(); });
+  std::vector<std::string> header{"map"};
+  for (const std::size_t k : differ) header.push_back(in.header()[robot[k]]);
+  header.insert(header.end(), {"lower bound (m)", "upper bound (m)", "gap", "exact"});
+  if (any_star) header.push_back("star optimum (m)");
+  header.insert(header.end(), {"runs with a ratio", "why not (runs)"});
+  std::vector<std::vector<Cell>> cells;
+  for (const Row& r : rows) {
+    std::vector<Cell> line{{r.map, false}};
+    for (const std::size_t k : differ) line.push_back({r.robot[k], false});
+    const auto lo = parse_number(r.lower);
+    const auto up = parse_number(r.upper);
+    line.push_back({readable_cell(r.lower), true});
+    line.push_back({readable_cell(r.upper), true});
+    line.push_back({lo && up && *lo > 0.0 ? readable_number(100.0 * (*up - *lo) / *lo, 3) + "%" : "", true});
+    line.push_back({r.exact == "1" ? "yes" : r.exact == "0" ? "no" : "", false});
+    if (any_star) line.push_back({readable_cell(r.star), true});
+    line.push_back({std::to_string(r.with_ratio) + " of " + std::to_string(r.runs), true});
+    std::string why;
+    for (const auto& [text, count] : r.notes)
+      why += (why.empty() ? "" : "; ") + text + " (" + std::to_string(count) + ")";
+    line.push_back({why, false});
+    cells.push_back(std::move(line));
+  }
+  std::string out =
+      "<p>Per map instance and robot, the certified bounds on the offline optimum (the shortest route "
+      "that reveals every cell in the battery's reach, optima.csv) and their gap, (upper - lower) / lower. "
+      "A run's competitive ratio lies between its distance to final coverage over the upper bound and over "
+      "the lower one (competitive_ratio_min and _max in runs.csv), for runs that end complete with "
+      "completeness 1.";
+  if (any_star)
+    out +=
+        " On free maps the star optimum is Rappaport's continuous-space figure pi r^2 / (2 r_s) "
+        "(optimal_distance_m): the grid's robot moves in octile steps and sees whole cells, so it is "
+        "not bound to lie between the grid's bounds.";
+  out += "</p>\n";
+  return out + table_html(header, cells, std::vector<std::string>(cells.size()));
 }
 
 }  // namespace report

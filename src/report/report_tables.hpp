@@ -28,6 +28,11 @@ inline namespace report {
 /// The ranking per map class (file comment): HTML, a table per class.
 [[nodiscard]] std::string ranking_html(const ResultDir& r);
 
+/// The offline optimum of a competitive sweep: per map instance and robot of `runs_csv`, the
+/// bounds, their gap, the star optimum on free maps and how many runs have a ratio (with the
+/// notes of those that do not). Empty when runs.csv has no optimum columns.
+[[nodiscard]] std::string optimum_html(const std::string& runs_csv);
+
 /// The paired comparisons of `table` (file comment): HTML, a table per map class and variant;
 /// `baseline_from` says where the baseline came from ("the sweep's baseline").
 [[nodiscard]] std::string paired_html(const PairedTable& table, const std::string& baseline_from);

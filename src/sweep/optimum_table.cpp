@@ -102,7 +102,7 @@ std::string bound_cell(double v) { return std::isfinite(v) ? format_number(v) : 
 
 std::string optimum_solver_version() {
   const OptimumOptions o;
-  return "optimum-2 witnesses=" + std::to_string(o.lower.max_witnesses) +
+  return "optimum-3 witnesses=" + std::to_string(o.lower.max_witnesses) +
          " ascent=" + std::to_string(o.lower.ascent_steps) +
          " held_karp=" + std::to_string(o.lower.held_karp_groups) +
          " swaps=" + std::to_string(o.lower.witness_swaps) + " passes=" + std::to_string(o.route.max_passes) +

@@ -45,8 +45,8 @@ struct OptimumBounds {
   double lower_m = std::numeric_limits<double>::quiet_NaN();
   double upper_m = std::numeric_limits<double>::quiet_NaN();
   bool exact = false;
-  /// The solver refused the instance (its ConfigError's message: a limited field of view, the
-  /// beam model, ...); empty otherwise.
+  /// The solver refused the instance (its ConfigError's message: the beam model, a map above the
+  /// size limit, ...); empty otherwise.
   std::string error;
   /// Informative (optima.csv only).
   int targets = 0;

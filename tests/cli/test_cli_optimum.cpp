@@ -103,7 +103,7 @@ TEST(CliOptimum, RoomsMapBoundsWriteEveryColumnAndTheRoute) {
 TEST(CliOptimum, BadInputsAreExit2NamingTheOptionBeforeAnyFile) {
   const std::string out = fresh_temp_dir("optimum", "bad");
   const std::vector<std::pair<std::string, std::string>> cases{
-      {"--map free:w=8,h=6 --robot sensor.fov_deg=90", "--robot: sensor.fov_deg: "},
+      {"--map free:w=8,h=6 --robot sensor.fov_deg=0", "--robot: sensor.fov_deg: "},
       {"--map free:w=8,h=6 --robot sensor.model=beams", "--robot: sensor.model: "},
       {"--map free:w=8,h=6 --time-limit -1", "optimum: --time-limit: must be >= 0, got '-1'"},
       {"--map free:w=8,h=6 --max-expansions -1", "optimum: --max-expansions: must be >= 0"},

@@ -22,6 +22,7 @@
 #include "core/config_error.hpp"
 #include "core/csv_format.hpp"
 #include "report/paired.hpp"
+#include "report/report_tables.hpp"
 #include "sweep/csv_journal.hpp"
 #include "sweep/merge.hpp"
 #include "sweep/sweep_plan.hpp"
@@ -671,6 +672,16 @@ TEST(SweepRunner, OfflineOptimumColumnsAreCertifiedCachedAndTheSameResumedSharde
   EXPECT_NE(summary.find("competitive_ratio_max.median"), std::string::npos);
   EXPECT_NE(summary.find("optimum_lower_m.mean"), std::string::npos);
   EXPECT_EQ(summary.find("competitive_note"), std::string::npos);
+  // The report's table: one row per competitive map, with its bounds and how many runs have a ratio.
+  const std::string table = optimum_html(dir + "/runs.csv");
+  EXPECT_NE(table.find("seed=1"), std::string::npos) << table;
+  EXPECT_NE(table.find("seed=2"), std::string::npos);
+  EXPECT_EQ(table.find("seed=3"), std::string::npos);  // not competitive: no row
+  std::size_t rows = 0;
+  for (std::size_t at = table.find("<tr"); at != std::string::npos; at = table.find("<tr", at + 1)) ++rows;
+  EXPECT_EQ(rows, 3U);  // the header and the two maps
+  EXPECT_NE(table.find("runs with a ratio"), std::string::npos);
+  EXPECT_EQ(table.find("star optimum"), std::string::npos);  // no free map
   // fsweep paired compares the ratios (smaller is better).
   PairedOptions paired;
   paired.metrics = {"competitive_ratio_min", "competitive_ratio_max"};
