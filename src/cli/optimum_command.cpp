@@ -164,8 +164,10 @@ int run_optimum(const OptimumCliOptions& o) {
     std::cout << "gap: " << readable_number(100.0 * gap, 3) << "%, exact: " << (r.exact ? "yes" : "no")
               << '\n';
   } else {
-    std::cout << "upper bound: none (no route was found that reveals every explorable cell within the "
-                 "battery)\nexact: no\n";
+    const std::string why = r.upper_method.starts_with("none: ")
+                                ? r.upper_method.substr(6)
+                                : "no route was found that reveals every explorable cell within the battery";
+    std::cout << "upper bound: none (" << why << ")\nexact: no\n";
   }
   std::cout << "explorable: " << readable_number(r.targets - r.out_of_reach) << " of "
             << readable_number(r.targets) << " observable cells, from " << readable_number(r.nodes)

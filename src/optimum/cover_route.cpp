@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "core/random.hpp"
+#include "core/readable_number.hpp"
 #include "search/octile_grid.hpp"
 #include "world/sensor.hpp"
 
@@ -678,6 +679,19 @@ CoverRoute one_route(const CoverageInstance& in, const RunSpec& spec, const Rout
 
 CoverRoute cover_route(const CoverageInstance& in, const RunSpec& spec, const RouteOptions& options) {
   CoverRoute best;
+  const std::uint64_t viewpoints =
+      greedy_viewpoints(in, nullptr, 0.0).size() + 2;  // with the start, the dock
+  const std::uint64_t cells = viewpoints * static_cast<std::uint64_t>(in.nodes());
+  if (cells > options.max_field_cells) {
+    const auto mb = [](std::uint64_t entries) {
+      return readable_number(static_cast<double>(entries) * 8e-6, 4);
+    };
+    best.refused = "the covering route's distance fields (" +
+                   readable_number(static_cast<double>(viewpoints)) + " viewpoints x " +
+                   readable_number(in.nodes()) + " cells, " + mb(cells) + " MB) are above the limit of " +
+                   mb(options.max_field_cells) + " MB";
+    return best;
+  }
   double best_m = kInfinity;
   bool best_covers = false;
   FieldCache fields(in);  // shared by the restarts: their covers share many viewpoints

@@ -32,6 +32,7 @@
 
 #include <cstddef>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "optimum/coverage_instance.hpp"
@@ -55,6 +56,10 @@ struct RouteOptions {
   /// deterministic budget: on a map of 7,000 free cells about 30,000 fields, on one of 26,000
   /// about 8,000).
   std::uint64_t restart_work = 200'000'000;
+  /// Most distance-field entries one route may need (8 bytes each: 2 GB): a route holds a field of
+  /// every node per viewpoint, so a plain greedy cover of V viewpoints on a map of N nodes needs
+  /// about V x N. Above it no route is built (CoverRoute::refused says why).
+  std::uint64_t max_field_cells = 250'000'000;
 };
 
 struct CoverRoute {
@@ -65,6 +70,8 @@ struct CoverRoute {
   std::vector<int> viewpoints;
   /// Positions in `cells` where each trip starts (0, then the dock after each recharge).
   std::vector<std::size_t> trip_starts;
+  /// Why no route was built (RouteOptions::max_field_cells), empty when one was.
+  std::string refused;
 };
 
 /// What replaying a route shows.
@@ -95,7 +102,8 @@ struct RouteReplay {
 [[nodiscard]] RouteReplay replay_route(const CoverageInstance& instance, const RunSpec& spec,
                                        std::span<const int> cells);
 
-/// The best route the steps above find over the restarts (deterministic).
+/// The best route the steps above find over the restarts (deterministic); none (`refused`) when the
+/// plain greedy cover's viewpoints times the nodes exceed RouteOptions::max_field_cells.
 [[nodiscard]] CoverRoute cover_route(const CoverageInstance& instance, const RunSpec& spec,
                                      const RouteOptions& options = {});
 

@@ -41,7 +41,9 @@ OptimumResult solve_optimum(const CoverageInstance& in, const RunSpec& spec, con
   const CoverRoute route = cover_route(in, spec, options.route);
   const RouteReplay replay = replay_route(in, spec, route.cells);
   r.viewpoints = static_cast<int>(route.viewpoints.size());
-  if (replay.covers()) {
+  if (!route.refused.empty()) {
+    r.upper_method = "none: " + route.refused;
+  } else if (replay.covers()) {
     r.upper_m = replay.distance_to_final_coverage_m;
     r.route = route.cells;
     r.trips = replay.trips;

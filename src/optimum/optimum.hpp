@@ -52,8 +52,9 @@ struct OptimumResult {
   int out_of_reach = 0;
   int witnesses = 0;
   int viewpoints = 0;
-  /// Which method gave each bound: "witness spanning tree", "held-karp", "exact search",
-  /// "exact search (open list)"; "covering route", "exact search".
+  /// Which method gave each bound: "witness bound", "sweep bound", "trip bound", "exact search",
+  /// "exact search (open list)"; "covering route", "exact search", or "none: " and why no route
+  /// was built (RouteOptions::max_field_cells).
   std::string lower_method;
   std::string upper_method;
   long exact_expansions = 0;

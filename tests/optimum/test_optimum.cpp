@@ -377,6 +377,22 @@ TEST(Optimum, RefusesTheBeamSensorAndInstancesAboveTheSizeLimit) {
   EXPECT_EQ(path_of(spec, kMaxVisibilityPairs), "no error");
 }
 
+TEST(Optimum, NoRouteIsBuiltAboveTheDistanceFieldLimitAndTheLowerBoundStands) {
+  RunMap m = load_run_map_spec("rooms:w=30,h=24,door=2,seed=3");
+  const RunSpec spec = spec_of(std::move(m.map), 4.0);
+  OptimumOptions options = short_test_options();
+  const OptimumResult full = solve_optimum(spec, options);
+  options.route.max_field_cells = 1000;  // fewer than one field of this map's 596 cells per viewpoint
+  const OptimumResult r = solve_optimum(spec, options);
+  EXPECT_EQ(r.upper_m, std::numeric_limits<double>::infinity());
+  EXPECT_TRUE(r.route.empty());
+  EXPECT_TRUE(r.upper_method.starts_with("none: the covering route's distance fields (")) << r.upper_method;
+  EXPECT_NE(r.upper_method.find(" x 596 cells, "), std::string::npos) << r.upper_method;
+  EXPECT_NE(r.upper_method.find("above the limit of 0.008 MB"), std::string::npos) << r.upper_method;
+  EXPECT_EQ(r.lower_m, full.lower_m);
+  EXPECT_FALSE(r.exact);
+}
+
 TEST(Optimum, ANarrowFieldOfViewHasTheWideOnesLowerBoundAndARouteThatLooksAround) {
   // The tables are the 360-degree sensor's (a relaxation), so the lower bound is the same; the
   // route turns round on its viewpoints and its replay with the narrow sensor reveals every cell;
