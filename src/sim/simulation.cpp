@@ -140,7 +140,7 @@ bool Simulation::step() {
 
 const Candidates* Simulation::choice(const WeightBounds& bounds) {
   pending_.reset();
-  auto* linear = dynamic_cast<LinearScoredStrategy*>(strategy_.get());
+  LinearScoredStrategy* linear = strategy_->linear_scored();
   if (linear == nullptr || recorder_.ended() || recorder_.metrics().steps >= setup_->max_steps)
     return nullptr;
   PendingChoice found;
@@ -164,7 +164,7 @@ const Candidates* Simulation::choice(const WeightBounds& bounds) {
 }
 
 void Simulation::set_weights(std::span<const double> weights) {
-  auto* linear = dynamic_cast<LinearScoredStrategy*>(strategy_.get());
+  LinearScoredStrategy* linear = strategy_->linear_scored();
   if (linear == nullptr) throw std::logic_error("Simulation::set_weights: the strategy is not linear-scored");
   pending_.reset();
   linear->set_weights(weights);
@@ -178,7 +178,10 @@ bool Simulation::step_choosing(int candidate) {
   }
   const PendingChoice pending = std::move(*pending_);
   pending_.reset();
-  auto& linear = dynamic_cast<LinearScoredStrategy&>(*strategy_);
+  LinearScoredStrategy* const scored = strategy_->linear_scored();
+  if (scored == nullptr)
+    throw std::logic_error("Simulation::step_choosing: the strategy is not linear-scored");
+  LinearScoredStrategy& linear = *scored;
   return step_with([&](const Observation& obs, int call) {
     // The call before the pending one decided without the weights or found no candidate
     // (choice() saw it so).

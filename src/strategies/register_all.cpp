@@ -21,7 +21,7 @@ namespace {
 using Made = std::unique_ptr<Strategy>;
 
 /// The registry and, by the same names, the traits (strategies whose traits are not given have
-/// the defaults: not seeded).
+/// the defaults: not seeded, not linear-scored).
 struct StrategyCatalog {
   StrategyRegistry registry{"strategy"};
   std::map<std::string, StrategyTraits, std::less<>> traits;
@@ -41,13 +41,13 @@ struct StrategyCatalog {
 StrategyCatalog make_catalog() {
   StrategyCatalog r;
   r.add<EnergyAwareParams>(
-      "energy_aware",
+      "energy_aware", StrategyTraits{.linear_scored = true},
       "energy-aware exploration, Rappaport 2016 Algorithm 1 (cost eq. 8, return threshold eq. 7)",
       energy_aware_params(), [](const EnergyAwareParams& p, std::uint64_t) -> Made {
         return std::make_unique<EnergyAware>("energy_aware", p);
       });
   r.add<ClosestFrontierParams>(
-      "closest_frontier",
+      "closest_frontier", StrategyTraits{.linear_scored = true},
       "nearest frontier by path length (Yamauchi 1997): energy_aware with weights (1, 0, 0, 0)",
       closest_frontier_params(), [](const ClosestFrontierParams& p, std::uint64_t) -> Made {
         EnergyAwareParams ea;
@@ -77,8 +77,8 @@ StrategyCatalog make_catalog() {
       "mcdm", "Basilico and Amigoni: criteria L, I, O aggregated by a Choquet integral (Holz 2010 Table I)",
       mcdm_params(), [](const McdmParams& p, std::uint64_t) -> Made { return std::make_unique<Mcdm>(p); });
   r.add<TargetSeekingParams>(
-      "target_seeking", "Arvanitakis et al.: reach a target in unknown space, frontier cost eq. 12",
-      target_seeking_params(),
+      "target_seeking", StrategyTraits{.linear_scored = true},
+      "Arvanitakis et al.: reach a target in unknown space, frontier cost eq. 12", target_seeking_params(),
       [](const TargetSeekingParams& p, std::uint64_t) -> Made { return std::make_unique<TargetSeeking>(p); });
   r.add<NoParams>(
       "random_frontier", StrategyTraits{.seeded = true},

@@ -28,6 +28,9 @@ struct StrategyTraits {
   /// Draws random numbers from the seed it is made with (the run seed's "strategy" stream): runs
   /// that differ only in their seed (a sweep's repetitions) choose differently.
   bool seeded = false;
+  /// Its strategies are LinearScoredStrategy (Strategy::linear_scored() is not null): they choose
+  /// argmin(weights . features), so the exact weight search can search their weights.
+  bool linear_scored = false;
 };
 
 /// Every registered strategy.

@@ -198,6 +198,8 @@ struct WeightBounds {
   WeightDirections directions;
 };
 
+class LinearScoredStrategy;
+
 /// A frontier-selection strategy. Instances may keep state between decisions (a seeded
 /// generator, the previous goal); clone() copies that state exactly.
 class Strategy {
@@ -209,6 +211,10 @@ class Strategy {
   /// The target cell of a navigation strategy (target_seeking.hpp), for the engine's target
   /// metrics (RunMetrics::target_path_m); none for exploration strategies.
   [[nodiscard]] virtual std::optional<Cell> target() const { return std::nullopt; }
+  /// This strategy as a LinearScoredStrategy, or null when it is not one (the registry declares
+  /// which are: StrategyTraits::linear_scored).
+  [[nodiscard]] virtual LinearScoredStrategy* linear_scored() { return nullptr; }
+  [[nodiscard]] virtual const LinearScoredStrategy* linear_scored() const { return nullptr; }
 };
 
 /// A strategy whose choice is argmin(weights . features) over candidates. The engine may read
@@ -216,6 +222,8 @@ class Strategy {
 /// "Sweeps, keys, shards and the weight search").
 class LinearScoredStrategy : public Strategy {
  public:
+  [[nodiscard]] LinearScoredStrategy* linear_scored() final { return this; }
+  [[nodiscard]] const LinearScoredStrategy* linear_scored() const final { return this; }
   /// The candidates of this decision, after any feasibility filter.
   [[nodiscard]] virtual Candidates candidates(const Observation& obs) = 0;
   /// The candidates of this decision that argmin_linear() may choose for some weight vector w

@@ -352,7 +352,7 @@ ExactSearchStats exact_search(std::span<const RunSpec> instances, const WeightGr
     roots.emplace_back(spec);
     // The strategy must score the grid's weights, each of the grid's values allowed.
     const std::unique_ptr<Strategy> probe = spec.strategy.make(spec.seed);
-    auto* linear = dynamic_cast<LinearScoredStrategy*>(probe.get());
+    LinearScoredStrategy* linear = probe->linear_scored();
     if (linear == nullptr) {
       throw std::invalid_argument("exact_search: strategy " + spec.strategy.name + " is not linear-scored");
     }

@@ -161,16 +161,11 @@ std::string robot_label(const std::vector<Axis>& axes, const std::vector<std::si
   return label.empty() ? "-" : label;
 }
 
-/// The registered strategies that score candidates linearly (LinearScoredStrategy), with their
-/// defaults.
+/// The registered strategies that score candidates linearly (StrategyTraits::linear_scored).
 std::vector<std::string> linear_scored_names() {
   std::vector<std::string> out;
   for (const std::string& name : strategy_names()) {
-    try {
-      const std::unique_ptr<Strategy> s = configure_strategy(name, nullptr).make(0);
-      if (dynamic_cast<const LinearScoredStrategy*>(s.get()) != nullptr) out.push_back(name);
-    } catch (const std::exception&) {  // a strategy without usable defaults is not searchable
-    }
+    if (strategy_traits(name).linear_scored) out.push_back(name);
   }
   return out;
 }
@@ -217,8 +212,8 @@ void make_search_entry(const json& search, const std::string& where, const Param
     problems.push_back(where + "/params: " + e.what());
     return;
   }
-  const auto* linear = dynamic_cast<const LinearScoredStrategy*>(probe.get());
-  if (linear == nullptr) {
+  const LinearScoredStrategy* linear = probe->linear_scored();
+  if (!strategy_traits(entry.name).linear_scored || linear == nullptr) {
     problems.push_back(
         at + ": strategy '" + entry.name +
         "' does not score its candidates linearly, so its weights cannot be searched; allowed: " +

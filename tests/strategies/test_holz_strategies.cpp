@@ -437,6 +437,25 @@ TEST(StrategyConformance, RegisteredCloneableAndNamed) {
   }
 }
 
+TEST(StrategyConformance, TheLinearScoredTraitIsWhatTheStrategiesAre) {
+  // The registry's declaration and the made strategies agree, for each registered strategy and its
+  // clone; the weight search's strategies are among them.
+  int linear = 0;
+  for (const std::string& name : strategy_names()) {
+    const auto s = make_strategy(name, nullptr, 3, "strategy");
+    const bool declared = strategy_traits(name).linear_scored;
+    EXPECT_EQ(s->linear_scored() != nullptr, declared) << name;
+    EXPECT_EQ(s->clone()->linear_scored() != nullptr, declared) << name;
+    const Strategy& as_const = *s;
+    EXPECT_EQ(as_const.linear_scored() != nullptr, declared) << name;
+    linear += declared ? 1 : 0;
+  }
+  for (const char* name : {"energy_aware", "closest_frontier", "target_seeking"})
+    EXPECT_TRUE(strategy_traits(name).linear_scored) << name;
+  EXPECT_FALSE(strategy_traits("gbl").linear_scored);
+  EXPECT_EQ(linear, 3);
+}
+
 TEST(StrategyConformance, EveryStrategyWithEveryPlannerCompletesSmallMaps) {
   for (const char* spec_text : {"rooms:w=24,h=18,door=3,seed=4", "random:w=24,h=24,p=0.2,seed=3"}) {
     const auto map = std::make_shared<const WorldMap>(load_map_spec(spec_text));
