@@ -13,7 +13,9 @@
 #include <map>
 #include <mutex>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <stdexcept>
+#include <string>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -55,6 +57,23 @@ struct Found {
   /// when it was admitted (SearchWriter::admit()), so that its region need not be kept.
   std::vector<std::size_t> ranked;
 };
+
+/// How many distinct outcomes `found` holds: behaviours whose metric cells (end reason and detail,
+/// every metric but the effort ones, on every instance) are all equal count once. Different
+/// decision sequences can end in the same outcome (the same distance, coverage and counts).
+std::size_t distinct_outcomes(const std::vector<Found>& found) {
+  std::set<std::vector<std::string>> outcomes;
+  for (const Found& f : found) {
+    std::vector<std::string> key;
+    for (const Columns& cells : f.cells) {
+      for (const auto& [name, cell] : cells) {
+        if (!is_effort_column(name)) key.push_back(cell);
+      }
+    }
+    outcomes.insert(std::move(key));
+  }
+  return outcomes.size();
+}
 
 /// What a search's journal holds: its behaviours, and the subtrees of its region tree whose
 /// every leaf had finished or been pruned (by id, SubtreeJournal).
@@ -342,7 +361,7 @@ class SearchWriter {
       write_heatmaps(found, rows);
     }
     if (search_.write_vectors) write_vectors(found, rows);
-    rows.record = record(found.size(), searched, shards);
+    rows.record = record(found, searched, shards);
     return rows;
   }
 
@@ -397,7 +416,7 @@ class SearchWriter {
 
   /// The record of one shard's search in its searches.json (the files are written by merge).
   [[nodiscard]] json shard_record(const Searched& searched, std::uint64_t index, std::uint64_t count) const {
-    json r = record(searched.found.size(), searched, nullptr);
+    json r = record(searched.found, searched, nullptr);
     r["shard"] = {{"index", index}, {"count", count}};
     return r;
   }
@@ -844,7 +863,8 @@ class SearchWriter {
   }
 
   /// The search's searches.json record. `shards`: the records of the shards it was merged from.
-  [[nodiscard]] json record(std::size_t behaviours, const Searched& searched, const json& shards) const {
+  [[nodiscard]] json record(const std::vector<Found>& found, const Searched& searched,
+                            const json& shards) const {
     const ExactSearchStats& stats = searched.stats;
     json box = json::object();
     for (std::size_t k = 0; k < search_.weights.size(); ++k) box[search_.weights[k]] = search_.values[k];
@@ -863,7 +883,8 @@ class SearchWriter {
                 {"objective", std::string(objective_.name)},
                 {"box", box},
                 {"vectors", grid_.size()},
-                {"behaviours", behaviours},
+                {"behaviours", found.size()},
+                {"distinct_outcomes", distinct_outcomes(found)},
                 {"resumed_behaviours", searched.resumed},
                 {"splits", stats.splits},
                 {"forks", stats.forks},

@@ -545,6 +545,41 @@ TEST(WeightSearchRunner, BestModeFindsTheBruteForceOptimumWithEveryTieAndPrunes)
   }
 }
 
+/// Distinct outcomes counted from `dir`'s behaviours.csv: a behaviour's rows (one per instance),
+/// every column from end_reason on but the effort ones; returns (behaviours, outcomes).
+std::pair<std::size_t, std::size_t> behaviours_and_outcomes(const std::string& dir) {
+  CsvReader in(dir + "/behaviours.csv");
+  const std::size_t id = in.require_column("behaviour_id");
+  const std::size_t first_metric = in.require_column("end_reason");
+  std::map<std::string, std::string> outcome_of;
+  while (in.next()) {
+    for (std::size_t c = first_metric; c < in.header().size(); ++c) {
+      if (!is_effort_column(in.header()[c])) outcome_of[in.fields()[id]] += in.fields()[c] + ',';
+    }
+    outcome_of[in.fields()[id]] += ';';
+  }
+  std::set<std::string> outcomes;
+  for (const auto& [behaviour, outcome] : outcome_of) outcomes.insert(outcome);
+  return {outcome_of.size(), outcomes.size()};
+}
+
+TEST(WeightSearchRunner, SearchesJsonCountsDistinctOutcomesBesideBehaviours) {
+  // Free space, r = 300 m: some behaviours (decision sequences) end in the same outcome.
+  const json sweep = json::parse(R"({
+    "schema_version": 1, "name": "outcomes",
+    "maps": [{"generator": "free", "w": 41, "h": 41, "res": 10}],
+    "strategies": [{"name": "energy_aware", "search": {"method": "exact", "mode": "all"},
+      "params": {"w1": [0, 1, 2, 3], "w2": [0, 1, 2, 3], "w3": [0, 1, 2, 3], "w4": [0, 1, 2]}}],
+    "robot": {"sensor": {"range_m": 30}, "energy": "distance", "battery": 300}})");
+  const std::string dir = run(sweep, "outcomes");
+  const json record = json::parse(testing::read_file(dir + "/searches.json"))["searches"][0];
+  const auto [behaviours, outcomes] = behaviours_and_outcomes(dir);
+  EXPECT_EQ(record["behaviours"].get<std::size_t>(), behaviours);
+  EXPECT_EQ(record["distinct_outcomes"].get<std::size_t>(), outcomes);
+  EXPECT_LT(outcomes, behaviours);  // 53 of 56 when written
+  EXPECT_GT(outcomes, 1U);
+}
+
 TEST(WeightSearchRunner, AKilledSearchResumesFromItsJournalWithTheSameFiles) {
   // A whole search of a map class, then its journal cut to its first lines and a torn one (as
   // a kill leaves it) and its files deleted: the rerun keeps the journaled behaviours, skips the
