@@ -164,9 +164,11 @@ int run_optimum(const OptimumCliOptions& o) {
     std::cout << "gap: " << readable_number(100.0 * gap, 3) << "%, exact: " << (r.exact ? "yes" : "no")
               << '\n';
   } else {
-    const std::string why = r.upper_method.starts_with("none: ")
-                                ? r.upper_method.substr(6)
-                                : "no route was found that reveals every explorable cell within the battery";
+    const std::string why =
+        r.upper_method.starts_with("none: ")
+            ? r.upper_method.substr(6)
+            : "no route was found whose replay reveals every explorable cell" +
+                  std::string(std::isfinite(spec.robot.battery_capacity) ? " within each charge" : "");
     std::cout << "upper bound: none (" << why << ")\nexact: no\n";
   }
   std::cout << "explorable: " << readable_number(r.targets - r.out_of_reach) << " of "

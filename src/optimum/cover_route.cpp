@@ -368,11 +368,12 @@ bool relocate(const CoverageInstance& in, FieldCache& fields, std::vector<int>& 
   return moved;
 }
 
-/// Step 4: the optimal split of `order` (points after order[0]) into trips within `range_m`.
-/// Returns the positions in `order` where trips 2, 3, ... start; nullopt when some viewpoint
-/// cannot be reached and left within one charge.
+/// Step 4: the optimal split of `order` (points after order[0]) into trips within `range_m`, each
+/// viewpoint costing `per_viewpoint_m` more (look_around()'s steps). Returns the positions in
+/// `order` where trips 2, 3, ... start; nullopt when some viewpoint cannot be reached and left
+/// within one charge.
 std::optional<std::vector<std::size_t>> split_trips(const PointDistances& d, const std::vector<int>& order,
-                                                    int dock_point, double range_m) {
+                                                    int dock_point, double range_m, double per_viewpoint_m) {
   const std::size_t m = order.size();      // positions 1..m-1 are viewpoints
   std::vector<double> best(m, kInfinity);  // best[j]: visiting positions 1..j, back at the dock
   std::vector<std::size_t> cut(m, 0);
@@ -385,6 +386,7 @@ std::optional<std::vector<std::size_t>> split_trips(const PointDistances& d, con
     double travel = d.between(from, order[i]);
     for (std::size_t j = i; j < m; ++j) {
       if (j > i) travel += d.between(order[j - 1], order[j]);
+      travel += per_viewpoint_m;
       const double back = d.between(order[j], dock_point);
       if (travel + back > range_m) break;
       if (best[i - 1] + travel + back < best[j]) {
@@ -409,10 +411,22 @@ std::optional<std::vector<std::size_t>> split_trips(const PointDistances& d, con
 /// (45-degree headings, fov rounded down to them): each by a step to the neighbour behind that
 /// heading and back. `heading` is the heading on arrival, updated. Headings whose neighbour cannot
 /// be stepped to are left out (the replay then says whether the route still covers).
+/// The 45-degree headings between the headings look_around() faces, and how many it faces.
+int look_step(const CoverageInstance& in) { return std::clamp(static_cast<int>(in.fov_deg / 45.0), 1, 4); }
+int look_turns(const CoverageInstance& in) {
+  return in.fov_deg >= 360.0 ? 1 : (8 + look_step(in) - 1) / look_step(in);
+}
+
+/// The most look_around() adds to a route at one point (metres): a diagonal step out and back
+/// per heading turned to.
+double look_around_m(const CoverageInstance& in) {
+  return (look_turns(in) - 1) * 2.0 * kSqrt2 * in.resolution_m;
+}
+
 void look_around(const CoverageInstance& in, std::vector<int>& cells, int& heading) {
   if (in.fov_deg >= 360.0) return;
-  const int step = std::clamp(static_cast<int>(in.fov_deg / 45.0), 1, 4);  // in 45-degree headings
-  const int turns = (8 + step - 1) / step;
+  const int step = look_step(in);
+  const int turns = look_turns(in);
   const Cell at = in.truth.cell(cells.back());
   const int first = heading;
   for (int i = 1; i < turns; ++i) {
@@ -653,9 +667,9 @@ CoverRoute one_route(const CoverageInstance& in, const RunSpec& spec, const Rout
       double range = in.range_per_charge_m;
       std::optional<RouteReplay> missed;
       for (int attempt = 0; attempt < 12; ++attempt) {
-        const auto starts = in.limited_battery()
-                                ? split_trips(repaired.d, repaired.order, repaired.dock_point, range)
-                                : std::optional<std::vector<std::size_t>>(std::in_place);
+        const auto starts = in.limited_battery() ? split_trips(repaired.d, repaired.order,
+                                                               repaired.dock_point, range, look_around_m(in))
+                                                 : std::optional<std::vector<std::size_t>>(std::in_place);
         if (!starts) break;
         CoverRoute route = assemble(in, repaired.d, repaired.order, *starts);
         RouteReplay replay = replay_route(in, spec, route.cells);

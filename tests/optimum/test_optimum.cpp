@@ -418,6 +418,16 @@ TEST(Optimum, ANarrowFieldOfViewHasTheWideOnesLowerBoundAndARouteThatLooksAround
       EXPECT_GT(checked, 0);
     }
   }
+  // With a battery the look-around steps count in the trips' split, so the trips fit a charge.
+  RunMap m = load_run_map_spec("rooms:w=30,h=24,door=2,seed=3");
+  RunSpec spec = spec_of(std::move(m.map), 4.0);
+  spec.robot.sensor.fov_deg = 90.0;
+  spec.robot.battery_capacity = 120.0;
+  const CoverageInstance in = build_coverage_instance(spec);
+  const OptimumResult r = solve_optimum(in, spec, short_test_options());
+  ASSERT_LT(r.upper_m, std::numeric_limits<double>::infinity());
+  EXPECT_GT(r.trips, 1);
+  EXPECT_TRUE(replay_route(in, spec, r.route).covers());
 }
 
 /// The long version (ctest label long, make test-long, the nightly job): many maps, all
