@@ -406,11 +406,6 @@ std::optional<std::vector<std::size_t>> split_trips(const PointDistances& d, con
   return starts;
 }
 
-/// With a field of view below 360 degrees, the robot on the route's last cell turns to face, in
-/// turn, headings whose fields of view together with its arrival heading's go round the circle
-/// (45-degree headings, fov rounded down to them): each by a step to the neighbour behind that
-/// heading and back. `heading` is the heading on arrival, updated. Headings whose neighbour cannot
-/// be stepped to are left out (the replay then says whether the route still covers).
 /// The 45-degree headings between the headings look_around() faces, and how many it faces.
 int look_step(const CoverageInstance& in) { return std::clamp(static_cast<int>(in.fov_deg / 45.0), 1, 4); }
 int look_turns(const CoverageInstance& in) {
@@ -423,6 +418,11 @@ double look_around_m(const CoverageInstance& in) {
   return (look_turns(in) - 1) * 2.0 * kSqrt2 * in.resolution_m;
 }
 
+/// With a field of view below 360 degrees, the robot on the route's last cell turns to face, in
+/// turn, headings whose fields of view together with its arrival heading's go round the circle
+/// (45-degree headings, fov rounded down to them): each by a step to the neighbour behind that
+/// heading and back. `heading` is the heading on arrival, updated. Headings whose neighbour cannot
+/// be stepped to are left out (the replay then says whether the route still covers).
 void look_around(const CoverageInstance& in, std::vector<int>& cells, int& heading) {
   if (in.fov_deg >= 360.0) return;
   const int step = look_step(in);

@@ -359,7 +359,7 @@ std::string optimum_html(const std::string& runs_csv) {
   std::map<std::vector<std::string>, std::size_t> row_of;
   while (in.next()) {
     const std::vector<std::string>& f = in.fields();
-    if (f[note] == "map not competitive") continue;
+    if (f[note] == kNotCompetitiveNote) continue;
     std::vector<std::string> key{f[map]};
     for (const std::size_t c : robot) key.push_back(f[c]);
     auto [it, added] = row_of.try_emplace(key, rows.size());

@@ -65,6 +65,8 @@ inline constexpr std::array<const char*, 6> kCompetitiveColumns{
     "optimum_lower_m",       "optimum_upper_m",       "optimum_exact",
     "competitive_ratio_min", "competitive_ratio_max", "competitive_note"};
 inline constexpr char kCompetitiveNoteColumn[] = "competitive_note";
+/// competitive_note of a run whose map is not competitive (every competitive cell empty).
+inline constexpr char kNotCompetitiveNote[] = "map not competitive";
 /// progress.csv columns of one sample; a sweep's progress.csv starts with run_index, run_key.
 inline constexpr std::array<const char*, 4> kProgressColumns{"distance_m", "explored_area_m2", "coverage",
                                                              "energy"};

@@ -243,7 +243,7 @@ std::vector<std::string> competitive_cells(const SweepMap& map, const OptimumBou
   std::vector<std::string> cells(kCompetitiveColumns.size());
   std::string& note = cells[5];
   if (!map.competitive) {
-    note = "map not competitive";
+    note = kNotCompetitiveNote;
     return cells;
   }
   if (optimum == nullptr) {
