@@ -20,7 +20,7 @@
 /// - `BM_ExactWeightSearch/step:<s>` and `BM_BruteWeightSearch/step:<s>`: Rappaport 2016's
 ///   free-space weight search (sweeps/paper/rappaport2016_weights_free.json's setting on an
 ///   unclipped 69x69 map: 10 m cells, sensor 30 m, `distance` energy, range 600 m) over the
-///   grid {0, s, 2s, ..., 250}^4, on one thread: the exact search (sweep/exact_search.hpp) and one
+///   grid {0, s, 2s, ..., 250}^4, on one thread: the exact search (weightsearch/exact_search.hpp) and one
 ///   simulate() per vector. `behaviours` counts the distinct behaviours, `vectors` the grid.
 ///   `BM_ExactWeightSearchBox16` and `BM_BruteWeightSearchBox16Slow` (about 3 minutes, left out
 ///   of the nightly set): the same at step 1 over a 16^4 box (box16_grid()).
@@ -43,10 +43,10 @@
 #include <vector>
 
 #include "sim/simulation.hpp"
-#include "strategies/weight_grid.hpp"
-#include "sweep/exact_search.hpp"
 #include "sweep/sweep_plan.hpp"
 #include "sweep/sweep_table.hpp"
+#include "weightsearch/exact_search.hpp"
+#include "weightsearch/weight_grid.hpp"
 #include "world/map_spec.hpp"
 
 namespace fsweep {

@@ -89,8 +89,9 @@ std::string route_title(const OptimumResult& r) {
   return text;
 }
 
-int run_optimum(const OptimumCliOptions& o) {
-  const auto t0 = std::chrono::steady_clock::now();
+/// The run spec of the command's map (a random start drawn as `fsweep sim` and a sweep draw
+/// it, so --seed <a run's seed> repeats it), robot and seed.
+RunSpec optimum_spec(const OptimumCliOptions& o) {
   RunSpec spec;
   RunMap map = [&] {
     try {
@@ -101,37 +102,24 @@ int run_optimum(const OptimumCliOptions& o) {
   }();
   spec.robot = robot_params_from_json(kv_to_json(o.robot, "--robot"), "--robot");
   spec.seed = o.seed;
-  if (map.random_start) {  // as `fsweep sim` and a sweep draw it, so --seed <a run's seed> repeats it
+  if (map.random_start) {
     map.map.start =
         draw_region_cell(largest_free_region(map.map, spec.robot.allow_corner_cutting), spec.seed);
   }
   spec.map = std::make_shared<const WorldMap>(std::move(map.map));
+  return spec;
+}
 
-  OptimumOptions options;
-  options.exact.max_expansions = o.max_expansions;
-  if (o.time_limit->count() > 0 && o.time_limit_s < kMaxTimeLimitS) {
-    options.exact.deadline = t0 + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                      std::chrono::duration<double>(o.time_limit_s));
-  }
-
-  check_trajectory_image(*spec.map, o.png_scale, "--png-scale");  // before any file
-  check_output_dir(o.out, OutputKind::Optimum, "--out");
-  // The robot's problems (a sensor the offline problem does not model) before the directory;
-  // the solving, the expensive part, after it: a bad --out costs no search.
-  const CoverageInstance instance = build_instance(spec);
-  create_output_dir(o.out, OutputKind::Optimum, "--out");
-  OptimumResult r = solve_optimum(instance, spec, options);
-  r.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-
-  const double gap = r.gap();
+/// optimum.csv's row.
+Columns optimum_row(const OptimumCliOptions& o, const RunSpec& spec, const OptimumResult& r) {
   const nlohmann::json robot = spec.robot;
-  const Columns row{
+  return {
       {"map", o.map},
       {"map_hash", hex64(content_hash(*spec.map))},
       {"robot", robot.dump()},
       {"lower_m", finite_cell(r.lower_m)},
       {"upper_m", finite_cell(r.upper_m)},
-      {"gap", finite_cell(gap)},
+      {"gap", finite_cell(r.gap())},
       {"exact", r.exact ? "1" : "0"},
       {"trips", std::to_string(r.trips)},
       {"time_s", format_number(r.time_s)},
@@ -145,23 +133,17 @@ int run_optimum(const OptimumCliOptions& o) {
       {"exact_expansions", std::to_string(r.exact_expansions)},
       {"stopped_by_time", r.stopped_by_time ? "1" : "0"},
   };
-  write_csv(o.out + "/optimum.csv", {row});
-  const bool has_route = !r.route.empty() && r.upper_m < kInfinity;
-  if (has_route) {
-    write_trajectory_png(o.out + "/route.png", *spec.map, route_result(spec, instance, r), o.png_scale,
-                         TrajectoryTitle{o.map, route_title(r)});
-  } else {
-    std::error_code ec;  // a picture of an earlier solve in this directory would not be this one's
-    std::filesystem::remove(o.out + "/route.png", ec);
-  }
+}
 
-  // Rounded for reading (5 significant digits); optimum.csv keeps every digit.
+/// The bounds and what they rest on, rounded for reading (5 significant digits); optimum.csv
+/// keeps every digit.
+void print_bounds(const RunSpec& spec, const OptimumResult& r) {
   const auto n = [](double v) { return readable_number(v, 5); };
   std::cout << "lower bound: " << n(r.lower_m) << " m (" << r.lower_method << ")\n";
   if (r.upper_m < kInfinity) {
     std::cout << "upper bound: " << n(r.upper_m) << " m (" << r.upper_method << "), " << r.trips
               << (r.trips == 1 ? " trip" : " trips") << " from the dock\n";
-    std::cout << "gap: " << readable_number(100.0 * gap, 3) << "%, exact: " << (r.exact ? "yes" : "no")
+    std::cout << "gap: " << readable_number(100.0 * r.gap(), 3) << "%, exact: " << (r.exact ? "yes" : "no")
               << '\n';
   } else {
     const std::string why =
@@ -189,6 +171,37 @@ int run_optimum(const OptimumCliOptions& o) {
   }
   if (r.stopped_by_time) std::cout << " (stopped by --time-limit: the bounds depend on the machine's speed)";
   std::cout << "\ntime: " << readable_number(r.time_s, 3) << " s\n";
+}
+
+int run_optimum(const OptimumCliOptions& o) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const RunSpec spec = optimum_spec(o);
+  OptimumOptions options;
+  options.exact.max_expansions = o.max_expansions;
+  if (o.time_limit->count() > 0 && o.time_limit_s < kMaxTimeLimitS) {
+    options.exact.deadline = t0 + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                      std::chrono::duration<double>(o.time_limit_s));
+  }
+
+  check_trajectory_image(*spec.map, o.png_scale, "--png-scale");  // before any file
+  check_output_dir(o.out, OutputKind::Optimum, "--out");
+  // The robot's problems (a sensor the offline problem does not model) before the directory;
+  // the solving, the expensive part, after it: a bad --out costs no search.
+  const CoverageInstance instance = build_instance(spec);
+  create_output_dir(o.out, OutputKind::Optimum, "--out");
+  OptimumResult r = solve_optimum(instance, spec, options);
+  r.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+  write_csv(o.out + "/optimum.csv", {optimum_row(o, spec, r)});
+  const bool has_route = !r.route.empty() && r.upper_m < kInfinity;
+  if (has_route) {
+    write_trajectory_png(o.out + "/route.png", *spec.map, route_result(spec, instance, r), o.png_scale,
+                         TrajectoryTitle{o.map, route_title(r)});
+  } else {
+    std::error_code ec;  // a picture of an earlier solve in this directory would not be this one's
+    std::filesystem::remove(o.out + "/route.png", ec);
+  }
+  print_bounds(spec, r);
   std::cout << "wrote " << o.out << "/optimum.csv (full precision)";
   if (has_route) {
     std::cout << ", " << o.out << "/route.png\n";

@@ -119,17 +119,8 @@ std::string merge_command_line(const std::string& out_dir) {
   return line;
 }
 
-int run_slurm(const SlurmCommandOptions& o) {
-  if (o.tasks == 0) throw ConfigError("--tasks", "must be >= 1 (the number of shards), got 0");
-  if (o.cpus < 1) throw ConfigError("--cpus", "must be >= 1, got " + std::to_string(o.cpus));
-  if (o.max_array_size_given && o.max_array_size == 0)
-    throw ConfigError("--max-array-size", "must be >= 1, got 0");
-
-  // 1. The sweep: loaded and expanded here, so that its errors show now and not on the cluster.
-  const SweepPlan plan = SweepPlan::from_file(o.sweep_file, o.overrides);
-  print_sweep_warnings(plan, o.sweep_file);
-  const std::uint64_t runs = plan.run_count();
-
+/// The scripts' options: the command's, with absolute paths, and the executable checked.
+SlurmScriptOptions script_options(const SlurmCommandOptions& o, const SweepPlan& plan) {
   SlurmScriptOptions s;
   s.sweep_file = absolute_path(o.sweep_file);
   s.overrides = o.overrides;
@@ -151,61 +142,53 @@ int run_slurm(const SlurmCommandOptions& o) {
   if (::access(s.fsweep.c_str(), X_OK) != 0 || !fs::is_regular_file(s.fsweep)) {
     throw ConfigError("--fsweep", "'" + s.fsweep + "' is not an executable file");
   }
+  return s;
+}
 
-  // 2. MaxArraySize: the cluster's (scontrol), capped by --max-array-size, else Slurm's default.
-  std::string k_source;
+/// MaxArraySize: the cluster's (scontrol), capped by --max-array-size, else Slurm's default;
+/// returns where it came from.
+std::string choose_max_array_size(const SlurmCommandOptions& o, SlurmScriptOptions& s) {
   std::optional<std::uint64_t> cluster_k;
-  if (find_on_path("scontrol")) {
+  if (find_on_path("scontrol"))
     cluster_k = parse_max_array_size(capture("scontrol show config 2>/dev/null").out);
-  }
   if (cluster_k && (!o.max_array_size_given || *cluster_k <= o.max_array_size)) {
     s.max_array_size = *cluster_k;
-    k_source = "from scontrol show config";
-  } else if (o.max_array_size_given) {
-    s.max_array_size = o.max_array_size;
-    k_source = "from --max-array-size";
-  } else {
-    s.max_array_size = kDefaultMaxArraySize;
-    k_source = "Slurm's default; no scontrol answered";
+    return "from scontrol show config";
   }
-  const std::uint64_t t = slurm_array_tasks(s.shards, s.max_array_size);
+  if (o.max_array_size_given) {
+    s.max_array_size = o.max_array_size;
+    return "from --max-array-size";
+  }
+  s.max_array_size = kDefaultMaxArraySize;
+  return "Slurm's default; no scontrol answered";
+}
 
-  const std::string array_script = render_slurm_array_script(s);
-  const std::string merge_script = render_slurm_merge_script(s);
-  create_output_dir(slurm_log_dir(s.out_dir));
-  write_script(slurm_array_script_path(s.out_dir), array_script);
-  write_script(slurm_merge_script_path(s.out_dir), merge_script);
-
+/// What was written: runs per shard, array tasks, the scripts' paths.
+void print_plan(const SweepPlan& plan, const SlurmScriptOptions& s, std::uint64_t tasks,
+                const std::string& k_source) {
+  const std::uint64_t runs = plan.run_count();
   std::cout << "sweep " << plan.name() << ": " << runs << " runs (" << plan.configuration_count()
             << " configurations x " << plan.repetitions() << " repetitions) in " << s.shards << " shards of "
             << runs_per_shard(runs, s.shards) << " runs\n";
   if (s.shards > runs) {
     std::cout << "note: more shards than runs; shards " << runs << ".." << s.shards - 1 << " have no runs\n";
   }
-  std::cout << "array: " << t << " tasks (MaxArraySize " << s.max_array_size << ", " << k_source << ")";
-  if (t < s.shards) {
-    std::cout << "; packed: task t runs shards t, t+" << t << ", t+" << 2 * t << ", ... below " << s.shards
-              << " one after the other (" << runs_per_shard(s.shards, t) << " shards per task)";
+  std::cout << "array: " << tasks << " tasks (MaxArraySize " << s.max_array_size << ", " << k_source << ")";
+  if (tasks < s.shards) {
+    std::cout << "; packed: task t runs shards t, t+" << tasks << ", t+" << 2 * tasks << ", ... below "
+              << s.shards << " one after the other (" << runs_per_shard(s.shards, tasks)
+              << " shards per task)";
   } else {
     std::cout << ", one shard each";
   }
   std::cout << "\nwrote " << slurm_array_script_path(s.out_dir) << " and "
             << slurm_merge_script_path(s.out_dir) << "; job logs go to " << slurm_log_dir(s.out_dir) << "/\n";
+}
 
-  const auto array_cmd = slurm_array_submit_command(s.out_dir);
-  const bool have_sbatch = find_on_path("sbatch").has_value();
-  if (o.dry_run || !have_sbatch) {
-    std::cout << (o.dry_run ? "dry run" : "sbatch is not on PATH") << ": not submitted. The scripts:\n\n"
-              << "==> " << slurm_array_script_path(s.out_dir) << " <==\n"
-              << array_script << "\n==> " << slurm_merge_script_path(s.out_dir) << " <==\n"
-              << merge_script << "\nTo submit:\n"
-              << "  array_id=$(" << shell_command(array_cmd) << ")\n"
-              << "  " << merge_command_line(s.out_dir) << '\n';
-    return 0;
-  }
-
-  // 3. Submission: the array, then the merge depending on it.
-  const Captured a = capture(shell_command(array_cmd));
+/// Submits the array, then the merge depending on it. Exit status 1 when the merge could not
+/// be submitted (the array was).
+int submit(const SlurmScriptOptions& s) {
+  const Captured a = capture(shell_command(slurm_array_submit_command(s.out_dir)));
   const auto array_id = parse_sbatch_job_id(a.out);
   if (a.status != 0 || !array_id) {
     throw std::runtime_error("sbatch failed to submit the array (exit " + std::to_string(a.status) +
@@ -226,6 +209,39 @@ int run_slurm(const SlurmCommandOptions& o) {
             << "results: " << s.out_dir << "/ (runs.csv, summary.csv, best.csv once the merge job is done; "
             << "its log: " << slurm_log_dir(s.out_dir) << "/merge_" << *merge_id << ".out)\n";
   return 0;
+}
+
+int run_slurm(const SlurmCommandOptions& o) {
+  if (o.tasks == 0) throw ConfigError("--tasks", "must be >= 1 (the number of shards), got 0");
+  if (o.cpus < 1) throw ConfigError("--cpus", "must be >= 1, got " + std::to_string(o.cpus));
+  if (o.max_array_size_given && o.max_array_size == 0)
+    throw ConfigError("--max-array-size", "must be >= 1, got 0");
+
+  // 1. The sweep: loaded and expanded here, so that its errors show now and not on the cluster.
+  const SweepPlan plan = SweepPlan::from_file(o.sweep_file, o.overrides);
+  print_sweep_warnings(plan, o.sweep_file);
+  SlurmScriptOptions s = script_options(o, plan);
+
+  // 2. The scripts.
+  const std::string k_source = choose_max_array_size(o, s);
+  const std::uint64_t tasks = slurm_array_tasks(s.shards, s.max_array_size);
+  const std::string array_script = render_slurm_array_script(s);
+  const std::string merge_script = render_slurm_merge_script(s);
+  create_output_dir(slurm_log_dir(s.out_dir));
+  write_script(slurm_array_script_path(s.out_dir), array_script);
+  write_script(slurm_merge_script_path(s.out_dir), merge_script);
+  print_plan(plan, s, tasks, k_source);
+  if (o.dry_run || !find_on_path("sbatch").has_value()) {
+    std::cout << (o.dry_run ? "dry run" : "sbatch is not on PATH") << ": not submitted. The scripts:\n\n"
+              << "==> " << slurm_array_script_path(s.out_dir) << " <==\n"
+              << array_script << "\n==> " << slurm_merge_script_path(s.out_dir) << " <==\n"
+              << merge_script << "\nTo submit:\n"
+              << "  array_id=$(" << shell_command(slurm_array_submit_command(s.out_dir)) << ")\n"
+              << "  " << merge_command_line(s.out_dir) << '\n';
+    return 0;
+  }
+  // 3. Submission.
+  return submit(s);
 }
 
 }  // namespace

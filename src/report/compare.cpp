@@ -265,6 +265,125 @@ void warn_one_sided(CompareReport& r, const std::vector<std::string>& a, const s
   }
 }
 
+/// The names of `base` that `cur` also has, in base's order; each name of one side only is a
+/// warning ("<what> only in the baseline<not_compared>:" / "... only in NEW...").
+std::vector<std::string> shared_names(CompareReport& r, const std::vector<std::string>& base,
+                                      const std::vector<std::string>& cur, const std::string& what,
+                                      const std::string& not_compared) {
+  std::vector<std::string> shared;
+  for (const auto& n : base) {
+    if (std::find(cur.begin(), cur.end(), n) != cur.end()) shared.push_back(n);
+  }
+  warn_one_sided(r, base, cur, what + " only in the baseline" + not_compared + ":");
+  warn_one_sided(r, cur, base, what + " only in NEW" + not_compared + ":");
+  return shared;
+}
+
+void check_options(const std::string& new_dir, const std::string& baseline_dir,
+                   const CompareOptions& options) {
+  if (!(options.quality_tolerance >= 0.0)) throw ConfigError("--quality-tolerance", "must be >= 0");
+  if (!(options.speed_tolerance >= 0.0)) throw ConfigError("--speed-tolerance", "must be >= 0");
+  if (!(options.significance > 0.0 && options.significance < 1.0)) {
+    throw ConfigError("--significance", "must be in (0, 1)");
+  }
+  if (options.min_quantile_runs < 1) throw ConfigError("--min-runs", "must be >= 1");
+  for (const std::string& d : {new_dir, baseline_dir}) {
+    if (!std::filesystem::is_directory(d)) throw ConfigError(d, "not a directory");
+  }
+}
+
+/// Aggregates a side whose summary.csv is missing or older than its runs.csv (its box plots),
+/// saying so; warns when it cannot (no progress.csv).
+void refresh_summaries(CompareReport& r) {
+  for (const std::string& d : {r.new_dir, r.baseline_dir}) {
+    const std::string summary = d + "/summary.csv";
+    const bool missing = !std::filesystem::exists(summary);
+    if (!missing &&
+        std::filesystem::last_write_time(summary) >= std::filesystem::last_write_time(d + "/runs.csv")) {
+      continue;
+    }
+    const std::string why = missing ? " has no summary.csv" : ": summary.csv is older than runs.csv";
+    if (!std::filesystem::exists(d + "/progress.csv")) {
+      r.warnings.push_back(d + why + " and no progress.csv to aggregate: its box plots " +
+                           (missing ? "are left out" : "may be stale"));
+      continue;
+    }
+    aggregate(d, AggregateOptions{});
+    r.notes.push_back(d + why + ": aggregated it first");
+  }
+}
+
+/// Warnings about the two sides as wholes: different sweeps, a new side that did not complete,
+/// different machines (whose speed flags are then informational).
+void warn_about_sides(CompareReport& r, const ManifestFacts& base, const ManifestFacts& cur,
+                      const BenchFile* base_bench, const BenchFile* cur_bench,
+                      const CompareOptions& options) {
+  if (base.sweep_hash && cur.sweep_hash && *base.sweep_hash != *cur.sweep_hash) {
+    r.sweep_hash_differs = true;
+    r.warnings.push_back(
+        "the sweeps differ (sweep_hash " + *base.sweep_hash + " (baseline) vs " + *cur.sweep_hash +
+        " (new)): only the configurations and runs both have are compared (compare checks a "
+        "sweep against an earlier run of itself; to compare strategies within one sweep, use "
+        "fsweep paired)");
+  }
+  if (cur.status && *cur.status != "complete") {
+    r.warnings.push_back(cur.path + ": status '" + *cur.status + "', not 'complete'");
+  }
+  const auto differences = machine_differences(base, cur, base_bench, cur_bench);
+  r.same_machine = differences.empty();
+  for (const auto& d : differences) {
+    r.warnings.push_back("different machine: " + d + "; speed flags are informational" +
+                         (options.strict_speed ? " (but --strict-speed is set)" : " unless --strict-speed"));
+  }
+}
+
+/// The configuration `c` one side lacks: a check of kind "config" (missing from NEW fails).
+void compare_one_sided(ConfigComparison& c, bool in_baseline, CompareReport& r) {
+  c.status = in_baseline ? CheckStatus::Missing : CheckStatus::New;
+  c.failure = in_baseline;
+  CompareCheck k;
+  k.kind = "config";
+  k.name = c.name;
+  k.metric = "runs";
+  k.baseline = std::to_string(c.baseline_runs);
+  k.current = std::to_string(c.new_runs);
+  k.status = c.status;
+  k.failure = c.failure;
+  r.checks.push_back(k);
+}
+
+/// A configuration both sides have (its rows `b_rows`, `n_rows`): baseline runs NEW lacks
+/// (listed up to options.listed_runs_per_config), then its quality exactly or by quantiles.
+void compare_both_sided(const Sides& s, const std::vector<std::size_t>& b_rows,
+                        const std::vector<std::size_t>& n_rows, ConfigComparison& c, CompareReport& r) {
+  std::size_t missing_runs = 0;
+  for (const std::size_t br : b_rows) {
+    const std::string& key = s.base.rows[br][s.base.run_key];
+    if (s.cur.row_of_key.count(key) != 0) continue;
+    if (missing_runs++ < s.options.listed_runs_per_config) {
+      CompareCheck k;
+      k.kind = "run";
+      k.name = c.name + " | " + key;
+      k.metric = "run_key";
+      k.baseline = key;
+      k.status = CheckStatus::Missing;
+      k.failure = true;
+      r.checks.push_back(k);
+    }
+  }
+  if (c.reproducible) {
+    compare_exactly(s, b_rows, c, r.checks);
+  } else {
+    compare_quantiles(s, b_rows, n_rows, c, r.checks);
+  }
+  if (missing_runs > 0) {
+    raise(c, CheckStatus::Incomplete);
+    c.worst = std::to_string(missing_runs) + " of " + std::to_string(b_rows.size()) + " runs missing" +
+              (c.worst.empty() ? "" : "; " + c.worst);
+  }
+  c.failure = severity(c.status) >= severity(CheckStatus::Regressed);
+}
+
 }  // namespace
 
 std::string to_string(CheckStatus status) {
@@ -297,15 +416,7 @@ std::string to_string(CheckStatus status) {
 
 CompareReport compare_dirs(const std::string& new_dir, const std::string& baseline_dir,
                            const CompareOptions& options) {
-  if (!(options.quality_tolerance >= 0.0)) throw ConfigError("--quality-tolerance", "must be >= 0");
-  if (!(options.speed_tolerance >= 0.0)) throw ConfigError("--speed-tolerance", "must be >= 0");
-  if (!(options.significance > 0.0 && options.significance < 1.0)) {
-    throw ConfigError("--significance", "must be in (0, 1)");
-  }
-  if (options.min_quantile_runs < 1) throw ConfigError("--min-runs", "must be >= 1");
-  for (const std::string& d : {new_dir, baseline_dir}) {
-    if (!std::filesystem::is_directory(d)) throw ConfigError(d, "not a directory");
-  }
+  check_options(new_dir, baseline_dir, options);
   CompareReport r;
   r.new_dir = new_dir;
   r.baseline_dir = baseline_dir;
@@ -319,61 +430,16 @@ CompareReport compare_dirs(const std::string& new_dir, const std::string& baseli
   const ManifestFacts cur_manifest = read_manifest_facts(new_dir + "/manifest.json");
   const auto base_bench = read_bench_file(baseline_dir + "/bench.json");
   const auto cur_bench = read_bench_file(new_dir + "/bench.json");
-  for (const std::string& d : {new_dir, baseline_dir}) {
-    const std::string summary = d + "/summary.csv";
-    const bool missing = !std::filesystem::exists(summary);
-    if (!missing &&
-        std::filesystem::last_write_time(summary) >= std::filesystem::last_write_time(d + "/runs.csv")) {
-      continue;
-    }
-    const std::string why = missing ? " has no summary.csv" : ": summary.csv is older than runs.csv";
-    if (!std::filesystem::exists(d + "/progress.csv")) {
-      r.warnings.push_back(d + why + " and no progress.csv to aggregate: its box plots " +
-                           (missing ? "are left out" : "may be stale"));
-      continue;
-    }
-    aggregate(d, AggregateOptions{});
-    r.notes.push_back(d + why + ": aggregated it first");
-  }
-  if (base_manifest.sweep_hash && cur_manifest.sweep_hash &&
-      *base_manifest.sweep_hash != *cur_manifest.sweep_hash) {
-    r.sweep_hash_differs = true;
-    r.warnings.push_back(
-        "the sweeps differ (sweep_hash " + *base_manifest.sweep_hash + " (baseline) vs " +
-        *cur_manifest.sweep_hash +
-        " (new)): only the configurations and runs both have are compared (compare checks a "
-        "sweep against an earlier run of itself; to compare strategies within one sweep, use "
-        "fsweep paired)");
-  }
-  if (cur_manifest.status && *cur_manifest.status != "complete") {
-    r.warnings.push_back(cur_manifest.path + ": status '" + *cur_manifest.status + "', not 'complete'");
-  }
-  const auto differences = machine_differences(
-      base_manifest, cur_manifest, base_bench ? &*base_bench : nullptr, cur_bench ? &*cur_bench : nullptr);
-  r.same_machine = differences.empty();
-  for (const auto& d : differences) {
-    r.warnings.push_back("different machine: " + d + "; speed flags are informational" +
-                         (options.strict_speed ? " (but --strict-speed is set)" : " unless --strict-speed"));
-  }
+  const BenchFile* base_bench_ptr = base_bench ? &*base_bench : nullptr;
+  const BenchFile* cur_bench_ptr = cur_bench ? &*cur_bench : nullptr;
+  refresh_summaries(r);
+  warn_about_sides(r, base_manifest, cur_manifest, base_bench_ptr, cur_bench_ptr, options);
 
   // 2. Shared columns.
-  std::vector<std::string> key_names;
-  for (const auto& n : base.config_names) {
-    if (std::find(cur.config_names.begin(), cur.config_names.end(), n) != cur.config_names.end()) {
-      key_names.push_back(n);
-    }
-  }
-  warn_one_sided(r, base.config_names, cur.config_names, "config column only in the baseline:");
-  warn_one_sided(r, cur.config_names, base.config_names, "config column only in NEW:");
-  std::vector<std::string> quality;
-  for (const auto& n : base.quality_names) {
-    if (std::find(cur.quality_names.begin(), cur.quality_names.end(), n) != cur.quality_names.end()) {
-      quality.push_back(n);
-    }
-  }
-  warn_one_sided(r, base.quality_names, cur.quality_names,
-                 "metric column only in the baseline (not compared):");
-  warn_one_sided(r, cur.quality_names, base.quality_names, "metric column only in NEW (not compared):");
+  const std::vector<std::string> key_names =
+      shared_names(r, base.config_names, cur.config_names, "config column", "");
+  const std::vector<std::string> quality =
+      shared_names(r, base.quality_names, cur.quality_names, "metric column", " (not compared)");
 
   // 3. Configurations of both sides and their labels.
   const Grouping bg = group(base, columns_of(base, key_names));
@@ -389,6 +455,10 @@ CompareReport compare_dirs(const std::string& new_dir, const std::string& baseli
   for (const std::size_t p : positions) r.label_columns.push_back(key_names[p]);
   const auto base_boxes = read_boxes(baseline_dir + "/summary.csv", key_names, r.box_metrics);
   const auto cur_boxes = read_boxes(new_dir + "/summary.csv", key_names, r.box_metrics);
+  const auto box_of = [&](const auto& boxes, const std::string& key) {
+    const auto it = boxes.find(key);
+    return it == boxes.end() ? std::vector<std::optional<BoxStats>>(r.box_metrics.size()) : it->second;
+  };
 
   // 4. Per configuration: quality, then median wall time.
   const Sides sides{base, cur, quality, options, r.same_machine || options.strict_speed};
@@ -409,61 +479,20 @@ CompareReport compare_dirs(const std::string& new_dir, const std::string& baseli
     c.baseline_runs = b_rows ? b_rows->size() : 0;
     c.new_runs = n_rows ? n_rows->size() : 0;
     c.reproducible = b_rows ? reproducible_config(base, *b_rows) : reproducible_config(cur, *n_rows);
-    const auto bb = base_boxes.find(keys[i]);
-    const auto nb = cur_boxes.find(keys[i]);
-    c.baseline_box =
-        bb == base_boxes.end() ? std::vector<std::optional<BoxStats>>(r.box_metrics.size()) : bb->second;
-    c.new_box =
-        nb == cur_boxes.end() ? std::vector<std::optional<BoxStats>>(r.box_metrics.size()) : nb->second;
+    c.baseline_box = box_of(base_boxes, keys[i]);
+    c.new_box = box_of(cur_boxes, keys[i]);
     if (!b_rows || !n_rows) {
-      c.status = b_rows ? CheckStatus::Missing : CheckStatus::New;
-      c.failure = b_rows != nullptr;
-      CompareCheck k;
-      k.kind = "config";
-      k.name = c.name;
-      k.metric = "runs";
-      k.baseline = std::to_string(c.baseline_runs);
-      k.current = std::to_string(c.new_runs);
-      k.status = c.status;
-      k.failure = c.failure;
-      r.checks.push_back(k);
-      r.configs.push_back(c);
-      continue;
-    }
-    std::size_t missing_runs = 0;
-    for (const std::size_t br : *b_rows) {
-      const std::string& key = base.rows[br][base.run_key];
-      if (cur.row_of_key.count(key) != 0) continue;
-      if (missing_runs++ < options.listed_runs_per_config) {
-        CompareCheck k;
-        k.kind = "run";
-        k.name = c.name + " | " + key;
-        k.metric = "run_key";
-        k.baseline = key;
-        k.status = CheckStatus::Missing;
-        k.failure = true;
-        r.checks.push_back(k);
-      }
-    }
-    if (c.reproducible) {
-      compare_exactly(sides, *b_rows, c, r.checks);
+      compare_one_sided(c, b_rows != nullptr, r);
     } else {
-      compare_quantiles(sides, *b_rows, *n_rows, c, r.checks);
+      compare_both_sided(sides, *b_rows, *n_rows, c, r);
+      speed_checks.push_back(wall_time_check(sides, *b_rows, *n_rows, c.name));
     }
-    if (missing_runs > 0) {
-      raise(c, CheckStatus::Incomplete);
-      c.worst = std::to_string(missing_runs) + " of " + std::to_string(b_rows->size()) + " runs missing" +
-                (c.worst.empty() ? "" : "; " + c.worst);
-    }
-    c.failure = severity(c.status) >= severity(CheckStatus::Regressed);
-    speed_checks.push_back(wall_time_check(sides, *b_rows, *n_rows, c.name));
     r.configs.push_back(c);
   }
   r.checks.insert(r.checks.end(), speed_checks.begin(), speed_checks.end());
 
   // 5. Sweep throughput and micro-benchmarks; the verdict.
-  add_sweep_speed_checks(r, base_manifest, cur_manifest, base_bench ? &*base_bench : nullptr,
-                         cur_bench ? &*cur_bench : nullptr, options);
+  add_sweep_speed_checks(r, base_manifest, cur_manifest, base_bench_ptr, cur_bench_ptr, options);
   for (const auto& c : r.configs) r.regressions += c.failure;
   for (const auto& k : r.checks) r.regressions += (k.kind == "speed" || k.kind == "bench") && k.failure;
   return r;

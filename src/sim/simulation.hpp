@@ -81,7 +81,7 @@ class Simulation {
   /// Steps until the end and returns the result.
   [[nodiscard]] RunResult run();
 
-  /// The exact weight search's hooks (sweep/exact_search.hpp).
+  /// The exact weight search's hooks (weightsearch/exact_search.hpp).
   ///
   /// choice(): when the run's strategy is linear-scored (LinearScoredStrategy) and the next step()
   /// chooses by its weights, the candidates of that choice, as

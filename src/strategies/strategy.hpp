@@ -242,7 +242,7 @@ class LinearScoredStrategy : public Strategy {
   /// exact weight search (sweep_plan.hpp) sweeps these parameters.
   [[nodiscard]] virtual std::vector<std::string> weight_names() const = 0;
   /// Makes the strategy score by `weights` (as many as weights() has, each in its allowed range)
-  /// from now on: the exact weight search (sweep/exact_search.hpp) lets a simulation whose region
+  /// from now on: the exact weight search (weightsearch/exact_search.hpp) lets a simulation whose region
   /// has one weight vector left go on as a run with those weights. Throws std::invalid_argument
   /// for another number of weights or a weight out of its range.
   virtual void set_weights(std::span<const double> weights) = 0;

@@ -340,88 +340,83 @@ bool has_rows(const std::string& path) {
   return std::getline(in, line) && std::getline(in, line);
 }
 
-std::uint64_t extend_outputs(const SweepPlan& plan, ShardOf shard, const SweepTable& table,
-                             const std::string& dir, const nlohmann::json& old) {
-  const std::string changed = "holds the outputs of another version of this sweep file (sweep_hash " +
-                              old["sweep_hash"].get<std::string>() + " then, " + sweep_hash(plan.source()) +
-                              " now)";
-  const std::string start_over = "; use --fresh to start over, or another output directory";
-  // 1. What is not extended: exact weight searches, results of other map contents.
-  if (!plan.search_units().empty() || has_search_entry(old.value("sweep", nlohmann::json())) ||
-      fs::exists(dir + "/searches.json") || fs::exists(dir + "/search_journal.jsonl")) {
-    throw ConfigError(dir,
-                      changed +
-                          ", and a sweep with exact weight searches (\"search\" entries) is not extended: "
-                          "its search files are of the earlier sweep's instances" +
-                          start_over);
-  }
-  const std::string runs_path = dir + "/runs.csv";
-  const std::string progress_path = dir + "/progress.csv";
-  if (!has_rows(runs_path)) {  // nothing finished: the files start over with this sweep's columns
-    fs::remove(runs_path);
-    fs::remove(progress_path);
-    return 0;
-  }
-  if (!old.contains("maps")) {
-    throw ConfigError(dir,
-                      "holds the results of an older fsweep: its manifest.json does not record the maps' "
-                      "content, and its run keys differ from this version's" +
-                          start_over);
-  }
-  if (const auto maps = changed_map_contents(old, plan); !maps.empty()) {
-    std::string list;
-    for (const std::string& m : maps) list += (list.empty() ? "" : "; ") + m;
-    throw ConfigError(dir, "holds the results of other maps than this sweep's (" + list + ")" + start_over);
-  }
-  // 2. Its columns: the outcome and metric columns must be this build's, the rest is described
-  //    again by the changed sweep.
-  const std::string header = read_first_line(runs_path);
-  const std::vector<std::string> columns = split_csv_line(header);
+namespace {
+
+constexpr const char* kStartOver = "; use --fresh to start over, or another output directory";
+
+/// The columns of a runs.csv to extend: its header's names and where its key, index and
+/// end_reason are.
+struct OldColumns {
+  std::vector<std::string> names;
+  std::size_t key = 0;
+  std::size_t index = 0;
+  std::size_t end = 0;
+};
+
+/// The columns of `header` (runs.csv at `runs_path`), whose outcome and metric columns must be
+/// `table`'s (the rest is described again by the changed sweep).
+OldColumns old_columns(const std::string& header, const SweepTable& table, const std::string& runs_path) {
+  OldColumns c;
+  c.names = split_csv_line(header);
   const auto position = [&](const char* name) -> std::optional<std::size_t> {
-    const auto it = std::find(columns.begin(), columns.end(), name);
-    if (it == columns.end()) return std::nullopt;
-    return static_cast<std::size_t>(it - columns.begin());
+    const auto it = std::find(c.names.begin(), c.names.end(), name);
+    if (it == c.names.end()) return std::nullopt;
+    return static_cast<std::size_t>(it - c.names.begin());
   };
   const auto key_col = position(kRunKeyColumn);
   const auto index_col = position(kRunIndexColumn);
   const auto end_col = position(kEndReasonColumn);
   const std::size_t new_end = table.column(kEndReasonColumn);
   const auto outcome = [&](std::size_t from) {
-    return table.columns().size() - new_end == columns.size() - from;
+    return table.columns().size() - new_end == c.names.size() - from;
   };
   if (!key_col || !index_col || !end_col || !outcome(*end_col) ||
-      !std::equal(columns.begin() + static_cast<std::ptrdiff_t>(*end_col), columns.end(),
+      !std::equal(c.names.begin() + static_cast<std::ptrdiff_t>(*end_col), c.names.end(),
                   table.columns().begin() + static_cast<std::ptrdiff_t>(new_end))) {
     throw ConfigError(
         runs_path,
-        "its outcome and metric columns differ from this sweep's (made by another fsweep, or the sweep's "
-        "\"competitive\" maps changed from none to some or back?), "
-        "so its runs cannot join the changed sweep's" +
-            start_over);
+        std::string("its outcome and metric columns differ from this sweep's (made by another fsweep, "
+                    "or the sweep's \"competitive\" maps changed from none to some or back?), "
+                    "so its runs cannot join the changed sweep's") +
+            kStartOver);
   }
-  // 3. The done runs: each must have its place in the changed sweep's shard.
-  CsvJournal runs(runs_path, header);
-  CsvJournal progress(progress_path, SweepTable::progress_header());
-  std::optional<RunPlacement> placement;
-  const RowRules rules{columns.size(), *key_col, *index_col, *end_col, UINT64_MAX, shard};
-  const Resumed resumed = repair_runs(rules, runs, [&](const DoneRuns& done) {
-    placement.emplace(done);
-    offer_runs(plan, shard, true, *placement);
-    if (!placement->complete()) refuse_unplaced(plan, shard, old, *placement, done.size(), dir, changed);
-  });
-  // 4. Both files in the changed sweep's run order (progress.csv first, as always): progress rows
-  //    renumbered; runs.csv rows described by the changed sweep (labels, columns) with their
-  //    outcome. The places follow from the keys, so a kill meanwhile is repaired by the next run.
+  c.key = *key_col;
+  c.index = *index_col;
+  c.end = *end_col;
+  return c;
+}
+
+/// Refuses outputs that are not extended: of an older fsweep (no map contents recorded), or of
+/// other map contents.
+void refuse_other_maps(const SweepPlan& plan, const std::string& dir, const nlohmann::json& old) {
+  if (!old.contains("maps")) {
+    throw ConfigError(
+        dir, std::string("holds the results of an older fsweep: its manifest.json does not record the "
+                         "maps' content, and its run keys differ from this version's") +
+                 kStartOver);
+  }
+  if (const auto maps = changed_map_contents(old, plan); !maps.empty()) {
+    std::string list;
+    for (const std::string& m : maps) list += (list.empty() ? "" : "; ") + m;
+    throw ConfigError(dir, "holds the results of other maps than this sweep's (" + list + ")" + kStartOver);
+  }
+}
+
+/// Both files in the changed sweep's run order (progress.csv first, as always): progress rows
+/// renumbered; runs.csv rows described by the changed sweep (labels, columns) with their
+/// outcome. The places follow from the keys, so a kill meanwhile is repaired by the next run.
+void move_rows(const SweepPlan& plan, const SweepTable& table, const OldColumns& old,
+               const RunPlacement& placement, CsvJournal& runs, CsvJournal& progress) {
   const auto place_by = [&](std::size_t key_at, std::size_t index_at) {
     return [&, key_at, index_at](const std::vector<std::string>& f) -> std::optional<std::uint64_t> {
       const auto key = parse_run_key(f.at(key_at));
       const auto index = parse_run_index(f.at(index_at));
       if (!key || !index) return std::nullopt;
-      return placement->new_index(*key, *index);
+      return placement.new_index(*key, *index);
     };
   };
   repair_progress(progress, [&](std::uint64_t key, std::uint64_t index) {
-    return placement->new_index(key, index).has_value();
+    return placement.new_index(key, index).has_value();
   });
   const std::size_t progress_index = SweepTable::progress_column(kRunIndexColumn);
   CsvJournal::Rewrite moved_progress;
@@ -430,27 +425,69 @@ std::uint64_t extend_outputs(const SweepPlan& plan, ShardOf shard, const SweepTa
     f.at(progress_index) = std::to_string(index);
   };
   progress.rewrite_in_order(progress_index, moved_progress);
+  const std::size_t new_end = table.column(kEndReasonColumn);
   CsvJournal::Rewrite moved_runs;
-  moved_runs.place = place_by(*key_col, *index_col);
+  moved_runs.place = place_by(old.key, old.index);
   moved_runs.fill = [&](std::uint64_t index, std::vector<std::string>& f) {
     std::vector<std::string> row;
     try {
       row = table.describe(plan, plan.run(index));
     } catch (const std::exception&) {  // a run with a column outside the header: its cells by name
       row.assign(table.columns().size(), std::string());
-      for (std::size_t c = 0; c < *end_col; ++c) {
-        const auto it = std::find(table.columns().begin(), table.columns().end(), columns[c]);
+      for (std::size_t c = 0; c < old.end; ++c) {
+        const auto it = std::find(table.columns().begin(), table.columns().end(), old.names[c]);
         if (it != table.columns().end())
           row[static_cast<std::size_t>(it - table.columns().begin())] = f.at(c);
       }
       row[table.column(kRunIndexColumn)] = std::to_string(index);
     }
-    std::copy(f.begin() + static_cast<std::ptrdiff_t>(*end_col), f.end(),
+    std::copy(f.begin() + static_cast<std::ptrdiff_t>(old.end), f.end(),
               row.begin() + static_cast<std::ptrdiff_t>(new_end));
     f = std::move(row);
   };
   moved_runs.header = table.header();
   runs.rewrite_in_order(table.column(kRunIndexColumn), moved_runs);
+}
+
+}  // namespace
+
+std::uint64_t extend_outputs(const SweepPlan& plan, ShardOf shard, const SweepTable& table,
+                             const std::string& dir, const nlohmann::json& old) {
+  const std::string changed = "holds the outputs of another version of this sweep file (sweep_hash " +
+                              old["sweep_hash"].get<std::string>() + " then, " + sweep_hash(plan.source()) +
+                              " now)";
+  // 1. What is not extended: exact weight searches, results of other map contents.
+  if (!plan.search_units().empty() || has_search_entry(old.value("sweep", nlohmann::json())) ||
+      fs::exists(dir + "/searches.json") || fs::exists(dir + "/search_journal.jsonl")) {
+    throw ConfigError(dir,
+                      changed +
+                          ", and a sweep with exact weight searches (\"search\" entries) is not extended: "
+                          "its search files are of the earlier sweep's instances" +
+                          kStartOver);
+  }
+  const std::string runs_path = dir + "/runs.csv";
+  const std::string progress_path = dir + "/progress.csv";
+  if (!has_rows(runs_path)) {  // nothing finished: the files start over with this sweep's columns
+    fs::remove(runs_path);
+    fs::remove(progress_path);
+    return 0;
+  }
+  refuse_other_maps(plan, dir, old);
+  // 2. Its columns.
+  const std::string header = read_first_line(runs_path);
+  const OldColumns columns = old_columns(header, table, runs_path);
+  // 3. The done runs: each must have its place in the changed sweep's shard.
+  CsvJournal runs(runs_path, header);
+  CsvJournal progress(progress_path, SweepTable::progress_header());
+  std::optional<RunPlacement> placement;
+  const RowRules rules{columns.names.size(), columns.key, columns.index, columns.end, UINT64_MAX, shard};
+  const Resumed resumed = repair_runs(rules, runs, [&](const DoneRuns& done) {
+    placement.emplace(done);
+    offer_runs(plan, shard, true, *placement);
+    if (!placement->complete()) refuse_unplaced(plan, shard, old, *placement, done.size(), dir, changed);
+  });
+  // 4. Both files in the changed sweep's run order.
+  move_rows(plan, table, columns, *placement, runs, progress);
   return resumed.done.size();
 }
 

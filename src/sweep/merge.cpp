@@ -106,11 +106,9 @@ void refuse_results_of_another_sweep(const std::string& dir, const std::vector<S
                              "); nothing written: merge the shards of one sweep into its own directory");
 }
 
-}  // namespace
-
-MergeReport merge_shards(const std::string& dir, const std::string& objective) {
-  MergeReport report;
-  if (!fs::is_directory(dir)) throw ConfigError(dir, "not a directory");
+/// The shard folders of `dir`, their manifests read, checked to be shards of one split of one
+/// sweep run on the same maps; a missing shard goes to `report`'s problems.
+std::vector<Shard> read_shards(const std::string& dir, MergeReport& report) {
   std::vector<Shard> shards;
   for (ShardDir& d : shard_dirs(dir)) shards.push_back({d.index, d.count, std::move(d.path), {}});
   if (shards.empty()) throw ConfigError(dir, "no shard directories (shard-<i>-of-<n>) to merge");
@@ -126,9 +124,6 @@ MergeReport merge_shards(const std::string& dir, const std::string& objective) {
                         "shard index " + std::to_string(s.index) + " is not below " + std::to_string(n));
   }
   for (Shard& s : shards) s.manifest = read_json(s.dir + "/manifest.json");
-  std::vector<std::string> dirs;
-  dirs.reserve(shards.size());
-  for (const Shard& s : shards) dirs.push_back(s.dir);
   for (const Shard& s : shards) {
     if (s.manifest["sweep_hash"] != shards.front().manifest["sweep_hash"]) {
       throw ConfigError(dir, "shards of different sweeps (sweep_hash " +
@@ -147,18 +142,20 @@ MergeReport merge_shards(const std::string& dir, const std::string& objective) {
     }
   }
   refuse_results_of_another_sweep(dir, shards);
-  {
-    std::size_t k = 0;
-    for (std::uint64_t i = 0; i < n; ++i) {
-      if (k < shards.size() && shards[k].index == i) {
-        ++k;
-      } else {
-        report.problems.push_back("missing shard directory " + dir + "/" + shard_dir_name(i, n));
-      }
+  std::size_t k = 0;
+  for (std::uint64_t i = 0; i < n; ++i) {
+    if (k < shards.size() && shards[k].index == i) {
+      ++k;
+    } else {
+      report.problems.push_back("missing shard directory " + dir + "/" + shard_dir_name(i, n));
     }
   }
+  return shards;
+}
 
-  // The whole sweep's plan, for the total and the run keys.
+/// The whole sweep's plan from the first shard's manifest, for the total and the run keys; none
+/// when it cannot be rebuilt here (then the total is the shards' totals).
+std::optional<SweepPlan> whole_plan(const std::vector<Shard>& shards, MergeReport& report) {
   const nlohmann::json& first = shards.front().manifest;
   std::optional<SweepPlan> plan;
   try {
@@ -173,8 +170,14 @@ MergeReport merge_shards(const std::string& dir, const std::string& objective) {
     for (const Shard& s : shards)
       report.total += s.manifest.value("/runs/total"_json_pointer, std::uint64_t{0});
   }
+  return plan;
+}
 
-  // runs.csv rows by run_index; duplicates by index and by key.
+/// The shards' runs.csv: its header, and the rows by run_index. Rows beyond the sweep, repeated
+/// indices or keys, keys not the plan's and missing runs go to `report`'s problems.
+std::pair<std::string, std::map<std::uint64_t, std::string>> merged_runs(const std::vector<Shard>& shards,
+                                                                         const std::optional<SweepPlan>& plan,
+                                                                         MergeReport& report) {
   std::string runs_header;
   std::map<std::uint64_t, std::string> runs;
   std::unordered_map<std::string, std::string> key_where;
@@ -219,9 +222,13 @@ MergeReport merge_shards(const std::string& dir, const std::string& objective) {
     report.problems.push_back("missing run_index " + std::to_string(i) +
                               (plan ? " (run_key " + plan->run_key(i) + ")" : std::string()));
   }
-  if (!report.problems.empty()) return report;
+  return {runs_header, std::move(runs)};
+}
 
-  // progress.csv rows, grouped by run_index (a run's rows keep their order).
+/// The shards' progress.csv as one file's text, grouped by run_index (a run's rows keep their
+/// order); rows of runs without a runs.csv row (a torn write) are dropped, as aggregate does.
+std::string merged_progress(const std::vector<Shard>& shards,
+                            const std::map<std::uint64_t, std::string>& runs) {
   std::string progress_header;
   std::map<std::uint64_t, std::string> progress;
   for (const Shard& s : shards) {
@@ -234,17 +241,19 @@ MergeReport merge_shards(const std::string& dir, const std::string& objective) {
     const std::size_t ci = r.require_column(kRunIndexColumn);
     while (r.next()) {
       const std::uint64_t idx = parse_index(r.fields()[ci], r);
-      if (runs.count(idx) == 0) continue;  // no runs.csv row (torn write): dropped, as aggregate does
+      if (runs.count(idx) == 0) continue;
       progress[idx] += csv_record(r.fields()) + "\n";
     }
   }
+  std::string text = progress_header + "\n";
+  for (const auto& [idx, rows] : progress) text += rows;
+  return text;
+}
 
-  std::string runs_text = runs_header + "\n";
-  for (const auto& [idx, row] : runs) runs_text += row + "\n";
-  std::string progress_text = progress_header + "\n";
-  for (const auto& [idx, rows] : progress) progress_text += rows;
-
-  nlohmann::json manifest = first;
+/// The merged folder's manifest: the first shard's, with the shards' counts summed, their
+/// sessions by start time, and the longest shard's wall time.
+nlohmann::json merged_manifest(const std::vector<Shard>& shards, const MergeReport& report) {
+  nlohmann::json manifest = shards.front().manifest;
   std::uint64_t failed = 0;
   std::uint64_t ran = 0;
   std::uint64_t skipped = 0;
@@ -268,13 +277,33 @@ MergeReport merge_shards(const std::string& dir, const std::string& objective) {
                       {"skipped", skipped},
                       {"ran", ran},
                       {"failed", failed}};
-  manifest["shard"] = {{"index", 0}, {"count", 1}, {"merged_from", n}};
+  manifest["shard"] = {{"index", 0}, {"count", 1}, {"merged_from", report.shard_count}};
   manifest["status"] = "complete";
   manifest["wall_s"] = wall;  // the longest shard: the elapsed time if the shards ran at once
   manifest["runs_per_s"] = wall > 0.0 ? static_cast<double>(ran) / wall : 0.0;
   manifest["end_utc"] = utc_now_iso8601();
   if (!sessions.empty() && !start(sessions.front()).empty()) manifest["start_utc"] = start(sessions.front());
   manifest["sessions"] = std::move(sessions);
+  return manifest;
+}
+
+}  // namespace
+
+MergeReport merge_shards(const std::string& dir, const std::string& objective) {
+  MergeReport report;
+  if (!fs::is_directory(dir)) throw ConfigError(dir, "not a directory");
+  const std::vector<Shard> shards = read_shards(dir, report);
+  std::vector<std::string> dirs;
+  dirs.reserve(shards.size());
+  for (const Shard& s : shards) dirs.push_back(s.dir);
+  const std::optional<SweepPlan> plan = whole_plan(shards, report);
+  const auto [runs_header, runs] = merged_runs(shards, plan, report);
+  if (!report.problems.empty()) return report;
+
+  std::string runs_text = runs_header + "\n";
+  for (const auto& [idx, row] : runs) runs_text += row + "\n";
+  const std::string progress_text = merged_progress(shards, runs);
+  const nlohmann::json manifest = merged_manifest(shards, report);
 
   // The weight searches' parts (weight_search_runner.hpp): joined first, so that a shard whose
   // searches did not finish stops the merge before anything is written.

@@ -170,22 +170,18 @@ std::vector<std::string> linear_scored_names() {
   return out;
 }
 
-/// Makes `entry` (validated, its groups built) a search entry by its "search" object: the weight
-/// groups become the search's box (the values a regular sweep would run; every integer of the
-/// declared range when a weight is not given),
-/// every other group must have one value. `specs`: the strategy's declarations.
-void make_search_entry(const json& search, const std::string& where, const ParamSpecs& specs,
-                       StrategyEntry& entry, std::vector<std::string>& problems) {
-  const std::string at = where + "/search";
+/// The search's method, mode and write_vectors (the search object's keys checked); false when
+/// the object is not one.
+bool read_search_settings(const json& search, const std::string& at, WeightSearch& ws,
+                          std::vector<std::string>& problems) {
   try {
     if (!search.is_object())
       throw ConfigError(at, "expected an object {\"method\": \"exact\", \"mode\": ...}");
     require_known_keys(search, {"method", "mode", "write_vectors", "rank"}, at);
   } catch (const ConfigError& e) {
     problems.push_back(at + ": " + strip_path(e.what(), at));
-    return;
+    return false;
   }
-  WeightSearch ws;
   const json method = search.value("method", json("exact"));
   if (method != json("exact")) {
     problems.push_back(at + "/method: value " + value_text(method) + "; allowed: \"exact\"");
@@ -204,74 +200,75 @@ void make_search_entry(const json& search, const std::string& where, const Param
   } else {
     ws.write_vectors = write_vectors.get<bool>();
   }
-  // The strategy's weights.
-  std::unique_ptr<Strategy> probe;
-  try {
-    probe = configure_strategy(entry.name, entry.params_at(0), where).make(0);
-  } catch (const std::exception& e) {
-    problems.push_back(where + "/params: " + e.what());
-    return;
-  }
-  const LinearScoredStrategy* linear = probe->linear_scored();
-  if (!strategy_traits(entry.name).linear_scored || linear == nullptr) {
-    problems.push_back(
-        at + ": strategy '" + entry.name +
-        "' does not score its candidates linearly, so its weights cannot be searched; allowed: " +
-        join_names(linear_scored_names()));
-    return;
-  }
-  ws.weights = linear->weight_names();
+  return true;
+}
+
+/// The entry's groups that are not weights (each must have one value); a weight zipped with
+/// another parameter is a problem.
+std::vector<StrategyEntry::Group> non_weight_groups(StrategyEntry& entry,
+                                                    const std::vector<std::string>& weights,
+                                                    const std::string& where,
+                                                    std::vector<std::string>& problems) {
   std::vector<StrategyEntry::Group> others;
   for (auto& group : entry.groups) {
     const auto weight =
-        std::find_first_of(group.names.begin(), group.names.end(), ws.weights.begin(), ws.weights.end());
+        std::find_first_of(group.names.begin(), group.names.end(), weights.begin(), weights.end());
     if (weight == group.names.end()) {
       if (group.combos.size() != 1) {
         problems.push_back(
             concat({where, "/params/", group.names.front(), ": a search entry sweeps only its weights (",
-                    join_names(ws.weights), "); this parameter has ", std::to_string(group.combos.size()),
+                    join_names(weights), "); this parameter has ", std::to_string(group.combos.size()),
                     " values; allowed: one"}));
       }
       others.push_back(std::move(group));
     } else if (group.names.size() > 1) {
-      problems.push_back(
-          concat({where, "/zip: weight '", *weight,
-                  "' is zipped; a search covers the whole box of its weights, allowed: no zip groups "
-                  "with weights"}));
+      problems.push_back(concat({where, "/zip: weight '", *weight,
+                                 "' is zipped; a search covers the whole box of its weights, allowed: no zip "
+                                 "groups with weights"}));
     }
   }
-  for (const std::string& w : ws.weights) {
-    std::vector<double> values;
-    const auto group = std::find_if(entry.groups.begin(), entry.groups.end(),
-                                    [&](const StrategyEntry::Group& g) { return g.names == std::vector{w}; });
-    if (group != entry.groups.end()) {
-      for (const auto& combo : group->combos) {
-        const json& v = combo.front();
-        if (!v.is_number()) {
-          const std::string allowed = "; allowed: numbers, lists or ranges of numbers";
-          problems.push_back(concat({where, "/params/", w, ": value ", value_text(v), allowed}));
-          break;
-        }
-        values.push_back(v.get<double>());
+  return others;
+}
+
+/// The values of weight `w` (of the strategy `linear`) in the search's box: its group's values,
+/// sorted; without a group every integer its declaration allows, or the value the strategy fixes.
+/// Nothing when that fails (a problem said why).
+std::optional<std::vector<double>> weight_values(const StrategyEntry& entry, const std::string& w,
+                                                 std::size_t k, const LinearScoredStrategy& linear,
+                                                 const ParamSpecs& specs, const std::string& where,
+                                                 std::vector<std::string>& problems) {
+  std::vector<double> values;
+  const auto group = std::find_if(entry.groups.begin(), entry.groups.end(),
+                                  [&](const StrategyEntry::Group& g) { return g.names == std::vector{w}; });
+  if (group != entry.groups.end()) {
+    for (const auto& combo : group->combos) {
+      const json& v = combo.front();
+      if (!v.is_number()) {
+        const std::string allowed = "; allowed: numbers, lists or ranges of numbers";
+        problems.push_back(concat({where, "/params/", w, ": value ", value_text(v), allowed}));
+        break;
       }
-      std::sort(values.begin(), values.end());
-    } else {  // every integer the declaration allows
-      const auto spec =
-          std::find_if(specs.begin(), specs.end(), [&](const ParamSpec& p) { return p.name == w; });
-      if (spec == specs.end()) {  // a weight the strategy fixes (closest_frontier: (1, 0, 0, 0))
-        values.push_back(linear->weights()[static_cast<std::size_t>(&w - ws.weights.data())]);
-      } else if (!spec->min || !spec->max || spec->max_open || spec->min_open) {
-        problems.push_back(
-            concat({where, "/params/", w, ": missing; a search needs the values of every weight"}));
-        continue;
-      } else {
-        for (double v = std::ceil(*spec->min); v <= *spec->max; v += 1.0) values.push_back(v);
-      }
+      values.push_back(v.get<double>());
     }
-    ws.values.push_back(std::move(values));
+    std::sort(values.begin(), values.end());
+    return values;
   }
-  if (ws.values.size() != ws.weights.size()) return;
-  entry.groups = std::move(others);
+  const auto spec = std::find_if(specs.begin(), specs.end(), [&](const ParamSpec& p) { return p.name == w; });
+  if (spec == specs.end()) {  // a weight the strategy fixes (closest_frontier: (1, 0, 0, 0))
+    values.push_back(linear.weights()[k]);
+  } else if (!spec->min || !spec->max || spec->max_open || spec->min_open) {
+    problems.push_back(
+        concat({where, "/params/", w, ": missing; a search needs the values of every weight"}));
+    return std::nullopt;
+  } else {
+    for (double v = std::ceil(*spec->min); v <= *spec->max; v += 1.0) values.push_back(v);
+  }
+  return values;
+}
+
+/// The combinations write_vectors and rank allow with the box and the mode.
+void check_search_outputs(const json& search, const std::string& at, const WeightSearch& ws,
+                          std::vector<std::string>& problems) {
   if (ws.write_vectors && ws.vectors() > kMaxListedVectors) {
     problems.push_back(at + "/write_vectors: the box has " + with_thousands(ws.vectors()) +
                        " vectors; allowed: true only for boxes of at most " +
@@ -287,7 +284,11 @@ void make_search_entry(const json& search, const std::string& where, const Param
                        "/rank: mode \"best\" ranks no vector but the optimal ones; allowed: rank with "
                        "mode \"all\"");
   }
-  // Vectors to rank.
+}
+
+/// The vectors to rank (search.rank): each a list of one value of the box per weight.
+void read_rank_vectors(const json& search, const std::string& at, WeightSearch& ws,
+                       std::vector<std::string>& problems) {
   const json rank = search.value("rank", json::array());
   if (!rank.is_array()) {
     problems.push_back(at + "/rank: expected a list of weight vectors, e.g. [[10, 0, 9, 20]], got " +
@@ -311,7 +312,238 @@ void make_search_entry(const json& search, const std::string& where, const Param
       ws.rank.push_back(std::move(vector));
     }
   }
+}
+
+/// Makes `entry` (validated, its groups built) a search entry by its "search" object: the weight
+/// groups become the search's box (the values a regular sweep would run; every integer of the
+/// declared range when a weight is not given),
+/// every other group must have one value. `specs`: the strategy's declarations.
+void make_search_entry(const json& search, const std::string& where, const ParamSpecs& specs,
+                       StrategyEntry& entry, std::vector<std::string>& problems) {
+  const std::string at = where + "/search";
+  WeightSearch ws;
+  if (!read_search_settings(search, at, ws, problems)) return;
+  // The strategy's weights.
+  std::unique_ptr<Strategy> probe;
+  try {
+    probe = configure_strategy(entry.name, entry.params_at(0), where).make(0);
+  } catch (const std::exception& e) {
+    problems.push_back(where + "/params: " + e.what());
+    return;
+  }
+  const LinearScoredStrategy* linear = probe->linear_scored();
+  if (!strategy_traits(entry.name).linear_scored || linear == nullptr) {
+    problems.push_back(
+        at + ": strategy '" + entry.name +
+        "' does not score its candidates linearly, so its weights cannot be searched; allowed: " +
+        join_names(linear_scored_names()));
+    return;
+  }
+  ws.weights = linear->weight_names();
+  std::vector<StrategyEntry::Group> others = non_weight_groups(entry, ws.weights, where, problems);
+  for (std::size_t k = 0; k < ws.weights.size(); ++k) {
+    if (auto values = weight_values(entry, ws.weights[k], k, *linear, specs, where, problems)) {
+      ws.values.push_back(std::move(*values));
+    }
+  }
+  if (ws.values.size() != ws.weights.size()) return;
+  entry.groups = std::move(others);
+  check_search_outputs(search, at, ws, problems);
+  read_rank_vectors(search, at, ws, problems);
   entry.search = std::move(ws);
+}
+
+/// The entry's name (a registered strategy) and label (the name when not given).
+void read_name_and_label(const json& item, const std::string& where, const std::vector<std::string>& known,
+                         StrategyEntry& entry, std::vector<std::string>& problems) {
+  if (!item.contains("name") || !item["name"].is_string()) {
+    problems.push_back(where + "/name: expected a strategy name; known: " + join_names(known));
+  } else {
+    entry.name = item["name"].get<std::string>();
+    if (std::find(known.begin(), known.end(), entry.name) == known.end()) {
+      problems.push_back(where + "/name: unknown strategy '" + entry.name + "'; known: " + join_names(known));
+    }
+  }
+  entry.label = entry.name;
+  if (item.contains("label")) {
+    if (item["label"].is_string()) {
+      entry.label = item["label"].get<std::string>();
+    } else {
+      problems.push_back(where + "/label: expected a string, got " + value_text(item["label"]));
+    }
+  }
+}
+
+/// The entry's parameter axes, in key order, and its heuristics (a simulation setting,
+/// src/sim/heuristics.hpp) beside them: one list of names, or a list of such lists to sweep
+/// them, an axis named "heuristics" that orders and zips like a parameter.
+std::map<std::string, Axis> strategy_axes(const json& item, const std::string& where,
+                                          std::vector<std::string>& problems) {
+  std::map<std::string, Axis> axes;
+  const json params = item.value("params", json::object());
+  if (!params.is_object()) {
+    problems.push_back(where + "/params: expected an object {parameter: value, list or range}, got " +
+                       value_text(params));
+  } else {
+    for (const auto& [key, value] : params.items()) {
+      const std::string path = concat({where, "/params/", key});
+      Axis a{key, path, value, expand_values(value, path, problems)};
+      axes.emplace(key, std::move(a));
+    }
+  }
+  if (item.contains("heuristics")) {
+    const std::string path = where + "/heuristics";
+    const json& h = item["heuristics"];
+    const bool swept = h.is_array() && !h.empty() &&
+                       std::all_of(h.begin(), h.end(), [](const json& e) { return e.is_array(); });
+    Axis a{"heuristics", path, h, swept ? expand_values(h, path, problems) : std::vector<json>{h}};
+    for (std::size_t k = 0; k < a.values.size(); ++k) {
+      try {
+        (void)heuristics_from_json(a.values[k], swept ? value_path(h, path, k) : path);
+      } catch (const ConfigError& e) {
+        problems.emplace_back(e.what());
+      }
+    }
+    if (axes.count("heuristics") == 0) axes.emplace("heuristics", std::move(a));
+  }
+  return axes;
+}
+
+/// The entry's zip groups: known parameters, each in one group, equal numbers of values.
+struct ZipGroups {
+  std::map<std::string, std::size_t> group_of;  ///< parameter -> its group
+  std::vector<std::vector<std::string>> zips;
+};
+
+ZipGroups zip_groups(const json& item, const std::string& where, const std::map<std::string, Axis>& axes,
+                     std::vector<std::string>& problems) {
+  ZipGroups out;
+  const json zip = item.value("zip", json::array());
+  if (!zip.is_array()) problems.push_back(where + "/zip: expected a list of lists of parameter names");
+  for (std::size_t g = 0; zip.is_array() && g < zip.size(); ++g) {
+    const std::string gwhere = where + "/zip/" + std::to_string(g);
+    if (!zip[g].is_array() || zip[g].empty()) {
+      problems.push_back(gwhere + ": expected a non-empty list of parameter names, got " +
+                         value_text(zip[g]));
+      continue;
+    }
+    std::vector<std::string> names;
+    std::string counts;
+    std::set<std::size_t> sizes;
+    for (std::size_t m = 0; m < zip[g].size(); ++m) {
+      const json& n = zip[g][m];
+      const std::string name = n.is_string() ? n.get<std::string>() : json_excerpt(n);
+      if (!n.is_string() || !axes.count(name)) {
+        std::string names_given;
+        for (const auto& [k, a] : axes) names_given += (names_given.empty() ? "" : ", ") + k;
+        problems.push_back(concat({gwhere, "/", std::to_string(m), ": '", name,
+                                   "' is not a parameter of this entry; allowed: ", names_given}));
+      } else if (!out.group_of.emplace(name, out.zips.size()).second) {
+        problems.push_back(
+            concat({gwhere, "/", std::to_string(m), ": '", name, "' is already in another zip group"}));
+      } else {
+        names.push_back(name);
+        sizes.insert(axes.at(name).values.size());
+        counts += (counts.empty() ? "" : ", ") + name + ": " + std::to_string(axes.at(name).values.size());
+      }
+    }
+    if (sizes.size() > 1) {
+      problems.push_back(concat(
+          {gwhere, ": zipped parameters vary together and need equal numbers of values; got ", counts}));
+    }
+    out.zips.push_back(std::move(names));
+  }
+  return out;
+}
+
+/// The entry's groups: singletons and zips, ordered by their smallest name (axes are in key
+/// order); a problem when their combinations exceed 2^64.
+void build_groups(const std::map<std::string, Axis>& axes, const ZipGroups& zips, const std::string& where,
+                  StrategyEntry& entry, std::vector<std::string>& problems) {
+  for (const auto& [key, axis] : axes) {
+    const auto z = zips.group_of.find(key);
+    std::vector<std::string> names =
+        z == zips.group_of.end() ? std::vector<std::string>{key} : zips.zips[z->second];
+    if (z != zips.group_of.end() && *std::min_element(names.begin(), names.end()) != key) continue;
+    StrategyEntry::Group group;
+    group.names = names;
+    for (std::size_t k = 0; k < axis.values.size(); ++k) {
+      std::vector<json> combo;
+      combo.reserve(names.size());
+      for (const auto& n : names) combo.push_back(axes.at(n).values[k]);
+      group.combos.push_back(std::move(combo));
+    }
+    entry.groups.push_back(std::move(group));
+  }
+  std::uint64_t count = 1;
+  for (const auto& g : entry.groups) {
+    if (__builtin_mul_overflow(count, static_cast<std::uint64_t>(g.combos.size()), &count)) {
+      problems.push_back(where + "/params: more than 2^64 parameter combinations");
+      break;
+    }
+  }
+}
+
+/// Every value of every parameter axis against the strategy's declaration `specs`
+/// (core/params.hpp); parameters are independent, so no combination needs checking.
+void check_declared(const std::string& name, const std::map<std::string, Axis>& axes, const ParamSpecs& specs,
+                    const std::string& where, std::vector<std::string>& problems) {
+  for (const auto& [key, axis] : axes) {
+    if (axis.where == where + "/heuristics") continue;
+    if (key == "heuristics") {
+      try {
+        (void)configure_strategy(name, json{{key, nullptr}}, where);
+      } catch (const ConfigError& e) {
+        problems.emplace_back(e.what());
+      }
+      continue;
+    }
+    const auto spec =
+        std::find_if(specs.begin(), specs.end(), [&key = key](const ParamSpec& s) { return s.name == key; });
+    if (spec == specs.end()) {
+      std::vector<std::string> names;
+      for (const auto& s : specs) names.push_back(s.name);
+      problems.push_back(axis.where + ": unknown key '" + key +
+                         "'; allowed: " + (names.empty() ? std::string("none") : join_names(names)));
+      continue;
+    }
+    std::vector<std::pair<std::size_t, std::string>> bad;
+    for (std::size_t k = 0; k < axis.values.size(); ++k) {
+      if (auto problem = spec->check(axis.values[k])) bad.emplace_back(k, std::move(*problem));
+    }
+    report_axis(axis, bad, problems);
+  }
+}
+
+/// Strategy entry `item` at `where`, or nothing when it has problems (added to `problems`).
+std::optional<StrategyEntry> parse_strategy(const json& item, const std::string& where,
+                                            const std::vector<std::string>& known,
+                                            std::vector<std::string>& problems) {
+  const std::size_t before = problems.size();
+  try {
+    require_known_keys(item, {"name", "label", "params", "heuristics", "zip", "search"}, where);
+  } catch (const ConfigError& e) {
+    problems.emplace_back(e.what());
+    return std::nullopt;
+  }
+  StrategyEntry entry;
+  // 1. Name and label, 2. parameter axes, 3. zip groups.
+  read_name_and_label(item, where, known, entry, problems);
+  const std::map<std::string, Axis> axes = strategy_axes(item, where, problems);
+  const ZipGroups zips = zip_groups(item, where, axes, problems);
+  if (problems.size() != before) return std::nullopt;
+  // 4. Groups.
+  build_groups(axes, zips, where, entry, problems);
+  if (problems.size() != before) return std::nullopt;
+  // 5. Values against the declaration; the search.
+  if (strategy_registry().contains(entry.name)) {
+    const ParamSpecs& specs = strategy_registry().params(entry.name);
+    check_declared(entry.name, axes, specs, where, problems);
+    if (item.contains("search") && problems.size() == before) {
+      make_search_entry(item["search"], where, specs, entry, problems);
+    }
+  }
+  return entry;
 }
 
 }  // namespace
@@ -325,163 +557,9 @@ std::vector<StrategyEntry> parse_strategies(const json& strategies, std::vector<
   }
   const std::vector<std::string> known = strategy_names();
   for (std::size_t i = 0; i < strategies.size(); ++i) {
-    const std::string where = "/strategies/" + std::to_string(i);
-    const json& item = strategies[i];
-    const std::size_t before = problems.size();
-    try {
-      require_known_keys(item, {"name", "label", "params", "heuristics", "zip", "search"}, where);
-    } catch (const ConfigError& e) {
-      problems.emplace_back(e.what());
-      continue;
+    if (auto entry = parse_strategy(strategies[i], "/strategies/" + std::to_string(i), known, problems)) {
+      out.push_back(std::move(*entry));
     }
-    StrategyEntry entry;
-    // 1. Name and label.
-    if (!item.contains("name") || !item["name"].is_string()) {
-      problems.push_back(where + "/name: expected a strategy name; known: " + join_names(known));
-    } else {
-      entry.name = item["name"].get<std::string>();
-      if (std::find(known.begin(), known.end(), entry.name) == known.end()) {
-        problems.push_back(where + "/name: unknown strategy '" + entry.name +
-                           "'; known: " + join_names(known));
-      }
-    }
-    entry.label = entry.name;
-    if (item.contains("label")) {
-      if (item["label"].is_string()) {
-        entry.label = item["label"].get<std::string>();
-      } else {
-        problems.push_back(where + "/label: expected a string, got " + value_text(item["label"]));
-      }
-    }
-    // 2. Parameter axes, in key order.
-    std::map<std::string, Axis> axes;
-    const json params = item.value("params", json::object());
-    if (!params.is_object()) {
-      problems.push_back(where + "/params: expected an object {parameter: value, list or range}, got " +
-                         value_text(params));
-    } else {
-      for (const auto& [key, value] : params.items()) {
-        const std::string path = concat({where, "/params/", key});
-        Axis a{key, path, value, expand_values(value, path, problems)};
-        axes.emplace(key, std::move(a));
-      }
-    }
-    // The heuristics (a simulation setting, src/sim/heuristics.hpp) sit beside the params: one
-    // list of names, or a list of such lists to sweep them. They vary as an axis of the entry
-    // named "heuristics", so they order and zip like a parameter.
-    if (item.contains("heuristics")) {
-      const std::string path = where + "/heuristics";
-      const json& h = item["heuristics"];
-      const bool swept = h.is_array() && !h.empty() &&
-                         std::all_of(h.begin(), h.end(), [](const json& e) { return e.is_array(); });
-      Axis a{"heuristics", path, h, swept ? expand_values(h, path, problems) : std::vector<json>{h}};
-      for (std::size_t k = 0; k < a.values.size(); ++k) {
-        try {
-          (void)heuristics_from_json(a.values[k], swept ? value_path(h, path, k) : path);
-        } catch (const ConfigError& e) {
-          problems.emplace_back(e.what());
-        }
-      }
-      if (axes.count("heuristics") == 0) axes.emplace("heuristics", std::move(a));
-    }
-    // 3. Zip groups: known parameters, each in one group, equal numbers of values.
-    std::map<std::string, std::size_t> group_of;
-    std::vector<std::vector<std::string>> zips;
-    const json zip = item.value("zip", json::array());
-    if (!zip.is_array()) problems.push_back(where + "/zip: expected a list of lists of parameter names");
-    for (std::size_t g = 0; zip.is_array() && g < zip.size(); ++g) {
-      const std::string gwhere = where + "/zip/" + std::to_string(g);
-      if (!zip[g].is_array() || zip[g].empty()) {
-        problems.push_back(gwhere + ": expected a non-empty list of parameter names, got " +
-                           value_text(zip[g]));
-        continue;
-      }
-      std::vector<std::string> names;
-      std::string counts;
-      std::set<std::size_t> sizes;
-      for (std::size_t m = 0; m < zip[g].size(); ++m) {
-        const json& n = zip[g][m];
-        const std::string name = n.is_string() ? n.get<std::string>() : json_excerpt(n);
-        if (!n.is_string() || !axes.count(name)) {
-          std::string names_given;
-          for (const auto& [k, a] : axes) names_given += (names_given.empty() ? "" : ", ") + k;
-          problems.push_back(concat({gwhere, "/", std::to_string(m), ": '", name,
-                                     "' is not a parameter of this entry; allowed: ", names_given}));
-        } else if (!group_of.emplace(name, zips.size()).second) {
-          problems.push_back(
-              concat({gwhere, "/", std::to_string(m), ": '", name, "' is already in another zip group"}));
-        } else {
-          names.push_back(name);
-          sizes.insert(axes.at(name).values.size());
-          counts += (counts.empty() ? "" : ", ") + name + ": " + std::to_string(axes.at(name).values.size());
-        }
-      }
-      if (sizes.size() > 1) {
-        problems.push_back(concat(
-            {gwhere, ": zipped parameters vary together and need equal numbers of values; got ", counts}));
-      }
-      zips.push_back(std::move(names));
-    }
-    if (problems.size() != before) continue;
-
-    // 4. Groups: singletons and zips, ordered by their smallest name (axes are in key order).
-    for (const auto& [key, axis] : axes) {
-      const auto z = group_of.find(key);
-      std::vector<std::string> names = z == group_of.end() ? std::vector<std::string>{key} : zips[z->second];
-      if (z != group_of.end() && *std::min_element(names.begin(), names.end()) != key) continue;
-      StrategyEntry::Group group;
-      group.names = names;
-      for (std::size_t k = 0; k < axis.values.size(); ++k) {
-        std::vector<json> combo;
-        combo.reserve(names.size());
-        for (const auto& n : names) combo.push_back(axes.at(n).values[k]);
-        group.combos.push_back(std::move(combo));
-      }
-      entry.groups.push_back(std::move(group));
-    }
-    std::uint64_t count = 1;
-    for (const auto& g : entry.groups) {
-      if (__builtin_mul_overflow(count, static_cast<std::uint64_t>(g.combos.size()), &count)) {
-        problems.push_back(where + "/params: more than 2^64 parameter combinations");
-        break;
-      }
-    }
-    if (problems.size() != before) continue;
-
-    // 5. Every value of every parameter axis against the strategy's declaration
-    //    (core/params.hpp); parameters are independent, so no combination needs checking.
-    if (strategy_registry().contains(entry.name)) {
-      const ParamSpecs& specs = strategy_registry().params(entry.name);
-      for (const auto& [key, axis] : axes) {
-        if (axis.where == where + "/heuristics") continue;
-        if (key == "heuristics") {
-          try {
-            (void)configure_strategy(entry.name, json{{key, nullptr}}, where);
-          } catch (const ConfigError& e) {
-            problems.emplace_back(e.what());
-          }
-          continue;
-        }
-        const auto spec = std::find_if(specs.begin(), specs.end(),
-                                       [&key = key](const ParamSpec& s) { return s.name == key; });
-        if (spec == specs.end()) {
-          std::vector<std::string> names;
-          for (const auto& s : specs) names.push_back(s.name);
-          problems.push_back(axis.where + ": unknown key '" + key +
-                             "'; allowed: " + (names.empty() ? std::string("none") : join_names(names)));
-          continue;
-        }
-        std::vector<std::pair<std::size_t, std::string>> bad;
-        for (std::size_t k = 0; k < axis.values.size(); ++k) {
-          if (auto problem = spec->check(axis.values[k])) bad.emplace_back(k, std::move(*problem));
-        }
-        report_axis(axis, bad, problems);
-      }
-      if (item.contains("search") && problems.size() == before) {
-        make_search_entry(item["search"], where, specs, entry, problems);
-      }
-    }
-    out.push_back(std::move(entry));
   }
   return out;
 }

@@ -353,6 +353,140 @@ std::optional<std::string> SweepPaths::resolve(const std::string& written, Kind 
   return std::nullopt;
 }
 
+namespace {
+
+/// A map item of /maps (not a dataset), read: its source without label and seeds as an object,
+/// its SPEC string (for SPEC strings and {"spec": ...}), label, seeds and file.
+struct MapItem {
+  std::string where;
+  std::string spec_string;
+  json base = json::object();
+  std::string label;
+  bool competitive = false;
+  bool has_seeds = false;
+  std::vector<std::uint64_t> seeds;
+  /// A file: the path as written, and the one to open (the sweep file's folder first).
+  std::string written;
+  std::string opened;
+};
+
+/// Map item `item` at `where`, or nothing when it has problems (added to `problems`).
+std::optional<MapItem> read_map_item(const json& item, const std::string& where, SweepPaths& paths,
+                                     bool competitive, std::vector<std::string>& problems) {
+  MapItem m;
+  m.where = where;
+  const std::size_t before = problems.size();
+  m.competitive = item_competitive(item, where, competitive, problems);
+  if (item.is_string()) {
+    m.spec_string = item.get<std::string>();
+  } else {
+    for (const auto& [k, v] : item.items()) {
+      if (k != "label" && k != "seeds" && k != "competitive") m.base[k] = v;
+    }
+    if (item.contains("label")) {
+      if (item["label"].is_string()) {
+        m.label = item["label"].get<std::string>();
+      } else {
+        problems.push_back(where + "/label: expected a string, got " + value_text(item["label"]));
+      }
+    }
+    if (m.base.contains("spec")) {
+      if (m.base.size() != 1) {
+        problems.push_back(where +
+                           ": with \"spec\" the only other keys allowed are label, seeds, competitive");
+      } else if (!m.base["spec"].is_string()) {
+        problems.push_back(where + "/spec: expected a SPEC string, got " + value_text(m.base["spec"]));
+      } else {
+        m.spec_string = m.base["spec"].get<std::string>();
+      }
+    }
+  }
+  if (!m.spec_string.empty()) {
+    try {
+      m.base = map_spec_object(m.spec_string);
+    } catch (const ConfigError& e) {
+      problems.push_back(where + ": " + e.what());
+      return std::nullopt;
+    }
+  }
+  // Seeds: one map per seed, generators only.
+  m.has_seeds = item.is_object() && item.contains("seeds");
+  if (m.has_seeds) {
+    if (!m.base.contains("generator")) {
+      problems.push_back(where + "/seeds: seeds apply to generated maps only; this map is a file");
+    } else if (m.base.contains("seed")) {
+      problems.push_back(where + "/seeds: give either 'seed' or 'seeds', not both");
+    } else {
+      m.seeds = parse_seeds(item, where, problems);
+    }
+  }
+  if (m.base.contains("file") && m.base["file"].is_string() && !m.base["file"].get<std::string>().empty()) {
+    m.written = m.base["file"].get<std::string>();
+    m.opened = paths
+                   .resolve(m.written, SweepPaths::Kind::File,
+                            m.spec_string.empty() ? where + "/file" : where, problems)
+                   .value_or(m.written);
+  }
+  if (problems.size() != before) return std::nullopt;
+  return m;
+}
+
+/// The map of `item`'s seed `k` (its only map without seeds), loaded; a problem and nothing when
+/// it fails to load or is a free map with random starts.
+std::optional<SweepMap> load_instance(const MapItem& item, std::size_t k,
+                                      std::vector<std::string>& problems) {
+  json source = item.base;
+  std::string spec_k = item.spec_string;
+  if (item.has_seeds) {
+    source["seed"] = item.seeds[k];
+    if (!spec_k.empty())
+      spec_k += (spec_k.find(':') == std::string::npos ? ":seed=" : ",seed=") + std::to_string(item.seeds[k]);
+  }
+  // What is opened: the spec or source with the file found for the one written (a spec names
+  // it up to its first ':', so a path holding one goes as the JSON source).
+  json opened_source = source;
+  if (item.opened != item.written) opened_source["file"] = item.opened;
+  std::string opened_spec = spec_k;
+  if (item.opened != item.written && !spec_k.empty()) {
+    opened_spec = item.opened.find(':') == std::string::npos
+                      ? item.opened + spec_k.substr(item.written.size())
+                      : std::string();
+  }
+  SweepMap m;
+  try {
+    take_loaded(
+        m,
+        opened_spec.empty() ? load_run_map_json(opened_source, item.where) : load_run_map_spec(opened_spec),
+        item.opened, item.written);
+  } catch (const ConfigError& e) {
+    const std::string what = e.what();
+    const std::string seed_note = item.has_seeds ? " (seed " + std::to_string(item.seeds[k]) + ")" : "";
+    // NOLINTNEXTLINE(performance-inefficient-string-concatenation): once per failing map
+    problems.push_back(what.rfind(item.where, 0) == 0 ? what + seed_note
+                                                      : item.where + ": " + what + seed_note);
+    return std::nullopt;
+  }
+  m.spec = canonical(source);
+  m.competitive = item.competitive;
+  m.free_space = source.value("generator", json("")) == "free";
+  if (m.free_space && m.start_regions) {
+    problems.push_back(item.where +
+                       "/start: \"random\" is not allowed on a free map: its optimum (the star "
+                       "pattern) is computed from the map's start; allowed: a cell x;y");
+    return std::nullopt;
+  }
+  m.map_class =
+      !item.label.empty() ? item.label : (item.spec_string.empty() ? spec_text(item.base) : item.spec_string);
+  if (!item.label.empty()) {
+    m.label = item.has_seeds ? item.label + " seed=" + std::to_string(item.seeds[k]) : item.label;
+  } else {
+    m.label = spec_k.empty() ? spec_text(source) : spec_k;
+  }
+  return m;
+}
+
+}  // namespace
+
 std::vector<SweepMap> parse_maps(const json& maps, SweepPaths& paths, std::vector<std::string>& problems,
                                  std::vector<SkippedMap>& skipped, bool competitive) {
   std::vector<SweepMap> out;
@@ -382,123 +516,20 @@ std::vector<SweepMap> parse_maps(const json& maps, SweepPaths& paths, std::vecto
       }
       continue;
     }
-    // 1. The source without label and seeds, as an object; and the label.
-    std::string spec_string;  // non-empty for SPEC strings and {"spec": ...}
-    json base = json::object();
-    std::string label;
-    const std::size_t before = problems.size();
-    const bool item_is_competitive = item_competitive(item, where, competitive, problems);
-    if (item.is_string()) {
-      spec_string = item.get<std::string>();
-    } else {
-      for (const auto& [k, v] : item.items()) {
-        if (k != "label" && k != "seeds" && k != "competitive") base[k] = v;
-      }
-      if (item.contains("label")) {
-        if (item["label"].is_string()) {
-          label = item["label"].get<std::string>();
-        } else {
-          problems.push_back(where + "/label: expected a string, got " + value_text(item["label"]));
-        }
-      }
-      if (base.contains("spec")) {
-        if (base.size() != 1) {
-          problems.push_back(where +
-                             ": with \"spec\" the only other keys allowed are label, seeds, competitive");
-        } else if (!base["spec"].is_string()) {
-          problems.push_back(where + "/spec: expected a SPEC string, got " + value_text(base["spec"]));
-        } else {
-          spec_string = base["spec"].get<std::string>();
-        }
-      }
-    }
-    if (!spec_string.empty()) {
-      try {
-        base = map_spec_object(spec_string);
-      } catch (const ConfigError& e) {
-        problems.push_back(where + ": " + e.what());
-        continue;
-      }
-    }
-
-    // 2. Seeds: one map per seed, generators only.
-    std::vector<std::uint64_t> seeds;
-    const bool has_seeds = item.is_object() && item.contains("seeds");
-    if (has_seeds) {
-      if (!base.contains("generator")) {
-        problems.push_back(where + "/seeds: seeds apply to generated maps only; this map is a file");
-      } else if (base.contains("seed")) {
-        problems.push_back(where + "/seeds: give either 'seed' or 'seeds', not both");
-      } else {
-        seeds = parse_seeds(item, where, problems);
-      }
-    }
-    // A file: the path to open for the path as written (the sweep file's folder first).
-    std::string written;
-    std::string opened;
-    if (base.contains("file") && base["file"].is_string() && !base["file"].get<std::string>().empty()) {
-      written = base["file"].get<std::string>();
-      opened = paths
-                   .resolve(written, SweepPaths::Kind::File, spec_string.empty() ? where + "/file" : where,
-                            problems)
-                   .value_or(written);
-    }
-    if (problems.size() != before) continue;
-
-    // 3. Load each map; one problem per item (its first failing seed).
-    const std::size_t n = has_seeds ? seeds.size() : 1;
-    for (std::size_t k = 0; k < n; ++k) {
-      json source = base;
-      std::string spec_k = spec_string;
-      if (has_seeds) {
-        source["seed"] = seeds[k];
-        if (!spec_k.empty())
-          spec_k += (spec_k.find(':') == std::string::npos ? ":seed=" : ",seed=") + std::to_string(seeds[k]);
-      }
-      // What is opened: the spec or source with the file found for the one written (a spec names
-      // it up to its first ':', so a path holding one goes as the JSON source).
-      json opened_source = source;
-      if (opened != written) opened_source["file"] = opened;
-      std::string opened_spec = spec_k;
-      if (opened != written && !spec_k.empty()) {
-        opened_spec =
-            opened.find(':') == std::string::npos ? opened + spec_k.substr(written.size()) : std::string();
-      }
-      SweepMap m;
-      try {
-        take_loaded(
-            m, opened_spec.empty() ? load_run_map_json(opened_source, where) : load_run_map_spec(opened_spec),
-            opened, written);
-      } catch (const ConfigError& e) {
-        const std::string what = e.what();
-        const std::string seed_note = has_seeds ? " (seed " + std::to_string(seeds[k]) + ")" : "";
-        // NOLINTNEXTLINE(performance-inefficient-string-concatenation): once per failing map, then break
-        problems.push_back(what.rfind(where, 0) == 0 ? what + seed_note : where + ": " + what + seed_note);
-        break;
-      }
-      m.spec = canonical(source);
-      m.competitive = item_is_competitive;
-      m.free_space = source.value("generator", json("")) == "free";
-      if (m.free_space && m.start_regions) {
-        problems.push_back(where +
-                           "/start: \"random\" is not allowed on a free map: its optimum (the star "
-                           "pattern) is computed from the map's start; allowed: a cell x;y");
-        break;
-      }
-      m.map_class = !label.empty() ? label : (spec_string.empty() ? spec_text(base) : spec_string);
-      if (!label.empty()) {
-        m.label = has_seeds ? label + " seed=" + std::to_string(seeds[k]) : label;
-      } else {
-        m.label = spec_k.empty() ? spec_text(source) : spec_k;
-      }
-      const std::string key = m.spec.dump();
+    const std::optional<MapItem> read = read_map_item(item, where, paths, competitive, problems);
+    if (!read) continue;
+    // One problem per item (its first failing seed).
+    for (std::size_t k = 0; k < (read->has_seeds ? read->seeds.size() : 1); ++k) {
+      std::optional<SweepMap> m = load_instance(*read, k, problems);
+      if (!m) break;
+      const std::string key = m->spec.dump();
       if (const auto it = seen.find(key); it != seen.end()) {
-        problems.push_back(where + ": the same map as " + it->second + " (" + m.label +
+        problems.push_back(where + ": the same map as " + it->second + " (" + m->label +
                            "); allowed: each map once (repeated maps would be the same runs)");
         break;
       }
       seen.emplace(key, where);
-      out.push_back(std::move(m));
+      out.push_back(std::move(*m));
     }
   }
   return out;

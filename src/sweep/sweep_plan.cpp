@@ -57,6 +57,36 @@ const SweepOverride* origin_of(const std::string& problem, const std::vector<Swe
   return found;
 }
 
+/// Every top-level key of the sweep is one the format has (and the sweep is an object).
+void check_top_level_keys(const json& sweep, std::vector<std::string>& problems) {
+  if (!sweep.is_object()) {
+    problems.push_back("/: expected a JSON object with schema_version, name, maps, strategies");
+    return;
+  }
+  for (const auto& [key, value] : sweep.items()) {
+    if (std::find(kTopLevelKeys.begin(), kTopLevelKeys.end(), key) == kTopLevelKeys.end()) {
+      problems.push_back(sweep_detail::concat(
+          {"/", key, ": unknown key '", key, "'; allowed: ", join_names(kTopLevelKeys)}));
+    }
+  }
+}
+
+/// The error of a sweep with problems: each on its line, with the file and the command-line
+/// override it comes from.
+ConfigError sweep_problems(const std::vector<std::string>& problems, const std::string& file,
+                           const std::vector<SweepOverride>& overrides) {
+  const std::string where = file.empty() ? "sweep" : file;
+  std::string text =
+      std::to_string(problems.size()) + (problems.size() == 1 ? " problem" : " problems") +
+      (overrides.empty() ? " in the sweep:" : " in the sweep with its command-line overrides:");
+  for (const auto& p : problems) {
+    const SweepOverride* origin = origin_of(p, overrides);
+    text += sweep_detail::concat(
+        {"\n", where, ": ", origin != nullptr ? override_label(origin->text) + ": " : std::string(), p});
+  }
+  return {where, text};
+}
+
 }  // namespace
 
 SweepPlan SweepPlan::from_json(const json& sweep, const std::string& file) {
@@ -88,92 +118,12 @@ SweepPlan SweepPlan::build(const json& sweep, const std::string& file, std::vect
   auto get = [&](const char* key) -> const json& {
     return sweep.is_object() && sweep.contains(key) ? sweep.at(key) : empty;
   };
-  if (!sweep.is_object())
-    problems.push_back("/: expected a JSON object with schema_version, name, maps, strategies");
 
   // 1. Keys, version, name and scalars.
-  if (sweep.is_object()) {
-    for (const auto& [key, value] : sweep.items()) {
-      if (std::find(kTopLevelKeys.begin(), kTopLevelKeys.end(), key) == kTopLevelKeys.end()) {
-        problems.push_back(sweep_detail::concat(
-            {"/", key, ": unknown key '", key, "'; allowed: ", join_names(kTopLevelKeys)}));
-      }
-    }
-  }
-  const json& version = get("schema_version");
-  if (version.is_null()) {
-    problems.push_back("/schema_version: missing; allowed: " + std::to_string(kSweepSchemaVersion));
-  } else if (!version.is_number_integer() || version.get<std::int64_t>() != kSweepSchemaVersion) {
-    problems.push_back("/schema_version: value " + value_text(version) + " not supported; allowed: " +
-                       std::to_string(kSweepSchemaVersion) + " (the version this build reads)");
-  }
-  const json& name = get("name");
-  if (!name.is_string() || !valid_name(name.get<std::string>())) {
-    problems.push_back(
-        "/name: " + (name.is_null() ? std::string("missing") : "value " + value_text(name) + " not allowed") +
-        "; allowed: a string of letters, digits, '_', '.', '-' (it names the output folder)");
-  } else {
-    plan.name_ = name.get<std::string>();
-  }
-  if (const json& d = get("description"); d.is_string()) {
-    plan.description_ = d.get<std::string>();
-  } else if (!d.is_null()) {
-    problems.push_back("/description: expected a string, got " + value_text(d));
-  }
-  if (const json& r = get("repetitions"); !r.is_null()) {
-    if (!r.is_number_integer() || r.get<std::int64_t>() < 1 || r.get<std::int64_t>() > kMaxRepetitions) {
-      problems.push_back("/repetitions: value " + value_text(r) +
-                         " not allowed; allowed: an integer from 1 to " + std::to_string(kMaxRepetitions) +
-                         " (2^31 - 1, the repetition index is a 32-bit integer), written without a decimal "
-                         "point or exponent");
-    } else {
-      plan.repetitions_ = r.get<int>();
-    }
-  }
-  if (const json& s = get("seed"); !s.is_null()) {
-    if (!is_uint(s)) {
-      problems.push_back("/seed: value " + value_text(s) + " not allowed; allowed: an integer in [0, 2^64)");
-    } else {
-      plan.seed_ = s.get<std::uint64_t>();
-    }
-  }
-  bool competitive = false;
-  if (const json& c = get("competitive"); !c.is_null()) {
-    if (!c.is_boolean()) {
-      problems.push_back(
-          "/competitive: value " + value_text(c) +
-          " not allowed; allowed: true (compute the offline optimum of every map: the optimum_* "
-          "and competitive_ratio_min/max columns; a map item's own \"competitive\" wins) or "
-          "false");
-    } else {
-      competitive = c.get<bool>();
-    }
-  }
+  check_top_level_keys(sweep, problems);
+  const bool competitive = plan.read_settings(sweep, problems);
   plan.output_dir_ = "results/" + plan.name_;
-  if (const json& o = get("output"); !o.is_null()) {
-    try {
-      require_known_keys(o, {"dir", "objective"}, "/output");
-      if (o.contains("dir")) {
-        if (!o["dir"].is_string() || o["dir"].get<std::string>().empty()) {
-          problems.push_back("/output/dir: value " + value_text(o["dir"]) +
-                             " not allowed; allowed: a non-empty path");
-        } else {
-          plan.output_dir_ = o["dir"].get<std::string>();
-        }
-      }
-      if (o.contains("objective")) {
-        const json& obj = o["objective"];
-        if (!obj.is_string() || find_objective(obj.get<std::string>()) == nullptr) {
-          problems.push_back("/output/objective: value " + value_text(obj) +
-                             " not allowed; allowed: " + join_names(objective_names()));
-        } else {
-          plan.objective_ = obj.get<std::string>();
-        }
-      }
-    } catch (const ConfigError& e) {
-      problems.emplace_back(e.what());
-    }
-  }
+  plan.read_output(get("output"), problems);
   // 2. Loop settings; progress_step_m at the top level or in sim.
   json sim = get("sim");
   if (const json& step = get("progress_step_m"); !step.is_null()) {
@@ -196,88 +146,163 @@ SweepPlan SweepPlan::build(const json& sweep, const std::string& file, std::vect
   plan.strategies_ = sweep_detail::parse_strategies(get("strategies"), problems);
   plan.planners_ = sweep_detail::parse_planners(get("planners"), problems);
   plan.robots_ = sweep_detail::parse_robots(get("robot"), problems);
-  if (const json& b = get("baseline"); !b.is_null()) {
-    // A strategy entry's label, or for a search entry "<label>@best" or "<label>@w1,w2,..." (paired.hpp).
-    std::vector<std::string> labels;
-    bool known = false;
-    for (const StrategyEntry& e : plan.strategies_) {
-      labels.push_back(e.search ? e.label + "@best" : e.label);
-      known = known || (b.is_string() &&
-                        (b == e.label || (e.search && b.get<std::string>().starts_with(e.label + "@"))));
-    }
-    if (!known) {
-      problems.push_back(
-          "/baseline: value " + value_text(b) +
-          " not allowed; allowed: a strategy entry's label (the side fsweep paired and fsweep report "
-          "compare the others with): " +
-          join_names(labels));
+  plan.check_baseline(get("baseline"), problems);
+
+  // 4. Robot against maps, 5. counts.
+  plan.check_robots_on_maps(problems);
+  plan.count_runs(problems);
+  if (!problems.empty()) throw sweep_problems(problems, file, overrides);
+  return plan;
+}
+
+bool SweepPlan::read_settings(const json& sweep, std::vector<std::string>& problems) {
+  const json empty;
+  auto get = [&](const char* key) -> const json& {
+    return sweep.is_object() && sweep.contains(key) ? sweep.at(key) : empty;
+  };
+  const json& version = get("schema_version");
+  if (version.is_null()) {
+    problems.push_back("/schema_version: missing; allowed: " + std::to_string(kSweepSchemaVersion));
+  } else if (!version.is_number_integer() || version.get<std::int64_t>() != kSweepSchemaVersion) {
+    problems.push_back("/schema_version: value " + value_text(version) + " not supported; allowed: " +
+                       std::to_string(kSweepSchemaVersion) + " (the version this build reads)");
+  }
+  const json& name = get("name");
+  if (!name.is_string() || !valid_name(name.get<std::string>())) {
+    problems.push_back(
+        "/name: " + (name.is_null() ? std::string("missing") : "value " + value_text(name) + " not allowed") +
+        "; allowed: a string of letters, digits, '_', '.', '-' (it names the output folder)");
+  } else {
+    name_ = name.get<std::string>();
+  }
+  if (const json& d = get("description"); d.is_string()) {
+    description_ = d.get<std::string>();
+  } else if (!d.is_null()) {
+    problems.push_back("/description: expected a string, got " + value_text(d));
+  }
+  if (const json& r = get("repetitions"); !r.is_null()) {
+    if (!r.is_number_integer() || r.get<std::int64_t>() < 1 || r.get<std::int64_t>() > kMaxRepetitions) {
+      problems.push_back("/repetitions: value " + value_text(r) +
+                         " not allowed; allowed: an integer from 1 to " + std::to_string(kMaxRepetitions) +
+                         " (2^31 - 1, the repetition index is a 32-bit integer), written without a decimal "
+                         "point or exponent");
+    } else {
+      repetitions_ = r.get<int>();
     }
   }
+  if (const json& s = get("seed"); !s.is_null()) {
+    if (!is_uint(s)) {
+      problems.push_back("/seed: value " + value_text(s) + " not allowed; allowed: an integer in [0, 2^64)");
+    } else {
+      seed_ = s.get<std::uint64_t>();
+    }
+  }
+  const json& c = get("competitive");
+  if (c.is_null()) return false;
+  if (!c.is_boolean()) {
+    problems.push_back("/competitive: value " + value_text(c) +
+                       " not allowed; allowed: true (compute the offline optimum of every map: the optimum_* "
+                       "and competitive_ratio_min/max columns; a map item's own \"competitive\" wins) or "
+                       "false");
+    return false;
+  }
+  return c.get<bool>();
+}
 
-  // 4. Robot against maps: the dock is a free cell, the sensor sees the 8 neighbours and its
-  //    range in cells is one the sensor supports.
+void SweepPlan::read_output(const json& o, std::vector<std::string>& problems) {
+  if (o.is_null()) return;
+  try {
+    require_known_keys(o, {"dir", "objective"}, "/output");
+    if (o.contains("dir")) {
+      if (!o["dir"].is_string() || o["dir"].get<std::string>().empty()) {
+        problems.push_back("/output/dir: value " + value_text(o["dir"]) +
+                           " not allowed; allowed: a non-empty path");
+      } else {
+        output_dir_ = o["dir"].get<std::string>();
+      }
+    }
+    if (o.contains("objective")) {
+      const json& obj = o["objective"];
+      if (!obj.is_string() || find_objective(obj.get<std::string>()) == nullptr) {
+        problems.push_back("/output/objective: value " + value_text(obj) +
+                           " not allowed; allowed: " + join_names(objective_names()));
+      } else {
+        objective_ = obj.get<std::string>();
+      }
+    }
+  } catch (const ConfigError& e) {
+    problems.emplace_back(e.what());
+  }
+}
+
+void SweepPlan::check_baseline(const json& b, std::vector<std::string>& problems) const {
+  if (b.is_null()) return;
+  // A strategy entry's label, or for a search entry "<label>@best" or "<label>@w1,w2,..." (paired.hpp).
+  std::vector<std::string> labels;
+  bool known = false;
+  for (const StrategyEntry& e : strategies_) {
+    labels.push_back(e.search ? e.label + "@best" : e.label);
+    known = known || (b.is_string() &&
+                      (b == e.label || (e.search && b.get<std::string>().starts_with(e.label + "@"))));
+  }
+  if (!known) {
+    problems.push_back(
+        "/baseline: value " + value_text(b) +
+        " not allowed; allowed: a strategy entry's label (the side fsweep paired and fsweep report "
+        "compare the others with): " +
+        join_names(labels));
+  }
+}
+
+void SweepPlan::check_robots_on_maps(std::vector<std::string>& problems) const {
   std::set<std::pair<std::pair<int, int>, std::size_t>> docks_checked;
   std::set<std::pair<double, double>> ranges_checked;
-  for (const auto& r : plan.robots_) {
-    for (std::size_t m = 0; m < plan.maps_.size(); ++m) {
-      const WorldMap& map = *plan.maps_[m].map;
+  for (const auto& r : robots_) {
+    for (std::size_t m = 0; m < maps_.size(); ++m) {
+      const WorldMap& map = *maps_[m].map;
       if (r.params.dock && docks_checked.insert({{r.params.dock->x, r.params.dock->y}, m}).second &&
           !map.is_free(*r.params.dock)) {
         problems.push_back("/robot/dock: cell (" + std::to_string(r.params.dock->x) + ", " +
                            std::to_string(r.params.dock->y) + ") is outside or occupied in map " +
-                           plan.maps_[m].label + "; allowed: a free cell of every map");
+                           maps_[m].label + "; allowed: a free cell of every map");
       }
       const double range = r.params.sensor.range_m;
       const bool new_range = ranges_checked.insert({range, map.resolution_m}).second;
       if (new_range && range / map.resolution_m < std::sqrt(2.0)) {
         problems.push_back("/robot/sensor/range_m: value " + json(range).dump() +
-                           " m is below one diagonal cell of map " + plan.maps_[m].label +
+                           " m is below one diagonal cell of map " + maps_[m].label +
                            "; allowed: >= sqrt(2) x resolution (" +
                            json(std::sqrt(2.0) * map.resolution_m).dump() + " m)");
       }
       if (new_range && !(range / map.resolution_m <= Sensor::kMaxRangeCells)) {
         problems.push_back("/robot/sensor/range_m: value " + json(range).dump() + " m is " +
-                           json(range / map.resolution_m).dump() + " cells of map " + plan.maps_[m].label +
+                           json(range / map.resolution_m).dump() + " cells of map " + maps_[m].label +
                            "; allowed: at most " + std::to_string(Sensor::kMaxRangeCells) + " cells (" +
                            json(Sensor::kMaxRangeCells * map.resolution_m).dump() + " m)");
       }
     }
   }
+}
 
-  // 5. Counts fit in 64 bits.
-  for (const auto& e : plan.strategies_) {
+void SweepPlan::count_runs(std::vector<std::string>& problems) {
+  for (const auto& e : strategies_) {
     std::uint64_t total = 0;
-    if (__builtin_add_overflow(plan.strategy_offsets_.back(), e.count(), &total)) {
+    if (__builtin_add_overflow(strategy_offsets_.back(), e.count(), &total)) {
       problems.push_back("/strategies: more than 2^64 strategy configurations");
       break;
     }
-    plan.strategy_offsets_.push_back(total);
+    strategy_offsets_.push_back(total);
   }
-  if (problems.empty()) {
-    std::uint64_t n = 1;
-    bool overflow = false;
-    for (const std::uint64_t f :
-         {static_cast<std::uint64_t>(plan.maps_.size()), plan.strategy_offsets_.back(),
-          static_cast<std::uint64_t>(plan.planners_.size()), static_cast<std::uint64_t>(plan.robots_.size()),
-          static_cast<std::uint64_t>(plan.repetitions_)}) {
-      overflow = overflow || __builtin_mul_overflow(n, f, &n);
-    }
-    if (overflow) problems.push_back("/: the sweep has more than 2^64 runs; allowed: fewer");
+  if (!problems.empty()) return;
+  std::uint64_t n = 1;
+  bool overflow = false;
+  for (const std::uint64_t f :
+       {static_cast<std::uint64_t>(maps_.size()), strategy_offsets_.back(),
+        static_cast<std::uint64_t>(planners_.size()), static_cast<std::uint64_t>(robots_.size()),
+        static_cast<std::uint64_t>(repetitions_)}) {
+    overflow = overflow || __builtin_mul_overflow(n, f, &n);
   }
-
-  if (!problems.empty()) {
-    const std::string where = file.empty() ? "sweep" : file;
-    std::string text =
-        std::to_string(problems.size()) + (problems.size() == 1 ? " problem" : " problems") +
-        (overrides.empty() ? " in the sweep:" : " in the sweep with its command-line overrides:");
-    for (const auto& p : problems) {
-      const SweepOverride* origin = origin_of(p, overrides);
-      text += sweep_detail::concat(
-          {"\n", where, ": ", origin != nullptr ? override_label(origin->text) + ": " : std::string(), p});
-    }
-    throw ConfigError(where, text);
-  }
-  return plan;
+  if (overflow) problems.push_back("/: the sweep has more than 2^64 runs; allowed: fewer");
 }
 
 std::uint64_t SweepPlan::configuration_count() const {

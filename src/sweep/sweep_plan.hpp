@@ -333,6 +333,18 @@ class SweepPlan {
  private:
   static SweepPlan build(const nlohmann::json& sweep, const std::string& file,
                          std::vector<std::string> problems, const std::vector<SweepOverride>& overrides);
+  // build()'s steps; each adds what it finds wrong to `problems`.
+  /// schema_version, name, description, repetitions, seed; returns "competitive" (false when
+  /// not given or wrong).
+  bool read_settings(const nlohmann::json& sweep, std::vector<std::string>& problems);
+  void read_output(const nlohmann::json& output, std::vector<std::string>& problems);
+  /// "baseline": a strategy entry's label (for a search entry "<label>@...").
+  void check_baseline(const nlohmann::json& baseline, std::vector<std::string>& problems) const;
+  /// The robots against the maps: the dock is a free cell, the sensor sees the 8 neighbours and
+  /// its range in cells is one the sensor supports.
+  void check_robots_on_maps(std::vector<std::string>& problems) const;
+  /// The strategy configurations' prefix sums, and that they and the runs fit in 64 bits.
+  void count_runs(std::vector<std::string>& problems);
   [[nodiscard]] RunSpec spec_at(const RunCoordinates& c) const;
   [[nodiscard]] nlohmann::json key_json_of(const RunCoordinates& c, const RunSpec& spec) const;
 

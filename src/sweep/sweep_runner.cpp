@@ -119,14 +119,11 @@ struct Job {
   RunRows rows;
 };
 
-}  // namespace
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
 
-int hardware_threads() { return std::max(1, static_cast<int>(std::thread::hardware_concurrency())); }
-
-int max_threads() { return kThreadsPerHardwareThread * hardware_threads(); }
-
-RunnerReport run_sweep(const SweepPlan& plan, const RunnerOptions& options) {
-  // 1. Options, directory, lock, previous outputs.
+void check_options(const RunnerOptions& options) {
   if (options.threads < 0 || options.threads > max_threads()) {
     throw ConfigError("--threads", "must be 0 (all cores) to " + std::to_string(max_threads()) + " (" +
                                        std::to_string(kThreadsPerHardwareThread) + " x the " +
@@ -138,6 +135,223 @@ RunnerReport run_sweep(const SweepPlan& plan, const RunnerOptions& options) {
     throw ConfigError("--shard", "must be i/n with 0 <= i < n, got " + std::to_string(options.shard_index) +
                                      "/" + std::to_string(options.shard_count));
   }
+}
+
+/// Removes the temp files of a runner killed while replacing a file ("runs.csv.tmp.<pid>").
+void remove_torn_replacements(const std::string& dir) {
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    const std::string name = entry.path().filename().string();
+    for (const char* f : {"runs.csv", "progress.csv", "manifest.json"}) {
+      if (name.starts_with(std::string(f) + ".tmp.")) fs::remove(entry.path());
+    }
+  }
+}
+
+/// What the directory's earlier outputs allow: with `fresh`, none are kept; outputs of an
+/// earlier version of the sweep file are extended (extend_outputs() refuses unless the change
+/// only adds runs); outputs of an older fsweep or of other maps are refused. Returns the earlier
+/// sessions of the manifest.
+nlohmann::json reconcile_earlier_outputs(const SweepPlan& plan, const RunnerOptions& options,
+                                         const SweepTable& table, const std::string& dir,
+                                         RunnerReport& report) {
+  nlohmann::json sessions = nlohmann::json::array();
+  if (options.fresh) {
+    for (const char* f : kOutputFiles) fs::remove(dir + "/" + f);
+    return sessions;
+  }
+  const auto old = read_manifest(dir + "/manifest.json");
+  if (!old) return sessions;
+  sessions = manifest_sessions(*old);
+  const std::string old_hash = (*old)["sweep_hash"].get<std::string>();
+  if (old_hash != sweep_hash(plan.source())) {
+    report.kept = extend_outputs(plan, ShardOf{options.shard_index, options.shard_count}, table, dir, *old);
+    report.extended_from = old_hash;
+  } else if (!old->contains("maps") && has_rows(dir + "/runs.csv")) {
+    throw ConfigError(dir,
+                      "holds the results of an older fsweep: its manifest.json does not record the maps' "
+                      "content, and its run keys differ from this version's; use --fresh to start over, or "
+                      "another output directory");
+  } else if (const auto changed = changed_maps(*old, plan); !changed.empty() && has_rows(dir + "/runs.csv")) {
+    std::string list;
+    for (const std::string& c : changed) list += (list.empty() ? "" : "; ") + c;
+    throw ConfigError(dir, "holds the results of other maps than this sweep's (" + list +
+                               "); use --fresh to start over, or another output directory");
+  }
+  return sessions;
+}
+
+/// The runs of a sweep (or shard) through oneTBB's pipeline: dispatched in index order (skipping
+/// done runs), simulated in parallel, written in index order. A run below the largest run_index
+/// in the files (a gap a dropped row left, a new run of an extended sweep) is appended like any
+/// other; both files are put in run order (temp file and rename) once the runs end, also when
+/// interrupted.
+class RunPipeline {
+ public:
+  RunPipeline(const SweepPlan& plan, const RunnerOptions& options, const SweepTable& table,
+              const Resumed& resumed, CsvJournal& runs, CsvJournal& progress, RunnerReport& report)
+      : plan_(plan),
+        options_(options),
+        table_(table),
+        resumed_(resumed),
+        runs_(runs),
+        progress_(progress),
+        report_(report),
+        meter_(report.total, "runs", options.progress),
+        next_(options.shard_index),
+        index_col_(table.column(kRunIndexColumn)),
+        progress_index_col_(SweepTable::progress_column(kRunIndexColumn)),
+        last_index_(resumed.last_index),
+        reorder_(!resumed.in_order) {}
+
+  /// Runs every run not done on `threads` threads until they are all written or a stop is
+  /// requested (SIGINT, SIGTERM).
+  void run(int threads) {
+    // More threads than cores: oneTBB caps its workers at the core count unless told.
+    std::optional<tbb::global_control> allow;
+    if (threads > tbb::info::default_concurrency()) {
+      allow.emplace(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
+    }
+    tbb::task_arena arena(threads);
+    arena.execute([&] {
+      tbb::parallel_pipeline(
+          kTokensPerThread * static_cast<std::size_t>(threads),
+          tbb::make_filter<void, Job>(tbb::filter_mode::serial_in_order, [this](tbb::flow_control& fc) {
+            return dispatch(fc);
+          }) & tbb::make_filter<Job, Job>(tbb::filter_mode::parallel, [this](Job job) {
+            return simulate(std::move(job));
+          }) & tbb::make_filter<Job, void>(tbb::filter_mode::serial_in_order, [this](const Job& job) {
+            write(job);
+          }));
+    });
+    put_in_order();
+    flush();
+  }
+
+  /// Writes what the journals hold: progress rows first (a runs.csv row marks its run as done).
+  void flush() {
+    progress_.flush();
+    runs_.flush();
+  }
+
+  /// Runs skipped as done before; the meter's last line.
+  std::uint64_t finish() {
+    const std::uint64_t skipped = skipped_.load();
+    meter_.finish(skipped + report_.ran, skipped);
+    return skipped;
+  }
+
+ private:
+  Job dispatch(tbb::flow_control& fc) {
+    while (true) {
+      if (stop_requested.load()) {
+        if (!announced_stop_ && options_.progress) {
+          std::fputs("\nfsweep: stopping: finishing the runs in flight (press Ctrl-C again to abort)\n",
+                     stderr);
+        }
+        announced_stop_ = true;
+        fc.stop();
+        return {};
+      }
+      if (next_ >= plan_.run_count()) {
+        fc.stop();
+        return {};
+      }
+      Job job;
+      job.index = next_;
+      next_ += options_.shard_count;
+      if (resumed_.done.has(job.index)) {  // its row's key was verified against the plan's
+        skipped_.fetch_add(1);
+        continue;
+      }
+      return job;
+    }
+  }
+
+  Job simulate(Job job) const {
+    job.rows = table_.run(plan_, plan_.run(job.index));
+    return job;
+  }
+
+  void write(const Job& job) {
+    ++report_.ran;
+    if (job.rows.failed) ++report_.failed;
+    if (last_index_ && job.index < *last_index_) reorder_ = true;
+    last_index_ = std::max(last_index_.value_or(0), job.index);
+    progress_.append(job.rows.progress_rows);
+    runs_.append(job.rows.run_row);
+    flush();  // two write(2) calls per run: nothing next to a simulation
+    const std::uint64_t s = skipped_.load();
+    meter_.update(s + report_.ran, s);
+  }
+
+  void put_in_order() {
+    if (!reorder_) return;
+    progress_.rewrite_in_order(progress_index_col_);  // progress first, as always
+    runs_.rewrite_in_order(index_col_);
+    reorder_ = false;
+  }
+
+  const SweepPlan& plan_;
+  const RunnerOptions& options_;
+  const SweepTable& table_;
+  const Resumed& resumed_;
+  CsvJournal& runs_;
+  CsvJournal& progress_;
+  RunnerReport& report_;
+  ProgressMeter meter_;
+  std::atomic<std::uint64_t> skipped_{0};
+  std::uint64_t next_;
+  bool announced_stop_ = false;
+  const std::size_t index_col_;
+  const std::size_t progress_index_col_;
+  std::optional<std::uint64_t> last_index_;
+  bool reorder_;
+};
+
+/// The manifest's record of a session whose runs ended: counts, end time, status.
+void record_end(const RunnerReport& report, const Resumed& resumed, ManifestInfo& info) {
+  info.runs.skipped = report.skipped;
+  info.runs.ran = report.ran;
+  info.runs.done = report.skipped + report.ran;
+  info.runs.failed = resumed.failed + report.failed;
+  info.runs.ran_failed = report.failed;
+  info.end_utc = utc_now_iso8601();
+  info.wall_s = report.wall_s;
+  info.runs_per_s = report.runs_per_s;
+  info.status = report.interrupted ? "interrupted" : "complete";
+}
+
+/// The exact weight searches (weight_search_runner.hpp), after the runs: searches.json is
+/// written last, so its presence means every search file is complete and nothing is searched.
+void run_searches(const SweepPlan& plan, const RunnerOptions& options, int threads,
+                  const std::string& manifest_path, Clock::time_point wall_start, ManifestInfo& info,
+                  RunnerReport& report) {
+  const std::string& dir = report.out_dir;
+  if (fs::exists(dir + "/searches.json")) {
+    report.searches_done_before = true;
+    return;
+  }
+  info.status = "running";
+  write_manifest(manifest_path, manifest_json(plan, info));
+  // A stop after the last run was dispatched ends the searches at once (nothing searched).
+  report.searches = run_weight_searches(plan, dir, threads, options.progress, options.shard_index,
+                                        options.shard_count, &stop_requested);
+  report.interrupted = report.searches.interrupted;
+  info.status = report.interrupted ? "interrupted" : "complete";
+  info.end_utc = utc_now_iso8601();
+  report.wall_s = seconds_since(wall_start);
+  info.wall_s = report.wall_s;
+}
+
+}  // namespace
+
+int hardware_threads() { return std::max(1, static_cast<int>(std::thread::hardware_concurrency())); }
+
+int max_threads() { return kThreadsPerHardwareThread * hardware_threads(); }
+
+RunnerReport run_sweep(const SweepPlan& plan, const RunnerOptions& options) {
+  // 1. Options, directory, lock, earlier outputs, the manifest of this session.
+  check_options(options);
   const int threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
   const auto wall_start = Clock::now();
   RunnerReport report;
@@ -145,45 +359,15 @@ RunnerReport run_sweep(const SweepPlan& plan, const RunnerOptions& options) {
   report.out_dir = output_directory(plan, options);
   const std::string& dir = report.out_dir;
   const DirectoryLock lock(dir);
-
-  // Temp files of a runner killed while replacing a file ("runs.csv.tmp.<pid>").
-  for (const auto& entry : fs::directory_iterator(dir)) {
-    const std::string name = entry.path().filename().string();
-    for (const char* f : {"runs.csv", "progress.csv", "manifest.json"}) {
-      if (name.starts_with(std::string(f) + ".tmp.")) fs::remove(entry.path());
-    }
-  }
-
+  remove_torn_replacements(dir);
   const std::string manifest_path = dir + "/manifest.json";
-  const std::string hash = sweep_hash(plan.source());
-  const ShardOf shard{options.shard_index, options.shard_count};
   SweepTable table(plan);
-  nlohmann::json sessions = nlohmann::json::array();
-  if (options.fresh) {
-    for (const char* f : kOutputFiles) fs::remove(dir + "/" + f);
-  } else if (const auto old = read_manifest(manifest_path)) {
-    sessions = manifest_sessions(*old);
-    const std::string old_hash = (*old)["sweep_hash"].get<std::string>();
-    if (old_hash != hash) {
-      report.kept = extend_outputs(plan, shard, table, dir, *old);  // refuses unless it only adds runs
-      report.extended_from = old_hash;
-    } else if (!old->contains("maps") && has_rows(dir + "/runs.csv")) {
-      throw ConfigError(dir,
-                        "holds the results of an older fsweep: its manifest.json does not record the maps' "
-                        "content, and its run keys differ from this version's; use --fresh to start over, or "
-                        "another output directory");
-    } else if (const auto changed = changed_maps(*old, plan);
-               !changed.empty() && has_rows(dir + "/runs.csv")) {
-      std::string list;
-      for (const std::string& c : changed) list += (list.empty() ? "" : "; ") + c;
-      throw ConfigError(dir, "holds the results of other maps than this sweep's (" + list +
-                                 "); use --fresh to start over, or another output directory");
-    }
-  }
+  nlohmann::json sessions = reconcile_earlier_outputs(plan, options, table, dir, report);
 
   CsvJournal runs(dir + "/runs.csv", table.header());
   CsvJournal progress(dir + "/progress.csv", SweepTable::progress_header());
-  Resumed resumed = repair_outputs(plan, shard, table, runs, progress);
+  const Resumed resumed =
+      repair_outputs(plan, ShardOf{options.shard_index, options.shard_count}, table, runs, progress);
 
   ManifestInfo info;
   info.sweep_file = options.sweep_file;
@@ -207,135 +391,33 @@ RunnerReport run_sweep(const SweepPlan& plan, const RunnerOptions& options) {
                               std::min(threads, tbb::info::default_concurrency()), report.optima)));
   }
 
-  // 2. The pipeline: dispatch in index order (skipping done runs), simulate in parallel, write
-  //    in index order.
-  ProgressMeter meter(report.total, "runs", options.progress);
-  std::atomic<std::uint64_t> skipped{0};
-  std::uint64_t next = options.shard_index;
-  bool announced_stop = false;
-  const auto flush_both = [&] {
-    progress.flush();  // progress rows first: a runs.csv row marks its run as done
-    runs.flush();
-  };
-
-  auto dispatch = [&](tbb::flow_control& fc) -> Job {
-    while (true) {
-      if (stop_requested.load()) {
-        if (!announced_stop && options.progress) {
-          std::fputs("\nfsweep: stopping: finishing the runs in flight (press Ctrl-C again to abort)\n",
-                     stderr);
-        }
-        announced_stop = true;
-        fc.stop();
-        return {};
-      }
-      if (next >= plan.run_count()) {
-        fc.stop();
-        return {};
-      }
-      Job job;
-      job.index = next;
-      next += options.shard_count;
-      if (resumed.done.has(job.index)) {  // its row's key was verified against the plan's
-        skipped.fetch_add(1);
-        continue;
-      }
-      return job;
-    }
-  };
-  auto simulate_run = [&](Job job) -> Job {
-    job.rows = table.run(plan, plan.run(job.index));
-    return job;
-  };
-  // A run below the largest run_index in the files (a gap a dropped row left, a new run of an
-  // extended sweep) is appended like any other; both files are put in run order (temp file and
-  // rename) once the runs end, also when interrupted.
-  const std::size_t index_col = table.column(kRunIndexColumn);
-  const std::size_t progress_index_col = SweepTable::progress_column(kRunIndexColumn);
-  std::optional<std::uint64_t> last_index = resumed.last_index;
-  bool reorder = !resumed.in_order;
-  const auto put_in_order = [&] {
-    if (!reorder) return;
-    progress.rewrite_in_order(progress_index_col);  // progress first, as always
-    runs.rewrite_in_order(index_col);
-    reorder = false;
-  };
-  auto write = [&](const Job& job) {
-    ++report.ran;
-    if (job.rows.failed) ++report.failed;
-    if (last_index && job.index < *last_index) reorder = true;
-    last_index = std::max(last_index.value_or(0), job.index);
-    progress.append(job.rows.progress_rows);
-    runs.append(job.rows.run_row);
-    flush_both();  // two write(2) calls per run: nothing next to a simulation
-    const std::uint64_t s = skipped.load();
-    meter.update(s + report.ran, s);
-  };
-
-  // Only while dispatching and searching: Ctrl-C during the aggregation kills.
+  // 2. The runs. Ctrl-C stops them (and the searches) cleanly; during the aggregation it kills.
+  RunPipeline pipeline(plan, options, table, resumed, runs, progress, report);
   std::optional<StopSignals> signals(std::in_place);
   try {
-    // More threads than cores: oneTBB caps its workers at the core count unless told.
-    std::optional<tbb::global_control> allow;
-    if (threads > tbb::info::default_concurrency()) {
-      allow.emplace(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
-    }
-    tbb::task_arena arena(threads);
-    arena.execute([&] {
-      tbb::parallel_pipeline(kTokensPerThread * static_cast<std::size_t>(threads),
-                             tbb::make_filter<void, Job>(tbb::filter_mode::serial_in_order, dispatch) &
-                                 tbb::make_filter<Job, Job>(tbb::filter_mode::parallel, simulate_run) &
-                                 tbb::make_filter<Job, void>(tbb::filter_mode::serial_in_order, write));
-    });
-    put_in_order();
-    flush_both();
+    pipeline.run(threads);
   } catch (...) {
     info.status = "failed";
     info.end_utc = utc_now_iso8601();
     info.runs.ran = report.ran;
     info.runs.ran_failed = report.failed;
-    info.wall_s = std::chrono::duration<double>(Clock::now() - wall_start).count();
+    info.wall_s = seconds_since(wall_start);
     try {
-      flush_both();
+      pipeline.flush();
       write_manifest(manifest_path, manifest_json(plan, info));
     } catch (...) {  // NOLINT(bugprone-empty-catch): the first error is the one to report
     }
     throw;
   }
 
-  // 3. Counts, manifest, aggregation.
-  report.skipped = skipped.load();
-  meter.finish(report.skipped + report.ran, report.skipped);
+  // 3. Counts, the searches, the manifest, the aggregation.
+  report.skipped = pipeline.finish();
   report.interrupted = stop_requested.load() && report.skipped + report.ran < report.total;
-  report.wall_s = std::chrono::duration<double>(Clock::now() - wall_start).count();
+  report.wall_s = seconds_since(wall_start);
   report.runs_per_s = report.wall_s > 0 ? static_cast<double>(report.ran) / report.wall_s : 0.0;
-
-  info.runs.skipped = report.skipped;
-  info.runs.ran = report.ran;
-  info.runs.done = report.skipped + report.ran;
-  info.runs.failed = resumed.failed + report.failed;
-  info.runs.ran_failed = report.failed;
-  info.end_utc = utc_now_iso8601();
-  info.wall_s = report.wall_s;
-  info.runs_per_s = report.runs_per_s;
-  info.status = report.interrupted ? "interrupted" : "complete";
+  record_end(report, resumed, info);
   if (!report.interrupted && !plan.search_units().empty()) {
-    // 4. The exact weight searches (weight_search_runner.hpp): searches.json is written last, so
-    //    its presence means every search file is complete.
-    if (fs::exists(dir + "/searches.json")) {
-      report.searches_done_before = true;
-    } else {
-      info.status = "running";
-      write_manifest(manifest_path, manifest_json(plan, info));
-      // A stop after the last run was dispatched ends the searches at once (nothing searched).
-      report.searches = run_weight_searches(plan, dir, threads, options.progress, options.shard_index,
-                                            options.shard_count, &stop_requested);
-      report.interrupted = report.searches.interrupted;
-      info.status = report.interrupted ? "interrupted" : "complete";
-      info.end_utc = utc_now_iso8601();
-      report.wall_s = std::chrono::duration<double>(Clock::now() - wall_start).count();
-      info.wall_s = report.wall_s;
-    }
+    run_searches(plan, options, threads, manifest_path, wall_start, info, report);
   }
   signals.reset();
   write_manifest(manifest_path, manifest_json(plan, info));

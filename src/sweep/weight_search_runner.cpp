@@ -29,11 +29,11 @@
 #include "core/statistics.hpp"
 #include "report/runs_schema.hpp"
 #include "sim/heuristics.hpp"
-#include "strategies/weight_grid.hpp"
-#include "sweep/exact_search.hpp"
 #include "sweep/manifest.hpp"
 #include "sweep/progress_meter.hpp"
 #include "sweep/sweep_table.hpp"
+#include "weightsearch/exact_search.hpp"
+#include "weightsearch/weight_grid.hpp"
 
 namespace fsweep {
 inline namespace sweep {

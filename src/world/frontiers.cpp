@@ -184,53 +184,6 @@ constexpr int kInComponent = -2;  // in the component being split into pieces (s
 /// A cell in a walk, with its coordinates.
 using Node = FrontierClusters::PieceCell;
 
-/// What the walks of FrontierClusters read: the map, the frontier and exclusion flags, and the
-/// owner marks.
-struct Walk {
-  int w;
-  int h;
-  const CellState* state;
-  const FrontierMap& frontiers;
-  const std::uint8_t* skip;  // null: nothing excluded
-  int* owner;
-  bool allow_corner_cutting;
-
-  /// True when cell `i` may join a cluster: a frontier cell, not excluded.
-  [[nodiscard]] bool open(int i) const {
-    return frontiers.is_frontier(i) && (skip == nullptr || skip[i] == 0);
-  }
-
-  /// Calls visit(node) for every neighbour of `c` linked to it by the motion rule
-  /// (FrontierMap::clusters) that may join a cluster and whose owner mark is `wanted(mark)`, in
-  /// heading order. `c` is a copy: visit() may grow the vector it came from. Unrolled over the
-  /// eight headings.
-  template <typename Wanted, typename Visit>
-  void for_each_link(const Node c, Wanted&& wanted, Visit&& visit) const {
-    const bool interior = c.x > 0 && c.y > 0 && c.x < w - 1 && c.y < h - 1;
-    const auto step = [&]<std::size_t K>(std::integral_constant<std::size_t, K>) {
-      constexpr int kDx = kDirections[K].x;
-      constexpr int kDy = kDirections[K].y;
-      const int nx = c.x + kDx;
-      const int ny = c.y + kDy;
-      if (!interior && (nx < 0 || ny < 0 || nx >= w || ny >= h)) return;
-      const int n = c.i + kDy * w + kDx;
-      if (!wanted(owner[n]) || !open(n)) return;
-      // Diagonal: both cells beside it must be known free.
-      if constexpr (kDx != 0 && kDy != 0) {
-        if (!allow_corner_cutting &&
-            (state[c.i + kDx] != CellState::Free || state[c.i + kDy * w] != CellState::Free)) {
-          return;
-        }
-      }
-      visit(Node{n, nx, ny});
-    };
-    const auto steps = [&]<std::size_t... K>(std::index_sequence<K...>) {
-      (step(std::integral_constant<std::size_t, K>{}), ...);
-    };
-    steps(std::make_index_sequence<kDirections.size()>{});
-  }
-};
-
 /// The cluster of `members` (ascending by index): centroid, length and representative. Its
 /// cell list is written into `storage` (a spare vector whose allocation it reuses).
 FrontierCluster make_cluster(const std::vector<Node>& members, int w, int h, double resolution_m,
@@ -275,6 +228,53 @@ FrontierCluster make_cluster(const std::vector<Node>& members, int w, int h, dou
 }
 
 }  // namespace
+
+/// What the walks of FrontierClusters read: the map, the frontier and exclusion flags, and the
+/// owner marks.
+struct FrontierClusters::Walk {
+  int w;
+  int h;
+  const CellState* state;
+  const FrontierMap& frontiers;
+  const std::uint8_t* skip;  // null: nothing excluded
+  int* owner;
+  bool allow_corner_cutting;
+
+  /// True when cell `i` may join a cluster: a frontier cell, not excluded.
+  [[nodiscard]] bool open(int i) const {
+    return frontiers.is_frontier(i) && (skip == nullptr || skip[i] == 0);
+  }
+
+  /// Calls visit(node) for every neighbour of `c` linked to it by the motion rule
+  /// (FrontierMap::clusters) that may join a cluster and whose owner mark is `wanted(mark)`, in
+  /// heading order. `c` is a copy: visit() may grow the vector it came from. Unrolled over the
+  /// eight headings.
+  template <typename Wanted, typename Visit>
+  void for_each_link(const Node c, Wanted&& wanted, Visit&& visit) const {
+    const bool interior = c.x > 0 && c.y > 0 && c.x < w - 1 && c.y < h - 1;
+    const auto step = [&]<std::size_t K>(std::integral_constant<std::size_t, K>) {
+      constexpr int kDx = kDirections[K].x;
+      constexpr int kDy = kDirections[K].y;
+      const int nx = c.x + kDx;
+      const int ny = c.y + kDy;
+      if (!interior && (nx < 0 || ny < 0 || nx >= w || ny >= h)) return;
+      const int n = c.i + kDy * w + kDx;
+      if (!wanted(owner[n]) || !open(n)) return;
+      // Diagonal: both cells beside it must be known free.
+      if constexpr (kDx != 0 && kDy != 0) {
+        if (!allow_corner_cutting &&
+            (state[c.i + kDx] != CellState::Free || state[c.i + kDy * w] != CellState::Free)) {
+          return;
+        }
+      }
+      visit(Node{n, nx, ny});
+    };
+    const auto steps = [&]<std::size_t... K>(std::index_sequence<K...>) {
+      (step(std::integral_constant<std::size_t, K>{}), ...);
+    };
+    steps(std::make_index_sequence<kDirections.size()>{});
+  }
+};
 
 FrontierClusters::FrontierClusters(const KnownMap& known, double max_length_m, bool allow_corner_cutting)
     : max_length_m_(max_length_m),
@@ -325,10 +325,8 @@ const std::vector<FrontierCluster>& FrontierClusters::clusters(const KnownMap& k
                                 std::to_string(excluded.size()) + " flags for " +
                                 std::to_string(owner_.size()) + " cells");
   }
-  const int w = width_;
-  const int h = height_;
-  const Walk walk{w,
-                  h,
+  const Walk walk{width_,
+                  height_,
                   known.cells().data().data(),
                   frontiers,
                   excluded.empty() ? nullptr : excluded.data(),
@@ -341,11 +339,19 @@ const std::vector<FrontierCluster>& FrontierClusters::clusters(const KnownMap& k
     const double ratio = std::floor(max_length_m_ / known.resolution_m() * (1.0 + 1e-9));
     cap = ratio < 1.0 ? 1 : static_cast<std::size_t>(std::min(ratio, 1e18));
   }
+  if (!everything_dirty_ && revealed_.empty() && exclusion_changed_.empty()) return clusters_;
+  find_starts(walk, frontiers);
+  const Grow grow{walk, cap, known.resolution_m()};
+  const std::size_t first = first_replayed();
+  const std::size_t k = replay(grow, first);
+  splice(first, k);
+  return clusters_;
+}
 
+void FrontierClusters::find_starts(const Walk& walk, const FrontierMap& frontiers) {
   // 1. The cells to walk from besides the pieces' own starts: every frontier cell the first
   //    time; later the changed cells. Pieces within one cell of a changed cell must be walked
   //    again.
-  if (!everything_dirty_ && revealed_.empty() && exclusion_changed_.empty()) return clusters_;
   starts_.clear();
   marked_ = 0;
   lowest_marked_ = std::numeric_limits<int>::max();
@@ -353,6 +359,8 @@ const std::vector<FrontierCluster>& FrontierClusters::clusters(const KnownMap& k
     starts_ = frontiers.cells();  // ascending: already a min-heap
     everything_dirty_ = false;
   } else {
+    const int w = width_;
+    const int h = height_;
     dirty_cells_.clear();
     const auto dirty = [&](int cell) {
       std::uint8_t& flag = flags_[static_cast<std::size_t>(cell)];
@@ -386,7 +394,54 @@ const std::vector<FrontierCluster>& FrontierClusters::clusters(const KnownMap& k
   }
   revealed_.clear();
   exclusion_changed_.clear();
+}
 
+std::size_t FrontierClusters::first_replayed() const {
+  const int lowest =
+      std::min(lowest_marked_, starts_.empty() ? std::numeric_limits<int>::max() : starts_.front());
+  return static_cast<std::size_t>(
+      std::partition_point(clusters_.begin(), clusters_.end(),
+                           [lowest](const FrontierCluster& c) { return c.cells.front() < lowest; }) -
+      clusters_.begin());
+}
+
+// What must be walked again besides the pieces near changed cells: a piece's walk reads a
+// neighbour's owner mark only as "placed by an earlier piece" or not, and the walk is the
+// same as last time unless a cell it read as placed is not placed now. (A cell it read as
+// not placed and did not take, it met only once the piece was full, or not at all: reading it
+// as placed now changes nothing.) So a piece that loses a cell to an earlier one is walked
+// again (grow() marks it), and so are the pieces near the cells a piece walked again leaves
+// free (walk_again()); a cell taken by another piece needs nothing more.
+bool FrontierClusters::grow(const Grow& g, int start, FrontierCluster* old) {
+  piece_.clear();
+  owner_[static_cast<std::size_t>(start)] = start;
+  piece_.push_back(Node{start, start % width_, start / width_});
+  const auto free_now = [start](int mark) { return mark < 0 || mark > start; };
+  for (std::size_t head = 0; head < piece_.size() && piece_.size() < g.cap; ++head) {
+    g.walk.for_each_link(piece_[head], free_now, [&](const Node& n) {
+      if (piece_.size() == g.cap) return;
+      const int taken_from = owner_[static_cast<std::size_t>(n.i)];
+      if (taken_from > start) mark(taken_from);
+      owner_[static_cast<std::size_t>(n.i)] = start;
+      piece_.push_back(n);
+    });
+  }
+  std::sort(piece_.begin(), piece_.end(), [](const Node& a, const Node& b) { return a.i < b.i; });
+  if (old != nullptr && std::equal(piece_.begin(), piece_.end(), old->cells.begin(), old->cells.end(),
+                                   [](const Node& a, int b) { return a.i == b; })) {
+    next_.push_back(std::move(*old));
+    return true;
+  }
+  std::vector<int> storage;
+  if (!spare_.empty()) {
+    storage = std::move(spare_.back());
+    spare_.pop_back();
+  }
+  next_.push_back(make_cluster(piece_, width_, height_, g.resolution_m, std::move(storage)));
+  return false;
+}
+
+std::size_t FrontierClusters::replay(const Grow& g, std::size_t first) {
   // 2. The loop of FrontierMap::clusters, replayed in increasing order of start cell over the
   //    last call's pieces and the cells in starts_. owner_ of a cell holds its piece's start:
   //    <= the current start once placed by this call, > it while still in a piece not yet
@@ -394,64 +449,16 @@ const std::vector<FrontierCluster>& FrontierClusters::clusters(const KnownMap& k
   //    they are, and so do those after the last piece that changes: the replay starts at the
   //    former and stops once no cell is left in starts_ and no marked piece lies ahead
   //    (marked_ counts those; every mark goes to a piece not yet replayed).
-  const int lowest =
-      std::min(lowest_marked_, starts_.empty() ? std::numeric_limits<int>::max() : starts_.front());
-  const std::size_t first = static_cast<std::size_t>(
-      std::partition_point(clusters_.begin(), clusters_.end(),
-                           [lowest](const FrontierCluster& c) { return c.cells.front() < lowest; }) -
-      clusters_.begin());
   next_.clear();
-  // What must be walked again besides the pieces near changed cells: a piece's walk reads a
-  // neighbour's owner mark only as "placed by an earlier piece" or not, and the walk is the
-  // same as last time unless a cell it read as placed is not placed now. (A cell it read as
-  // not placed and did not take, it met only once the piece was full, or not at all: reading it
-  // as placed now changes nothing.) So a piece that loses a cell to an earlier one is walked
-  // again (grow() marks it), and so are the pieces near the cells a piece walked again leaves
-  // free (step 2 below); a cell taken by another piece needs nothing more.
-  // Grows the piece of `start` (not yet placed by this call, open) into next_. True when it
-  // equals `old`, which is then moved into next_ as it is; otherwise piece_ holds the new
-  // piece's cells (ascending, with coordinates).
-  const auto grow = [&](int start, FrontierCluster* old) {
-    piece_.clear();
-    owner_[static_cast<std::size_t>(start)] = start;
-    piece_.push_back(Node{start, start % w, start / w});
-    const auto free_now = [start](int mark) { return mark < 0 || mark > start; };
-    for (std::size_t head = 0; head < piece_.size() && piece_.size() < cap; ++head) {
-      walk.for_each_link(piece_[head], free_now, [&](const Node& n) {
-        if (piece_.size() == cap) return;
-        const int taken_from = owner_[static_cast<std::size_t>(n.i)];
-        if (taken_from > start) mark(taken_from);
-        owner_[static_cast<std::size_t>(n.i)] = start;
-        piece_.push_back(n);
-      });
-    }
-    std::sort(piece_.begin(), piece_.end(), [](const Node& a, const Node& b) { return a.i < b.i; });
-    if (old != nullptr && std::equal(piece_.begin(), piece_.end(), old->cells.begin(), old->cells.end(),
-                                     [](const Node& a, int b) { return a.i == b; })) {
-      next_.push_back(std::move(*old));
-      return true;
-    }
-    std::vector<int> storage;
-    if (!spare_.empty()) {
-      storage = std::move(spare_.back());
-      spare_.pop_back();
-    }
-    next_.push_back(make_cluster(piece_, w, h, known.resolution_m(), std::move(storage)));
-    return false;
-  };
-  // Starts a walk from `cell` when it is open and not yet placed (there was no piece at `cell`).
-  const auto walk_from = [&](int cell) {
-    const int mark = owner_[static_cast<std::size_t>(cell)];
-    if ((mark >= 0 && mark <= cell) || !walk.open(cell)) return;
-    grow(cell, nullptr);
-  };
   std::size_t k = first;  // next piece of the last call
   while ((k < clusters_.size() && marked_ > 0) || !starts_.empty()) {
     if (!starts_.empty() && (k == clusters_.size() || starts_.front() < clusters_[k].cells.front())) {
       const int cell = starts_.front();
       std::pop_heap(starts_.begin(), starts_.end(), std::greater<>{});
       starts_.pop_back();
-      walk_from(cell);
+      // A walk from `cell` when it is open and not yet placed (there was no piece at `cell`).
+      const int mark = owner_[static_cast<std::size_t>(cell)];
+      if ((mark < 0 || mark > cell) && g.walk.open(cell)) (void)grow(g, cell, nullptr);
       continue;
     }
     // The last call's piece k, starting at s: kept when nothing near it changed (a piece built
@@ -467,23 +474,32 @@ const std::vector<FrontierCluster>& FrontierClusters::clusters(const KnownMap& k
     }
     flag &= static_cast<std::uint8_t>(~kWalkAgain);
     --marked_;
-    // Walk again from s (when it is still open and free). The old cells it leaves free may
-    // change what any later piece reads (those near them are marked), and are walked from in
-    // turn.
-    for (const int c : old.cells) {
-      if (owner_[static_cast<std::size_t>(c)] == s) owner_[static_cast<std::size_t>(c)] = kNone;
-    }
-    if (owner_[static_cast<std::size_t>(s)] == kNone && walk.open(s) && grow(s, &old)) continue;  // the same
-    for (const int c : old.cells) {
-      if (owner_[static_cast<std::size_t>(c)] != kNone) continue;
-      mark_near(c, s);
-      if (c != s) {
-        starts_.push_back(c);
-        std::push_heap(starts_.begin(), starts_.end(), std::greater<>{});
-      }
-    }
-    spare_.push_back(std::move(old.cells));
+    walk_again(g, old);
   }
+  return k;
+}
+
+void FrontierClusters::walk_again(const Grow& g, FrontierCluster& old) {
+  // Walk again from s (when it is still open and free). The old cells it leaves free may
+  // change what any later piece reads (those near them are marked), and are walked from in
+  // turn.
+  const int s = old.cells.front();
+  for (const int c : old.cells) {
+    if (owner_[static_cast<std::size_t>(c)] == s) owner_[static_cast<std::size_t>(c)] = kNone;
+  }
+  if (owner_[static_cast<std::size_t>(s)] == kNone && g.walk.open(s) && grow(g, s, &old)) return;  // the same
+  for (const int c : old.cells) {
+    if (owner_[static_cast<std::size_t>(c)] != kNone) continue;
+    mark_near(c, s);
+    if (c != s) {
+      starts_.push_back(c);
+      std::push_heap(starts_.begin(), starts_.end(), std::greater<>{});
+    }
+  }
+  spare_.push_back(std::move(old.cells));
+}
+
+void FrontierClusters::splice(std::size_t first, std::size_t k) {
   // 3. The replayed pieces take the place of the last call's pieces [first, k).
   const auto at = [this](std::size_t i) { return clusters_.begin() + static_cast<std::ptrdiff_t>(i); };
   const std::size_t replaced = k - first;
@@ -495,7 +511,6 @@ const std::vector<FrontierCluster>& FrontierClusters::clusters(const KnownMap& k
     clusters_.insert(at(k), std::make_move_iterator(next_.begin() + static_cast<std::ptrdiff_t>(common)),
                      std::make_move_iterator(next_.end()));
   }
-  return clusters_;
 }
 
 }  // namespace world

@@ -147,6 +147,27 @@ class FrontierClusters {
                                                std::span<const std::uint8_t> excluded);
 
  private:
+  /// What the walks read: the map, the frontier and exclusion flags, and the owner marks
+  /// (frontiers.cpp).
+  struct Walk;
+  /// A walk with the largest piece in cells and the map's resolution.
+  struct Grow {
+    const Walk& walk;
+    std::size_t cap;
+    double resolution_m;
+  };
+  // clusters()'s steps (frontiers.cpp says what each does).
+  void find_starts(const Walk& walk, const FrontierMap& frontiers);
+  [[nodiscard]] std::size_t first_replayed() const;
+  /// Grows the piece of `start` (not yet placed by this call, open) into next_. True when it
+  /// equals `old`, which is then moved into next_ as it is; otherwise piece_ holds the new
+  /// piece's cells (ascending, with coordinates).
+  bool grow(const Grow& g, int start, FrontierCluster* old);
+  /// Replays from the last call's piece `first`; returns the first piece not replayed.
+  std::size_t replay(const Grow& g, std::size_t first);
+  /// The last call's piece `old`, marked, walked again.
+  void walk_again(const Grow& g, FrontierCluster& old);
+  void splice(std::size_t first, std::size_t k);
   /// Marks the last call's piece starting at `key` as changed: it must be walked again.
   void mark(int key);
   /// Marks as changed the pieces of the last call that hold a cell within one cell of `cell`

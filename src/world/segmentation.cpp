@@ -199,6 +199,202 @@ std::vector<long long> squared_clearance(const KnownMap& known) {
   return out;
 }
 
+namespace {
+
+/// segment_free_space()'s steps over one known map, writing `s`.
+class Segmenter {
+ public:
+  /// `order`: the known free cells, ascending; `d2`: their squared clearances.
+  Segmenter(const KnownMap& known, std::vector<int> order, std::vector<long long> d2, Segmentation& s)
+      : known_(known), s_(s), order_(std::move(order)), d2_(std::move(d2)), links_(known, order_) {}
+
+  void run() {
+    rank_by_clearance();
+    const long long best_t = best_threshold();
+    s_.threshold_cells = static_cast<int>(best_t);
+    grow_cores(best_t);
+    label_from_neighbours();
+    const std::vector<int> small = label_left_overs(best_t);
+    join_small(small);
+  }
+
+ private:
+  static constexpr int kLeftOver = -2;
+  static constexpr int kSmall = -3;
+
+  [[nodiscard]] long long clear2(int i) const { return d2_[static_cast<std::size_t>(i)]; }
+  int& label(int i) { return s_.label[static_cast<std::size_t>(i)]; }
+
+  /// Known free cells by decreasing clearance, ties by index (a counting sort when the keys are
+  /// few); rank = position in that order.
+  void rank_by_clearance() {
+    long long max_key = 0;
+    for (const int i : order_) max_key = std::max(max_key, clear2(i));
+    if (max_key <= 4 * static_cast<long long>(order_.size())) {
+      std::vector<int> start(static_cast<std::size_t>(max_key) + 2, 0);
+      for (const int i : order_) ++start[static_cast<std::size_t>(max_key - clear2(i)) + 1];
+      for (std::size_t k = 1; k < start.size(); ++k) start[k] += start[k - 1];
+      std::vector<int> sorted(order_.size());
+      for (const int i : order_)
+        sorted[static_cast<std::size_t>(start[static_cast<std::size_t>(max_key - clear2(i))]++)] = i;
+      order_ = std::move(sorted);
+    } else {
+      std::sort(order_.begin(), order_.end(),
+                [&](int a, int b) { return clear2(a) != clear2(b) ? clear2(a) > clear2(b) : a < b; });
+    }
+    rank_.assign(s_.label.size(), kUnranked);
+    for (std::size_t r = 0; r < order_.size(); ++r)
+      rank_[static_cast<std::size_t>(order_[r])] = static_cast<int>(r);
+  }
+
+  /// Step 3: room cores at every integer threshold, in one sweep from the top; the threshold
+  /// with the most (ties: the smaller), 0 when none has a room.
+  long long best_threshold() {
+    const auto t_max =
+        static_cast<long long>(std::floor(std::sqrt(static_cast<double>(clear2(order_.front())))));
+    Sets sets(s_.label.size());
+    std::vector<int> roots;  // the live components (dead ones are dropped at every level)
+    std::size_t next = 0;
+    int best_count = 0;
+    long long best_t = 0;
+    for (long long t = t_max; t >= 1; --t) {
+      for (; next < order_.size() && clear2(order_[next]) > t * t; ++next) {
+        const int c = order_[next];
+        sets.make(c, clear2(c));
+        links_.for_each(c, [&](int nb) {
+          if (rank_[static_cast<std::size_t>(nb)] < static_cast<int>(next)) (void)sets.join(c, nb);
+        });
+        if (sets.find(c) == c) roots.push_back(c);  // a new component, or the survivor of a tie
+      }
+      std::erase_if(roots, [&](int r) { return sets.find(r) != r; });
+      int count = 0;
+      for (const int r : roots) {
+        if (is_room_peak(sets.peak(r), t)) ++count;
+      }
+      if (count >= best_count && count > 0) {  // ties: the smaller t (visited later)
+        best_count = count;
+        best_t = t;
+      }
+    }
+    return best_t;
+  }
+
+  /// Labels `id` the cells breadth-first from `start` (labelled already) through links to
+  /// cells `joins(cell)` accepts; the cells reached are in queue_.
+  template <typename Joins>
+  void flood(int start, int id, const Joins& joins) {
+    queue_.assign(1, start);
+    for (std::size_t head = 0; head < queue_.size(); ++head) {
+      links_.for_each(queue_[head], [&](int nb) {
+        if (joins(nb)) {
+          label(nb) = id;
+          queue_.push_back(nb);
+        }
+      });
+    }
+  }
+
+  /// Step 4a: the cores at t* (cells above it, connected), each a room when its peak (its first
+  /// cell in this order) is, else left over.
+  void grow_cores(long long best_t) {
+    if (best_t == 0) return;
+    const long long t2 = best_t * best_t;
+    for (const int c : order_) {
+      if (clear2(c) <= t2) break;
+      if (label(c) != -1) continue;
+      const bool room = is_room_peak(clear2(c), best_t);
+      const int id = room ? s_.count++ : kLeftOver;
+      if (room) s_.room.push_back(1);
+      label(c) = id;
+      flood(c, id, [&](int nb) { return clear2(nb) > t2 && label(nb) == -1; });
+    }
+  }
+
+  /// Step 4b: every other cell from its highest earlier neighbour (ties: a labelled one, then
+  /// the lowest index); left over when that has no segment.
+  void label_from_neighbours() {
+    for (const int c : order_) {
+      if (label(c) != -1) continue;
+      int best = -1;
+      links_.for_each(c, [&](int nb) {
+        if (rank_[static_cast<std::size_t>(nb)] > rank_[static_cast<std::size_t>(c)]) return;
+        if (best < 0) {
+          best = nb;
+          return;
+        }
+        const bool labelled = label(nb) >= 0;
+        const bool best_labelled = label(best) >= 0;
+        if (clear2(nb) != clear2(best) ? clear2(nb) > clear2(best)
+                                       : (labelled != best_labelled ? labelled : nb < best))
+          best = nb;
+      });
+      const int id = best >= 0 ? label(best) : kLeftOver;
+      label(c) = id >= 0 ? id : kLeftOver;
+    }
+  }
+
+  /// Step 5: left-over components, in index order of their lowest cell: one of at least
+  /// (2 t* + 1)^2 cells is a segment (not a room); the cells of smaller ones are returned.
+  std::vector<int> label_left_overs(long long best_t) {
+    const long long big = (2 * best_t + 1) * (2 * best_t + 1);
+    std::vector<int> small;
+    for (int i = 0; i < known_.size(); ++i) {
+      if (label(i) != kLeftOver) continue;
+      label(i) = kSmall;
+      flood(i, kSmall, [&](int nb) { return label(nb) == kLeftOver; });
+      if (static_cast<long long>(queue_.size()) >= big) {
+        const int id = s_.count++;
+        s_.room.push_back(0);
+        for (const int c : queue_) label(c) = id;
+      } else {
+        small.insert(small.end(), queue_.begin(), queue_.end());
+      }
+    }
+    return small;
+  }
+
+  /// Small components join their neighbours: breadth-first from every labelled cell that touches
+  /// one, in index order. Those that touch no segment are segments of their own.
+  void join_small(std::vector<int> small) {
+    queue_.clear();
+    for (const int i : small) {
+      links_.for_each(i, [&](int nb) {
+        if (label(nb) >= 0) queue_.push_back(nb);
+      });
+    }
+    std::sort(queue_.begin(), queue_.end());
+    queue_.erase(std::unique(queue_.begin(), queue_.end()), queue_.end());
+    for (std::size_t head = 0; head < queue_.size(); ++head) {
+      const int id = label(queue_[head]);
+      links_.for_each(queue_[head], [&](int nb) {
+        if (label(nb) == kSmall) {
+          label(nb) = id;
+          queue_.push_back(nb);
+        }
+      });
+    }
+    std::sort(small.begin(), small.end());
+    for (const int i : small) {
+      if (label(i) != kSmall) continue;
+      const int id = s_.count++;
+      s_.room.push_back(0);
+      label(i) = id;
+      flood(i, id, [&](int nb) { return label(nb) == kSmall; });
+    }
+  }
+
+  static constexpr int kUnranked = -1;
+  const KnownMap& known_;
+  Segmentation& s_;
+  std::vector<int> order_;
+  std::vector<long long> d2_;
+  const Links links_;
+  std::vector<int> rank_;
+  std::vector<int> queue_;
+};
+
+}  // namespace
+
 Segmentation segment_free_space(const KnownMap& known) {
   Segmentation s;
   const auto n = static_cast<std::size_t>(known.size());
@@ -222,162 +418,7 @@ Segmentation segment_free_space(const KnownMap& known) {
   if (order.empty()) return s;
   std::vector<long long> d2(n, 0);
   clearance_in(known, x0, y0, x1, y1, d2);
-  const auto clear2 = [&](int i) { return d2[static_cast<std::size_t>(i)]; };
-  const Links links(known, order);
-
-  // Known free cells by decreasing clearance, ties by index (a counting sort when the keys
-  // are few); rank = position in that order.
-  long long max_key = 0;
-  for (const int i : order) max_key = std::max(max_key, clear2(i));
-  if (max_key <= 4 * static_cast<long long>(order.size())) {
-    std::vector<int> start(static_cast<std::size_t>(max_key) + 2, 0);
-    for (const int i : order) ++start[static_cast<std::size_t>(max_key - clear2(i)) + 1];
-    for (std::size_t k = 1; k < start.size(); ++k) start[k] += start[k - 1];
-    std::vector<int> sorted(order.size());
-    for (const int i : order)
-      sorted[static_cast<std::size_t>(start[static_cast<std::size_t>(max_key - clear2(i))]++)] = i;
-    order = std::move(sorted);
-  } else {
-    std::sort(order.begin(), order.end(),
-              [&](int a, int b) { return clear2(a) != clear2(b) ? clear2(a) > clear2(b) : a < b; });
-  }
-  constexpr int kUnranked = -1;
-  std::vector<int> rank(n, kUnranked);
-  for (std::size_t r = 0; r < order.size(); ++r)
-    rank[static_cast<std::size_t>(order[r])] = static_cast<int>(r);
-
-  // Step 3: room cores at every integer threshold, in one sweep from the top.
-  const auto t_max =
-      static_cast<long long>(std::floor(std::sqrt(static_cast<double>(clear2(order.front())))));
-  Sets sets(n);
-  std::vector<int> roots;  // the live components (dead ones are dropped at every level)
-  std::size_t next = 0;
-  int best_count = 0;
-  long long best_t = 0;
-  for (long long t = t_max; t >= 1; --t) {
-    for (; next < order.size() && clear2(order[next]) > t * t; ++next) {
-      const int c = order[next];
-      sets.make(c, clear2(c));
-      links.for_each(c, [&](int nb) {
-        if (rank[static_cast<std::size_t>(nb)] < static_cast<int>(next)) (void)sets.join(c, nb);
-      });
-      if (sets.find(c) == c) roots.push_back(c);  // a new component, or the survivor of a tie
-    }
-    std::erase_if(roots, [&](int r) { return sets.find(r) != r; });
-    int count = 0;
-    for (const int r : roots) {
-      if (is_room_peak(sets.peak(r), t)) ++count;
-    }
-    if (count >= best_count && count > 0) {  // ties: the smaller t (visited later)
-      best_count = count;
-      best_t = t;
-    }
-  }
-  s.threshold_cells = static_cast<int>(best_t);
-
-  // Step 4: room cores at t*, then every other cell from its highest earlier neighbour.
-  constexpr int kLeftOver = -2;
-  const long long t2 = best_t * best_t;
-  std::vector<int> queue;
-  if (best_t > 0) {
-    for (const int c : order) {
-      if (clear2(c) <= t2) break;
-      if (s.label[static_cast<std::size_t>(c)] != -1) continue;
-      // The first cell of a core in this order is its peak.
-      const bool room = is_room_peak(clear2(c), best_t);
-      const int id = room ? s.count++ : kLeftOver;
-      if (room) s.room.push_back(1);
-      queue.assign(1, c);
-      s.label[static_cast<std::size_t>(c)] = id;
-      for (std::size_t head = 0; head < queue.size(); ++head) {
-        links.for_each(queue[head], [&](int nb) {
-          if (clear2(nb) > t2 && s.label[static_cast<std::size_t>(nb)] == -1) {
-            s.label[static_cast<std::size_t>(nb)] = id;
-            queue.push_back(nb);
-          }
-        });
-      }
-    }
-  }
-  for (const int c : order) {
-    if (s.label[static_cast<std::size_t>(c)] != -1) continue;
-    int best = -1;
-    links.for_each(c, [&](int nb) {
-      if (rank[static_cast<std::size_t>(nb)] > rank[static_cast<std::size_t>(c)]) return;
-      if (best < 0) {
-        best = nb;
-        return;
-      }
-      const bool labelled = s.label[static_cast<std::size_t>(nb)] >= 0;
-      const bool best_labelled = s.label[static_cast<std::size_t>(best)] >= 0;
-      if (clear2(nb) != clear2(best) ? clear2(nb) > clear2(best)
-                                     : (labelled != best_labelled ? labelled : nb < best))
-        best = nb;
-    });
-    const int id = best >= 0 ? s.label[static_cast<std::size_t>(best)] : kLeftOver;
-    s.label[static_cast<std::size_t>(c)] = id >= 0 ? id : kLeftOver;
-  }
-
-  // Step 5: left-over components, in index order of their lowest cell.
-  const long long big = (2 * best_t + 1) * (2 * best_t + 1);
-  std::vector<int> small;  // cells of small left-over components
-  constexpr int kSmall = -3;
-  for (int i = 0; i < known.size(); ++i) {
-    if (s.label[static_cast<std::size_t>(i)] != kLeftOver) continue;
-    queue.assign(1, i);
-    s.label[static_cast<std::size_t>(i)] = kSmall;
-    for (std::size_t head = 0; head < queue.size(); ++head) {
-      links.for_each(queue[head], [&](int nb) {
-        if (s.label[static_cast<std::size_t>(nb)] == kLeftOver) {
-          s.label[static_cast<std::size_t>(nb)] = kSmall;
-          queue.push_back(nb);
-        }
-      });
-    }
-    if (static_cast<long long>(queue.size()) >= big) {
-      const int id = s.count++;
-      s.room.push_back(0);
-      for (const int c : queue) s.label[static_cast<std::size_t>(c)] = id;
-    } else {
-      small.insert(small.end(), queue.begin(), queue.end());
-    }
-  }
-  // Small components join their neighbours: breadth-first from every labelled cell that
-  // touches one, in index order.
-  queue.clear();
-  for (const int i : small) {
-    links.for_each(i, [&](int nb) {
-      if (s.label[static_cast<std::size_t>(nb)] >= 0) queue.push_back(nb);
-    });
-  }
-  std::sort(queue.begin(), queue.end());
-  queue.erase(std::unique(queue.begin(), queue.end()), queue.end());
-  for (std::size_t head = 0; head < queue.size(); ++head) {
-    const int id = s.label[static_cast<std::size_t>(queue[head])];
-    links.for_each(queue[head], [&](int nb) {
-      if (s.label[static_cast<std::size_t>(nb)] == kSmall) {
-        s.label[static_cast<std::size_t>(nb)] = id;
-        queue.push_back(nb);
-      }
-    });
-  }
-  // Small components that touch no segment are segments of their own.
-  std::sort(small.begin(), small.end());
-  for (const int i : small) {
-    if (s.label[static_cast<std::size_t>(i)] != kSmall) continue;
-    const int id = s.count++;
-    s.room.push_back(0);
-    queue.assign(1, i);
-    s.label[static_cast<std::size_t>(i)] = id;
-    for (std::size_t head = 0; head < queue.size(); ++head) {
-      links.for_each(queue[head], [&](int nb) {
-        if (s.label[static_cast<std::size_t>(nb)] == kSmall) {
-          s.label[static_cast<std::size_t>(nb)] = id;
-          queue.push_back(nb);
-        }
-      });
-    }
-  }
+  Segmenter(known, std::move(order), std::move(d2), s).run();
   return s;
 }
 

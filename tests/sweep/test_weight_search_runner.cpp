@@ -19,12 +19,12 @@
 #include "core/random.hpp"
 #include "core/statistics.hpp"
 #include "report/runs_schema.hpp"
-#include "strategies/weight_grid.hpp"
 #include "sweep/merge.hpp"
 #include "sweep/sweep_plan.hpp"
 #include "sweep/sweep_runner.hpp"
 #include "sweep/sweep_test_files.hpp"
 #include "sweep/sweep_test_run.hpp"
+#include "weightsearch/weight_grid.hpp"
 
 namespace fsweep {
 namespace test_weight_search_runner {  // not anonymous: unity builds

@@ -27,7 +27,7 @@
 #include "strategies/strategy.hpp"
 
 namespace fsweep {
-inline namespace strategies {
+inline namespace weightsearch {
 
 /// Points of one block of a WeightGrid, as bits (bit = local index, see WeightGrid).
 using BlockBits = std::array<std::uint64_t, 64>;
@@ -174,6 +174,8 @@ class WeightGrid {
                                          const WeightDirections* tied = nullptr) const;
 
  private:
+  /// split()'s steps (weight_grid.cpp).
+  class Splitter;
   /// The first grid index of a block or box along each weight, and the number of grid values it
   /// spans there (kBlockEdge per block, fewer at the grid's end).
   struct BlockSpan {
@@ -295,5 +297,5 @@ void WeightGrid::for_each_projection(const WeightRegion& region, int a, int b, F
   }
 }
 
-}  // namespace strategies
+}  // namespace weightsearch
 }  // namespace fsweep

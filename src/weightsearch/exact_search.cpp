@@ -1,4 +1,4 @@
-#include "sweep/exact_search.hpp"
+#include "weightsearch/exact_search.hpp"
 
 #include <oneapi/tbb/global_control.h>
 #include <oneapi/tbb/task_arena.h>
@@ -20,7 +20,7 @@
 #include "sim/simulation.hpp"
 
 namespace fsweep {
-inline namespace sweep {
+inline namespace weightsearch {
 namespace {
 
 /// A node of the region tree (the stretch of a branch between two splits), kept while some of
@@ -94,26 +94,8 @@ class Explorer {
       const auto instance = static_cast<std::size_t>(open - b.sims.begin());
       if (!b.vectors) b.vectors = grid_.count(b.region);
       if (pruned(b)) return;
-      if (*b.vectors == 1) {
-        // One vector left: the rest is its runs alone, by the strategy's own (cheaper) decisions.
-        const std::vector<double> weights = grid_.weights_at(grid_.lexmin(b.region));
-        for (Simulation& s : b.sims) {
-          s.set_weights(weights);
-          while (s.step()) {
-            if (stopping() || pruned(b)) return;
-          }
-        }
-        return finish(std::move(b));
-      }
-      if (!b.box) b.box = grid_.bounds(b.region);
-      const auto& box = *b.box;
-      for (int k = 0; k < grid_.weights(); ++k) {
-        const auto at = static_cast<std::size_t>(k);
-        w_lo[at] = grid_.values(k)[static_cast<std::size_t>(box[at][0])];
-        w_hi[at] = grid_.values(k)[static_cast<std::size_t>(box[at][1])];
-      }
-      if (!b.directions) b.directions = grid_.directions(b.region);
-      const Candidates* candidates = sim.choice(WeightBounds{w_lo, w_hi, *b.directions});
+      if (*b.vectors == 1) return run_alone(std::move(b));
+      const Candidates* candidates = choice(b, sim, w_lo, w_hi);
       if (candidates == nullptr) {  // a decision no weight changes
         (void)sim.step();
         continue;
@@ -122,20 +104,8 @@ class Explorer {
         (void)sim.step_choosing(0);
         continue;
       }
-      // Most decisions of a narrow region do not split it, though several candidates can win
-      // in its bounding box: its directions prove that without visiting its points.
-      int sole = grid_.sole_choice(*b.directions, *candidates);
-      const int sign = sole < 0 ? WeightGrid::tied_sign(*candidates) : 0;
       const WeightDirections* tied_directions = nullptr;
-      if (sign != 0) {
-        // The energy-aware costs depend on w2 - w3 (or w2 + w3): in those coordinates a region's
-        // directions are narrow where w / sum(w) is not (WeightGrid::tied_sign()).
-        std::optional<WeightDirections>& tied = b.tied[sign < 0 ? 0 : 1];
-        if (!tied) tied = grid_.tied_directions(b.region, sign);
-        sole = grid_.sole_choice_tied(*tied, sign, *candidates);
-        tied_directions = &*tied;
-      }
-      if (sole >= 0) {
+      if (const int sole = sole_choice(b, *candidates, tied_directions); sole >= 0) {
         (void)sim.step_choosing(sole);
         continue;
       }
@@ -144,52 +114,103 @@ class Explorer {
         (void)sim.step_choosing(shares.front().candidate);
         continue;
       }
-      splits_.fetch_add(1, std::memory_order_relaxed);
-      forks_.fetch_add(shares.size() - 1, std::memory_order_relaxed);
-      // A child node per share, but for those the journal holds finished. The parent's count of
-      // unfinished parts grows by the children before its own stretch ends.
-      std::vector<std::shared_ptr<Node>> children(shares.size());
-      int created = 0;
-      for (std::size_t s = 0; s < shares.size(); ++s) {
-        const std::uint64_t id = subtree_child(b.node->id, shares[s].candidate);
-        if (skipped(id, b.node)) continue;
-        children[s] = std::make_shared<Node>(Node{id, b.node, 1, false, {}});
-        ++created;
-      }
-      {
-        const std::lock_guard<std::mutex> lock(mutex_);
-        b.node->split = true;
-        b.node->pending += created;
-      }
-      for (std::size_t s = 0; s + 1 < shares.size(); ++s) {
-        if (children[s] == nullptr) continue;
-        auto fork = std::make_shared<Branch>(Branch{b.sims,
-                                                    std::move(shares[s].region),
-                                                    b.choices,
-                                                    std::move(children[s]),
-                                                    std::nullopt,
-                                                    std::nullopt,
-                                                    std::nullopt,
-                                                    {}});
-        fork->choices.push_back(shares[s].candidate);
-        const int candidate = shares[s].candidate;
-        tasks_.run([this, fork, candidate, instance] {
-          (void)fork->sims[instance].step_choosing(candidate);
-          explore(std::move(*fork));
-        });
-      }
-      release(b.node);
-      if (children.back() == nullptr) return;
-      WeightGrid::Share& last = shares.back();
-      b.choices.push_back(last.candidate);
-      b.node = std::move(children.back());
-      b.region = std::move(last.region);
-      b.box.reset();
-      b.vectors.reset();
-      b.directions.reset();
-      b.tied = {};
-      (void)sim.step_choosing(last.candidate);
+      if (!fork(b, shares, instance)) return;
+      (void)sim.step_choosing(b.choices.back());
     }
+  }
+
+  /// The rest of a branch down to one vector: its runs alone, by the strategy's own (cheaper)
+  /// decisions.
+  void run_alone(Branch b) {
+    const std::vector<double> weights = grid_.weights_at(grid_.lexmin(b.region));
+    for (Simulation& s : b.sims) {
+      s.set_weights(weights);
+      while (s.step()) {
+        if (stopping() || pruned(b)) return;
+      }
+    }
+    finish(std::move(b));
+  }
+
+  /// The candidates of `sim`'s next decision for the vectors of `b`'s region (Simulation::choice,
+  /// given the region's bounding box in `w_lo`, `w_hi` and its directions), or null for a
+  /// decision no weight changes.
+  const Candidates* choice(Branch& b, Simulation& sim, std::vector<double>& w_lo, std::vector<double>& w_hi) {
+    if (!b.box) b.box = grid_.bounds(b.region);
+    const auto& box = *b.box;
+    for (int k = 0; k < grid_.weights(); ++k) {
+      const auto at = static_cast<std::size_t>(k);
+      w_lo[at] = grid_.values(k)[static_cast<std::size_t>(box[at][0])];
+      w_hi[at] = grid_.values(k)[static_cast<std::size_t>(box[at][1])];
+    }
+    if (!b.directions) b.directions = grid_.directions(b.region);
+    return sim.choice(WeightBounds{w_lo, w_hi, *b.directions});
+  }
+
+  /// The candidate every vector of `b`'s region chooses, when its directions prove it without
+  /// visiting its points (most decisions of a narrow region do not split it, though several
+  /// candidates can win in its bounding box), else -1. For tied candidates `tied_directions` is
+  /// set to the region's directions in their coordinates, for split().
+  int sole_choice(Branch& b, const Candidates& candidates, const WeightDirections*& tied_directions) {
+    const int sole = grid_.sole_choice(*b.directions, candidates);
+    const int sign = sole < 0 ? WeightGrid::tied_sign(candidates) : 0;
+    if (sign == 0) return sole;
+    // The energy-aware costs depend on w2 - w3 (or w2 + w3): in those coordinates a region's
+    // directions are narrow where w / sum(w) is not (WeightGrid::tied_sign()).
+    std::optional<WeightDirections>& tied = b.tied[sign < 0 ? 0 : 1];
+    if (!tied) tied = grid_.tied_directions(b.region, sign);
+    tied_directions = &*tied;
+    return grid_.sole_choice_tied(*tied, sign, candidates);
+  }
+
+  /// A split of `b` (at instance `instance`'s decision) into `shares`: a child node per share,
+  /// but for those the journal holds finished; a task for each share's branch but the last, which
+  /// `b` becomes (its choice appended, not yet stepped). False when the last is finished too.
+  bool fork(Branch& b, std::vector<WeightGrid::Share>& shares, std::size_t instance) {
+    splits_.fetch_add(1, std::memory_order_relaxed);
+    forks_.fetch_add(shares.size() - 1, std::memory_order_relaxed);
+    // The parent's count of unfinished parts grows by the children before its own stretch ends.
+    std::vector<std::shared_ptr<Node>> children(shares.size());
+    int created = 0;
+    for (std::size_t s = 0; s < shares.size(); ++s) {
+      const std::uint64_t id = subtree_child(b.node->id, shares[s].candidate);
+      if (skipped(id, b.node)) continue;
+      children[s] = std::make_shared<Node>(Node{id, b.node, 1, false, {}});
+      ++created;
+    }
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      b.node->split = true;
+      b.node->pending += created;
+    }
+    for (std::size_t s = 0; s + 1 < shares.size(); ++s) {
+      if (children[s] == nullptr) continue;
+      auto fork = std::make_shared<Branch>(Branch{b.sims,
+                                                  std::move(shares[s].region),
+                                                  b.choices,
+                                                  std::move(children[s]),
+                                                  std::nullopt,
+                                                  std::nullopt,
+                                                  std::nullopt,
+                                                  {}});
+      fork->choices.push_back(shares[s].candidate);
+      const int candidate = shares[s].candidate;
+      tasks_.run([this, fork, candidate, instance] {
+        (void)fork->sims[instance].step_choosing(candidate);
+        explore(std::move(*fork));
+      });
+    }
+    release(b.node);
+    if (children.back() == nullptr) return false;
+    WeightGrid::Share& last = shares.back();
+    b.choices.push_back(last.candidate);
+    b.node = std::move(children.back());
+    b.region = std::move(last.region);
+    b.box.reset();
+    b.vectors.reset();
+    b.directions.reset();
+    b.tied = {};
+    return true;
   }
 
   [[nodiscard]] ExactSearchStats stats() const {
@@ -400,5 +421,5 @@ ExactSearchStats exact_search(std::span<const RunSpec> instances, const WeightGr
   return stats;
 }
 
-}  // namespace sweep
+}  // namespace weightsearch
 }  // namespace fsweep

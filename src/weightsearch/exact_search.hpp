@@ -27,10 +27,10 @@
 #include "sim/run_result.hpp"
 #include "sim/run_spec.hpp"
 #include "sim/simulation.hpp"
-#include "strategies/weight_grid.hpp"
+#include "weightsearch/weight_grid.hpp"
 
 namespace fsweep {
-inline namespace sweep {
+inline namespace weightsearch {
 
 /// One behaviour: the weight vectors that produce it and its run.
 struct Behaviour {
@@ -156,5 +156,5 @@ ExactSearchStats exact_search(std::span<const RunSpec> instances, const WeightGr
                               const SubtreeJournal* journal = nullptr,
                               const std::atomic<bool>* stop = nullptr);
 
-}  // namespace sweep
+}  // namespace weightsearch
 }  // namespace fsweep

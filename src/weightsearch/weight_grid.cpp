@@ -1,4 +1,4 @@
-#include "strategies/weight_grid.hpp"
+#include "weightsearch/weight_grid.hpp"
 
 #include <algorithm>
 #include <bit>
@@ -10,7 +10,7 @@
 #include <utility>
 
 namespace fsweep {
-inline namespace strategies {
+inline namespace weightsearch {
 namespace {
 
 constexpr std::size_t kWeights = WeightGrid::kMaxWeights;
@@ -588,196 +588,219 @@ int WeightGrid::sole_choice_tied(const WeightDirections& tied, int sign, const C
   });
 }
 
-std::vector<WeightGrid::Share> WeightGrid::split(const WeightRegion& region, const Candidates& candidates,
-                                                 const WeightDirections* tied) const {
-  const auto n = static_cast<int>(candidates.cells.size());
-  const auto k = static_cast<std::size_t>(candidates.feature_count);
-  if (n == 0 || candidates.feature_count != weights() ||
-      candidates.features.size() != static_cast<std::size_t>(n) * k) {
-    throw std::invalid_argument("weight grid split: candidates do not match the grid's weights");
+/// split() for one set of candidates, as named steps. A box of whole blocks (decide_box()) goes
+/// whole to one candidate when sole_winner() proves one wins everywhere in it, else its halves
+/// are decided, down to single blocks decided point by point (decide_points()); a block held in
+/// part is decided the same way over its members' span. The candidates that cannot win in a box
+/// cannot win in its halves, so each step narrows the pool it hands on. The buffers live here so
+/// that one split allocates them once.
+class WeightGrid::Splitter {
+ public:
+  /// `candidates` checked by split(): at least one, the grid's weight count of features.
+  Splitter(const WeightGrid& grid, const Candidates& candidates, const WeightDirections* tied)
+      : grid_(grid),
+        values_(grid.values_),
+        features_(candidates.features),
+        k_(static_cast<std::size_t>(candidates.feature_count)),
+        n_(static_cast<int>(candidates.cells.size())),
+        bounded_(std::all_of(features_.begin(), features_.end(), [](double f) { return std::isfinite(f); })),
+        tied_(tied),
+        sign_(tied != nullptr && tied->nonzero ? tied_sign(candidates) : 0),
+        won_(static_cast<std::size_t>(n_)),
+        lo_cost_(static_cast<std::size_t>(n_)),
+        hi_cost_(static_cast<std::size_t>(n_)),
+        w_lo_(k_),
+        w_hi_(k_),
+        w_mid_(k_),
+        shares_(static_cast<std::size_t>(n_)),
+        touched_(static_cast<std::size_t>(n_)) {}
+
+  /// The non-empty shares of `region`, in ascending candidate order.
+  std::vector<Share> run(const WeightRegion& region) {
+    std::vector<int> everyone(static_cast<std::size_t>(n_));
+    for (int i = 0; i < n_; ++i) everyone[static_cast<std::size_t>(i)] = i;
+    for (const WeightRegion::Box& box : region.whole) decide_box(box, everyone);
+    std::vector<int> among;
+    for (const WeightRegion::Part& part : region.parts) {
+      const int winner = sole_winner(grid_.span_of(part.block, part.bits), everyone, among);
+      if (winner >= 0) {
+        won_[static_cast<std::size_t>(winner)].parts.push_back(part);
+      } else {
+        decide_points(part.block, &part.bits, nullptr, among);
+      }
+    }
+    std::vector<Share> result;
+    for (int i = 0; i < n_; ++i) {
+      WeightRegion& r = won_[static_cast<std::size_t>(i)];
+      if (r.empty()) continue;
+      std::sort(r.parts.begin(), r.parts.end(),
+                [](const WeightRegion::Part& a, const WeightRegion::Part& b) { return a.block < b.block; });
+      result.push_back({i, std::move(r)});
+    }
+    return result;
   }
-  const std::span<const double> features(candidates.features);
-  // Candidate i's features.
-  const auto features_of = [&](int i) { return features.subspan(static_cast<std::size_t>(i) * k, k); };
-  const bool bounded =
-      std::all_of(features.begin(), features.end(), [](double f) { return std::isfinite(f); });
 
-  // Per candidate, the region it wins.
-  std::vector<WeightRegion> won(static_cast<std::size_t>(n));
-  std::vector<double> lo_cost(static_cast<std::size_t>(n));
-  std::vector<double> hi_cost(static_cast<std::size_t>(n));
-  std::vector<double> w_lo(k);
-  std::vector<double> w_hi(k);
-  std::vector<double> w_mid(k);
-  std::vector<std::pair<double, int>> by_middle;
-  std::vector<BlockBits> shares(static_cast<std::size_t>(n));
-  std::vector<std::uint8_t> touched(static_cast<std::size_t>(n));
+ private:
+  /// Candidate i's features.
+  [[nodiscard]] std::span<const double> features_of(int i) const {
+    return features_.subspan(static_cast<std::size_t>(i) * k_, k_);
+  }
 
-  // The candidates of `pool` (ascending) that can win somewhere in `span`, into `among`
-  // (ascending); returns the one that wins at every point of it, or -1. Only the candidate of
-  // the smallest highest cost (lowest index on a tie) can win everywhere; it does when every
-  // other candidate's lowest cost is above its highest, or equal to it and the other comes
-  // later (the tie rule). A candidate whose lowest cost is above that highest cost loses at
-  // every point.
-  const auto corner_test = [&](const BlockSpan& span, const std::vector<int>& pool, std::vector<int>& among) {
+  /// The candidates of `pool` (ascending) that can win somewhere in `span`, into `among`
+  /// (ascending), after corner_test() and prune(); returns the one that wins at every point of
+  /// it, or -1.
+  int sole_winner(const BlockSpan& span, const std::vector<int>& pool, std::vector<int>& among) {
+    int winner = corner_test(span, pool, among);
+    if (winner < 0) {
+      prune(span, among);
+      if (among.size() == 1) winner = among.front();
+    }
+    return winner;
+  }
+
+  /// The candidates of `pool` (ascending) that can win somewhere in `span`, into `among`
+  /// (ascending); returns the one that wins at every point of it, or -1. Only the candidate of
+  /// the smallest highest cost (lowest index on a tie) can win everywhere; it does when every
+  /// other candidate's lowest cost is above its highest, or equal to it and the other comes
+  /// later (the tie rule). A candidate whose lowest cost is above that highest cost loses at
+  /// every point.
+  int corner_test(const BlockSpan& span, const std::vector<int>& pool, std::vector<int>& among) {
     among.clear();
-    if (!bounded) {
+    if (!bounded_) {
       among = pool;
       return -1;
     }
     int first = pool.front();
     for (const int i : pool) {
       const std::span<const double> f = features_of(i);
-      for (std::size_t j = 0; j < k; ++j) {
+      for (std::size_t j = 0; j < k_; ++j) {
         const double lo = values_[j][static_cast<std::size_t>(span.first[j])];
         const double hi = values_[j][static_cast<std::size_t>(span.first[j] + span.extent[j] - 1)];
-        w_lo[j] = f[j] >= 0.0 ? lo : hi;
-        w_hi[j] = f[j] >= 0.0 ? hi : lo;
+        w_lo_[j] = f[j] >= 0.0 ? lo : hi;
+        w_hi_[j] = f[j] >= 0.0 ? hi : lo;
       }
-      lo_cost[static_cast<std::size_t>(i)] = linear_cost(w_lo, f);
-      hi_cost[static_cast<std::size_t>(i)] = linear_cost(w_hi, f);
-      if (hi_cost[static_cast<std::size_t>(i)] < hi_cost[static_cast<std::size_t>(first)]) first = i;
+      lo_cost_[static_cast<std::size_t>(i)] = linear_cost(w_lo_, f);
+      hi_cost_[static_cast<std::size_t>(i)] = linear_cost(w_hi_, f);
+      if (hi_cost_[static_cast<std::size_t>(i)] < hi_cost_[static_cast<std::size_t>(first)]) first = i;
     }
-    const double ceiling = hi_cost[static_cast<std::size_t>(first)];
+    const double ceiling = hi_cost_[static_cast<std::size_t>(first)];
     bool whole = true;
     for (const int i : pool) {
       if (i == first) {
         among.push_back(i);
         continue;
       }
-      const double other = lo_cost[static_cast<std::size_t>(i)];
+      const double other = lo_cost_[static_cast<std::size_t>(i)];
       if (other < ceiling || (other == ceiling && i < first)) whole = false;
       if (other <= ceiling) among.push_back(i);
     }
     return whole ? first : -1;
-  };
+  }
 
-  // Drops from `among` (ascending) every candidate that provably costs more than another of
-  // `among` at every weight vector of `span` (costs_more_at_every_weight()), or has exactly the
-  // features of an earlier one. argmin_linear() chooses none of them there: at each point the
-  // dropped candidate's cost is above, or equal to and after, another's, which holds along
-  // chains, so argmin_linear() over the rest chooses what it chooses over all. Unlike
-  // corner_test(), which compares each candidate's whole range of costs over the span, this
-  // compares the difference of two costs, which stays positive along a narrow cone.
-  // Drops from `among` every candidate that `costs_more(f_j, f_i)` proves costs more than one
-  // cheaper at `middle`, or that has exactly the features of an earlier one. Each candidate is
-  // compared with those cheaper at the middle, cheapest first: only they can cost less all over
-  // the span, and the cheapest mostly does. (Which pairs are compared only decides how many
-  // candidates go; each one that goes is proven.)
-  const auto prune_by = [&](std::span<const double> middle, const auto& costs_more, std::vector<int>& among) {
-    by_middle.clear();
-    for (const int i : among) {
-      by_middle.emplace_back(linear_cost(middle, features_of(i)), i);
-    }
-    std::sort(by_middle.begin(), by_middle.end());
+  /// Drops from `among` (ascending) every candidate that `costs_more(f_j, f_i)` proves costs more
+  /// than one cheaper at `middle`, or that has exactly the features of an earlier one.
+  /// argmin_linear() chooses none of them there: at each point the dropped candidate's cost is
+  /// above, or equal to and after, another's, which holds along chains, so argmin_linear() over
+  /// the rest chooses what it chooses over all. Each candidate is compared with those cheaper at
+  /// the middle, cheapest first: only they can cost less all over the span, and the cheapest
+  /// mostly does. (Which pairs are compared only decides how many candidates go; each one that
+  /// goes is proven.)
+  template <typename CostsMore>
+  void prune_by(std::span<const double> middle, const CostsMore& costs_more, std::vector<int>& among) {
+    by_middle_.clear();
+    for (const int i : among) by_middle_.emplace_back(linear_cost(middle, features_of(i)), i);
+    std::sort(by_middle_.begin(), by_middle_.end());
     std::vector<int> kept;
-    for (std::size_t at = 0; at < by_middle.size(); ++at) {
-      const int j = by_middle[at].second;
+    for (std::size_t at = 0; at < by_middle_.size(); ++at) {
+      const int j = by_middle_[at].second;
       const std::span<const double> fj = features_of(j);
-      const bool beaten = std::any_of(by_middle.begin(), by_middle.begin() + static_cast<std::ptrdiff_t>(at),
-                                      [&](const std::pair<double, int>& cheaper) {
-                                        const int i = cheaper.second;
-                                        const std::span<const double> fi = features_of(i);
-                                        if (std::equal(fj.begin(), fj.end(), fi.begin())) return i < j;
-                                        return costs_more(fj, fi);
-                                      });
+      const bool beaten =
+          std::any_of(by_middle_.begin(), by_middle_.begin() + static_cast<std::ptrdiff_t>(at),
+                      [&](const std::pair<double, int>& cheaper) {
+                        const int i = cheaper.second;
+                        const std::span<const double> fi = features_of(i);
+                        if (std::equal(fj.begin(), fj.end(), fi.begin())) return i < j;
+                        return costs_more(fj, fi);
+                      });
       if (!beaten) kept.push_back(j);
     }
     std::sort(kept.begin(), kept.end());
     among = std::move(kept);
-  };
-  // Tied candidates (tied_sign()) with the region's tied directions: a span is also proven in
-  // their coordinates, over the directions of v within both the region's and the span's.
-  const int sign = tied != nullptr && tied->nonzero ? tied_sign(candidates) : 0;
-  const auto prune = [&](const BlockSpan& span, std::vector<int>& among) {
-    if (!bounded || among.size() < 2) return;
-    for (std::size_t j = 0; j < k; ++j) {
-      w_lo[j] = values_[j][static_cast<std::size_t>(span.first[j])];
-      w_hi[j] = values_[j][static_cast<std::size_t>(span.first[j] + span.extent[j] - 1)];
-      w_mid[j] = 0.5 * (w_lo[j] + w_hi[j]);
+  }
+
+  /// Drops from `among` the candidates that provably cost more than another of `among` at every
+  /// weight vector of `span` (costs_more_at_every_weight()): unlike corner_test(), which compares
+  /// each candidate's whole range of costs over the span, this compares the difference of two
+  /// costs, which stays positive along a narrow cone. With tied candidates (tied_sign()) and the
+  /// region's tied directions, the span is also proven in their coordinates, over the
+  /// directions of v within both the region's and the span's.
+  void prune(const BlockSpan& span, std::vector<int>& among) {
+    if (!bounded_ || among.size() < 2) return;
+    for (std::size_t j = 0; j < k_; ++j) {
+      w_lo_[j] = values_[j][static_cast<std::size_t>(span.first[j])];
+      w_hi_[j] = values_[j][static_cast<std::size_t>(span.first[j] + span.extent[j] - 1)];
+      w_mid_[j] = 0.5 * (w_lo_[j] + w_hi_[j]);
     }
     prune_by(
-        w_mid,
+        w_mid_,
         [&](std::span<const double> fj, std::span<const double> fi) {
-          return costs_more_at_every_weight(fj, fi, w_lo, w_hi);
+          return costs_more_at_every_weight(fj, fi, w_lo_, w_hi_);
         },
         among);
-    if (among.size() < 2 || sign == 0) return;
+    if (among.size() < 2 || sign_ == 0) return;
     WeightDirections within;
     within.zero = false;
-    if (tied_box_ratios(w_lo, w_hi, sign, within.lo, within.hi)) return;  // v may be 0 here
-    for (std::size_t j = 0; j < k; ++j) {
-      within.lo[j] = std::max(within.lo[j] - 1e-14, tied->lo[j]);
-      within.hi[j] = std::min(within.hi[j] + 1e-14, tied->hi[j]);
-      w_mid[j] = 0.5 * (within.lo[j] + within.hi[j]);
+    if (tied_box_ratios(w_lo_, w_hi_, sign_, within.lo, within.hi)) return;  // v may be 0 here
+    for (std::size_t j = 0; j < k_; ++j) {
+      within.lo[j] = std::max(within.lo[j] - 1e-14, tied_->lo[j]);
+      within.hi[j] = std::min(within.hi[j] + 1e-14, tied_->hi[j]);
+      w_mid_[j] = 0.5 * (within.lo[j] + within.hi[j]);
     }
     prune_by(
-        w_mid,
+        w_mid_,
         [&](std::span<const double> fj, std::span<const double> fi) {
-          return costs_more_at_every_direction(fj, fi, within, tied_extra(sign, fj, fi));
+          return costs_more_at_every_direction(fj, fi, within, grid_.tied_extra(sign_, fj, fi));
         },
         among);
-  };
+  }
 
-  // Block `block` (its member points `member`, all when null, and then `box` is the block as a
-  // box), point by point by argmin_linear's own rule over the candidates `among`. (Deciding its
-  // cubes of 4^4 and 2^4 points by corner tests first took twice as long on the free-space
-  // search: with many candidates a corner test costs more than the points it saves.)
-  // The costs are argmin_linear()'s own: linear_cost() adds w_j * F_j to 0.0 in feature
-  // order, so its partial sums over the first weights are computed once per value of them
-  // (partial[j]: the sum of the first j terms, per candidate of `among`) and the last term is
-  // added per point: the same operations on the same doubles, in the same order. Only the rows
-  // (points along the last weight: one byte of the bits) that hold members are visited, so a
-  // block with few members costs what they cost.
-  std::array<std::vector<double>, kWeights + 1> partial;
-  std::vector<double> among_features;
-  // The shares of a block decided point by point, to the candidates' regions.
-  const auto emit = [&](std::uint32_t block, const BlockBits& full, const WeightRegion::Box* box,
-                        const std::vector<int>& among) {
-    for (const int i : among) {
-      if (touched[static_cast<std::size_t>(i)] == 0) continue;
-      WeightRegion& to = won[static_cast<std::size_t>(i)];
-      if (shares[static_cast<std::size_t>(i)] == full && box != nullptr) {
-        to.whole.push_back(*box);
-      } else {
-        to.parts.push_back({block, shares[static_cast<std::size_t>(i)]});
-      }
+  /// A box of whole blocks: whole to one candidate if one wins everywhere in it, else its two
+  /// halves (along its widest side), down to single blocks decided point by point.
+  void decide_box(const WeightRegion::Box& box, const std::vector<int>& pool) {
+    std::vector<int> among;
+    const int winner = sole_winner(grid_.span_of(box), pool, among);
+    if (winner >= 0) {
+      won_[static_cast<std::size_t>(winner)].whole.push_back(box);
+      return;
     }
-  };
-  const auto decide_points = [&](std::uint32_t block, const BlockBits* member, const WeightRegion::Box* box,
-                                 const std::vector<int>& among) {
-    const BlockSpan span = span_of(block);
-    const BlockBits points = member == nullptr ? all_bits(span) : *member;
-    const std::size_t m = among.size();
-    for (const int i : among) {
-      shares[static_cast<std::size_t>(i)] = BlockBits{};
-      touched[static_cast<std::size_t>(i)] = 0;
+    std::size_t widest = 0;
+    for (std::size_t j = 1; j < kWeights; ++j) {
+      if (box.hi[j] - box.lo[j] > box.hi[widest] - box.lo[widest]) widest = j;
     }
-    const auto decided = [&](int bit, int candidate) {
-      const auto winner = static_cast<std::size_t>(candidate);
-      set_bit(shares[winner], bit);
-      touched[winner] = 1;
-    };
-    // The candidates' features by feature, for the sums over every point below.
-    among_features.resize(m * kWeights);
-    for (std::size_t c = 0; c < m; ++c) {
-      for (std::size_t j = 0; j < k; ++j) {
-        among_features[j * m + c] = features[static_cast<std::size_t>(among[c]) * k + j];
-      }
-    }
-    for (auto& p : partial) p.assign(m, 0.0);
-    // partial[j + 1] = partial[j] + w * F_j, for each candidate (feature j unused: unchanged).
-    const auto add_term = [&](std::size_t j, int index) {
-      if (j >= k) {
-        partial[j + 1] = partial[j];
-        return;
-      }
-      const double wj = values_[j][static_cast<std::size_t>(index)];
-      const double* f = &among_features[j * m];
-      for (std::size_t c = 0; c < m; ++c) partial[j + 1][c] = partial[j][c] + wj * f[c];
-    };
-    const double* base = partial[3].data();
-    const double* f3 = &among_features[3 * m];
+    const std::uint32_t width = box.hi[widest] - box.lo[widest];
+    if (width == 1) return decide_points(grid_.block_at(box.lo), nullptr, &box, among);
+    WeightRegion::Box low = box;
+    WeightRegion::Box high = box;
+    low.hi[widest] = box.lo[widest] + width / 2;
+    high.lo[widest] = low.hi[widest];
+    decide_box(low, among);
+    decide_box(high, among);
+  }
+
+  /// Block `block` (its member points `member`, all when null, and then `box` is the block as a
+  /// box), point by point by argmin_linear's own rule over the candidates `among`. (Deciding its
+  /// cubes of 4^4 and 2^4 points by corner tests first took twice as long on the free-space
+  /// search: with many candidates a corner test costs more than the points it saves.) The costs
+  /// are argmin_linear()'s own: linear_cost() adds w_j * F_j to 0.0 in feature order, so the
+  /// partial sums over the first weights are computed once per value of them (add_term()) and
+  /// the last term is added per point: the same operations on the same doubles, in the same
+  /// order. Only the rows (points along the last weight: one byte of the bits) that hold members
+  /// are visited, so a block with few members costs what they cost.
+  void decide_points(std::uint32_t block, const BlockBits* member, const WeightRegion::Box* box,
+                     const std::vector<int>& among) {
+    const BlockSpan span = grid_.span_of(block);
+    const BlockBits points = member == nullptr ? grid_.all_bits(span) : *member;
+    start_points(among);
     int summed_l0 = -1;
     static_assert(kBlockEdge == 8);
     for (std::size_t word = 0; word < points.size(); ++word) {
@@ -793,120 +816,159 @@ std::vector<WeightGrid::Share> WeightGrid::split(const WeightRegion& region, con
         const auto row = static_cast<unsigned>(rows >> static_cast<unsigned>(8 * l2)) & 0xFFU;
         if (row == 0) continue;
         add_term(2, span.first[2] + l2);
-        const int first_bit = static_cast<int>(word * 64) + 8 * l2;
-        if (k < kWeights) {
-          // No fourth weight: the row is its one point, and partial[3] its costs.
-          std::size_t best = 0;
-          for (std::size_t c = 1; c < m; ++c) {
-            if (base[c] < base[best]) best = c;  // argmin_linear's strict '<'
-          }
-          decided(first_bit, among[best]);
-          continue;
-        }
-        const std::span<const double> last(values_[3]);
-        if (std::popcount(row) >= 3) {
-          // A full row: (up to) 8 points at once, candidate by candidate, each point's running
-          // best, with the same sums and comparisons as below, in an order the compiler can
-          // vectorise.
-          std::array<double, kBlockEdge> w{};
-          const std::span<const double> values =
-              last.subspan(static_cast<std::size_t>(span.first[3]), static_cast<std::size_t>(span.extent[3]));
-          std::copy(values.begin(), values.end(), w.begin());
-          std::array<double, kBlockEdge> best_cost{};
-          std::array<double, kBlockEdge> best_at{};  // candidate positions, exact as doubles
-          for (std::size_t p = 0; p < kBlockEdge; ++p) best_cost[p] = base[0] + w[p] * f3[0];
-          for (std::size_t c = 1; c < m; ++c) {
-            const double at = static_cast<double>(c);
-            for (std::size_t p = 0; p < kBlockEdge; ++p) {
-              const double cost = base[c] + w[p] * f3[c];
-              const bool better = cost < best_cost[p];  // strict: a tie keeps the earlier one
-              best_cost[p] = better ? cost : best_cost[p];
-              best_at[p] = better ? at : best_at[p];
-            }
-          }
-          for (unsigned rest = row; rest != 0; rest &= rest - 1) {
-            const auto l3 = static_cast<std::size_t>(std::countr_zero(rest));
-            decided(first_bit + static_cast<int>(l3), among[static_cast<std::size_t>(best_at[l3])]);
-          }
-          continue;
-        }
-        for (unsigned rest = row; rest != 0; rest &= rest - 1) {
-          const int l3 = std::countr_zero(rest);
-          const double w = last[static_cast<std::size_t>(span.first[3]) + static_cast<std::size_t>(l3)];
-          std::size_t best = 0;
-          double best_cost = base[0] + w * f3[0];
-          for (std::size_t c = 1; c < m; ++c) {
-            const double cost = base[c] + w * f3[c];
-            if (cost < best_cost) {  // argmin_linear's strict '<': a tie keeps the earlier one
-              best = c;
-              best_cost = cost;
-            }
-          }
-          decided(first_bit + l3, among[best]);
-        }
+        decide_row(span, static_cast<int>(word * 64) + 8 * l2, row, among);
       }
     }
     emit(block, points, box, among);
-  };
+  }
 
-  // A box of whole blocks: whole to one candidate if one wins everywhere in it, else its two
-  // halves (along its widest side), down to single blocks decided point by point. The
-  // candidates that cannot win in a box cannot win in its halves.
-  const auto decide_box = [&](const auto& self, const WeightRegion::Box& box,
-                              const std::vector<int>& pool) -> void {
-    std::vector<int> among;
-    const BlockSpan span = span_of(box);
-    int winner = corner_test(span, pool, among);
-    if (winner < 0) {
-      prune(span, among);
-      if (among.size() == 1) winner = among.front();
+  /// Clears the shares of `among` and lays out their features by feature (among_features_[j *
+  /// m + c]) for the sums over every point, with partial sums of 0.
+  void start_points(const std::vector<int>& among) {
+    const std::size_t m = among.size();
+    for (const int i : among) {
+      shares_[static_cast<std::size_t>(i)] = BlockBits{};
+      touched_[static_cast<std::size_t>(i)] = 0;
     }
-    if (winner >= 0) {
-      won[static_cast<std::size_t>(winner)].whole.push_back(box);
+    among_features_.resize(m * kWeights);
+    for (std::size_t c = 0; c < m; ++c) {
+      for (std::size_t j = 0; j < k_; ++j) {
+        among_features_[j * m + c] = features_[static_cast<std::size_t>(among[c]) * k_ + j];
+      }
+    }
+    for (auto& p : partial_) p.assign(m, 0.0);
+  }
+
+  /// partial_[j + 1] = partial_[j] + w * F_j for each candidate, w weight j's value `index`
+  /// (feature j unused: unchanged). partial_[j]: the sum of the first j terms.
+  void add_term(std::size_t j, int index) {
+    if (j >= k_) {
+      partial_[j + 1] = partial_[j];
       return;
     }
-    std::size_t widest = 0;
-    for (std::size_t j = 1; j < kWeights; ++j) {
-      if (box.hi[j] - box.lo[j] > box.hi[widest] - box.lo[widest]) widest = j;
-    }
-    const std::uint32_t width = box.hi[widest] - box.lo[widest];
-    if (width == 1) return decide_points(block_at(box.lo), nullptr, &box, among);
-    WeightRegion::Box low = box;
-    WeightRegion::Box high = box;
-    low.hi[widest] = box.lo[widest] + width / 2;
-    high.lo[widest] = low.hi[widest];
-    self(self, low, among);
-    self(self, high, among);
-  };
+    const std::size_t m = partial_[j].size();
+    const double wj = values_[j][static_cast<std::size_t>(index)];
+    const double* f = &among_features_[j * m];
+    for (std::size_t c = 0; c < m; ++c) partial_[j + 1][c] = partial_[j][c] + wj * f[c];
+  }
 
-  std::vector<int> everyone(static_cast<std::size_t>(n));
-  for (int i = 0; i < n; ++i) everyone[static_cast<std::size_t>(i)] = i;
-  for (const WeightRegion::Box& box : region.whole) decide_box(decide_box, box, everyone);
-  std::vector<int> among;
-  for (const WeightRegion::Part& part : region.parts) {
-    const BlockSpan span = span_of(part.block, part.bits);
-    int winner = corner_test(span, everyone, among);
-    if (winner < 0) {
-      prune(span, among);
-      if (among.size() == 1) winner = among.front();
+  /// The points of one row (its bits `row`, of bits first_bit..first_bit + 7, along the last
+  /// weight), the first three terms summed in partial_[3].
+  void decide_row(const BlockSpan& span, int first_bit, unsigned row, const std::vector<int>& among) {
+    const std::size_t m = among.size();
+    const double* base = partial_[3].data();
+    if (k_ < kWeights) {
+      // No fourth weight: the row is its one point, and partial_[3] its costs.
+      std::size_t best = 0;
+      for (std::size_t c = 1; c < m; ++c) {
+        if (base[c] < base[best]) best = c;  // argmin_linear's strict '<'
+      }
+      decided(first_bit, among[best]);
+      return;
     }
-    if (winner >= 0) {
-      won[static_cast<std::size_t>(winner)].parts.push_back(part);
-    } else {
-      decide_points(part.block, &part.bits, nullptr, among);
+    if (std::popcount(row) >= 3) return decide_full_row(span, first_bit, row, among);
+    const double* f3 = &among_features_[3 * m];
+    const std::span<const double> last(values_[3]);
+    for (unsigned rest = row; rest != 0; rest &= rest - 1) {
+      const int l3 = std::countr_zero(rest);
+      const double w = last[static_cast<std::size_t>(span.first[3]) + static_cast<std::size_t>(l3)];
+      std::size_t best = 0;
+      double best_cost = base[0] + w * f3[0];
+      for (std::size_t c = 1; c < m; ++c) {
+        const double cost = base[c] + w * f3[c];
+        if (cost < best_cost) {  // argmin_linear's strict '<': a tie keeps the earlier one
+          best = c;
+          best_cost = cost;
+        }
+      }
+      decided(first_bit + l3, among[best]);
     }
   }
 
-  std::vector<Share> result;
-  for (int i = 0; i < n; ++i) {
-    WeightRegion& r = won[static_cast<std::size_t>(i)];
-    if (r.empty()) continue;
-    std::sort(r.parts.begin(), r.parts.end(),
-              [](const WeightRegion::Part& a, const WeightRegion::Part& b) { return a.block < b.block; });
-    result.push_back({i, std::move(r)});
+  /// A row of three or more members: its (up to) 8 points at once, candidate by candidate, each
+  /// point's running best, with decide_row()'s sums and comparisons, in an order the compiler can
+  /// vectorise.
+  void decide_full_row(const BlockSpan& span, int first_bit, unsigned row, const std::vector<int>& among) {
+    const std::size_t m = among.size();
+    const double* base = partial_[3].data();
+    const double* f3 = &among_features_[3 * m];
+    std::array<double, kBlockEdge> w{};
+    const std::span<const double> values =
+        std::span<const double>(values_[3])
+            .subspan(static_cast<std::size_t>(span.first[3]), static_cast<std::size_t>(span.extent[3]));
+    std::copy(values.begin(), values.end(), w.begin());
+    std::array<double, kBlockEdge> best_cost{};
+    std::array<double, kBlockEdge> best_at{};  // candidate positions, exact as doubles
+    for (std::size_t p = 0; p < kBlockEdge; ++p) best_cost[p] = base[0] + w[p] * f3[0];
+    for (std::size_t c = 1; c < m; ++c) {
+      const double at = static_cast<double>(c);
+      for (std::size_t p = 0; p < kBlockEdge; ++p) {
+        const double cost = base[c] + w[p] * f3[c];
+        const bool better = cost < best_cost[p];  // strict: a tie keeps the earlier one
+        best_cost[p] = better ? cost : best_cost[p];
+        best_at[p] = better ? at : best_at[p];
+      }
+    }
+    for (unsigned rest = row; rest != 0; rest &= rest - 1) {
+      const auto l3 = static_cast<std::size_t>(std::countr_zero(rest));
+      decided(first_bit + static_cast<int>(l3), among[static_cast<std::size_t>(best_at[l3])]);
+    }
   }
-  return result;
+
+  /// Point `bit` of the block being decided goes to `candidate`.
+  void decided(int bit, int candidate) {
+    const auto winner = static_cast<std::size_t>(candidate);
+    set_bit(shares_[winner], bit);
+    touched_[winner] = 1;
+  }
+
+  /// The shares of a block decided point by point (its points `full`; `box`: the block as a box
+  /// when it was held whole), to the candidates' regions.
+  void emit(std::uint32_t block, const BlockBits& full, const WeightRegion::Box* box,
+            const std::vector<int>& among) {
+    for (const int i : among) {
+      if (touched_[static_cast<std::size_t>(i)] == 0) continue;
+      WeightRegion& to = won_[static_cast<std::size_t>(i)];
+      if (shares_[static_cast<std::size_t>(i)] == full && box != nullptr) {
+        to.whole.push_back(*box);
+      } else {
+        to.parts.push_back({block, shares_[static_cast<std::size_t>(i)]});
+      }
+    }
+  }
+
+  const WeightGrid& grid_;
+  const std::vector<std::vector<double>>& values_;
+  const std::span<const double> features_;
+  const std::size_t k_;
+  const int n_;
+  const bool bounded_;
+  const WeightDirections* tied_;
+  const int sign_;
+  /// Per candidate, the region it wins.
+  std::vector<WeightRegion> won_;
+  std::vector<double> lo_cost_;
+  std::vector<double> hi_cost_;
+  std::vector<double> w_lo_;
+  std::vector<double> w_hi_;
+  std::vector<double> w_mid_;
+  std::vector<std::pair<double, int>> by_middle_;
+  /// The block being decided point by point: each candidate's points, and whether it has any.
+  std::vector<BlockBits> shares_;
+  std::vector<std::uint8_t> touched_;
+  std::array<std::vector<double>, kWeights + 1> partial_;
+  std::vector<double> among_features_;
+};
+
+std::vector<WeightGrid::Share> WeightGrid::split(const WeightRegion& region, const Candidates& candidates,
+                                                 const WeightDirections* tied) const {
+  const auto n = candidates.cells.size();
+  const auto k = static_cast<std::size_t>(candidates.feature_count);
+  if (n == 0 || candidates.feature_count != weights() || candidates.features.size() != n * k) {
+    throw std::invalid_argument("weight grid split: candidates do not match the grid's weights");
+  }
+  return Splitter(*this, candidates, tied).run(region);
 }
 
-}  // namespace strategies
+}  // namespace weightsearch
 }  // namespace fsweep

@@ -24,7 +24,7 @@
 #include "sim/heuristics.hpp"
 #include "sim/simulation.hpp"
 #include "strategies/registry.hpp"
-#include "sweep/exact_search.hpp"
+#include "weightsearch/exact_search.hpp"
 #include "world/map_spec.hpp"
 
 namespace fsweep {

@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "core/random.hpp"
-#include "strategies/weight_grid.hpp"
+#include "weightsearch/weight_grid.hpp"
 
 namespace fsweep {
 namespace {
