@@ -23,6 +23,7 @@
 #include "core/statistics.hpp"
 #include "report/config_names.hpp"
 #include "report/runs_schema.hpp"
+#include "report/search_schema.hpp"
 
 namespace fsweep {
 inline namespace report {
@@ -251,11 +252,11 @@ std::vector<SearchInfo> read_searches_json(const std::string& path) {
     throw ConfigError(path, "expected an object with a 'searches' array");
   std::vector<SearchInfo> out;
   for (const auto& s : j["searches"]) {
-    if (!s.is_object() || !s.contains("search_id") || !s["search_id"].is_number_unsigned())
+    if (!s.is_object() || !s.contains(kSearchIdColumn) || !s[kSearchIdColumn].is_number_unsigned())
       throw ConfigError(path, "a search without a search_id");
     const auto unit = nlohmann::json::json_pointer("/instances/0/robot/energy/unit");
     out.push_back(
-        SearchInfo{std::to_string(s["search_id"].get<std::uint64_t>()), s.value("strategy_label", ""),
+        SearchInfo{std::to_string(s[kSearchIdColumn].get<std::uint64_t>()), s.value("strategy_label", ""),
                    s.value("map_class", ""), s.value("mode", ""),
                    s.contains(unit) && s.at(unit).is_string() ? s.at(unit).get<std::string>() : ""});
   }
@@ -286,8 +287,8 @@ std::map<std::string, std::map<std::string, std::vector<std::size_t>>> add_searc
     return it == searches.end() ? std::string() : it->label;
   };
   {
-    CsvReader in(dir + "/search_best.csv");
-    const auto cols = require_columns(in, {"search_id", "rank", "behaviour_id"});
+    CsvReader in(dir + "/" + kSearchBestFile);
+    const auto cols = require_columns(in, {kSearchIdColumn, kRankColumn, kBehaviourIdColumn});
     const auto w = weight_columns(in.header());
     std::set<std::string> seen;
     while (in.next()) {
@@ -298,9 +299,9 @@ std::map<std::string, std::map<std::string, std::vector<std::size_t>>> add_searc
       add(f[cols[0]], f[cols[2]], PairedSide{label + "@best", "search " + f[cols[0]], label, params});
     }
   }
-  if (std::filesystem::exists(dir + "/search_ranks.csv")) {
-    CsvReader in(dir + "/search_ranks.csv");
-    const auto cols = require_columns(in, {"search_id", "behaviour_id"});
+  if (std::filesystem::exists(dir + "/" + kSearchRanksFile)) {
+    CsvReader in(dir + "/" + kSearchRanksFile);
+    const auto cols = require_columns(in, {kSearchIdColumn, kBehaviourIdColumn});
     const auto w = weight_columns(in.header());
     while (in.next()) {
       const auto& f = in.fields();
@@ -317,8 +318,8 @@ std::map<std::string, std::map<std::string, std::vector<std::size_t>>> add_searc
 /// The exact weight searches of `dir` as sources, one group each (none without searches.json).
 std::vector<Source> read_search_sources(const std::string& dir, PairedTable& table) {
   std::vector<Source> sources;
-  if (!std::filesystem::exists(dir + "/searches.json")) return sources;
-  const std::vector<SearchInfo> searches = read_searches_json(dir + "/searches.json");
+  if (!std::filesystem::exists(dir + "/" + kSearchesFile)) return sources;
+  const std::vector<SearchInfo> searches = read_searches_json(dir + "/" + kSearchesFile);
   const auto wanted = add_search_sides(dir, searches, table, sources);
   for (std::size_t k = 0; k < searches.size(); ++k) {
     sources[k].groups.push_back(Group{searches[k].map_class, {}, searches[k].energy_unit, {}, {}});
@@ -329,8 +330,9 @@ std::vector<Source> read_search_sources(const std::string& dir, PairedTable& tab
           "to compare; mode all with a \"rank\" list compares those vectors with the optimum");
     }
   }
-  CsvReader in(dir + "/behaviours.csv");
-  const auto cols = require_columns(in, {"search_id", "behaviour_id", "instance", "map", "end_reason"});
+  CsvReader in(dir + "/" + kBehavioursFile);
+  const auto cols = require_columns(
+      in, {kSearchIdColumn, kBehaviourIdColumn, kInstanceColumn, kMapColumn, kEndReasonColumn});
   std::vector<int> metric_columns;
   for (const auto& m : table.metrics) metric_columns.push_back(in.column(m));
   while (in.next()) {
@@ -588,8 +590,7 @@ void write_paired(const std::string& out_dir, const PairedTable& table, const Pa
   }
   j["notes"] = table.notes;
   nlohmann::json inputs = nlohmann::json::array();
-  for (const char* f :
-       {"runs.csv", "manifest.json", "behaviours.csv", "search_ranks.csv", "search_best.csv"}) {
+  for (const char* f : {"runs.csv", "manifest.json", kBehavioursFile, kSearchRanksFile, kSearchBestFile}) {
     std::error_code ec;
     const auto bytes = std::filesystem::file_size(table.dir + "/" + f, ec);
     if (!ec) inputs.push_back({{"file", f}, {"bytes", bytes}});

@@ -13,6 +13,7 @@
 #include "core/readable_number.hpp"
 #include "core/shard_dirs.hpp"
 #include "report/aggregate.hpp"
+#include "report/search_schema.hpp"
 
 namespace fsweep {
 inline namespace report {
@@ -159,8 +160,8 @@ void read_searches(ResultDir& r) {
   const std::string dir = r.dir;
   std::vector<SearchRanking> searches;  // in the file's order
   {
-    CsvReader in(dir + "/search_best.csv");
-    const std::size_t id = in.require_column("search_id");
+    CsvReader in(dir + "/" + kSearchBestFile);
+    const std::size_t id = in.require_column(kSearchIdColumn);
     while (in.next()) {
       const auto number = parse_number(in.fields()[id]);
       if (!number || *number < 0 || *number != static_cast<double>(static_cast<std::size_t>(*number))) {
@@ -172,56 +173,56 @@ void read_searches(ResultDir& r) {
     }
   }
   nlohmann::json records;
-  if (const auto text = read_file(dir + "/searches.json")) records = parse_json_or_discard(*text);
+  if (const auto text = read_file(dir + "/" + kSearchesFile)) records = parse_json_or_discard(*text);
   const std::vector<std::string>& h = r.search_best->header;
-  const auto objective = std::find(h.begin(), h.end(), std::string("objective"));
-  const std::vector<std::string> weight_names(objective == h.end() ? h.end() : objective + 1, h.end());
+  const std::vector<std::string> weight_names = search_best_weights(h);
   std::vector<ShownRun> shown;
   for (std::size_t k = 0; k < searches.size() && k < kShownSearches; ++k) {
     const SearchRanking& s = searches[k];
     std::string label = "search " + std::to_string(s.id);
     if (records.is_object() && records.contains("searches") && records["searches"].is_array()) {
       for (const auto& rec : records["searches"]) {
-        if (rec.is_object() && rec.contains("search_id") && rec["search_id"] == s.id) {
+        if (rec.is_object() && rec.contains(kSearchIdColumn) && rec[kSearchIdColumn] == s.id) {
           label += " (" + rec.value("strategy_label", std::string()) + " on " +
                    rec.value("map_class", std::string()) + ")";
         }
       }
     }
     for (const auto* row : {&s.first, &s.last}) {
-      if (row == &s.last && cell(h, s.last, "behaviour_id") == cell(h, s.first, "behaviour_id")) continue;
+      if (row == &s.last && cell(h, s.last, kBehaviourIdColumn) == cell(h, s.first, kBehaviourIdColumn))
+        continue;
       ShownRun run;
       run.search_id = s.id;
-      run.behaviour_id = cell(h, *row, "behaviour_id");
+      run.behaviour_id = cell(h, *row, kBehaviourIdColumn);
       std::string vector;
       for (const auto& w : weight_names) {
         const auto v = parse_number(cell(h, *row, w));
         if (!v)
-          throw ConfigError(dir + "/search_best.csv",
+          throw ConfigError(dir + "/" + kSearchBestFile,
                             "weight " + w + " of behaviour " + run.behaviour_id + " is not a number");
         run.weights.push_back(*v);
         vector += (vector.empty() ? "" : ", ") + w + "=" + cell(h, *row, w);
       }
-      const bool tied = row == &s.last && cell(h, s.last, "rank") == cell(h, s.first, "rank");
+      const bool tied = row == &s.last && cell(h, s.last, kRankColumn) == cell(h, s.first, kRankColumn);
       run.role = label + ": " + (row == &s.first ? "best" : tied ? "last of the equally best" : "worst");
       run.role.append(" behaviour (rank ")
-          .append(cell(h, *row, "rank"))
+          .append(cell(h, *row, kRankColumn))
           .append(", behaviour ")
           .append(run.behaviour_id);
-      run.role.append(", ").append(cell(h, *row, "vectors")).append(" vectors, objective ");
-      const auto objective = parse_number(cell(h, *row, "objective"));
-      run.role.append(objective ? readable_number(*objective, 6) : cell(h, *row, "objective"))
+      run.role.append(", ").append(cell(h, *row, kVectorsColumn)).append(" vectors, objective ");
+      const auto objective = parse_number(cell(h, *row, kObjectiveColumn));
+      run.role.append(objective ? readable_number(*objective, 6) : cell(h, *row, kObjectiveColumn))
           .append("), its first instance with the representative weights ");
       run.role.append(vector);
       shown.push_back(std::move(run));
     }
   }
   // The recorded outcome: the behaviour's row of instance 0 in behaviours.csv.
-  CsvReader in(dir + "/behaviours.csv");
-  const std::size_t search = in.require_column("search_id");
-  const std::size_t behaviour = in.require_column("behaviour_id");
-  const std::size_t instance = in.require_column("instance");
-  const std::size_t first_metric = in.require_column("seed") + 1;
+  CsvReader in(dir + "/" + kBehavioursFile);
+  const std::size_t search = in.require_column(kSearchIdColumn);
+  const std::size_t behaviour = in.require_column(kBehaviourIdColumn);
+  const std::size_t instance = in.require_column(kInstanceColumn);
+  const std::size_t first_metric = in.require_column(kSeedColumn) + 1;
   while (in.next()) {
     const auto& f = in.fields();
     if (f[instance] != "0") continue;
@@ -234,9 +235,9 @@ void read_searches(ResultDir& r) {
   }
   for (ShownRun& run : shown) {
     if (run.recorded.empty()) {
-      throw ConfigError(dir + "/behaviours.csv", "no row of instance 0 of behaviour " + run.behaviour_id +
-                                                     " of search " + std::to_string(*run.search_id) +
-                                                     " (search_best.csv lists it)");
+      throw ConfigError(dir + "/" + kBehavioursFile, "no row of instance 0 of behaviour " + run.behaviour_id +
+                                                         " of search " + std::to_string(*run.search_id) +
+                                                         " (search_best.csv lists it)");
     }
     r.shown.push_back(std::move(run));
   }
@@ -308,8 +309,8 @@ ResultDir read_result_dir(const std::string& dir, std::size_t max_rows) {
   r.summary = read_csv_excerpt(dir + "/summary.csv", max_rows);
   read_rankings(r, max_rows);
   read_runs(r);
-  if (fs::exists(dir + "/search_best.csv")) {
-    r.search_best = read_csv_excerpt(dir + "/search_best.csv", max_rows);
+  if (fs::exists(dir + "/" + kSearchBestFile)) {
+    r.search_best = read_csv_excerpt(dir + "/" + kSearchBestFile, max_rows);
     read_searches(r);
   }
   return r;

@@ -15,6 +15,7 @@
 #include "core/json_excerpt.hpp"
 #include "core/random.hpp"
 #include "report/runs_schema.hpp"
+#include "report/search_schema.hpp"
 #include "sweep/csv_journal.hpp"
 #include "sweep/manifest.hpp"
 #include "sweep/sweep_plan.hpp"
@@ -458,7 +459,7 @@ std::uint64_t extend_outputs(const SweepPlan& plan, ShardOf shard, const SweepTa
                               " now)";
   // 1. What is not extended: exact weight searches, results of other map contents.
   if (!plan.search_units().empty() || has_search_entry(old.value("sweep", nlohmann::json())) ||
-      fs::exists(dir + "/searches.json") || fs::exists(dir + "/search_journal.jsonl")) {
+      fs::exists(dir + "/" + kSearchesFile) || fs::exists(dir + "/" + kSearchJournalFile)) {
     throw ConfigError(dir,
                       changed +
                           ", and a sweep with exact weight searches (\"search\" entries) is not extended: "

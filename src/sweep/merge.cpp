@@ -16,6 +16,7 @@
 #include "core/json_text.hpp"
 #include "report/aggregate.hpp"
 #include "report/runs_schema.hpp"
+#include "report/search_schema.hpp"
 #include "sweep/csv_journal.hpp"
 #include "sweep/done_runs.hpp"
 #include "sweep/manifest.hpp"
@@ -309,8 +310,8 @@ MergeReport merge_shards(const std::string& dir, const std::string& objective) {
   // searches did not finish stops the merge before anything is written.
   if (!plan) {
     for (const Shard& s : shards) {
-      if (fs::exists(s.dir + "/searches.json")) {
-        throw ConfigError(s.dir + "/searches.json",
+      if (fs::exists(s.dir + "/" + kSearchesFile)) {
+        throw ConfigError(s.dir + "/" + kSearchesFile,
                           "the sweep's plan cannot be rebuilt from the manifest (is a map file not reachable "
                           "from the current directory?), so its weight searches cannot be merged; run the "
                           "merge where the sweep ran");

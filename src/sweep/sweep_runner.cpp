@@ -21,6 +21,7 @@
 #include "core/config_error.hpp"
 #include "report/aggregate.hpp"
 #include "report/runs_schema.hpp"
+#include "report/search_schema.hpp"
 #include "sweep/csv_journal.hpp"
 #include "sweep/done_runs.hpp"
 #include "sweep/manifest.hpp"
@@ -40,10 +41,10 @@ using Clock = std::chrono::steady_clock;
 constexpr std::size_t kTokensPerThread = 16;
 
 constexpr const char* kOutputFiles[] = {
-    "runs.csv",           "progress.csv",         "manifest.json",    "summary.csv",
-    "best.csv",           "progress_summary.csv", "searches.json",    "behaviours.csv",
-    "search_summary.csv", "search_best.csv",      "search_ranks.csv", "search_heatmaps.csv",
-    "vectors.csv",        "search_journal.jsonl", "results.sqlite",   kOptimaFile};
+    "runs.csv",         "progress.csv",         "manifest.json",  "summary.csv",
+    "best.csv",         "progress_summary.csv", kSearchesFile,    kBehavioursFile,
+    kSearchSummaryFile, kSearchBestFile,        kSearchRanksFile, kSearchHeatmapsFile,
+    kVectorsFile,       kSearchJournalFile,     "results.sqlite", kOptimaFile};
 
 /// Set by SIGINT/SIGTERM while run_sweep runs (a signal handler can only reach a global).
 std::atomic<bool> stop_requested{false};  // NOLINT(cppcoreguidelines-avoid-non-const-global-variables)
@@ -327,7 +328,7 @@ void run_searches(const SweepPlan& plan, const RunnerOptions& options, int threa
                   const std::string& manifest_path, Clock::time_point wall_start, ManifestInfo& info,
                   RunnerReport& report) {
   const std::string& dir = report.out_dir;
-  if (fs::exists(dir + "/searches.json")) {
+  if (fs::exists(dir + "/" + kSearchesFile)) {
     report.searches_done_before = true;
     return;
   }

@@ -28,6 +28,7 @@
 #include "core/random.hpp"
 #include "core/statistics.hpp"
 #include "report/runs_schema.hpp"
+#include "report/search_schema.hpp"
 #include "sim/heuristics.hpp"
 #include "sweep/manifest.hpp"
 #include "sweep/progress_meter.hpp"
@@ -423,7 +424,7 @@ class SearchWriter {
 
   /// The journal of finished behaviours in `dir`, shared by the sweep's searches.
   [[nodiscard]] static std::string journal_path(const std::string& dir) {
-    return dir + "/search_journal.jsonl";
+    return dir + "/" + kSearchJournalFile;
   }
 
   /// What a journal line must match to be this search's: its instances (every resolved
@@ -595,18 +596,9 @@ class SearchWriter {
     return out;
   }
 
-  /// Header lines (no newline) of the files.
+  /// Header lines (no newline) of the files (report/search_schema.hpp).
   static std::string behaviours_header(const WeightSearch& s) {
-    std::vector<std::string> h{"search_id", "behaviour_id", "vectors"};
-    for (const auto& w : s.weights) h.push_back(w);
-    for (const auto& w : s.weights) {
-      h.push_back(w + ".min");
-      h.push_back(w + ".max");
-    }
-    for (const char* c : {"objective", "instance", "map", "seed"}) h.emplace_back(c);
-    for (const auto& [name, value] : metric_columns(RunResult{})) h.push_back(name);
-    for (const char* c : kSweepMetricColumns) h.emplace_back(c);
-    return csv_record(h);
+    return csv_record(behaviours_columns(s.weights));
   }
 
  private:
@@ -697,46 +689,13 @@ class SearchWriter {
   }
 
  public:
-  static std::string summary_header() {
-    std::vector<std::string> h{"search_id", "strategy_label", "map_class", "planner",
-                               "robot",     "instances",      "vectors",   "behaviours"};
-    for (int r = static_cast<int>(EndReason::Complete); r <= static_cast<int>(EndReason::Error); ++r) {
-      h.push_back("end." + std::string(to_string(static_cast<EndReason>(r))));
-    }
-    Columns names = metric_columns(RunResult{});
-    for (const char* c : kSweepMetricColumns) names.emplace_back(c, "");
-    for (const auto& [name, cell] : names) {
-      if (name == kEndReasonColumn || name == kEndDetailColumn || is_effort_column(name)) continue;
-      for (const char* s : {"mean", "std", "min", "q05", "q25", "median", "q75", "q95", "max"}) {
-        h.push_back(name + "." + s);
-      }
-    }
-    return csv_record(h);
-  }
-  static std::string best_header(const WeightSearch& s) {
-    std::vector<std::string> h{"search_id", "rank", "behaviour_id", "vectors", "vectors_better", "objective"};
-    for (const auto& w : s.weights) h.push_back(w);
-    return csv_record(h);
-  }
+  static std::string summary_header() { return csv_record(search_summary_columns()); }
+  static std::string best_header(const WeightSearch& s) { return csv_record(search_best_columns(s.weights)); }
   static std::string ranks_header(const WeightSearch& s) {
-    std::vector<std::string> h{"search_id"};
-    for (const auto& w : s.weights) h.push_back(w);
-    for (const char* c :
-         {"behaviour_id", "objective", "rank", "vectors_better", "vectors_tied", "percentile"}) {
-      h.emplace_back(c);
-    }
-    return csv_record(h);
+    return csv_record(search_ranks_columns(s.weights));
   }
-  static std::string heatmaps_header() {
-    return csv_record(
-        {"search_id", "weight_a", "weight_b", "value_a", "value_b", "best_objective", "behaviour_id"});
-  }
-  static std::string vectors_header(const WeightSearch& s) {
-    std::vector<std::string> h{"search_id"};
-    for (const auto& w : s.weights) h.push_back(w);
-    h.emplace_back("behaviour_id");
-    return csv_record(h);
-  }
+  static std::string heatmaps_header() { return csv_record(search_heatmaps_columns()); }
+  static std::string vectors_header(const WeightSearch& s) { return csv_record(vectors_columns(s.weights)); }
 
  private:
   /// Vectors strictly better than `objective` and those equal to it.
@@ -872,7 +831,7 @@ class SearchWriter {
     for (std::size_t i = 0; i < instance_count(); ++i) specs.push_back(plan_.search_instance_json(unit_, i));
     std::vector<std::string> maps;
     for (const std::size_t m : unit_.maps) maps.push_back(plan_.maps().at(m).label);
-    return json{{"search_id", std::stoi(id_)},
+    return json{{kSearchIdColumn, std::stoi(id_)},
                 {"strategy_label", plan_.strategies().at(unit_.entry).label},
                 {"map_class", unit_.map_class},
                 {"maps", maps},
@@ -976,21 +935,21 @@ void write_search_files(const SweepPlan& plan, const std::vector<SearchUnit>& un
     searches.push_back(std::move(rows[id].record));
   }
   const std::filesystem::path dir(out_dir);
-  std::vector<std::pair<std::string, const std::string*>> files{{"behaviours.csv", &behaviours},
-                                                                {"search_best.csv", &best}};
+  std::vector<std::pair<std::string, const std::string*>> files{{kBehavioursFile, &behaviours},
+                                                                {kSearchBestFile, &best}};
   if (any_all) {
-    files.emplace_back("search_summary.csv", &summary);
-    files.emplace_back("search_ranks.csv", &ranks);
-    files.emplace_back("search_heatmaps.csv", &heatmaps);
+    files.emplace_back(kSearchSummaryFile, &summary);
+    files.emplace_back(kSearchRanksFile, &ranks);
+    files.emplace_back(kSearchHeatmapsFile, &heatmaps);
   }
-  if (any_vectors) files.emplace_back("vectors.csv", &vectors);
+  if (any_vectors) files.emplace_back(kVectorsFile, &vectors);
   for (const auto& [name, text] : files) {
     write_file_atomically((dir / name).string(), *text);
     report.files.push_back(name);
   }
   // Last: its presence marks the search files as complete.
-  write_file_atomically((dir / "searches.json").string(), json{{"searches", searches}}.dump(2) + '\n');
-  report.files.emplace_back("searches.json");
+  write_file_atomically((dir / kSearchesFile).string(), json{{"searches", searches}}.dump(2) + '\n');
+  report.files.emplace_back(kSearchesFile);
   report.searches = units.size();
 }
 
@@ -1050,8 +1009,8 @@ SearchRunReport run_weight_searches(const SweepPlan& plan, const std::string& ou
   if (shard_count > 1) {
     // A shard's searches are parts: merge_weight_searches() writes the files. Its searches.json
     // marks it complete.
-    write_file_atomically(out_dir + "/searches.json", json{{"searches", shard_records}}.dump(2) + '\n');
-    report.files.emplace_back("searches.json");
+    write_file_atomically(out_dir + "/" + kSearchesFile, json{{"searches", shard_records}}.dump(2) + '\n');
+    report.files.emplace_back(kSearchesFile);
     report.searches = units.size();
   } else {
     write_search_files(plan, units, std::move(rows), out_dir, report);
@@ -1070,7 +1029,7 @@ SearchRunReport merge_weight_searches(const SweepPlan& plan, const std::string& 
   // Each shard's record of each search: its searches.json says the shard's searches finished.
   std::vector<std::vector<json>> records(units.size());
   for (const std::string& dir : shard_dirs) {
-    const std::string path = dir + "/searches.json";
+    const std::string path = dir + "/" + kSearchesFile;
     const std::optional<std::string> text = read_file(path);
     if (!text) {
       throw ConfigError(path,
