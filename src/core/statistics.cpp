@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace fsweep {
@@ -40,6 +41,57 @@ double counted_quantile_sorted(const std::vector<CountedValue>& sorted, double q
     return sorted[static_cast<std::size_t>(std::upper_bound(ends.begin(), ends.end(), i) - ends.begin())]
         .value;
   });
+}
+
+Statistics describe(std::vector<double>& values) {
+  Statistics s;
+  s.fill(std::numeric_limits<double>::quiet_NaN());
+  if (values.empty()) return s;
+  std::sort(values.begin(), values.end());
+  double sum = 0.0;
+  for (const double v : values) sum += v;
+  const double n = static_cast<double>(values.size());
+  const double mean = sum / n;
+  double squares = 0.0;
+  for (const double v : values) squares += (v - mean) * (v - mean);
+  s = {mean,
+       values.size() > 1 ? std::sqrt(squares / (n - 1.0)) : 0.0,
+       values.front(),
+       quantile_sorted(values, 0.05),
+       quantile_sorted(values, 0.25),
+       quantile_sorted(values, 0.5),
+       quantile_sorted(values, 0.75),
+       quantile_sorted(values, 0.95),
+       values.back()};
+  return s;
+}
+
+Statistics describe_counted(std::vector<CountedValue>& values) {
+  Statistics s;
+  s.fill(std::numeric_limits<double>::quiet_NaN());
+  std::sort(values.begin(), values.end(),
+            [](const CountedValue& a, const CountedValue& b) { return a.value < b.value; });
+  if (values.empty()) return s;
+  double n = 0.0;
+  double mean = 0.0;
+  double m2 = 0.0;  // weighted Welford
+  for (const CountedValue& v : values) {
+    const auto c = static_cast<double>(v.count);
+    n += c;
+    const double delta = v.value - mean;
+    mean += delta * c / n;
+    m2 += c * delta * (v.value - mean);
+  }
+  s = {mean,
+       n > 1.0 ? std::sqrt(m2 / (n - 1.0)) : 0.0,
+       values.front().value,
+       counted_quantile_sorted(values, 0.05),
+       counted_quantile_sorted(values, 0.25),
+       counted_quantile_sorted(values, 0.5),
+       counted_quantile_sorted(values, 0.75),
+       counted_quantile_sorted(values, 0.95),
+       values.back().value};
+  return s;
 }
 
 }  // namespace core

@@ -2,7 +2,9 @@
 /// @file statistics.hpp
 /// Sample statistics shared by the result tables (summary.csv, compare, plan benchmarks).
 
+#include <array>
 #include <cstdint>
+#include <string_view>
 #include <vector>
 
 namespace fsweep {
@@ -26,6 +28,21 @@ struct CountedValue {
 /// vectors): `sorted` ascending by value, counts > 0, total count below 2^53. q in [0, 1] and
 /// values not empty, else std::invalid_argument.
 [[nodiscard]] double counted_quantile_sorted(const std::vector<CountedValue>& sorted, double q);
+
+/// The nine statistics of a metric in summary.csv (report/aggregate.hpp) and
+/// search_summary.csv (report/search_schema.hpp), in their column order.
+inline constexpr std::array<std::string_view, 9> kStatisticNames{"mean",   "std", "min", "q05", "q25",
+                                                                 "median", "q75", "q95", "max"};
+using Statistics = std::array<double, kStatisticNames.size()>;
+
+/// The statistics of `values` (sorted here): mean, standard deviation (n - 1 in the
+/// denominator, two passes; 0 for one value), min, the type-7 quantiles of quantile_sorted(),
+/// max. NaN for no values.
+[[nodiscard]] Statistics describe(std::vector<double>& values);
+/// The same over the multiset in which each value occurs `count` times, without expanding it
+/// (sorted here by value): the mean and the variance by weighted Welford over the sorted values,
+/// the quantiles by counted_quantile_sorted(). NaN for no values.
+[[nodiscard]] Statistics describe_counted(std::vector<CountedValue>& values);
 
 }  // namespace core
 }  // namespace fsweep

@@ -27,14 +27,8 @@ namespace fsweep {
 inline namespace report {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 /// Distances closer than this are the same (the simulator's progress-grid tolerance).
 constexpr double kSameDistanceM = 1e-9;
-
-/// Statistics of a metric, in summary.csv's column order.
-constexpr std::array<std::string_view, 9> kStatNames{"mean",   "std", "min", "q05", "q25",
-                                                     "median", "q75", "q95", "max"};
-using Stats = std::array<double, kStatNames.size()>;
 
 /// One configuration of runs.csv: its config values, run count, end reasons and metric values.
 struct Configuration {
@@ -64,30 +58,6 @@ struct ProgressBands {
   std::vector<std::pair<double, double>> finals;
   double max_final_m = -std::numeric_limits<double>::infinity();
 };
-
-/// Sorts `values` and returns their statistics (NaN for none).
-Stats describe(std::vector<double>& values) {
-  Stats s;
-  s.fill(kNaN);
-  if (values.empty()) return s;
-  std::sort(values.begin(), values.end());
-  double sum = 0.0;
-  for (const double v : values) sum += v;
-  const double n = static_cast<double>(values.size());
-  const double mean = sum / n;
-  double squares = 0.0;
-  for (const double v : values) squares += (v - mean) * (v - mean);
-  s = {mean,
-       values.size() > 1 ? std::sqrt(squares / (n - 1.0)) : 0.0,
-       values.front(),
-       quantile_sorted(values, 0.05),
-       quantile_sorted(values, 0.25),
-       quantile_sorted(values, 0.5),
-       quantile_sorted(values, 0.75),
-       quantile_sorted(values, 0.95),
-       values.back()};
-  return s;
-}
 
 /// A CSV file written to `<path>.tmp` and renamed into place by close().
 class CsvOut {
@@ -233,7 +203,7 @@ void write_summary(const std::string& path, RunsTable& runs) {
   row.emplace_back("n_distinct");
   for (const auto& r : runs.end_reasons) row.push_back("end." + r);
   for (const auto& m : runs.metric_names) {
-    for (const auto s : kStatNames) row.push_back(m + "." + std::string(s));
+    for (const auto s : kStatisticNames) row.push_back(m + "." + std::string(s));
   }
   out.row(row);
   for (std::size_t id = 0; id < runs.configs.size(); ++id) {
@@ -263,7 +233,7 @@ void write_progress_summary(const std::string& path, const std::string& source,
     // Runs by their last grid sample: those before a bin count with their final area.
     std::sort(b.finals.begin(), b.finals.end());
     const auto write_bin = [&](double distance_m) {
-      const Stats s = describe(values);
+      const Statistics s = describe(values);
       if (values.size() != b.finals.size()) {
         throw ConfigError(source, "the runs of configuration " + std::to_string(id) +
                                       " are not sampled on a common distance grid (" +
@@ -300,7 +270,7 @@ void write_best(const std::string& path, RunsTable& runs, const Objective& objec
                       "no column '" + std::string(objective.column) + "' for the objective");
   }
   const auto metric = static_cast<std::size_t>(m - runs.metric_names.begin());
-  std::vector<Stats> stats;
+  std::vector<Statistics> stats;
   std::vector<std::size_t> order;
   for (std::size_t id = 0; id < runs.configs.size(); ++id) {
     stats.push_back(describe(runs.configs[id].metrics[metric]));

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "core/statistics.hpp"
 #include "report/runs_schema.hpp"
 #include "sim/run_result.hpp"
 
@@ -31,9 +32,7 @@ std::vector<std::string> search_summary_columns() {
   for (const char* c : kSweepMetricColumns) names.emplace_back(c, "");
   for (const auto& [name, cell] : names) {
     if (name == kEndReasonColumn || name == kEndDetailColumn || is_effort_column(name)) continue;
-    for (const char* s : {"mean", "std", "min", "q05", "q25", "median", "q75", "q95", "max"}) {
-      h.push_back(name + "." + s);
-    }
+    for (const std::string_view s : kStatisticNames) h.push_back(name + "." + std::string(s));
   }
   return h;
 }

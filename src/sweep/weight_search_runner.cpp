@@ -662,28 +662,11 @@ class SearchWriter {
           if (!std::isnan(v[m])) values.push_back({v[m], f.behaviour.vectors});
         }
       }
-      std::sort(values.begin(), values.end(),
-                [](const CountedValue& a, const CountedValue& b) { return a.value < b.value; });
       if (values.empty()) {
-        row.insert(row.end(), 9, std::string());
+        row.insert(row.end(), kStatisticNames.size(), std::string());
         continue;
       }
-      double n = 0.0;
-      double mean = 0.0;
-      double m2 = 0.0;  // weighted Welford
-      for (const CountedValue& v : values) {
-        const auto c = static_cast<double>(v.count);
-        n += c;
-        const double delta = v.value - mean;
-        mean += delta * c / n;
-        m2 += c * delta * (v.value - mean);
-      }
-      row.push_back(format_number(mean));
-      row.push_back(format_number(n > 1.0 ? std::sqrt(m2 / (n - 1.0)) : 0.0));
-      row.push_back(format_number(values.front().value));
-      for (const double q : {0.05, 0.25, 0.5, 0.75, 0.95})
-        row.push_back(format_number(counted_quantile_sorted(values, q)));
-      row.push_back(format_number(values.back().value));
+      for (const double s : describe_counted(values)) row.push_back(format_number(s));
     }
     rows.summary = csv_record(row) + '\n';
   }

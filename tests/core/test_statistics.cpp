@@ -1,4 +1,4 @@
-// quantile_sorted (Hyndman-Fan type 7) against hand-computed values.
+// quantile_sorted (Hyndman-Fan type 7) and summary.csv's statistics against hand-computed values.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -75,6 +75,38 @@ TEST(Quantile, CountedValuesAreTheirExpansion) {
   EXPECT_EQ(counted_quantile_sorted({{4.0, 1'000'000'000'000}}, 0.3), 4.0);
   EXPECT_THROW((void)counted_quantile_sorted({}, 0.5), std::invalid_argument);
   EXPECT_THROW((void)counted_quantile_sorted({{1.0, 2}}, 2.0), std::invalid_argument);
+}
+
+// summary.csv's nine statistics by hand: 1, 2, 4, 8 has mean 3.75, std sqrt(28.75 / 3).
+TEST(Statistics, DescribeGivesTheNineInColumnOrderAndNaNForNone) {
+  std::vector<double> values{8.0, 1.0, 4.0, 2.0};
+  const Statistics s = describe(values);
+  EXPECT_EQ(kStatisticNames.front(), "mean");
+  EXPECT_DOUBLE_EQ(s[0], 3.75);
+  EXPECT_DOUBLE_EQ(s[1], std::sqrt(28.75 / 3.0));
+  EXPECT_EQ(s[2], 1.0);
+  EXPECT_DOUBLE_EQ(s[5], 3.0);  // median: 2 + 0.5 * (4 - 2)
+  EXPECT_EQ(s[8], 8.0);
+  std::vector<double> one{5.0};
+  EXPECT_EQ(describe(one)[1], 0.0);
+  std::vector<double> none;
+  for (const double v : describe(none)) EXPECT_TRUE(std::isnan(v));
+}
+
+// The search's weighted statistics (each behaviour counted by its vectors) are those of the
+// expanded values: quantiles, min and max exactly, mean and std up to rounding.
+TEST(Statistics, CountedValuesDescribeAsTheirExpansion) {
+  std::vector<CountedValue> counted{{7.25, 3}, {-3.0, 2}, {2.0, 5}, {1.5, 1}};
+  std::vector<double> expanded;
+  for (const CountedValue& v : counted) expanded.insert(expanded.end(), v.count, v.value);
+  const Statistics c = describe_counted(counted);
+  const Statistics e = describe(expanded);
+  for (std::size_t k = 0; k < kStatisticNames.size(); ++k) {
+    EXPECT_NEAR(c[k], e[k], 1e-12 * (1.0 + std::abs(e[k]))) << kStatisticNames[k];
+  }
+  for (const std::size_t k : {2, 3, 4, 5, 6, 7, 8}) EXPECT_EQ(c[k], e[k]) << kStatisticNames[k];
+  std::vector<CountedValue> none;
+  for (const double v : describe_counted(none)) EXPECT_TRUE(std::isnan(v));
 }
 
 }  // namespace
