@@ -57,6 +57,12 @@ const SweepOverride* origin_of(const std::string& problem, const std::vector<Swe
   return found;
 }
 
+/// The sweep's top-level `key`, or null when the sweep has none (or is not an object).
+const json& top_level(const json& sweep, const char* key) {
+  static const json kAbsent;
+  return sweep.is_object() && sweep.contains(key) ? sweep.at(key) : kAbsent;
+}
+
 /// Every top-level key of the sweep is one the format has (and the sweep is an object).
 void check_top_level_keys(const json& sweep, std::vector<std::string>& problems) {
   if (!sweep.is_object()) {
@@ -114,10 +120,7 @@ SweepPlan SweepPlan::build(const json& sweep, const std::string& file, std::vect
   SweepPlan plan;
   plan.source_ = sweep;
   for (const SweepOverride& o : overrides) plan.overrides_.push_back(o.text);
-  const json empty;
-  auto get = [&](const char* key) -> const json& {
-    return sweep.is_object() && sweep.contains(key) ? sweep.at(key) : empty;
-  };
+  const auto get = [&](const char* key) -> const json& { return top_level(sweep, key); };
 
   // 1. Keys, version, name and scalars.
   check_top_level_keys(sweep, problems);
@@ -156,10 +159,7 @@ SweepPlan SweepPlan::build(const json& sweep, const std::string& file, std::vect
 }
 
 bool SweepPlan::read_settings(const json& sweep, std::vector<std::string>& problems) {
-  const json empty;
-  auto get = [&](const char* key) -> const json& {
-    return sweep.is_object() && sweep.contains(key) ? sweep.at(key) : empty;
-  };
+  const auto get = [&](const char* key) -> const json& { return top_level(sweep, key); };
   const json& version = get("schema_version");
   if (version.is_null()) {
     problems.push_back("/schema_version: missing; allowed: " + std::to_string(kSweepSchemaVersion));
