@@ -1,13 +1,8 @@
 #include "sweep/csv_journal.hpp"
 
-#include <fcntl.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <array>
-#include <cerrno>
 #include <cstdio>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <utility>
@@ -115,17 +110,6 @@ void note_dropped(std::vector<CsvDroppedLines>& out, std::uint64_t first, std::u
   out.push_back({first, last, std::move(reason)});
 }
 
-void write_all(int fd, std::string_view data, const std::string& path) {
-  while (!data.empty()) {
-    const ssize_t n = ::write(fd, data.data(), data.size());
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      throw ConfigError(path, std::string("write failed: ") + std::strerror(errno));
-    }
-    data.remove_prefix(static_cast<std::size_t>(n));
-  }
-}
-
 /// Copies the byte ranges `keep` of `path` into a temp file and renames it over `path`.
 void rewrite_ranges(const std::string& path, const std::vector<Span>& keep) {
   std::ifstream in(path, std::ios::binary);
@@ -159,7 +143,7 @@ std::vector<std::string> split_csv_line(std::string_view line) {
 }
 
 CsvJournal::CsvJournal(std::string path, std::string header)
-    : path_(std::move(path)), header_(std::move(header)) {
+    : path_(std::move(path)), header_(std::move(header)), file_(path_, false) {
   const std::string first = read_first_line(path_);
   if (first.empty()) {
     write_file_atomically(path_, header_ + '\n');
@@ -175,7 +159,6 @@ CsvJournal::~CsvJournal() {
     flush();
   } catch (...) {  // NOLINT(bugprone-empty-catch): a destructor must not throw
   }
-  if (fd_ >= 0) ::close(fd_);
 }
 
 std::string CsvDroppedLines::describe(const std::string& path) const {
@@ -280,10 +263,7 @@ CsvRepairStats CsvJournal::repair(const RecordFilter& keep, const std::function<
 
 void CsvJournal::rewrite_in_order(std::size_t index_field, const Rewrite& rewrite) {
   flush();
-  if (fd_ >= 0) {
-    ::close(fd_);  // the rename replaces the file: append to the new one
-    fd_ = -1;
-  }
+  file_.close();  // the rename replaces the file: append to the new one
   // 1. The records' byte ranges and numbers, stably sorted by number.
   struct Record {
     std::uint64_t index = 0;
@@ -353,15 +333,9 @@ void CsvJournal::rewrite_in_order(std::size_t index_field, const Rewrite& rewrit
 
 void CsvJournal::append(std::string_view records) { buffer_.append(records); }
 
-void CsvJournal::open_for_append() {
-  fd_ = ::open(path_.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
-  if (fd_ < 0) throw ConfigError(path_, std::string("cannot open for appending: ") + std::strerror(errno));
-}
-
 void CsvJournal::flush() {
   if (buffer_.empty()) return;
-  if (fd_ < 0) open_for_append();
-  write_all(fd_, buffer_, path_);
+  file_.write(buffer_);
   buffer_.clear();
 }
 

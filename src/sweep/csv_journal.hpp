@@ -3,9 +3,9 @@
 /// An append-only CSV file that survives being killed at any moment (sweep_runner.hpp).
 ///
 /// Writes go through an in-memory buffer that reaches the file only on flush(), as whole
-/// write(2) calls, so the caller decides the order in which rows of several files become
-/// visible (progress rows before the runs row that completes them). A process killed in the
-/// middle of a write leaves at most one torn record at the end; repair() cuts it off.
+/// write(2) calls (core/append_file.hpp), so the caller decides the order in which rows of several files
+/// become visible (progress rows before the runs row that completes them). A process killed in the middle of
+/// a write leaves at most one torn record at the end; repair() cuts it off.
 
 #include <cstdint>
 #include <functional>
@@ -15,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/append_file.hpp"
 #include "core/files.hpp"
 
 namespace fsweep {
@@ -98,12 +99,10 @@ class CsvJournal {
   [[nodiscard]] const std::string& path() const { return path_; }
 
  private:
-  void open_for_append();
-
   std::string path_;
   std::string header_;
   std::string buffer_;
-  int fd_ = -1;
+  AppendFile file_;
 };
 
 /// Splits one CSV line (no newline) into unquoted fields (RFC 4180).

@@ -8,7 +8,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <limits>
 #include <map>
 #include <mutex>
@@ -25,15 +24,16 @@
 #include "core/csv_reader.hpp"
 #include "core/files.hpp"
 #include "core/json_text.hpp"
-#include "core/random.hpp"
 #include "core/statistics.hpp"
 #include "report/runs_schema.hpp"
 #include "report/search_schema.hpp"
 #include "sim/heuristics.hpp"
 #include "sweep/manifest.hpp"
 #include "sweep/progress_meter.hpp"
+#include "sweep/search_tables.hpp"
 #include "sweep/sweep_table.hpp"
 #include "weightsearch/exact_search.hpp"
+#include "weightsearch/search_journal.hpp"
 #include "weightsearch/weight_grid.hpp"
 
 namespace fsweep {
@@ -41,50 +41,22 @@ inline namespace sweep {
 namespace {
 
 using nlohmann::json;
-using Point = std::array<int, WeightGrid::kMaxWeights>;
-
-constexpr double kNoValue = std::numeric_limits<double>::quiet_NaN();
-
-/// One behaviour, formatted: its metric cells per instance and the numbers they hold.
-struct Found {
-  Behaviour behaviour;
-  /// Per instance, the metric columns (runs.csv's, plus optimal_distance_m and
-  /// competitive_ratio; effort metrics empty).
-  std::vector<Columns> cells;
-  /// Per instance and metric column, the value (NaN: none).
-  std::vector<std::vector<double>> values;
-  double objective = kNoValue;
-  /// Which of the search's `rank` vectors it holds (positions in WeightSearch::rank), noted
-  /// when it was admitted (SearchWriter::admit()), so that its region need not be kept.
-  std::vector<std::size_t> ranked;
-};
-
-/// How many distinct outcomes `found` holds: behaviours whose metric cells (end reason and detail,
-/// every metric but the effort ones, on every instance) are all equal count once. Different
-/// decision sequences can end in the same outcome (the same distance, coverage and counts).
-std::size_t distinct_outcomes(const std::vector<Found>& found) {
-  std::set<std::vector<std::string>> outcomes;
-  for (const Found& f : found) {
-    std::vector<std::string> key;
-    for (const Columns& cells : f.cells) {
-      for (const auto& [name, cell] : cells) {
-        if (!is_effort_column(name)) key.push_back(cell);
-      }
-    }
-    outcomes.insert(std::move(key));
-  }
-  return outcomes.size();
-}
-
 /// What a search's journal holds: its behaviours, and the subtrees of its region tree whose
 /// every leaf had finished or been pruned (by id, SubtreeJournal).
 struct Journal {
-  std::vector<Found> found;
+  std::vector<FoundBehaviour> found;
   std::unordered_map<std::uint64_t, SubtreeTally> done;
 };
 
-/// A metric cell's number (NaN: empty, or not a number).
-double number_of(const std::string& cell) { return parse_number(cell).value_or(kNoValue); }
+/// The cells' text, per instance (a journal line holds no column names).
+std::vector<std::vector<std::string>> cell_texts(const std::vector<Columns>& cells) {
+  std::vector<std::vector<std::string>> out;
+  for (const Columns& row : cells) {
+    std::vector<std::string>& texts = out.emplace_back();
+    for (const auto& [name, cell] : row) texts.push_back(cell);
+  }
+  return out;
+}
 
 /// Formats one instance's run of a behaviour.
 Columns instance_cells(const RunResult& result, const SweepMap& map, const RunSpec& spec) {
@@ -103,7 +75,7 @@ Columns instance_cells(const RunResult& result, const SweepMap& map, const RunSp
 /// The value of metric column `column` of a run (NaN: none).
 double metric_value(const RunResult& result, std::string_view column) {
   for (const auto& [name, cell] : metric_columns(result)) {
-    if (name == column) return number_of(cell);
+    if (name == column) return metric_number(cell);
   }
   throw std::logic_error("no metric column " + std::string(column));
 }
@@ -138,88 +110,13 @@ double class_lower_bound(std::span<const Simulation> sims, const Objective& obje
   return sum / static_cast<double>(sims.size());
 }
 
-/// Better objective first; no value last.
-bool better(double a, double b, Direction direction) {
-  if (std::isnan(a) || std::isnan(b)) return !std::isnan(a) && std::isnan(b);
-  return direction == Direction::Minimize ? a < b : a > b;
-}
-
-/// A planner as tables show it: its name, and its parameters when given.
-std::string planner_label(const SweepPlanner& p) {
-  return p.params.is_null() ? p.name : p.name + " " + p.params.dump();
-}
-
-/// Heat maps over weight pairs, filled one behaviour at a time (SearchWriter::admit()): per
-/// pair of weights (a, b) and pair of their values, the best objective among the behaviours
-/// with a vector there, and of the behaviours with that objective the smallest representative.
-/// Behaviour ids follow the representatives, so that is the smallest id: what a walk over
-/// every behaviour in id order, keeping the first of the best, gives.
-class HeatMaps {
- public:
-  /// `wanted`: false for a search without heat maps (mode best), which then holds none.
-  HeatMaps(const WeightGrid& grid, Direction direction, bool wanted) : grid_(grid), direction_(direction) {
-    const int w = wanted ? grid.weights() : 0;
-    for (int a = 0; a < w; ++a) {
-      for (int b = a + 1; b < w; ++b) {
-        const std::size_t cells = grid.values(a).size() * grid.values(b).size();
-        maps_.push_back({a, b, std::vector<double>(cells, kNoValue), std::vector<Point>(cells),
-                         std::vector<std::uint8_t>(cells, 0)});
-      }
-    }
-  }
-
-  /// Adds a behaviour: its region, objective and representative.
-  void add(const WeightRegion& region, double objective, const Point& representative) {
-    for (Map& m : maps_) {
-      const std::size_t nb = grid_.values(m.b).size();
-      grid_.for_each_projection(region, m.a, m.b, [&](int ia, int ib) {
-        const std::size_t cell = static_cast<std::size_t>(ia) * nb + static_cast<std::size_t>(ib);
-        const bool take = m.set[cell] == 0 || better(objective, m.best[cell], direction_) ||
-                          (!better(m.best[cell], objective, direction_) && representative < m.owner[cell]);
-        if (!take) return;
-        m.set[cell] = 1;
-        m.best[cell] = objective;
-        m.owner[cell] = representative;
-      });
-    }
-  }
-
-  /// One map per pair a < b, in order: `best` and `owner` (a representative) per cell
-  /// (value of a) * (values of b) + (value of b); `set`: whether any behaviour projects there.
-  struct Map {
-    int a = 0;
-    int b = 0;
-    std::vector<double> best;
-    std::vector<Point> owner;
-    std::vector<std::uint8_t> set;
-  };
-  [[nodiscard]] const std::vector<Map>& maps() const { return maps_; }
-
- private:
-  const WeightGrid& grid_;
-  Direction direction_;
-  std::vector<Map> maps_;
-};
-
 /// What one search (or one shard's, or the shards' merged) found.
 struct Searched {
-  std::vector<Found> found;
+  std::vector<FoundBehaviour> found;
   /// Of them, read from the journal of a killed search.
   std::size_t resumed = 0;
   ExactSearchStats stats;
   double wall_s = 0.0;
-};
-
-/// Everything one search writes, as text rows (each with its newline).
-// NOLINTNEXTLINE(bugprone-exception-escape): false positive inside nlohmann::json's noexcept move
-struct SearchRows {
-  std::string behaviours;
-  std::string summary;
-  std::string best;
-  std::string ranks;
-  std::string heatmaps;
-  std::string vectors;
-  json record;
 };
 
 class SearchWriter {
@@ -229,23 +126,11 @@ class SearchWriter {
       : out_dir_(std::move(out_dir)),
         plan_(plan),
         unit_(unit),
-        id_(std::to_string(id)),
+        id_(id),
         search_(*plan.strategies().at(unit.entry).search),
-        grid_(search_.values),
         objective_(objective),
-        heat_(grid_, objective.direction, search_.mode == WeightSearch::Mode::All) {
-    for (const std::vector<double>& vector : search_.rank) {
-      Point at{};
-      for (int k = 0; k < grid_.weights(); ++k) {
-        const auto values = grid_.values(k);
-        at[static_cast<std::size_t>(k)] = static_cast<int>(
-            std::lower_bound(values.begin(), values.end(), vector[static_cast<std::size_t>(k)]) -
-            values.begin());
-      }
-      rank_points_.push_back(at);
-    }
-  }
-  // Its heat maps refer to its grid.
+        tables_(plan, unit, id, objective),
+        grid_(tables_.grid()) {}
   SearchWriter(const SearchWriter&) = delete;
   SearchWriter& operator=(const SearchWriter&) = delete;
 
@@ -258,16 +143,16 @@ class SearchWriter {
     const std::vector<RunSpec> specs = instance_specs();
     const auto start = std::chrono::steady_clock::now();
     Searched out;
-    std::vector<Found>& found = out.found;
+    std::vector<FoundBehaviour>& found = out.found;
     const std::string key = unit_key(specs.size());
-    Journal journaled = read_journal(key, out_dir_, true, true);
+    Journal journaled = read_journal(key, out_dir_, JournalDamage::Repair, true);
     found = std::move(journaled.found);
     // The subtrees the journal holds finished: its nodes, and its behaviours as leaves.
     const std::uint64_t root_id = subtree_root(root);
     std::unordered_map<std::uint64_t, SubtreeTally>& done = journaled.done;
     const double sign = direction_sign();
     double incumbent = std::numeric_limits<double>::infinity();
-    for (const Found& f : found) {
+    for (const FoundBehaviour& f : found) {
       SubtreeTally leaf;
       leaf.vectors = f.behaviour.vectors;
       leaf.behaviours = 1;
@@ -275,28 +160,22 @@ class SearchWriter {
       if (!std::isnan(f.objective)) incumbent = std::min(incumbent, sign * f.objective);
     }
     out.resumed = found.size();
-    std::ofstream journal(journal_path(out_dir_), std::ios::app | std::ios::binary);
-    if (!journal) throw ConfigError(journal_path(out_dir_), "cannot open for appending");
-    const auto append = [&](const std::string& line) {
-      journal << line << '\n';
-      journal.flush();
-      if (!journal) throw ConfigError(journal_path(out_dir_), "write error");
-    };
+    SearchJournal journal(journal_path(out_dir_));
     SubtreeJournal subtrees;
     subtrees.done = &done;
-    subtrees.on_done = [&](std::uint64_t id, const SubtreeTally& t) { append(done_line(key, id, t)); };
+    subtrees.on_done = [&](std::uint64_t id, const SubtreeTally& t) { journal.append_done(key, id, t); };
     subtrees.on_skipped = on_vectors;
     const auto keep = [&](Behaviour&& b) {
       on_vectors(b.vectors);
-      Found f;
+      FoundBehaviour f;
       f.behaviour = std::move(b);
       for (std::size_t i = 0; i < specs.size(); ++i) {
         f.cells.push_back(instance_cells(f.behaviour.results[i], instance_map(i), specs[i]));
       }
       f.behaviour.results.clear();  // formatted; the runs' trajectories are not kept
       f.objective = objective_of(f.cells);
-      append(journal_line(key, f));
-      admit(f);
+      journal.append(key, f.behaviour, cell_texts(f.cells));
+      tables_.admit(f);
       found.push_back(std::move(f));
     };
     if (search_.mode == WeightSearch::Mode::All) {
@@ -315,53 +194,23 @@ class SearchWriter {
     return out;
   }
 
-  /// Takes a behaviour of the whole grid (one search's, or one the shards' parts make up) into
-  /// mode all's running results: the rank vectors it holds and its heat-map cells. Its region is
-  /// then dropped unless vectors.csv needs it: the full [0, 250]^4's behaviours would hold tens
-  /// of gigabytes of regions, these results a few megabytes.
-  void admit(Found& f) {
-    if (search_.mode != WeightSearch::Mode::All) return;
-    for (std::size_t r = 0; r < rank_points_.size(); ++r) {
-      if (grid_.contains(f.behaviour.region, rank_points_[r])) f.ranked.push_back(r);
-    }
-    heat_.add(f.behaviour.region, f.objective, f.behaviour.representative);
-    if (!search_.write_vectors) f.behaviour.region = WeightRegion{};
-  }
-
   /// The rows of the files for the behaviours of the whole grid (one search's, or the shards'
   /// merged by merged()). Mode best keeps the optimal ones (every tie): the others were found
   /// before a better one was.
   SearchRows rows(Searched searched, const json& shards = nullptr) {
-    std::vector<Found>& found = searched.found;
-    const std::size_t n = instance_count();
+    std::vector<FoundBehaviour>& found = searched.found;
     if (search_.mode == WeightSearch::Mode::Best) {
       const double sign = direction_sign();
       double optimum = std::numeric_limits<double>::infinity();
-      for (const Found& f : found) {
+      for (const FoundBehaviour& f : found) {
         if (!std::isnan(f.objective)) optimum = std::min(optimum, sign * f.objective);
       }
-      std::erase_if(found, [&](const Found& f) { return !(sign * f.objective == optimum); });
+      std::erase_if(found, [&](const FoundBehaviour& f) { return !(sign * f.objective == optimum); });
       searched.stats.best = optimum;
-      for (const Found& f : found) optimal_vectors_ += f.behaviour.vectors;
-    }
-    std::sort(found.begin(), found.end(), [](const Found& a, const Found& b) {
-      return a.behaviour.representative < b.behaviour.representative;
-    });
-    for (Found& f : found) {
-      for (const Columns& cells : f.cells) {
-        std::vector<double> values;
-        for (const auto& [name, cell] : cells) values.push_back(number_of(cell));
-        f.values.push_back(std::move(values));
-      }
+      for (const FoundBehaviour& f : found) optimal_vectors_ += f.behaviour.vectors;
     }
     SearchRows rows;
-    write_behaviours(found, instance_specs(), rows);
-    write_best_and_ranks(found, rows);
-    if (search_.mode == WeightSearch::Mode::All) {
-      write_summary(found, n, rows);
-      write_heatmaps(found, rows);
-    }
-    if (search_.write_vectors) write_vectors(found, rows);
+    tables_.format(found, instance_specs(), rows);
     rows.record = record(found, searched, shards);
     return rows;
   }
@@ -374,7 +223,7 @@ class SearchWriter {
     const std::string key = unit_key(instance_count());
     std::map<std::uint64_t, std::size_t> by_trace;
     for (const std::string& dir : dirs) {
-      for (Found& f : read_journal(key, dir, false, false).found) {
+      for (FoundBehaviour& f : read_journal(key, dir, JournalDamage::Refuse, false).found) {
         const auto [at, is_new] = by_trace.emplace(f.behaviour.trace, out.found.size());
         if (is_new) {
           out.found.push_back(std::move(f));
@@ -388,9 +237,9 @@ class SearchWriter {
       }
     }
     std::uint64_t vectors = 0;
-    for (Found& f : out.found) {
+    for (FoundBehaviour& f : out.found) {
       vectors += f.behaviour.vectors;
-      admit(f);
+      tables_.admit(f);
     }
     if (search_.mode == WeightSearch::Mode::All && vectors != grid_.size()) {
       throw ConfigError(journal_path(dirs.front()), "the shards' journals hold the behaviours of " +
@@ -428,15 +277,14 @@ class SearchWriter {
   }
 
   /// What a journal line must match to be this search's: its instances (every resolved
-  /// parameter), box, objective and mode, and the journal's format (2: with finished subtrees;
-  /// a journal of format 1 is not read, and its search is redone).
+  /// parameter), box, objective and mode, and the journal's format (SearchJournal::kFormat).
   [[nodiscard]] std::string unit_key(std::size_t instances) const {
     json key = json::array();
     for (std::size_t i = 0; i < instances; ++i) key.push_back(plan_.search_instance_json(unit_, i));
     key.push_back(search_.values);
     key.push_back(std::string(objective_.name));
     key.push_back(search_.mode == WeightSearch::Mode::All ? "all" : "best");
-    key.push_back("journal 3");
+    key.push_back(std::string(SearchJournal::kFormat));
     return sweep_hash(key);  // the FNV-1a 64 of its dump, as the manifest's hash of a sweep
   }
 
@@ -446,345 +294,38 @@ class SearchWriter {
     for (const Columns& c : cells) {
       const auto it =
           std::find_if(c.begin(), c.end(), [&](const auto& cell) { return cell.first == objective_.column; });
-      sum += it == c.end() ? kNoValue : number_of(it->second);
+      sum += it == c.end() ? std::numeric_limits<double>::quiet_NaN() : metric_number(it->second);
     }
     return sum / static_cast<double>(cells.size());
   }
 
-  /// One journal line: the key, the behaviour's region and choices, its cells per instance.
-  [[nodiscard]] static std::string journal_line(const std::string& key, const Found& f) {
-    json boxes = json::array();
-    for (const WeightRegion::Box& b : f.behaviour.region.whole) {
-      boxes.push_back({b.lo[0], b.lo[1], b.lo[2], b.lo[3], b.hi[0], b.hi[1], b.hi[2], b.hi[3]});
-    }
-    json parts = json::array();
-    for (const WeightRegion::Part& p : f.behaviour.region.parts) {
-      parts.push_back({p.block, point_runs(p.bits)});
-    }
-    json cells = json::array();
-    for (const Columns& c : f.cells) {
-      json row = json::array();
-      for (const auto& [name, cell] : c) row.push_back(cell);
-      cells.push_back(std::move(row));
-    }
-    return json{{"key", key},     {"trace", hex64(f.behaviour.trace)}, {"boxes", boxes},
-                {"parts", parts}, {"choices", f.behaviour.choices},    {"cells", cells}}
-        .dump();
-  }
-
-  /// A part of a journaled region: its block and its points as point_runs(), or (journals
-  /// written before 2026-12-04) as the 64 words of its bits in hexadecimal.
-  [[nodiscard]] static WeightRegion::Part part_of(const json& p) {
-    WeightRegion::Part part;
-    part.block = p.at(0).get<std::uint32_t>();
-    const json& points = p.at(1);
-    if (points.is_array()) {
-      part.bits = bits_of_runs(points.get<std::vector<std::uint32_t>>());
-    } else {
-      const std::string hex = points.get<std::string>();
-      if (hex.size() != part.bits.size() * 16) throw std::runtime_error("bad part");
-      for (std::size_t w = 0; w < part.bits.size(); ++w) {
-        part.bits[w] = std::stoull(hex.substr(w * 16, 16), nullptr, 16);
-      }
-    }
-    return part;
-  }
-
-  /// The journal line of a finished subtree: its id and tally (the bound signed as the search
-  /// minimises it).
-  [[nodiscard]] static std::string done_line(const std::string& key, std::uint64_t id,
-                                             const SubtreeTally& t) {
-    return json{{"key", key},
-                {"done", hex64(id)},
-                {"vectors", t.vectors},
-                {"behaviours", t.behaviours},
-                {"pruned_regions", t.pruned_regions},
-                {"pruned_vectors", t.pruned_vectors},
-                {"smallest_pruned_bound",
-                 std::isfinite(t.smallest_pruned_bound) ? json(t.smallest_pruned_bound) : json(nullptr)}}
-        .dump();
-  }
-
-  /// This search's behaviours and finished subtrees in the journal of `dir`. A line that does not parse (the
-  /// torn last line of a killed search) ends the reading. `repair` (a search about to append): the file is
-  /// cut to the lines before it, so that new lines follow complete ones. Otherwise (a merge reads
-  /// a finished shard, whose journal must be whole) it is a ConfigError naming the line, and the
-  /// file is left as it is.
-  /// `admitting`: each behaviour goes through admit() as it is read (a resumed search's own
-  /// journal; a merge admits the behaviours the shards' parts make up).
-  [[nodiscard]] Journal read_journal(const std::string& key, const std::string& dir, bool repair,
+  /// This search's behaviours and finished subtrees in the journal of `dir` (SearchJournal::read():
+  /// `damage` Repair for a search about to append to its own journal, Refuse for a merge reading a
+  /// finished shard's). `admitting`: each behaviour goes through admit() as it is read (a resumed
+  /// search's own journal; a merge admits the behaviours the shards' parts make up).
+  [[nodiscard]] Journal read_journal(const std::string& key, const std::string& dir, JournalDamage damage,
                                      bool admitting) {
     Journal out;
-    const std::string path = journal_path(dir);
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return out;
     const Columns names =
         instance_cells(RunResult{}, plan_.maps().at(unit_.maps.front()), plan_.search_instance(unit_, 0));
-    std::string line;
-    std::uintmax_t kept_bytes = 0;  // the lines before a damaged one (a journal may hold gigabytes)
-    std::size_t number = 0;
-    bool torn = false;
-    while (std::getline(in, line)) {
-      ++number;
-      json j;
-      try {
-        if (in.eof()) throw std::runtime_error("no newline");
-        j = parse_json_bounded(line, path);
-        if (j.at("key").get<std::string>() == key && j.contains("done")) {
-          const std::string id = j.at("done").get<std::string>();
-          if (id.size() != 16) throw std::runtime_error("bad subtree id");
-          SubtreeTally t;
-          t.vectors = j.at("vectors").get<std::uint64_t>();
-          t.behaviours = j.at("behaviours").get<std::uint64_t>();
-          t.pruned_regions = j.at("pruned_regions").get<std::uint64_t>();
-          t.pruned_vectors = j.at("pruned_vectors").get<std::uint64_t>();
-          const json& bound = j.at("smallest_pruned_bound");
-          if (!bound.is_null()) t.smallest_pruned_bound = bound.get<double>();
-          out.done.emplace(std::stoull(id, nullptr, 16), t);
-        } else if (j.at("key").get<std::string>() == key) {
-          Found f;
-          for (const json& b : j.at("boxes")) {
-            WeightRegion::Box box;
-            for (std::size_t k = 0; k < 4; ++k) {
-              box.lo[k] = b.at(k).get<std::uint32_t>();
-              box.hi[k] = b.at(k + 4).get<std::uint32_t>();
-            }
-            f.behaviour.region.whole.push_back(box);
-          }
-          for (const json& p : j.at("parts")) f.behaviour.region.parts.push_back(part_of(p));
-          f.behaviour.choices = j.at("choices").get<std::vector<int>>();
-          const std::string trace = j.at("trace").get<std::string>();
-          if (trace.size() != 16) throw std::runtime_error("bad trace");
-          f.behaviour.trace = std::stoull(trace, nullptr, 16);
-          for (const json& row : j.at("cells")) {
-            if (row.size() != names.size()) throw std::runtime_error("another build's columns");
+    const JournalShape shape{key, &grid_, instance_count(), names.size()};
+    const std::string_view hint =
+        "; the shard's journal is damaged: delete its searches.json and rerun its `fsweep run --shard i/N`, "
+        "which keeps the lines before this one and redoes the rest";
+    out.done =
+        SearchJournal::read(journal_path(dir), shape, damage, hint, [&](JournaledBehaviour&& journaled) {
+          FoundBehaviour f;
+          f.behaviour = std::move(journaled.behaviour);
+          for (std::vector<std::string>& row : journaled.cells) {
             Columns c = names;
-            for (std::size_t m = 0; m < c.size(); ++m) c[m].second = row.at(m).get<std::string>();
+            for (std::size_t m = 0; m < c.size(); ++m) c[m].second = std::move(row[m]);
             f.cells.push_back(std::move(c));
           }
-          if (!grid_.holds(f.behaviour.region)) throw std::runtime_error("a region outside the search's box");
-          if (f.behaviour.region.empty() ||
-              f.cells.size() != static_cast<std::size_t>(unit_.maps.size()) *
-                                    static_cast<std::size_t>(plan_.repetitions())) {
-            throw std::runtime_error("not a behaviour of this search");
-          }
-          f.behaviour.vectors = grid_.count(f.behaviour.region);
-          f.behaviour.representative = grid_.lexmin(f.behaviour.region);
-          f.behaviour.bounds = grid_.bounds(f.behaviour.region);
           f.objective = objective_of(f.cells);
-          if (admitting) admit(f);
+          if (admitting) tables_.admit(f);
           out.found.push_back(std::move(f));
-        }
-      } catch (const std::exception& e) {
-        if (!repair) {
-          throw ConfigError(path + ":" + std::to_string(number),
-                            std::string(e.what()) +
-                                "; the shard's journal is damaged: delete its searches.json and rerun its "
-                                "`fsweep run --shard i/N`, which keeps the lines before this one and redoes "
-                                "the rest");
-        }
-        std::fprintf(stderr,
-                     "fsweep: %s:%zu: %s; this line and the rest are dropped (the search redoes them)\n",
-                     path.c_str(), number, e.what());
-        torn = true;
-        break;
-      }
-      kept_bytes += line.size() + 1;
-    }
-    in.close();
-    if (torn) std::filesystem::resize_file(path, kept_bytes);
+        });
     return out;
-  }
-
-  /// Header lines (no newline) of the files (report/search_schema.hpp).
-  static std::string behaviours_header(const WeightSearch& s) {
-    return csv_record(behaviours_columns(s.weights));
-  }
-
- private:
-  [[nodiscard]] std::string value_at(int k, int index) const {
-    return format_number(grid_.values(k)[static_cast<std::size_t>(index)]);
-  }
-
-  void write_behaviours(const std::vector<Found>& found, const std::vector<RunSpec>& specs,
-                        SearchRows& rows) const {
-    const int w = grid_.weights();
-    for (std::size_t b = 0; b < found.size(); ++b) {
-      const Behaviour& be = found[b].behaviour;
-      std::vector<std::string> head{id_, std::to_string(b), std::to_string(be.vectors)};
-      for (int k = 0; k < w; ++k) head.push_back(value_at(k, be.representative[static_cast<std::size_t>(k)]));
-      for (int k = 0; k < w; ++k) {
-        head.push_back(value_at(k, be.bounds[static_cast<std::size_t>(k)][0]));
-        head.push_back(value_at(k, be.bounds[static_cast<std::size_t>(k)][1]));
-      }
-      head.push_back(number_cell(found[b].objective));
-      for (std::size_t i = 0; i < found[b].cells.size(); ++i) {
-        std::vector<std::string> row = head;
-        const std::size_t map = unit_.maps[i / static_cast<std::size_t>(plan_.repetitions())];
-        row.push_back(std::to_string(i));
-        row.push_back(plan_.maps().at(map).label);
-        row.push_back(std::to_string(specs[i].seed));
-        for (const auto& [name, cell] : found[b].cells[i]) row.push_back(cell);
-        rows.behaviours += csv_record(row) + '\n';
-      }
-    }
-  }
-
-  void write_summary(const std::vector<Found>& found, std::size_t instances, SearchRows& rows) {
-    const StrategyEntry& entry = plan_.strategies().at(unit_.entry);
-    std::vector<std::string> row{id_,
-                                 entry.label,
-                                 unit_.map_class,
-                                 planner_label(plan_.planners().at(unit_.planner)),
-                                 plan_.robots().at(unit_.robot).label,
-                                 std::to_string(instances),
-                                 std::to_string(grid_.size()),
-                                 std::to_string(found.size())};
-    // End reasons, weighted.
-    for (int r = static_cast<int>(EndReason::Complete); r <= static_cast<int>(EndReason::Error); ++r) {
-      const std::string reason(to_string(static_cast<EndReason>(r)));
-      std::uint64_t count = 0;
-      for (const Found& f : found) {
-        for (const Columns& c : f.cells) count += c.front().second == reason ? f.behaviour.vectors : 0;
-      }
-      row.push_back(std::to_string(count));
-    }
-    // Metrics: counted values over vectors x instances.
-    const Columns& names = found.front().cells.front();
-    for (std::size_t m = 0; m < names.size(); ++m) {
-      if (names[m].first == kEndReasonColumn || names[m].first == kEndDetailColumn ||
-          is_effort_column(names[m].first)) {
-        continue;
-      }
-      std::vector<CountedValue> values;
-      for (const Found& f : found) {
-        for (const auto& v : f.values) {
-          if (!std::isnan(v[m])) values.push_back({v[m], f.behaviour.vectors});
-        }
-      }
-      if (values.empty()) {
-        row.insert(row.end(), kStatisticNames.size(), std::string());
-        continue;
-      }
-      for (const double s : describe_counted(values)) row.push_back(format_number(s));
-    }
-    rows.summary = csv_record(row) + '\n';
-  }
-
- public:
-  static std::string summary_header() { return csv_record(search_summary_columns()); }
-  static std::string best_header(const WeightSearch& s) { return csv_record(search_best_columns(s.weights)); }
-  static std::string ranks_header(const WeightSearch& s) {
-    return csv_record(search_ranks_columns(s.weights));
-  }
-  static std::string heatmaps_header() { return csv_record(search_heatmaps_columns()); }
-  static std::string vectors_header(const WeightSearch& s) { return csv_record(vectors_columns(s.weights)); }
-
- private:
-  /// Vectors strictly better than `objective` and those equal to it.
-  [[nodiscard]] std::pair<std::uint64_t, std::uint64_t> standing(const std::vector<Found>& found,
-                                                                 double objective) const {
-    std::uint64_t better_count = 0;
-    std::uint64_t tied = 0;
-    for (const Found& f : found) {
-      if (better(f.objective, objective, objective_.direction)) better_count += f.behaviour.vectors;
-      const bool equal = f.objective == objective || (std::isnan(f.objective) && std::isnan(objective));
-      if (equal) tied += f.behaviour.vectors;
-    }
-    return {better_count, tied};
-  }
-
-  void write_best_and_ranks(const std::vector<Found>& found, SearchRows& rows) const {
-    std::vector<std::size_t> order(found.size());
-    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-      return better(found[a].objective, found[b].objective, objective_.direction);
-    });
-    std::uint64_t before = 0;        // vectors of the behaviours listed so far
-    std::uint64_t better_count = 0;  // vectors strictly better than this behaviour
-    for (std::size_t r = 0; r < order.size(); ++r) {
-      const Found& f = found[order[r]];
-      if (r == 0 || better(found[order[r - 1]].objective, f.objective, objective_.direction))
-        better_count = before;
-      if (search_.mode == WeightSearch::Mode::Best && better_count > 0) break;
-      std::vector<std::string> row{id_,
-                                   std::to_string(better_count + 1),
-                                   std::to_string(order[r]),
-                                   std::to_string(f.behaviour.vectors),
-                                   std::to_string(better_count),
-                                   number_cell(f.objective)};
-      for (int k = 0; k < grid_.weights(); ++k) {
-        row.push_back(value_at(k, f.behaviour.representative[static_cast<std::size_t>(k)]));
-      }
-      rows.best += csv_record(row) + '\n';
-      before += f.behaviour.vectors;
-    }
-    for (std::size_t r = 0; r < search_.rank.size(); ++r) {
-      const std::vector<double>& vector = search_.rank[r];
-      const auto owner = std::find_if(found.begin(), found.end(), [&](const Found& f) {
-        return std::find(f.ranked.begin(), f.ranked.end(), r) != f.ranked.end();
-      });
-      if (owner == found.end()) throw std::logic_error("exact search: a vector of the box in no behaviour");
-      const auto [better_count, tied] = standing(found, owner->objective);
-      std::vector<std::string> row{id_};
-      for (const double v : vector) row.push_back(format_number(v));
-      row.push_back(std::to_string(owner - found.begin()));
-      row.push_back(number_cell(owner->objective));
-      row.push_back(std::to_string(better_count + 1));
-      row.push_back(std::to_string(better_count));
-      row.push_back(std::to_string(tied));
-      row.push_back(
-          format_number(100.0 * static_cast<double>(better_count) / static_cast<double>(grid_.size())));
-      rows.ranks += csv_record(row) + '\n';
-    }
-  }
-
-  void write_heatmaps(const std::vector<Found>& found, SearchRows& rows) const {
-    // found is in id order, which is the order of the representatives.
-    const auto id_of = [&](const Point& representative) {
-      const auto it =
-          std::lower_bound(found.begin(), found.end(), representative,
-                           [](const Found& f, const Point& p) { return f.behaviour.representative < p; });
-      return static_cast<std::int64_t>(it - found.begin());
-    };
-    for (const HeatMaps::Map& m : heat_.maps()) {
-      const std::size_t nb = grid_.values(m.b).size();
-      for (std::size_t cell = 0; cell < m.best.size(); ++cell) {
-        rows.heatmaps += csv_record({id_, search_.weights[static_cast<std::size_t>(m.a)],
-                                     search_.weights[static_cast<std::size_t>(m.b)],
-                                     value_at(m.a, static_cast<int>(cell / nb)),
-                                     value_at(m.b, static_cast<int>(cell % nb)), number_cell(m.best[cell]),
-                                     std::to_string(m.set[cell] != 0 ? id_of(m.owner[cell]) : -1)}) +
-                         '\n';
-      }
-    }
-  }
-
-  void write_vectors(const std::vector<Found>& found, SearchRows& rows) const {
-    // The owner of every vector, by its lexicographic position in the box.
-    const int w = grid_.weights();
-    std::vector<std::uint32_t> owner(grid_.size());
-    for (std::size_t f = 0; f < found.size(); ++f) {
-      grid_.for_each_point(found[f].behaviour.region, [&](const Point& at) {
-        std::uint64_t index = 0;
-        for (int k = 0; k < w; ++k)
-          index =
-              index * grid_.values(k).size() + static_cast<std::uint64_t>(at[static_cast<std::size_t>(k)]);
-        owner[index] = static_cast<std::uint32_t>(f);
-      });
-    }
-    Point at{};
-    for (std::uint64_t index = 0; index < owner.size(); ++index) {
-      std::uint64_t rest = index;
-      for (int k = w - 1; k >= 0; --k) {
-        const std::uint64_t size = grid_.values(k).size();
-        at[static_cast<std::size_t>(k)] = static_cast<int>(rest % size);
-        rest /= size;
-      }
-      rows.vectors += id_;
-      for (int k = 0; k < w; ++k) rows.vectors += ',' + value_at(k, at[static_cast<std::size_t>(k)]);
-      rows.vectors += ',' + std::to_string(owner[index]) + '\n';
-    }
   }
 
   /// Mode best: what was pruned (null in mode all).
@@ -805,7 +346,7 @@ class SearchWriter {
   }
 
   /// The search's searches.json record. `shards`: the records of the shards it was merged from.
-  [[nodiscard]] json record(const std::vector<Found>& found, const Searched& searched,
+  [[nodiscard]] json record(const std::vector<FoundBehaviour>& found, const Searched& searched,
                             const json& shards) const {
     const ExactSearchStats& stats = searched.stats;
     json box = json::object();
@@ -814,7 +355,7 @@ class SearchWriter {
     for (std::size_t i = 0; i < instance_count(); ++i) specs.push_back(plan_.search_instance_json(unit_, i));
     std::vector<std::string> maps;
     for (const std::size_t m : unit_.maps) maps.push_back(plan_.maps().at(m).label);
-    return json{{kSearchIdColumn, std::stoi(id_)},
+    return json{{kSearchIdColumn, id_},
                 {"strategy_label", plan_.strategies().at(unit_.entry).label},
                 {"map_class", unit_.map_class},
                 {"maps", maps},
@@ -858,13 +399,11 @@ class SearchWriter {
   std::string out_dir_;
   const SweepPlan& plan_;
   const SearchUnit& unit_;
-  std::string id_;
+  std::size_t id_;
   const WeightSearch& search_;
-  WeightGrid grid_;
   const Objective& objective_;
-  /// Mode all: the heat maps and the positions in the grid of the `rank` vectors.
-  HeatMaps heat_;
-  std::vector<Point> rank_points_;
+  SearchTables tables_;
+  const WeightGrid& grid_;
   std::uint64_t optimal_vectors_ = 0;
 };
 
@@ -886,54 +425,6 @@ std::vector<SearchUnit> checked_units(const SweepPlan& plan, const Objective*& o
     }
   }
   return units;
-}
-
-/// Writes the files of the searches `units` of `plan` from their rows (one per unit) into
-/// `out_dir`, searches.json last, and counts them in `report`.
-void write_search_files(const SweepPlan& plan, const std::vector<SearchUnit>& units,
-                        std::vector<SearchRows> rows, const std::string& out_dir, SearchRunReport& report) {
-  const WeightSearch& first = *plan.strategies().at(units.front().entry).search;
-  std::string behaviours = SearchWriter::behaviours_header(first) + '\n';
-  std::string summary = SearchWriter::summary_header() + '\n';
-  std::string best = SearchWriter::best_header(first) + '\n';
-  std::string ranks = SearchWriter::ranks_header(first) + '\n';
-  std::string heatmaps = SearchWriter::heatmaps_header() + '\n';
-  std::string vectors = SearchWriter::vectors_header(first) + '\n';
-  bool any_vectors = false;
-  bool any_all = false;
-  json searches = json::array();
-  for (std::size_t id = 0; id < units.size(); ++id) {
-    const WeightSearch& s = *plan.strategies().at(units[id].entry).search;
-    behaviours += rows[id].behaviours;
-    summary += rows[id].summary;
-    best += rows[id].best;
-    ranks += rows[id].ranks;
-    heatmaps += rows[id].heatmaps;
-    vectors += rows[id].vectors;
-    any_vectors = any_vectors || s.write_vectors;
-    any_all = any_all || s.mode == WeightSearch::Mode::All;
-    (s.mode == WeightSearch::Mode::All ? report.behaviours : report.optimal) +=
-        rows[id].record.at("behaviours").get<std::uint64_t>();
-    report.vectors += s.vectors();
-    searches.push_back(std::move(rows[id].record));
-  }
-  const std::filesystem::path dir(out_dir);
-  std::vector<std::pair<std::string, const std::string*>> files{{kBehavioursFile, &behaviours},
-                                                                {kSearchBestFile, &best}};
-  if (any_all) {
-    files.emplace_back(kSearchSummaryFile, &summary);
-    files.emplace_back(kSearchRanksFile, &ranks);
-    files.emplace_back(kSearchHeatmapsFile, &heatmaps);
-  }
-  if (any_vectors) files.emplace_back(kVectorsFile, &vectors);
-  for (const auto& [name, text] : files) {
-    write_file_atomically((dir / name).string(), *text);
-    report.files.push_back(name);
-  }
-  // Last: its presence marks the search files as complete.
-  write_file_atomically((dir / kSearchesFile).string(), json{{"searches", searches}}.dump(2) + '\n');
-  report.files.emplace_back(kSearchesFile);
-  report.searches = units.size();
 }
 
 }  // namespace

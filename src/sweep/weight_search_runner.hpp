@@ -8,10 +8,9 @@
 /// weighs a behaviour by its number of weight vectors, so it is the statistic over all vectors.
 ///
 /// Resume: every finished behaviour (mode best: every one that was at most the best known
-/// when it finished) is appended to `search_journal.jsonl` as one JSON line (its search's key,
-/// trace, region, choices and metric cells per instance), and so is every finished subtree of
-/// the region tree (its id and SubtreeTally), each flushed at once. A rerun reads the lines of
-/// its search's key (instances, box, objective, mode and journal format), keeps those
+/// when it finished) is appended to `search_journal.jsonl` (weightsearch/search_journal.hpp),
+/// and so is every finished subtree of the region tree, each at once. A rerun reads the lines
+/// of its search's key (instances, box, objective, mode and journal format), keeps those
 /// behaviours and skips the journaled subtrees and behaviours where its tree reaches them
 /// (exact_search's `journal`; mode best starts with the best of them as its incumbent): the
 /// CSV files are the same as an uninterrupted search's. A line that does not parse (torn by a

@@ -1,0 +1,166 @@
+#include "weightsearch/search_journal.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "core/config_error.hpp"
+#include "core/json_text.hpp"
+#include "core/random.hpp"
+
+namespace fsweep {
+inline namespace weightsearch {
+namespace {
+
+using nlohmann::json;
+
+/// 16 hex digits as a number (a trace or a subtree id).
+std::uint64_t hex_id(const json& j, const char* what) {
+  const std::string hex = j.get<std::string>();
+  if (hex.size() != 16) throw std::runtime_error(std::string("bad ") + what);
+  return std::stoull(hex, nullptr, 16);
+}
+
+/// A part of a journaled region: its block and its points as point_runs(), or (journals
+/// written before the point runs, format 3 too) as the 64 words of its bits in hexadecimal.
+WeightRegion::Part part_of(const json& p) {
+  WeightRegion::Part part;
+  part.block = p.at(0).get<std::uint32_t>();
+  const json& points = p.at(1);
+  if (points.is_array()) {
+    part.bits = bits_of_runs(points.get<std::vector<std::uint32_t>>());
+  } else {
+    const std::string hex = points.get<std::string>();
+    if (hex.size() != part.bits.size() * 16) throw std::runtime_error("bad part");
+    for (std::size_t w = 0; w < part.bits.size(); ++w) {
+      part.bits[w] = std::stoull(hex.substr(w * 16, 16), nullptr, 16);
+    }
+  }
+  return part;
+}
+
+SubtreeTally tally_of(const json& j) {
+  SubtreeTally t;
+  t.vectors = j.at("vectors").get<std::uint64_t>();
+  t.behaviours = j.at("behaviours").get<std::uint64_t>();
+  t.pruned_regions = j.at("pruned_regions").get<std::uint64_t>();
+  t.pruned_vectors = j.at("pruned_vectors").get<std::uint64_t>();
+  const json& bound = j.at("smallest_pruned_bound");
+  if (!bound.is_null()) t.smallest_pruned_bound = bound.get<double>();
+  return t;
+}
+
+/// A behaviour line's behaviour, checked against `shape`.
+JournaledBehaviour behaviour_of(const json& j, const JournalShape& shape) {
+  JournaledBehaviour out;
+  Behaviour& b = out.behaviour;
+  for (const json& box_json : j.at("boxes")) {
+    WeightRegion::Box box;
+    for (std::size_t k = 0; k < 4; ++k) {
+      box.lo[k] = box_json.at(k).get<std::uint32_t>();
+      box.hi[k] = box_json.at(k + 4).get<std::uint32_t>();
+    }
+    b.region.whole.push_back(box);
+  }
+  for (const json& p : j.at("parts")) b.region.parts.push_back(part_of(p));
+  b.choices = j.at("choices").get<std::vector<int>>();
+  b.trace = hex_id(j.at("trace"), "trace");
+  for (const json& row : j.at("cells")) {
+    if (row.size() != shape.cells) throw std::runtime_error("another build's columns");
+    out.cells.push_back(row.get<std::vector<std::string>>());
+  }
+  const WeightGrid& grid = *shape.grid;
+  if (!grid.holds(b.region)) throw std::runtime_error("a region outside the search's box");
+  if (b.region.empty() || out.cells.size() != shape.instances) {
+    throw std::runtime_error("not a behaviour of this search");
+  }
+  b.vectors = grid.count(b.region);
+  b.representative = grid.lexmin(b.region);
+  b.bounds = grid.bounds(b.region);
+  return out;
+}
+
+}  // namespace
+
+std::unordered_map<std::uint64_t, SubtreeTally> SearchJournal::read(
+    const std::string& path, const JournalShape& shape, JournalDamage damage, std::string_view hint,
+    const std::function<void(JournaledBehaviour&&)>& each) {
+  std::unordered_map<std::uint64_t, SubtreeTally> done;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return done;
+  std::string line;
+  std::uintmax_t kept_bytes = 0;  // the lines before a damaged one (a journal may hold gigabytes)
+  std::size_t number = 0;
+  bool torn = false;
+  while (std::getline(in, line)) {
+    ++number;
+    try {
+      if (in.eof()) throw std::runtime_error("no newline");
+      const json j = parse_json_bounded(line, path);
+      if (j.at("key").get<std::string>() == shape.key) {
+        if (j.contains("done")) {
+          done.emplace(hex_id(j.at("done"), "subtree id"), tally_of(j));
+        } else {
+          each(behaviour_of(j, shape));
+        }
+      }
+    } catch (const std::exception& e) {
+      if (damage == JournalDamage::Refuse) {
+        throw ConfigError(path + ":" + std::to_string(number), std::string(e.what()) + std::string(hint));
+      }
+      std::fprintf(stderr,
+                   "fsweep: %s:%zu: %s; this line and the rest are dropped (the search redoes them)\n",
+                   path.c_str(), number, e.what());
+      torn = true;
+      break;
+    }
+    kept_bytes += line.size() + 1;
+  }
+  in.close();
+  if (torn) {
+    std::error_code ec;
+    std::filesystem::resize_file(path, kept_bytes, ec);
+    if (ec) throw ConfigError(path, "cannot cut off its damaged lines: " + ec.message());
+  }
+  return done;
+}
+
+void SearchJournal::append(const std::string& key, const Behaviour& behaviour,
+                           const std::vector<std::vector<std::string>>& cells) {
+  json boxes = json::array();
+  for (const WeightRegion::Box& b : behaviour.region.whole) {
+    boxes.push_back({b.lo[0], b.lo[1], b.lo[2], b.lo[3], b.hi[0], b.hi[1], b.hi[2], b.hi[3]});
+  }
+  json parts = json::array();
+  for (const WeightRegion::Part& p : behaviour.region.parts) parts.push_back({p.block, point_runs(p.bits)});
+  file_.write(json{{"key", key},
+                   {"trace", hex64(behaviour.trace)},
+                   {"boxes", boxes},
+                   {"parts", parts},
+                   {"choices", behaviour.choices},
+                   {"cells", cells}}
+                  .dump() +
+              '\n');
+}
+
+void SearchJournal::append_done(const std::string& key, std::uint64_t id, const SubtreeTally& tally) {
+  file_.write(
+      json{{"key", key},
+           {"done", hex64(id)},
+           {"vectors", tally.vectors},
+           {"behaviours", tally.behaviours},
+           {"pruned_regions", tally.pruned_regions},
+           {"pruned_vectors", tally.pruned_vectors},
+           {"smallest_pruned_bound",
+            std::isfinite(tally.smallest_pruned_bound) ? json(tally.smallest_pruned_bound) : json(nullptr)}}
+          .dump() +
+      '\n');
+}
+
+}  // namespace weightsearch
+}  // namespace fsweep
