@@ -127,7 +127,8 @@ TEST(SearchJournal, RepairCutsADamagedLineAndEverythingAfterIt) {
   const std::string good = contents(path);
   {
     std::ofstream out(path, std::ios::app | std::ios::binary);
-    out << R"({"key": "k", "done": "00"})" << '\n' << good << R"({"key":)";  // bad id, a good line, a torn one
+    out << R"({"key": "k", "done": "00"})" << '\n'
+        << good << R"({"key":)";  // bad id, a good line, a torn one
   }
   Read read;
   testing::internal::CaptureStderr();
