@@ -26,6 +26,7 @@ Command add_report_command(CLI::App& app);
 Command add_describe_command(CLI::App& app);
 Command add_export_sqlite_command(CLI::App& app);
 Command add_paired_command(CLI::App& app);
+Command add_verify_command(CLI::App& app);
 Command add_version_command(CLI::App& app);
 Command add_completion_command(CLI::App& app);
 

@@ -55,6 +55,7 @@ int main(int argc, char** argv) try {
   commands["report"] = fsweep::cli::add_report_command(app);
   commands["describe"] = fsweep::cli::add_describe_command(app);
   commands["export-sqlite"] = fsweep::cli::add_export_sqlite_command(app);
+  commands["verify"] = fsweep::cli::add_verify_command(app);
   commands["version"] = fsweep::cli::add_version_command(app);
   commands["completion"] = fsweep::cli::add_completion_command(app);
   fsweep::cli::check_number_options(app);

@@ -7,13 +7,11 @@
 
 #include "cli/commands.hpp"
 #include "cli/output_dir.hpp"
+#include "cli/problem_list.hpp"
 #include "sweep/merge.hpp"
 
 namespace fsweep::cli {
 namespace {
-
-/// Problems listed in full before the rest are only counted.
-constexpr std::size_t kListedProblems = 20;
 
 struct MergeCommandOptions {
   std::string dir;
@@ -27,11 +25,7 @@ int run_merge(const MergeCommandOptions& o) {
     std::cerr << "fsweep merge: " << o.dir << ": " << r.problems.size() << " problem(s), nothing written ("
               << r.rows << " runs.csv rows in the shards of a " << r.shard_count << "-way split, sweep of "
               << r.total << " runs):\n";
-    for (std::size_t i = 0; i < r.problems.size() && i < kListedProblems; ++i)
-      std::cerr << "  " << r.problems[i] << '\n';
-    if (r.problems.size() > kListedProblems) {
-      std::cerr << "  ... and " << r.problems.size() - kListedProblems << " more\n";
-    }
+    print_problems(std::cerr, r.problems);
     std::cerr
         << "rerun the failed or missing shards (fsweep run SWEEP --shard i/N resumes a partial shard)\n";
     return 1;

@@ -32,13 +32,14 @@ constexpr const char* kRankingMetrics[] = {"distance_m",
                                            "recharges"};
 
 /// A table cell: its text (escaped when written) and whether it holds a number (right-aligned).
-struct Cell {
+struct TableCell {
   std::string text;
   bool number = false;
 };
 
 /// A <table> with a header row, rows of cells and a class per row ("" for none).
-std::string table_html(const std::vector<std::string>& header, const std::vector<std::vector<Cell>>& rows,
+std::string table_html(const std::vector<std::string>& header,
+                       const std::vector<std::vector<TableCell>>& rows,
                        const std::vector<std::string>& row_classes) {
   std::ostringstream out;
   out << "<div class='scroll'><table class='readable'><tr>";
@@ -46,7 +47,7 @@ std::string table_html(const std::vector<std::string>& header, const std::vector
   out << "</tr>\n";
   for (std::size_t r = 0; r < rows.size(); ++r) {
     out << (row_classes[r].empty() ? "<tr>" : "<tr class='" + row_classes[r] + "'>");
-    for (const Cell& c : rows[r])
+    for (const TableCell& c : rows[r])
       out << (c.number ? "<td class='num'>" : "<td>") << html_escape(c.text) << "</td>";
     out << "</tr>\n";
   }
@@ -209,7 +210,7 @@ std::string ranking_html(const ResultDir& r) {
   for (const ClassRanking& c : r.rankings) {
     if (r.rankings.size() > 1 || !c.map_class.empty())
       out << "<h3>map class " << html_escape(c.map_class) << "</h3>\n";
-    std::vector<std::vector<Cell>> table;
+    std::vector<std::vector<TableCell>> table;
     std::vector<std::string> classes;
     for (std::size_t i = 0; i < c.rows.size(); ++i, ++k) {
       const auto& row = c.rows[i];
@@ -269,7 +270,7 @@ std::string paired_html(const PairedTable& table, const std::string& baseline_fr
          "precision, "
          "to paired.csv.</p>\n";
   std::string block, metric_of_last;
-  std::vector<std::vector<Cell>> rows;
+  std::vector<std::vector<TableCell>> rows;
   const std::vector<std::string> header{"metric",
                                         "strategy",
                                         "pairs",
@@ -391,9 +392,9 @@ std::string optimum_html(const std::string& runs_csv) {
   header.insert(header.end(), {"lower bound (m)", "upper bound (m)", "gap", "exact"});
   if (any_star) header.push_back("star optimum (m)");
   header.insert(header.end(), {"runs with a ratio", "why not (runs)"});
-  std::vector<std::vector<Cell>> cells;
+  std::vector<std::vector<TableCell>> cells;
   for (const Row& r : rows) {
-    std::vector<Cell> line{{r.map, false}};
+    std::vector<TableCell> line{{r.map, false}};
     for (const std::size_t k : differ) line.push_back({r.robot[k], false});
     const auto lo = parse_number(r.lower);
     const auto up = parse_number(r.upper);

@@ -9,6 +9,10 @@
 namespace fsweep {
 inline namespace report {
 
+std::string search_certificate_file(std::size_t id) {
+  return "search_certificate_" + std::to_string(id) + ".jsonl";
+}
+
 std::vector<std::string> behaviours_columns(std::span<const std::string> weights) {
   std::vector<std::string> h{kSearchIdColumn, kBehaviourIdColumn, kVectorsColumn};
   for (const auto& w : weights) h.push_back(w);

@@ -24,6 +24,10 @@ inline constexpr char kSearchRanksFile[] = "search_ranks.csv";
 inline constexpr char kSearchHeatmapsFile[] = "search_heatmaps.csv";
 inline constexpr char kVectorsFile[] = "vectors.csv";
 inline constexpr char kSearchJournalFile[] = "search_journal.jsonl";
+/// Mode best's certificate of search `id` (docs/dev/weight-search-design.md, "The certificate").
+[[nodiscard]] std::string search_certificate_file(std::size_t id);
+/// The certificate's format, its header's "format".
+inline constexpr char kCertificateFormat[] = "fsweep weight search certificate 1";
 
 // ---- Column names readers look up.
 inline constexpr char kSearchIdColumn[] = "search_id";

@@ -197,6 +197,7 @@ template <typename Ask>
 bool Simulation::step_with(Ask&& ask) {
   pending_.reset();
   if (recorder_.ended()) return false;
+  ++steps_taken_;
   const auto t_start = Clock::now();
   const RunSetup& setup = *setup_;
   RunMetrics& m = recorder_.metrics();

@@ -108,6 +108,10 @@ class Simulation {
   /// equal traces decided alike (but for a 64-bit collision). The exact search identifies
   /// behaviours by it (Behaviour::trace).
   [[nodiscard]] std::uint64_t decision_trace() const { return trace_; }
+  /// How many calls of step() or step_choosing() found the run going (each one decision, or the
+  /// end at the step cap): a run's state is a function of its spec, its weights and this count.
+  /// The weight search's certificate names the state where it pruned a region by it.
+  [[nodiscard]] std::uint64_t steps_taken() const { return steps_taken_; }
 
   [[nodiscard]] bool ended() const { return recorder_.ended(); }
   /// The metrics counted so far, without the map-dependent ones result() completes (areas,
@@ -171,6 +175,7 @@ class Simulation {
   std::optional<PendingChoice> pending_;
   /// decision_trace().
   std::uint64_t trace_ = 0;
+  std::uint64_t steps_taken_ = 0;
 };
 
 /// Runs `spec` to the end: a pure function of the spec (and its seed).

@@ -26,10 +26,12 @@
 #include "core/json_text.hpp"
 #include "core/statistics.hpp"
 #include "report/runs_schema.hpp"
+#include "report/search_objective.hpp"
 #include "report/search_schema.hpp"
 #include "sim/heuristics.hpp"
 #include "sweep/manifest.hpp"
 #include "sweep/progress_meter.hpp"
+#include "sweep/search_certificate.hpp"
 #include "sweep/search_tables.hpp"
 #include "sweep/sweep_table.hpp"
 #include "weightsearch/exact_search.hpp"
@@ -46,6 +48,8 @@ using nlohmann::json;
 struct Journal {
   std::vector<FoundBehaviour> found;
   std::unordered_map<std::uint64_t, SubtreeTally> done;
+  /// Branch and bound's other leaves (pruned and beaten): their paths and tallies.
+  std::vector<std::pair<std::vector<int>, SubtreeTally>> leaves;
 };
 
 /// The cells' text, per instance (a journal line holds no column names).
@@ -70,44 +74,6 @@ Columns instance_cells(const RunResult& result, const SweepMap& map, const RunSp
                                                  ? std::string()
                                                  : format_number(result.metrics.distance_m / optimum));
   return cells;
-}
-
-/// The value of metric column `column` of a run (NaN: none).
-double metric_value(const RunResult& result, std::string_view column) {
-  for (const auto& [name, cell] : metric_columns(result)) {
-    if (name == column) return metric_number(cell);
-  }
-  throw std::logic_error("no metric column " + std::string(column));
-}
-
-/// A behaviour's objective: the mean over its instances' runs, summed in instance order.
-double class_objective(const std::vector<RunResult>& results, const Objective& objective) {
-  double sum = 0.0;
-  for (const RunResult& r : results) sum += metric_value(r, objective.column);
-  return sum / static_cast<double>(results.size());
-}
-
-/// Branch and bound's admissible lower bound of class_objective() (signed: for a maximised
-/// objective, of its negation) over the behaviours that continue `sims`. Both minimised
-/// objectives only grow as a run goes on, so their values so far bound them, summed in the same
-/// order (rounding is monotone):
-/// - distance_to_final_coverage_m: the distance at the last reveal so far (the final coverage
-///   is reached at a reveal no earlier than it);
-/// - energy: the energy used so far (every step costs energy >= 0).
-/// Nothing is known of area_per_metre: -infinity (no pruning).
-double class_lower_bound(std::span<const Simulation> sims, const Objective& objective) {
-  double sum = 0.0;
-  for (const Simulation& s : sims) {
-    const RunMetrics& m = s.metrics_so_far();
-    if (objective.column == "distance_to_final_coverage_m") {
-      sum += m.distance_to_final_coverage_m;
-    } else if (objective.column == "energy") {
-      sum += m.energy;
-    } else {
-      return -std::numeric_limits<double>::infinity();
-    }
-  }
-  return sum / static_cast<double>(sims.size());
 }
 
 /// What one search (or one shard's, or the shards' merged) found.
@@ -159,6 +125,7 @@ class SearchWriter {
       done.emplace(subtree_of(root_id, f.behaviour.choices), leaf);
       if (!std::isnan(f.objective)) incumbent = std::min(incumbent, sign * f.objective);
     }
+    for (const auto& [choices, leaf] : journaled.leaves) done.emplace(subtree_of(root_id, choices), leaf);
     out.resumed = found.size();
     SearchJournal journal(journal_path(out_dir_));
     SubtreeJournal subtrees;
@@ -187,6 +154,10 @@ class SearchWriter {
       };
       bnb.lower_bound = [&](std::span<const Simulation> sims) { return class_lower_bound(sims, objective_); };
       bnb.on_pruned = on_vectors;
+      bnb.on_leaf = [&](const CertifiedLeaf& leaf) {
+        if (leaf.kind == CertifiedLeaf::Kind::Beaten) on_vectors(leaf.vectors);
+        journal.append_leaf(key, leaf);
+      };
       bnb.incumbent = incumbent;
       out.stats = exact_search(specs, grid_, threads, keep, &bnb, &root, &subtrees, stop);
     }
@@ -197,7 +168,10 @@ class SearchWriter {
   /// The rows of the files for the behaviours of the whole grid (one search's, or the shards'
   /// merged by merged()). Mode best keeps the optimal ones (every tie): the others were found
   /// before a better one was.
-  SearchRows rows(Searched searched, const json& shards = nullptr) {
+  /// `journal_dirs`: the directories of the journals that hold its lines (mode best writes its
+  /// certificate from them).
+  SearchRows rows(Searched searched, const std::vector<std::string>& journal_dirs,
+                  const json& shards = nullptr) {
     std::vector<FoundBehaviour>& found = searched.found;
     if (search_.mode == WeightSearch::Mode::Best) {
       const double sign = direction_sign();
@@ -212,6 +186,9 @@ class SearchWriter {
     SearchRows rows;
     tables_.format(found, instance_specs(), rows);
     rows.record = record(found, searched, shards);
+    if (search_.mode == WeightSearch::Mode::Best) {
+      rows.record["certificate"].update(write_certificate(journal_dirs, searched.stats.best));
+    }
     return rows;
   }
 
@@ -306,26 +283,76 @@ class SearchWriter {
   [[nodiscard]] Journal read_journal(const std::string& key, const std::string& dir, JournalDamage damage,
                                      bool admitting) {
     Journal out;
-    const Columns names =
-        instance_cells(RunResult{}, plan_.maps().at(unit_.maps.front()), plan_.search_instance(unit_, 0));
-    const JournalShape shape{key, &grid_, instance_count(), names.size()};
+    const Columns names = cell_names();
     const std::string_view hint =
         "; the shard's journal is damaged: delete its searches.json and rerun its `fsweep run --shard i/N`, "
         "which keeps the lines before this one and redoes the rest";
+    const auto behaviour = [&](JournaledBehaviour&& journaled) {
+      FoundBehaviour f;
+      f.behaviour = std::move(journaled.behaviour);
+      for (std::vector<std::string>& row : journaled.cells) {
+        Columns c = names;
+        for (std::size_t m = 0; m < c.size(); ++m) c[m].second = std::move(row[m]);
+        f.cells.push_back(std::move(c));
+      }
+      f.objective = objective_of(f.cells);
+      if (admitting) tables_.admit(f);
+      out.found.push_back(std::move(f));
+    };
+    const auto leaf = [&](JournaledLeaf&& l) {
+      SubtreeTally t;
+      t.vectors = l.vectors;
+      if (l.kind == CertifiedLeaf::Kind::Pruned) {
+        t.pruned_regions = 1;
+        t.pruned_vectors = l.vectors;
+        t.smallest_pruned_bound = l.value;
+      } else {
+        t.behaviours = 1;
+      }
+      out.leaves.emplace_back(std::move(l.choices), t);
+    };
     out.done =
-        SearchJournal::read(journal_path(dir), shape, damage, hint, [&](JournaledBehaviour&& journaled) {
-          FoundBehaviour f;
-          f.behaviour = std::move(journaled.behaviour);
-          for (std::vector<std::string>& row : journaled.cells) {
-            Columns c = names;
-            for (std::size_t m = 0; m < c.size(); ++m) c[m].second = std::move(row[m]);
-            f.cells.push_back(std::move(c));
-          }
-          f.objective = objective_of(f.cells);
-          if (admitting) tables_.admit(f);
-          out.found.push_back(std::move(f));
-        });
+        SearchJournal::read(journal_path(dir), journal_shape(key, names), damage, hint, behaviour, leaf);
     return out;
+  }
+
+  /// The columns of a behaviour's cells per instance.
+  [[nodiscard]] Columns cell_names() const {
+    return instance_cells(RunResult{}, plan_.maps().at(unit_.maps.front()), plan_.search_instance(unit_, 0));
+  }
+  [[nodiscard]] JournalShape journal_shape(const std::string& key, const Columns& names) const {
+    return JournalShape{key, &grid_, instance_count(), names.size()};
+  }
+
+  /// Mode best: writes the certificate of the whole search from the journals in `dirs` (its own,
+  /// or its shards') and returns its note for searches.json (null in mode all).
+  [[nodiscard]] json write_certificate(const std::vector<std::string>& dirs, double optimum) const {
+    if (search_.mode != WeightSearch::Mode::Best) return nullptr;
+    CertificateSource source;
+    for (const std::string& dir : dirs) source.journals.push_back(journal_path(dir));
+    const Columns names = cell_names();
+    source.shape = journal_shape(unit_key(instance_count()), names);
+    source.objective_cell =
+        static_cast<std::size_t>(std::find_if(names.begin(), names.end(),
+                                              [&](const auto& c) { return c.first == objective_.column; }) -
+                                 names.begin());
+    source.sign = direction_sign();
+    json instances = json::array();
+    for (std::size_t i = 0; i < instance_count(); ++i)
+      instances.push_back(plan_.search_instance_json(unit_, i));
+    const json header{{"format", kCertificateFormat},
+                      {kSearchIdColumn, id_},
+                      {"strategy_label", plan_.strategies().at(unit_.entry).label},
+                      {"map_class", unit_.map_class},
+                      {"weights", search_.weights},
+                      {"values", search_.values},
+                      {"objective", std::string(objective_.name)},
+                      {"objective_column", objective_.column},
+                      {"direction", objective_.direction == Direction::Minimize ? "minimize" : "maximize"},
+                      {"optimum", std::isfinite(optimum) ? json(direction_sign() * optimum) : json(nullptr)},
+                      {"vectors", grid_.size()},
+                      {"instances", instances}};
+    return write_search_certificate(out_dir_ + "/" + search_certificate_file(id_), header, source);
   }
 
   /// Mode best: what was pruned (null in mode all).
@@ -476,7 +503,7 @@ SearchRunReport run_weight_searches(const SweepPlan& plan, const std::string& ou
     if (shard_count > 1) {
       shard_records.push_back(writer.shard_record(searched, shard_index, shard_count));
     } else {
-      rows.push_back(writer.rows(std::move(searched)));
+      rows.push_back(writer.rows(std::move(searched), {out_dir}));
     }
   }
   meter.finish(done, 0);
@@ -526,7 +553,7 @@ SearchRunReport merge_weight_searches(const SweepPlan& plan, const std::string& 
   std::vector<SearchRows> rows;
   for (std::size_t id = 0; id < units.size(); ++id) {
     SearchWriter writer(plan, units[id], id, *objective, out_dir);
-    rows.push_back(writer.rows(writer.merged(shard_dirs, records[id]), json(records[id])));
+    rows.push_back(writer.rows(writer.merged(shard_dirs, records[id]), shard_dirs, json(records[id])));
   }
   write_search_files(plan, units, std::move(rows), out_dir, report);
   report.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -251,6 +251,15 @@ class Explorer {
     {
       const std::lock_guard<std::mutex> lock(mutex_);
       b.node->tally.add(leaf);
+      if (bnb_->on_leaf) {
+        CertifiedLeaf certified;
+        certified.region = &b.region;
+        certified.choices = b.choices;
+        certified.vectors = *b.vectors;
+        certified.value = bound;
+        for (const Simulation& s : b.sims) certified.steps.push_back(s.steps_taken());
+        bnb_->on_leaf(certified);
+      }
     }
     release(b.node);
     return true;
@@ -300,7 +309,20 @@ class Explorer {
       const double objective = bnb_->objective(out.results);
       if (!std::isnan(objective)) lower_to(best_, objective);
       // No value, or a better behaviour is known: this one is not optimal.
-      if (std::isnan(objective) || objective > best_.load()) return release(node);
+      if (std::isnan(objective) || objective > best_.load()) {
+        if (bnb_->on_leaf) {
+          CertifiedLeaf certified;
+          certified.kind = CertifiedLeaf::Kind::Beaten;
+          certified.region = &out.region;
+          certified.choices = out.choices;
+          certified.vectors = out.vectors;
+          certified.value = objective;
+          certified.trace = out.trace;
+          const std::lock_guard<std::mutex> lock(mutex_);
+          bnb_->on_leaf(certified);
+        }
+        return release(node);
+      }
     }
     {
       const std::lock_guard<std::mutex> lock(mutex_);

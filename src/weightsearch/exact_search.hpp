@@ -53,6 +53,28 @@ struct Behaviour {
   std::vector<RunResult> results;
 };
 
+/// A leaf of the region tree that branch and bound does not report as a behaviour: a region it
+/// pruned, or a finished behaviour that a better one beat. With the behaviours it reports they
+/// partition the searched region, which is what its certificate lists
+/// (docs/dev/weight-search-design.md, "The certificate").
+struct CertifiedLeaf {
+  enum class Kind { Pruned, Beaten };
+  Kind kind = Kind::Pruned;
+  /// Its weight vectors and its path in the region tree (as Behaviour::choices).
+  const WeightRegion* region = nullptr;
+  std::span<const int> choices;
+  /// The vectors in it.
+  std::uint64_t vectors = 0;
+  /// Pruned: the lower bound that exceeded the best objective then known. Beaten: its objective
+  /// (NaN: none). Both as BranchAndBound minimises them.
+  double value = 0.0;
+  /// Pruned: per instance, Simulation::steps_taken() of its runs when the bound was taken (the
+  /// runs of any vector of the region are in that state then). Beaten: empty.
+  std::vector<std::uint64_t> steps;
+  /// Beaten: its decisions' hash (as Behaviour::trace). Pruned: 0.
+  std::uint64_t trace = 0;
+};
+
 /// Branch and bound: the search for the behaviours that minimise an objective, leaving out
 /// regions that provably cannot hold one.
 struct BranchAndBound {
@@ -66,6 +88,9 @@ struct BranchAndBound {
   std::function<double(std::span<const Simulation>)> lower_bound;
   /// Called with the vector count of each pruned region (progress); may be empty.
   std::function<void(std::uint64_t)> on_pruned;
+  /// Called for every leaf not reported as a behaviour (as on_behaviour: from any thread, never
+  /// at once with it or another call); may be empty.
+  std::function<void(const CertifiedLeaf&)> on_leaf;
   /// The objective of a behaviour known before the search (e.g. found by a killed search that
   /// is resumed): regions whose bound exceeds it are pruned from the start. +infinity: none.
   double incumbent = std::numeric_limits<double>::infinity();

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
@@ -55,30 +56,68 @@ SubtreeTally tally_of(const json& j) {
   return t;
 }
 
-/// A behaviour line's behaviour, checked against `shape`.
-JournaledBehaviour behaviour_of(const json& j, const JournalShape& shape) {
-  JournaledBehaviour out;
-  Behaviour& b = out.behaviour;
+/// A line's region ("boxes" and "parts"), checked to lie in the search's box and hold a vector.
+WeightRegion region_of(const json& j, const WeightGrid& grid) {
+  WeightRegion region;
   for (const json& box_json : j.at("boxes")) {
     WeightRegion::Box box;
     for (std::size_t k = 0; k < 4; ++k) {
       box.lo[k] = box_json.at(k).get<std::uint32_t>();
       box.hi[k] = box_json.at(k + 4).get<std::uint32_t>();
     }
-    b.region.whole.push_back(box);
+    region.whole.push_back(box);
   }
-  for (const json& p : j.at("parts")) b.region.parts.push_back(part_of(p));
+  for (const json& p : j.at("parts")) region.parts.push_back(part_of(p));
+  if (!grid.holds(region)) throw std::runtime_error("a region outside the search's box");
+  if (region.empty()) throw std::runtime_error("an empty region");
+  return region;
+}
+
+/// The region's boxes and parts as a line holds them.
+void put_region(json& line, const WeightRegion& region) {
+  json boxes = json::array();
+  for (const WeightRegion::Box& b : region.whole) {
+    boxes.push_back({b.lo[0], b.lo[1], b.lo[2], b.lo[3], b.hi[0], b.hi[1], b.hi[2], b.hi[3]});
+  }
+  json parts = json::array();
+  for (const WeightRegion::Part& p : region.parts) parts.push_back({p.block, point_runs(p.bits)});
+  line["boxes"] = std::move(boxes);
+  line["parts"] = std::move(parts);
+}
+
+/// A leaf line's leaf.
+JournaledLeaf leaf_of(const json& j, const JournalShape& shape) {
+  JournaledLeaf out;
+  const std::string kind = j.at("leaf").get<std::string>();
+  if (kind != "pruned" && kind != "beaten") throw std::runtime_error("a leaf neither pruned nor beaten");
+  out.kind = kind == "pruned" ? CertifiedLeaf::Kind::Pruned : CertifiedLeaf::Kind::Beaten;
+  out.region = region_of(j, *shape.grid);
+  out.choices = j.at("choices").get<std::vector<int>>();
+  out.vectors = shape.grid->count(out.region);
+  const json& value = j.at("value");
+  out.value = value.is_null() ? std::numeric_limits<double>::quiet_NaN() : value.get<double>();
+  if (out.kind == CertifiedLeaf::Kind::Pruned) {
+    out.steps = j.at("steps").get<std::vector<std::uint64_t>>();
+    if (out.steps.size() != shape.instances) throw std::runtime_error("not a leaf of this search");
+  } else {
+    out.trace = hex_id(j.at("trace"), "trace");
+  }
+  return out;
+}
+
+/// A behaviour line's behaviour, checked against `shape`.
+JournaledBehaviour behaviour_of(const json& j, const JournalShape& shape) {
+  JournaledBehaviour out;
+  Behaviour& b = out.behaviour;
   b.choices = j.at("choices").get<std::vector<int>>();
   b.trace = hex_id(j.at("trace"), "trace");
   for (const json& row : j.at("cells")) {
     if (row.size() != shape.cells) throw std::runtime_error("another build's columns");
     out.cells.push_back(row.get<std::vector<std::string>>());
   }
+  if (out.cells.size() != shape.instances) throw std::runtime_error("not a behaviour of this search");
   const WeightGrid& grid = *shape.grid;
-  if (!grid.holds(b.region)) throw std::runtime_error("a region outside the search's box");
-  if (b.region.empty() || out.cells.size() != shape.instances) {
-    throw std::runtime_error("not a behaviour of this search");
-  }
+  b.region = region_of(j, grid);
   b.vectors = grid.count(b.region);
   b.representative = grid.lexmin(b.region);
   b.bounds = grid.bounds(b.region);
@@ -89,7 +128,8 @@ JournaledBehaviour behaviour_of(const json& j, const JournalShape& shape) {
 
 std::unordered_map<std::uint64_t, SubtreeTally> SearchJournal::read(
     const std::string& path, const JournalShape& shape, JournalDamage damage, std::string_view hint,
-    const std::function<void(JournaledBehaviour&&)>& each) {
+    const std::function<void(JournaledBehaviour&&)>& each,
+    const std::function<void(JournaledLeaf&&)>& each_leaf) {
   std::unordered_map<std::uint64_t, SubtreeTally> done;
   std::ifstream in(path, std::ios::binary);
   if (!in) return done;
@@ -105,6 +145,9 @@ std::unordered_map<std::uint64_t, SubtreeTally> SearchJournal::read(
       if (j.at("key").get<std::string>() == shape.key) {
         if (j.contains("done")) {
           done.emplace(hex_id(j.at("done"), "subtree id"), tally_of(j));
+        } else if (j.contains("leaf")) {
+          JournaledLeaf leaf = leaf_of(j, shape);
+          if (each_leaf) each_leaf(std::move(leaf));
         } else {
           each(behaviour_of(j, shape));
         }
@@ -132,20 +175,25 @@ std::unordered_map<std::uint64_t, SubtreeTally> SearchJournal::read(
 
 void SearchJournal::append(const std::string& key, const Behaviour& behaviour,
                            const std::vector<std::vector<std::string>>& cells) {
-  json boxes = json::array();
-  for (const WeightRegion::Box& b : behaviour.region.whole) {
-    boxes.push_back({b.lo[0], b.lo[1], b.lo[2], b.lo[3], b.hi[0], b.hi[1], b.hi[2], b.hi[3]});
+  json line{
+      {"key", key}, {"trace", hex64(behaviour.trace)}, {"choices", behaviour.choices}, {"cells", cells}};
+  put_region(line, behaviour.region);
+  file_.write(line.dump() + '\n');
+}
+
+void SearchJournal::append_leaf(const std::string& key, const CertifiedLeaf& leaf) {
+  const bool pruned = leaf.kind == CertifiedLeaf::Kind::Pruned;
+  json line{{"key", key},
+            {"leaf", pruned ? "pruned" : "beaten"},
+            {"choices", leaf.choices},
+            {"value", std::isnan(leaf.value) ? json(nullptr) : json(leaf.value)}};
+  if (pruned) {
+    line["steps"] = leaf.steps;
+  } else {
+    line["trace"] = hex64(leaf.trace);
   }
-  json parts = json::array();
-  for (const WeightRegion::Part& p : behaviour.region.parts) parts.push_back({p.block, point_runs(p.bits)});
-  file_.write(json{{"key", key},
-                   {"trace", hex64(behaviour.trace)},
-                   {"boxes", boxes},
-                   {"parts", parts},
-                   {"choices", behaviour.choices},
-                   {"cells", cells}}
-                  .dump() +
-              '\n');
+  put_region(line, *leaf.region);
+  file_.write(line.dump() + '\n');
 }
 
 void SearchJournal::append_done(const std::string& key, std::uint64_t id, const SubtreeTally& tally) {

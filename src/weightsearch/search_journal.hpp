@@ -11,7 +11,11 @@
 ///   box), "parts" ([block, point runs] per part of a block, WeightGrid's point_runs()),
 ///   "choices" (the region tree path), "cells" (per instance, its metric cells as text)}`;
 /// - a finished subtree of the region tree: `{"key", "done" (its id, 16 hex digits), "vectors",
-///   "behaviours", "pruned_regions", "pruned_vectors", "smallest_pruned_bound" (null: none)}`.
+///   "behaviours", "pruned_regions", "pruned_vectors", "smallest_pruned_bound" (null: none)}`;
+/// - branch and bound's other leaves (CertifiedLeaf): `{"key", "leaf" ("pruned" or "beaten"),
+///   "boxes", "parts", "choices", "value" (null: none), "steps" (pruned: per instance),
+///   "trace" (beaten)}`. Journals written before these lines resume as ever; their searches
+///   have no certificate.
 
 #include <cstdint>
 #include <functional>
@@ -32,6 +36,17 @@ inline namespace weightsearch {
 struct JournaledBehaviour {
   Behaviour behaviour;
   std::vector<std::vector<std::string>> cells;
+};
+
+/// A leaf line: the CertifiedLeaf, its region owned, its vector count from the grid.
+struct JournaledLeaf {
+  CertifiedLeaf::Kind kind = CertifiedLeaf::Kind::Pruned;
+  WeightRegion region;
+  std::vector<int> choices;
+  std::uint64_t vectors = 0;
+  double value = 0.0;
+  std::vector<std::uint64_t> steps;
+  std::uint64_t trace = 0;
 };
 
 /// What a search's lines must be to be read as its own.
@@ -67,9 +82,11 @@ class SearchJournal {
   /// behaviour goes to `each` as it is read (so a caller may drop what it need not keep), and the
   /// finished subtrees are returned by id. Lines of other keys are parsed (a damaged one is
   /// damage too) and passed over.
+  /// Each leaf line goes to `each_leaf` (may be empty: leaf lines are then only checked).
   [[nodiscard]] static std::unordered_map<std::uint64_t, SubtreeTally> read(
       const std::string& path, const JournalShape& shape, JournalDamage damage, std::string_view hint,
-      const std::function<void(JournaledBehaviour&&)>& each);
+      const std::function<void(JournaledBehaviour&&)>& each,
+      const std::function<void(JournaledLeaf&&)>& each_leaf = {});
 
   /// Opens the journal at `path` for appending (created if missing); throws ConfigError naming
   /// it when it cannot be.
@@ -78,6 +95,8 @@ class SearchJournal {
   /// Appends a finished behaviour's line (its region, choices and trace) with its `cells`.
   void append(const std::string& key, const Behaviour& behaviour,
               const std::vector<std::vector<std::string>>& cells);
+  /// Appends a leaf's line.
+  void append_leaf(const std::string& key, const CertifiedLeaf& leaf);
   /// Appends the line of a finished subtree `id` with its tally.
   void append_done(const std::string& key, std::uint64_t id, const SubtreeTally& tally);
 

@@ -349,6 +349,36 @@ std::array<int, WeightGrid::kMaxWeights> WeightGrid::lexmin(const WeightRegion& 
   return best;
 }
 
+std::vector<WeightGrid::IndexBox> WeightGrid::index_boxes(const WeightRegion& region) const {
+  std::vector<IndexBox> out;
+  for (const WeightRegion::Box& box : region.whole) {
+    const BlockSpan span = span_of(box);
+    IndexBox& b = out.emplace_back();
+    for (std::size_t k = 0; k < kMaxWeights; ++k) {
+      b.lo[k] = span.first[k];
+      b.hi[k] = span.first[k] + span.extent[k] - 1;
+    }
+  }
+  const std::size_t last = static_cast<std::size_t>(weights()) - 1;
+  for (const WeightRegion::Part& part : region.parts) {
+    bool open = false;  // out.back() is a run that the next point may extend
+    for_each_member(span_of(part.block), part.bits, [&](int /*bit*/, const std::array<int, kMaxWeights>& at) {
+      if (open) {
+        IndexBox& run = out.back();
+        bool extends = at[last] == run.hi[last] + 1;
+        for (std::size_t k = 0; k < last && extends; ++k) extends = at[k] == run.lo[k];
+        if (extends) {
+          run.hi[last] = at[last];
+          return;
+        }
+      }
+      out.push_back({at, at});
+      open = true;
+    });
+  }
+  return out;
+}
+
 std::array<std::array<int, 2>, WeightGrid::kMaxWeights> WeightGrid::bounds(const WeightRegion& region) const {
   if (region.empty()) throw std::invalid_argument("bounds of an empty weight region");
   std::array<std::array<int, 2>, kMaxWeights> box{};

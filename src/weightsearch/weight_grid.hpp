@@ -95,6 +95,16 @@ class WeightGrid {
   /// block, and at least one. (Not checked: that boxes and parts share no block.) A journal line
   /// read back is checked so before its region is used.
   [[nodiscard]] bool holds(const WeightRegion& region) const;
+  /// A box of grid points by their indices into the value lists, `lo[k]` to `hi[k]` inclusive
+  /// along each weight (unused weights: 0 to 0).
+  struct IndexBox {
+    std::array<int, kMaxWeights> lo{};
+    std::array<int, kMaxWeights> hi{};
+  };
+  /// `region` as disjoint boxes of grid indices: each box of whole blocks as one, each part as
+  /// its runs of consecutive points along the last weight (the weight search's certificate
+  /// lists regions so, for a reader who knows nothing of blocks).
+  [[nodiscard]] std::vector<IndexBox> index_boxes(const WeightRegion& region) const;
   /// True when the point of indices `at` is in `region`.
   [[nodiscard]] bool contains(const WeightRegion& region, const std::array<int, kMaxWeights>& at) const;
   /// Calls `f(indices)` for every point of `region` once: the blocks of its boxes, then its

@@ -276,7 +276,7 @@ TEST(Cli, UnknownCommandIsNamedWithTheCommandsAllowed) {
   EXPECT_EQ(r.code, 2) << r.output;
   EXPECT_NE(r.output.find("fsweep: error: unknown command 'frobnicate'; allowed: sim, optimum, plan, "
                           "plan-compare, plan-bench, run, expand, aggregate, merge, compare, paired, slurm, "
-                          "plot, report, describe, export-sqlite, version, completion"),
+                          "plot, report, describe, export-sqlite, verify, version, completion"),
             std::string::npos)
       << r.output;
   const Outcome none = fsweep("");

@@ -47,6 +47,22 @@ void expect_consistent(const WeightGrid& grid, const WeightRegion& region, const
     EXPECT_EQ(box[k][1], hi) << what << " weight " << k;
   }
   for (const Point& p : points) EXPECT_TRUE(grid.contains(region, p)) << what;
+  // index_boxes(): disjoint boxes of exactly the region's points.
+  std::vector<Point> boxed;
+  for (const WeightGrid::IndexBox& b : grid.index_boxes(region)) {
+    Point at{};
+    for (at[0] = b.lo[0]; at[0] <= b.hi[0]; ++at[0]) {
+      for (at[1] = b.lo[1]; at[1] <= b.hi[1]; ++at[1]) {
+        for (at[2] = b.lo[2]; at[2] <= b.hi[2]; ++at[2]) {
+          for (at[3] = b.lo[3]; at[3] <= b.hi[3]; ++at[3]) boxed.push_back(at);
+        }
+      }
+    }
+  }
+  std::vector<Point> sorted = points;
+  std::sort(sorted.begin(), sorted.end());
+  std::sort(boxed.begin(), boxed.end());
+  EXPECT_EQ(boxed, sorted) << what << ": index_boxes()";
 }
 
 /// Random candidates over `weights` features: small integers of both signs (so costs tie often)

@@ -1,0 +1,176 @@
+// `fsweep verify DIR` end to end: a search of mode best writes its certificate, which verifies
+// (exit 0); certificates tampered with in each way the check covers fail with the line named
+// (exit 1), or are refused as malformed (exit 2).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli/fsweep_process.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using fsweep::testing::run_fsweep;
+using nlohmann::json;
+
+bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+/// The lines of a file, without their newlines.
+std::vector<std::string> lines_of(const std::string& path) {
+  std::ifstream in(path);
+  std::vector<std::string> out;
+  for (std::string line; std::getline(in, line);) out.push_back(line);
+  return out;
+}
+
+void write_lines(const std::string& path, const std::vector<std::string>& lines) {
+  std::ofstream out(path, std::ios::trunc);
+  for (const std::string& l : lines) out << l << '\n';
+}
+
+/// A sweep with one search of mode best over 96 vectors of an office map, run into `dir`/out
+/// once per test program; returns the output directory.
+const std::string& searched() {
+  static const std::string out = [] {
+    const std::string dir = fsweep::testing::fresh_temp_dir("verify", "search");
+    fs::create_directories(dir);
+    std::ofstream(dir + "/sweep.json") << R"({"schema_version": 1, "name": "cli_verify",
+      "maps": ["office:w=32,h=32,seed=3"],
+      "strategies": [{"name": "energy_aware", "search": {"method": "exact", "mode": "best"},
+                      "params": {"w1": [0, 1, 2, 3], "w2": [0, 2], "w3": {"range": [0, 5], "step": 1},
+                                 "w4": [0, 1]}}],
+      "robot": {"sensor": {"range_m": 6}, "energy": "distance", "battery": 300},
+      "seed": 5})";
+    const auto r = run_fsweep("run " + dir + "/sweep.json --quiet --out " + dir + "/out");
+    EXPECT_EQ(r.code, 0) << r.output;
+    return dir + "/out";
+  }();
+  return out;
+}
+
+/// A copy of the searched directory whose certificate `change` edits (its lines, header first).
+std::string tampered(const std::string& name, const std::function<void(std::vector<std::string>&)>& change) {
+  const std::string dir = fsweep::testing::fresh_temp_dir("verify", name) + "/out";
+  fs::create_directories(fs::path(dir).parent_path());
+  fs::copy(searched(), dir, fs::copy_options::recursive);
+  const std::string path = dir + "/search_certificate_0.jsonl";
+  std::vector<std::string> lines = lines_of(path);
+  change(lines);
+  write_lines(path, lines);
+  return dir;
+}
+
+/// The first region line (1-based line number) of kind `kind` whose value is not the optimum.
+std::size_t first_line(const std::vector<std::string>& lines, const std::string& kind, bool optimal) {
+  const double optimum = json::parse(lines.front()).at("optimum").get<double>();
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    const json j = json::parse(lines[i]);
+    if (j.at("kind") != kind || j.at("value").is_null()) continue;
+    if ((j.at("value").get<double>() == optimum) == optimal) return i + 1;
+  }
+  return 0;
+}
+
+TEST(CliVerify, ABestSearchsCertificateVerifies) {
+  const std::string& dir = searched();
+  ASSERT_TRUE(fs::exists(dir + "/search_certificate_0.jsonl"));
+  const json record = json::parse(std::ifstream(dir + "/searches.json"))["searches"][0];
+  EXPECT_EQ(record["certificate"]["file"], "search_certificate_0.jsonl");
+  const std::vector<std::string> lines = lines_of(dir + "/search_certificate_0.jsonl");
+  EXPECT_EQ(record["certificate"]["regions"], lines.size() - 1);
+  ASSERT_GT(first_line(lines, "pruned", false), 0U) << "the search pruned nothing: the test checks no bound";
+  const auto r = run_fsweep("verify " + dir + " --threads 2");
+  EXPECT_EQ(r.code, 0) << r.output;
+  EXPECT_TRUE(has(r.output, "verified")) << r.output;
+  EXPECT_TRUE(has(r.output, "sum to the box's, and no vector is in two regions")) << r.output;
+}
+
+TEST(CliVerify, AValueBelowTheOptimumFailsNamingItsLine) {
+  std::size_t line = 0;
+  const std::string dir = tampered("bound", [&](std::vector<std::string>& lines) {
+    line = first_line(lines, "pruned", false);
+    json j = json::parse(lines[line - 1]);
+    j["value"] = json::parse(lines.front()).at("optimum").get<double>() - 1.0;
+    lines[line - 1] = j.dump();
+  });
+  const auto r = run_fsweep("verify " + dir);
+  EXPECT_EQ(r.code, 1) << r.output;
+  EXPECT_TRUE(has(r.output, "line " + std::to_string(line) + " (pruned region")) << r.output;
+  EXPECT_TRUE(has(r.output, "is not worse than the optimum")) << r.output;
+}
+
+TEST(CliVerify, AnObjectiveItsRunsDoNotGiveFails) {
+  std::size_t line = 0;
+  const std::string dir = tampered("objective", [&](std::vector<std::string>& lines) {
+    line = first_line(lines, "finished", false);
+    json j = json::parse(lines[line - 1]);
+    j["value"] = j["value"].get<double>() + 0.5;
+    lines[line - 1] = j.dump();
+  });
+  ASSERT_GT(line, 0U);
+  const auto r = run_fsweep("verify " + dir);
+  EXPECT_EQ(r.code, 1) << r.output;
+  EXPECT_TRUE(has(r.output, "line " + std::to_string(line) + " (finished region")) << r.output;
+  EXPECT_TRUE(has(r.output, "the objective of its representative's runs is")) << r.output;
+}
+
+TEST(CliVerify, ARegionLeftOutOrListedTwiceFails) {
+  const std::string gap = tampered("gap", [](std::vector<std::string>& lines) { lines.pop_back(); });
+  auto r = run_fsweep("verify " + gap);
+  EXPECT_EQ(r.code, 1) << r.output;
+  EXPECT_TRUE(has(r.output, "they do not cover it exactly")) << r.output;
+  const std::string twice = tampered("twice", [](std::vector<std::string>& lines) {
+    lines.push_back(lines[1]);
+    lines.erase(lines.begin() + 2);  // the count stays the box's when both lines hold as many vectors
+  });
+  r = run_fsweep("verify " + twice);
+  EXPECT_EQ(r.code, 1) << r.output;
+  EXPECT_TRUE(has(r.output, "overlaps line 2")) << r.output;
+}
+
+TEST(CliVerify, TwoBehavioursClaimedAsOneFailAtTheDecisionThatSeparatesThem) {
+  // The vectors of a second finished region moved into the first: the cover still holds, but not
+  // every vector of the merged region makes the first region's choices.
+  std::size_t line = 0;
+  const std::string dir = tampered("merged", [&](std::vector<std::string>& lines) {
+    const std::size_t a = first_line(lines, "finished", true);
+    const std::size_t b = first_line(lines, "finished", false);
+    json ja = json::parse(lines[a - 1]);
+    const json jb = json::parse(lines[b - 1]);
+    for (const json& box : jb.at("boxes")) ja["boxes"].push_back(box);
+    lines[a - 1] = ja.dump();
+    lines.erase(lines.begin() + static_cast<std::ptrdiff_t>(b - 1));
+    line = b < a ? a - 1 : a;
+  });
+  const auto r = run_fsweep("verify " + dir);
+  EXPECT_EQ(r.code, 1) << r.output;
+  EXPECT_TRUE(has(r.output, "line " + std::to_string(line) + " (finished region")) << r.output;
+  EXPECT_TRUE(has(r.output, "chooses candidate")) << r.output;
+}
+
+TEST(CliVerify, AMalformedLineOrAnotherSearchsCertificateIsExit2) {
+  const std::string outside = tampered("outside", [](std::vector<std::string>& lines) {
+    json j = json::parse(lines[1]);
+    j["boxes"][0][0] = 99;
+    lines[1] = j.dump();
+  });
+  auto r = run_fsweep("verify " + outside);
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_TRUE(has(r.output, "search_certificate_0.jsonl:2: a box outside the search's box along w1"))
+      << r.output;
+  const std::string other = tampered("other", [](std::vector<std::string>& lines) {
+    json j = json::parse(lines[0]);
+    j["instances"][0]["seed"] = 12345;
+    lines[0] = j.dump();
+  });
+  r = run_fsweep("verify " + other);
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_TRUE(has(r.output, "the certificate is another search's")) << r.output;
+}
+
+}  // namespace
