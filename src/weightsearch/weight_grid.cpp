@@ -360,11 +360,12 @@ std::vector<WeightGrid::IndexBox> WeightGrid::index_boxes(const WeightRegion& re
     }
   }
   const std::size_t last = static_cast<std::size_t>(weights()) - 1;
+  std::vector<IndexBox> runs;
   for (const WeightRegion::Part& part : region.parts) {
-    bool open = false;  // out.back() is a run that the next point may extend
+    runs.clear();
     for_each_member(span_of(part.block), part.bits, [&](int /*bit*/, const std::array<int, kMaxWeights>& at) {
-      if (open) {
-        IndexBox& run = out.back();
+      if (!runs.empty()) {
+        IndexBox& run = runs.back();
         bool extends = at[last] == run.hi[last] + 1;
         for (std::size_t k = 0; k < last && extends; ++k) extends = at[k] == run.lo[k];
         if (extends) {
@@ -372,11 +373,40 @@ std::vector<WeightGrid::IndexBox> WeightGrid::index_boxes(const WeightRegion& re
           return;
         }
       }
-      out.push_back({at, at});
-      open = true;
+      runs.push_back({at, at});
     });
+    // Runs that differ only along one weight, where they touch, are one box: a share of a block
+    // cut by a few planes takes a few boxes instead of a run per row.
+    for (std::size_t k = last; k-- > 0;) join_along(runs, k);
+    out.insert(out.end(), runs.begin(), runs.end());
   }
   return out;
+}
+
+void WeightGrid::join_along(std::vector<IndexBox>& boxes, std::size_t k) {
+  const auto others = [k](const IndexBox& b) {
+    std::array<int, 2 * kMaxWeights> key{};
+    for (std::size_t d = 0; d < kMaxWeights; ++d) {
+      key[2 * d] = d == k ? 0 : b.lo[d];
+      key[2 * d + 1] = d == k ? 0 : b.hi[d];
+    }
+    return key;
+  };
+  std::sort(boxes.begin(), boxes.end(), [&](const IndexBox& a, const IndexBox& b) {
+    const auto ka = others(a);
+    const auto kb = others(b);
+    return ka != kb ? ka < kb : a.lo[k] < b.lo[k];
+  });
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    if (kept > 0 && boxes[kept - 1].hi[k] + 1 == boxes[i].lo[k] &&
+        others(boxes[kept - 1]) == others(boxes[i])) {
+      boxes[kept - 1].hi[k] = boxes[i].hi[k];
+    } else {
+      boxes[kept++] = boxes[i];
+    }
+  }
+  boxes.resize(kept);
 }
 
 std::array<std::array<int, 2>, WeightGrid::kMaxWeights> WeightGrid::bounds(const WeightRegion& region) const {

@@ -102,8 +102,9 @@ class WeightGrid {
     std::array<int, kMaxWeights> hi{};
   };
   /// `region` as disjoint boxes of grid indices: each box of whole blocks as one, each part as
-  /// its runs of consecutive points along the last weight (the weight search's certificate
-  /// lists regions so, for a reader who knows nothing of blocks).
+  /// its runs of consecutive points along the last weight, joined into larger boxes where runs
+  /// differ only along one weight and touch there (the weight search's certificate lists
+  /// regions so, for a reader who knows nothing of blocks).
   [[nodiscard]] std::vector<IndexBox> index_boxes(const WeightRegion& region) const;
   /// True when the point of indices `at` is in `region`.
   [[nodiscard]] bool contains(const WeightRegion& region, const std::array<int, kMaxWeights>& at) const;
@@ -193,6 +194,8 @@ class WeightGrid {
     std::array<int, kMaxWeights> extent{};
   };
   [[nodiscard]] BlockSpan span_of(std::uint32_t block) const;
+  /// Joins boxes of `boxes` that differ only along weight `k` and touch there (index_boxes()).
+  static void join_along(std::vector<IndexBox>& boxes, std::size_t k);
   /// The directions of `region`'s points in n coordinates (w itself, or the tied coordinates):
   /// `box_of(lo, hi, low, high)` puts the extreme ratios of a box of weights lo..hi into
   /// low..high and returns whether some point of it may have every coordinate 0;
