@@ -72,6 +72,8 @@ std::vector<RunSpec> instance_specs(const SweepPlan& plan, const CertificateHead
 }
 
 int run_verify(const VerifyCommandOptions& o) {
+  if (!std::filesystem::is_directory(o.dir))
+    throw ConfigError(o.dir, "no such directory (DIR: a sweep's output directory)");
   check_output_dir(o.dir, OutputKind::Sweep, "DIR");
   const std::string manifest_path = o.dir + "/manifest.json";
   const std::optional<nlohmann::json> manifest = read_manifest(manifest_path);
