@@ -9,8 +9,17 @@
 namespace fsweep {
 inline namespace report {
 
+namespace {
+constexpr std::string_view kCertificatePrefix = "search_certificate_";
+constexpr std::string_view kCertificateSuffix = ".jsonl";
+}  // namespace
+
 std::string search_certificate_file(std::size_t id) {
-  return "search_certificate_" + std::to_string(id) + ".jsonl";
+  return std::string(kCertificatePrefix) + std::to_string(id) + std::string(kCertificateSuffix);
+}
+
+bool is_search_certificate_file(std::string_view name) {
+  return name.starts_with(kCertificatePrefix) && name.ends_with(kCertificateSuffix);
 }
 
 std::vector<std::string> behaviours_columns(std::span<const std::string> weights) {

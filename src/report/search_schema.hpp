@@ -10,6 +10,7 @@
 
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace fsweep {
@@ -26,6 +27,8 @@ inline constexpr char kVectorsFile[] = "vectors.csv";
 inline constexpr char kSearchJournalFile[] = "search_journal.jsonl";
 /// Mode best's certificate of search `id` (docs/dev/weight-search-design.md, "The certificate").
 [[nodiscard]] std::string search_certificate_file(std::size_t id);
+/// Whether a file name is a certificate's (`fsweep run --fresh` deletes them).
+[[nodiscard]] bool is_search_certificate_file(std::string_view name);
 /// The certificate's format, its header's "format".
 inline constexpr char kCertificateFormat[] = "fsweep weight search certificate 1";
 

@@ -158,6 +158,10 @@ nlohmann::json reconcile_earlier_outputs(const SweepPlan& plan, const RunnerOpti
   nlohmann::json sessions = nlohmann::json::array();
   if (options.fresh) {
     for (const char* f : kOutputFiles) fs::remove(dir + "/" + f);
+    std::error_code ec;  // a directory not made yet holds nothing
+    for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
+      if (is_search_certificate_file(e.path().filename().string())) fs::remove(e.path());
+    }
     return sessions;
   }
   const auto old = read_manifest(dir + "/manifest.json");

@@ -153,6 +153,16 @@ TEST(CliVerify, TwoBehavioursClaimedAsOneFailAtTheDecisionThatSeparatesThem) {
   EXPECT_TRUE(has(r.output, "chooses candidate")) << r.output;
 }
 
+TEST(CliVerify, FreshDeletesEveryCertificateBeforeSearchingAgain) {
+  const std::string dir = tampered("fresh", [](std::vector<std::string>& /*lines*/) {});
+  std::ofstream(dir + "/search_certificate_7.jsonl") << "{}\n";  // one of another sweep's searches
+  const std::string sweep = fs::path(searched()).parent_path().string() + "/sweep.json";
+  const auto r = run_fsweep("run " + sweep + " --fresh --quiet --out " + dir);
+  EXPECT_EQ(r.code, 0) << r.output;
+  EXPECT_FALSE(fs::exists(dir + "/search_certificate_7.jsonl"));
+  EXPECT_TRUE(fs::exists(dir + "/search_certificate_0.jsonl"));
+}
+
 TEST(CliVerify, AMalformedLineOrAnotherSearchsCertificateIsExit2) {
   const std::string outside = tampered("outside", [](std::vector<std::string>& lines) {
     json j = json::parse(lines[1]);
