@@ -4,14 +4,18 @@
 #include <stdexcept>
 #include <string>
 
-#include "core/csv_format.hpp"
+#include "core/csv_reader.hpp"
 
 namespace fsweep {
 inline namespace report {
 
+double metric_number(std::string_view cell) {
+  return parse_number(cell).value_or(std::numeric_limits<double>::quiet_NaN());
+}
+
 double metric_value(const RunResult& result, std::string_view column) {
   for (const auto& [name, cell] : metric_columns(result)) {
-    if (name == column) return parse_number(cell).value_or(std::numeric_limits<double>::quiet_NaN());
+    if (name == column) return metric_number(cell);
   }
   throw std::logic_error("no metric column " + std::string(column));
 }

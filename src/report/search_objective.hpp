@@ -15,6 +15,9 @@
 namespace fsweep {
 inline namespace report {
 
+/// A metric cell's number (NaN: empty, or not a number).
+[[nodiscard]] double metric_number(std::string_view cell);
+
 /// The value of metric column `column` of a run (NaN: none), as runs.csv's cell holds it.
 [[nodiscard]] double metric_value(const RunResult& result, std::string_view column);
 

@@ -8,9 +8,9 @@
 #include <utility>
 
 #include "core/config_error.hpp"
-#include "core/csv_format.hpp"
 #include "core/files.hpp"
 #include "core/random.hpp"
+#include "report/search_objective.hpp"
 
 namespace fsweep {
 inline namespace sweep {
@@ -57,7 +57,7 @@ json write_search_certificate(const std::string& path, const json& header, const
             // The class mean of the objective's cells, as the search computed it.
             double sum = 0.0;
             for (const auto& cells : b.cells) {
-              sum += parse_number(cells.at(source.objective_cell)).value_or(std::nan(""));
+              sum += metric_number(cells.at(source.objective_cell));
             }
             put(json{{"kind", "finished"},
                      {"value", value_json(sum / static_cast<double>(b.cells.size()))},

@@ -12,6 +12,7 @@
 #include "core/csv_format.hpp"
 #include "core/files.hpp"
 #include "core/statistics.hpp"
+#include "report/search_objective.hpp"
 #include "report/search_schema.hpp"
 #include "sweep/weight_search_runner.hpp"
 
@@ -32,10 +33,6 @@ std::size_t distinct_outcomes(const std::vector<FoundBehaviour>& found) {
     outcomes.insert(std::move(key));
   }
   return outcomes.size();
-}
-
-double metric_number(const std::string& cell) {
-  return parse_number(cell).value_or(std::numeric_limits<double>::quiet_NaN());
 }
 
 bool better_objective(double a, double b, Direction direction) {

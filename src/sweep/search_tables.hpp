@@ -40,9 +40,6 @@ struct FoundBehaviour {
 /// decision sequences can end in the same outcome (the same distance, coverage and counts).
 [[nodiscard]] std::size_t distinct_outcomes(const std::vector<FoundBehaviour>& found);
 
-/// A metric cell's number (NaN: empty, or not a number).
-[[nodiscard]] double metric_number(const std::string& cell);
-
 /// Better objective first; no value last.
 [[nodiscard]] bool better_objective(double a, double b, Direction direction);
 
