@@ -15,6 +15,10 @@ Reads DIR/summary.csv, DIR/progress_summary.csv and DIR/best.csv (written by
                          run` for a search of mode "all"): per search k and pair of weights with
                          at least two values each, the best objective of any weight vector with
                          those two values
+  search<k>_gap.png      exact weight searches of mode "best" (DIR/search_anytime.csv): the best
+                         objective found and the certified bound of the optimum over time, the
+                         gap between them shaded; drawn for a stopped search too (a directory
+                         with no summary.csv then gets this figure only)
 
 Each configuration is named by what tells it apart from the others drawn: its strategy label
 (with the parameters that differ within the label), then the planner, robot and sim columns
@@ -457,6 +461,47 @@ def plot_search_heatmaps(path, out):
     return written
 
 
+def plot_search_anytime(path, out):
+    """search<k>_gap.png from search_anytime.csv: best and bound over time; the files written."""
+    if not os.path.exists(path):
+        return []
+    _, rows = read_csv(path)
+    curves = {}
+    for r in rows:
+        curves.setdefault(r["search_id"], []).append(r)
+    written = []
+    for search, points in curves.items():
+        t = [number(r["elapsed_s"]) / 60.0 for r in points]
+        best = [number(r["best"]) for r in points]
+        bound = [number(r["bound"]) for r in points]
+        labels = ["best objective found", "certified bound of the optimum", "gap"]
+        stops = [k for k, r in enumerate(points) if r["status"] == "stopped"]
+        if stops:
+            labels.append("stopped (resumed after)")
+        legend_in = legend_height_in(labels, 7.0)
+        fig, (ax, legend_ax) = plt.subplots(2, 1, figsize=(7.0, 4.5 + legend_in), layout="constrained",
+                                            gridspec_kw={"height_ratios": [4.5, legend_in]})
+        ax.step(t, best, where="post", color="tab:blue", label="best objective found")
+        ax.step(t, bound, where="post", color="tab:red", label="certified bound of the optimum")
+        ax.fill_between(t, bound, best, step="post", color="tab:grey", alpha=0.25, label="gap")
+        if stops:
+            ax.plot([t[k] for k in stops], [best[k] for k in stops], "kx", label="stopped (resumed after)")
+        last = points[-1]
+        gap = number(last["relative_gap"])
+        state = {"finished": "finished", "stopped": "stopped", "running": "running"}.get(last["status"], "")
+        ax.set_title(wrapped(f"exact search {search}: {state} after {t[-1]:.3g} min, "
+                             f"{last['resolved_vectors']} of {last['vectors']} vectors resolved, "
+                             + (f"gap {100.0 * gap:.3g}%" if not math.isnan(gap) else "gap unknown"), 70),
+                     fontsize=10)
+        ax.set_xlabel("search time (min, over every resumed process)", fontsize=11)
+        ax.set_ylabel("objective", fontsize=11)
+        ax.grid(alpha=0.3)
+        handles, labels = ax.get_legend_handles_labels()
+        legend_below(fig, legend_ax, handles, labels, 7.0)
+        written.append(save(fig, out, f"search{search}_gap.png"))
+    return written
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("dir", help="sweep output directory (aggregated)")
@@ -467,6 +512,12 @@ def main():
     out = args.out or os.path.join(args.dir, "plots")
     os.makedirs(out, exist_ok=True)
 
+    anytime = os.path.join(args.dir, "search_anytime.csv")
+    if not os.path.exists(os.path.join(args.dir, "summary.csv")) and os.path.exists(anytime):
+        # A stopped weight search: its curve is all there is to draw.
+        written = plot_search_anytime(anytime, out)
+        print(f"wrote {', '.join(os.path.join(out, w) for w in written)}")
+        return
     summary_header, summary_rows = read_csv(os.path.join(args.dir, "summary.csv"))
     _, progress_rows = read_csv(os.path.join(args.dir, "progress_summary.csv"))
     best_header, best_rows = read_csv(os.path.join(args.dir, "best.csv"))
@@ -483,6 +534,7 @@ def main():
                plot_metrics(summary_header, summary_rows, shown, labels, note, out)]
     written += plot_heatmaps(summary_header, summary_rows, best_header, best_rows, out)
     written += plot_search_heatmaps(os.path.join(args.dir, "search_heatmaps.csv"), out)
+    written += plot_search_anytime(anytime, out)
     if args.layout_json:
         with open(args.layout_json, "w", encoding="utf-8") as f:
             json.dump(LAYOUT, f, indent=1)

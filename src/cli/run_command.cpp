@@ -107,6 +107,7 @@ int run_command(const RunCommandOptions& o) {
               << one_decimal(r.searches.wall_s) << " s\n";
   } else if (r.searches.interrupted) {
     std::cout << "exact weight search: stopped; search_journal.jsonl keeps what it finished\n";
+    for (const std::string& line : r.searches.standings) std::cout << "  " << line << "\n";
   } else if (r.searches_done_before) {
     std::cout << "exact weight search: already done (searches.json; --fresh redoes it)\n";
   } else if (!plan.search_units().empty() && options.shard_count > 1) {

@@ -12,6 +12,8 @@ inline namespace report {
 namespace {
 constexpr std::string_view kCertificatePrefix = "search_certificate_";
 constexpr std::string_view kCertificateSuffix = ".jsonl";
+constexpr std::string_view kStatusPrefix = "search_status_";
+constexpr std::string_view kStatusSuffix = ".json";
 }  // namespace
 
 std::string search_certificate_file(std::size_t id) {
@@ -20,6 +22,14 @@ std::string search_certificate_file(std::size_t id) {
 
 bool is_search_certificate_file(std::string_view name) {
   return name.starts_with(kCertificatePrefix) && name.ends_with(kCertificateSuffix);
+}
+
+std::string search_status_file(std::size_t id) {
+  return std::string(kStatusPrefix) + std::to_string(id) + std::string(kStatusSuffix);
+}
+
+bool is_search_status_file(std::string_view name) {
+  return name.starts_with(kStatusPrefix) && name.ends_with(kStatusSuffix);
 }
 
 std::vector<std::string> behaviours_columns(std::span<const std::string> weights) {

@@ -29,6 +29,13 @@ inline constexpr char kSearchJournalFile[] = "search_journal.jsonl";
 [[nodiscard]] std::string search_certificate_file(std::size_t id);
 /// Whether a file name is a certificate's (`fsweep run --fresh` deletes them).
 [[nodiscard]] bool is_search_certificate_file(std::string_view name);
+/// The curve of mode best's best objective and bound over time, every search's rows
+/// (sweep/search_anytime.hpp).
+inline constexpr char kSearchAnytimeFile[] = "search_anytime.csv";
+/// Mode best's latest state of search `id`: best, bound, gap (sweep/search_anytime.hpp).
+[[nodiscard]] std::string search_status_file(std::size_t id);
+/// Whether a file name is a status file's (`fsweep run --fresh` deletes them).
+[[nodiscard]] bool is_search_status_file(std::string_view name);
 /// The certificate's format, its header's "format".
 inline constexpr char kCertificateFormat[] = "fsweep weight search certificate 1";
 

@@ -177,7 +177,8 @@ bool read_search_settings(const json& search, const std::string& at, WeightSearc
   try {
     if (!search.is_object())
       throw ConfigError(at, "expected an object {\"method\": \"exact\", \"mode\": ...}");
-    require_known_keys(search, {"method", "mode", "write_vectors", "rank"}, at);
+    require_known_keys(search, {"method", "mode", "write_vectors", "rank", "order", "max_open", "probes"},
+                       at);
   } catch (const ConfigError& e) {
     problems.push_back(at + ": " + strip_path(e.what(), at));
     return false;
@@ -193,6 +194,43 @@ bool read_search_settings(const json& search, const std::string& at, WeightSearc
     ws.mode = WeightSearch::Mode::Best;
   } else {
     problems.push_back(at + "/mode: value " + value_text(mode) + "; allowed: \"all\", \"best\"");
+  }
+  const json order = search.value("order", json("depth"));
+  if (order == json("depth")) {
+    ws.order = SearchOrder::Depth;
+  } else if (order == json("bound")) {
+    ws.order = SearchOrder::Bound;
+  } else {
+    problems.push_back(at + "/order: value " + value_text(order) + "; allowed: \"depth\", \"bound\"");
+  }
+  if (search.contains("order") && ws.mode != WeightSearch::Mode::Best) {
+    problems.push_back(
+        at + "/order: only a search of mode \"best\" has an order; remove it or set \"mode\": \"best\"");
+  }
+  const json max_open = search.value("max_open", json(kDefaultMaxOpenBranches));
+  if (!max_open.is_number_integer() || max_open.get<std::int64_t>() < 1 ||
+      max_open.get<std::int64_t>() > static_cast<std::int64_t>(kMaxOpenBranchesLimit)) {
+    problems.push_back(at + "/max_open: value " + value_text(max_open) + "; allowed: integers 1 to " +
+                       std::to_string(kMaxOpenBranchesLimit));
+  } else {
+    ws.max_open = max_open.get<std::size_t>();
+  }
+  if (search.contains("max_open") && ws.order != SearchOrder::Bound) {
+    problems.push_back(at +
+                       "/max_open: only a search of order \"bound\" keeps branches waiting; remove it or set "
+                       "\"order\": \"bound\"");
+  }
+  const json probes = search.value("probes", json(kDefaultProbes));
+  if (!probes.is_number_integer() || probes.get<std::int64_t>() < 0 ||
+      probes.get<std::int64_t>() > static_cast<std::int64_t>(kMaxProbes)) {
+    problems.push_back(at + "/probes: value " + value_text(probes) + "; allowed: integers 0 to " +
+                       std::to_string(kMaxProbes));
+  } else {
+    ws.probes = probes.get<std::size_t>();
+  }
+  if (search.contains("probes") && ws.mode != WeightSearch::Mode::Best) {
+    problems.push_back(
+        at + "/probes: only a search of mode \"best\" runs probes; remove it or set \"mode\": \"best\"");
   }
   const json write_vectors = search.value("write_vectors", json(false));
   if (!write_vectors.is_boolean()) {

@@ -106,6 +106,7 @@
 #include "report/runs_schema.hpp"
 #include "sim/run_spec.hpp"
 #include "sweep/sweep_json_reader.hpp"
+#include "weightsearch/search_order.hpp"
 
 namespace fsweep {
 inline namespace sweep {
@@ -170,6 +171,12 @@ struct SkippedMap {
 struct WeightSearch {
   enum class Mode { All, Best };
   Mode mode = Mode::All;
+  /// Mode best: the order branches are explored in (SearchOrder, exact_search.hpp) and, for
+  /// SearchOrder::Bound, the most branches kept waiting.
+  SearchOrder order = SearchOrder::Depth;
+  std::size_t max_open = kDefaultMaxOpenBranches;
+  /// Mode best: weight vectors run alone first, the best their first incumbent.
+  std::size_t probes = kDefaultProbes;
   /// Also write vectors.csv (boxes of at most kMaxListedVectors vectors).
   bool write_vectors = false;
   /// The strategy's weight parameters (LinearScoredStrategy::weight_names()), in its order.

@@ -13,6 +13,7 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <ctime>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -40,27 +41,50 @@ using Clock = std::chrono::steady_clock;
 /// Runs in flight or waiting for the in-order writer, per thread.
 constexpr std::size_t kTokensPerThread = 16;
 
-constexpr const char* kOutputFiles[] = {
-    "runs.csv",         "progress.csv",         "manifest.json",  "summary.csv",
-    "best.csv",         "progress_summary.csv", kSearchesFile,    kBehavioursFile,
-    kSearchSummaryFile, kSearchBestFile,        kSearchRanksFile, kSearchHeatmapsFile,
-    kVectorsFile,       kSearchJournalFile,     "results.sqlite", kOptimaFile};
+constexpr const char* kOutputFiles[] = {"runs.csv",      "progress.csv",     "manifest.json",
+                                        "summary.csv",   "best.csv",         "progress_summary.csv",
+                                        kSearchesFile,   kBehavioursFile,    kSearchSummaryFile,
+                                        kSearchBestFile, kSearchRanksFile,   kSearchHeatmapsFile,
+                                        kVectorsFile,    kSearchJournalFile, "results.sqlite",
+                                        kOptimaFile,     kSearchAnytimeFile};
 
 /// Set by SIGINT/SIGTERM while run_sweep runs (a signal handler can only reach a global).
 std::atomic<bool> stop_requested{false};  // NOLINT(cppcoreguidelines-avoid-non-const-global-variables)
 static_assert(std::atomic<bool>::is_always_lock_free);
 
-extern "C" void on_stop_signal(int /*signal*/) { stop_requested.store(true); }
+/// When the first stop signal came (CLOCK_MONOTONIC nanoseconds; 0: none yet).
+std::atomic<std::int64_t> first_stop_ns{0};  // NOLINT(cppcoreguidelines-avoid-non-const-global-variables)
+static_assert(std::atomic<std::int64_t>::is_always_lock_free);
 
-/// Installs the stop handlers for its lifetime. SA_RESETHAND: a second signal kills.
+/// A second stop signal kills only when it comes a second or more after the first: `timeout`
+/// signals the process and then its process group, so one stop can arrive twice at once.
+constexpr std::int64_t kSecondSignalNs = 1'000'000'000;
+
+extern "C" void on_stop_signal(int signal) {
+  timespec now{};
+  ::clock_gettime(CLOCK_MONOTONIC, &now);  // async-signal-safe
+  const std::int64_t ns = static_cast<std::int64_t>(now.tv_sec) * 1'000'000'000 + now.tv_nsec;
+  std::int64_t first = 0;
+  if (first_stop_ns.compare_exchange_strong(first, ns)) {
+    stop_requested.store(true);
+    return;
+  }
+  if (ns - first < kSecondSignalNs) return;
+  ::signal(signal, SIG_DFL);  // the second stop: killed by it, as without a handler
+  ::raise(signal);
+}
+
+/// Installs the stop handlers for its lifetime. A second signal, a second or more after the
+/// first, kills.
 class StopSignals {
  public:
   StopSignals() {
     stop_requested.store(false);
+    first_stop_ns.store(0);
     struct sigaction sa {};
     sa.sa_handler = on_stop_signal;
     sigemptyset(&sa.sa_mask);
-    sa.sa_flags = SA_RESETHAND | SA_RESTART;
+    sa.sa_flags = SA_RESTART;
     ::sigaction(SIGINT, &sa, &old_int_);
     ::sigaction(SIGTERM, &sa, &old_term_);
   }
@@ -160,7 +184,8 @@ nlohmann::json reconcile_earlier_outputs(const SweepPlan& plan, const RunnerOpti
     for (const char* f : kOutputFiles) fs::remove(dir + "/" + f);
     std::error_code ec;  // a directory not made yet holds nothing
     for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
-      if (is_search_certificate_file(e.path().filename().string())) fs::remove(e.path());
+      const std::string name = e.path().filename().string();
+      if (is_search_certificate_file(name) || is_search_status_file(name)) fs::remove(e.path());
     }
     return sessions;
   }

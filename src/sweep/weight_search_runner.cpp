@@ -31,6 +31,7 @@
 #include "sim/heuristics.hpp"
 #include "sweep/manifest.hpp"
 #include "sweep/progress_meter.hpp"
+#include "sweep/search_anytime.hpp"
 #include "sweep/search_certificate.hpp"
 #include "sweep/search_tables.hpp"
 #include "sweep/sweep_table.hpp"
@@ -83,6 +84,9 @@ struct Searched {
   std::size_t resumed = 0;
   ExactSearchStats stats;
   double wall_s = 0.0;
+  /// Mode best: where the search stands (describe_search_status() of its last anytime status);
+  /// empty in mode all.
+  std::string standing;
 };
 
 class SearchWriter {
@@ -118,12 +122,18 @@ class SearchWriter {
     std::unordered_map<std::uint64_t, SubtreeTally>& done = journaled.done;
     const double sign = direction_sign();
     double incumbent = std::numeric_limits<double>::infinity();
+    std::vector<double> best_weights;  // of the incumbent, for the anytime status
+    const auto better = [&](const FoundBehaviour& f) {
+      if (std::isnan(f.objective) || !(sign * f.objective < incumbent)) return;
+      incumbent = sign * f.objective;
+      best_weights = grid_.weights_at(f.behaviour.representative);
+    };
     for (const FoundBehaviour& f : found) {
       SubtreeTally leaf;
       leaf.vectors = f.behaviour.vectors;
       leaf.behaviours = 1;
       done.emplace(subtree_of(root_id, f.behaviour.choices), leaf);
-      if (!std::isnan(f.objective)) incumbent = std::min(incumbent, sign * f.objective);
+      better(f);
     }
     for (const auto& [choices, leaf] : journaled.leaves) done.emplace(subtree_of(root_id, choices), leaf);
     out.resumed = found.size();
@@ -131,9 +141,14 @@ class SearchWriter {
     SubtreeJournal subtrees;
     subtrees.done = &done;
     subtrees.on_done = [&](std::uint64_t id, const SubtreeTally& t) { journal.append_done(key, id, t); };
-    subtrees.on_skipped = on_vectors;
+    std::atomic<std::uint64_t> resolved{0};
+    const auto count = [&](std::uint64_t n) {
+      resolved.fetch_add(n, std::memory_order_relaxed);
+      on_vectors(n);
+    };
+    subtrees.on_skipped = count;
     const auto keep = [&](Behaviour&& b) {
-      on_vectors(b.vectors);
+      count(b.vectors);
       FoundBehaviour f;
       f.behaviour = std::move(b);
       for (std::size_t i = 0; i < specs.size(); ++i) {
@@ -143,6 +158,7 @@ class SearchWriter {
       f.objective = objective_of(f.cells);
       journal.append(key, f.behaviour, cell_texts(f.cells));
       tables_.admit(f);
+      better(f);
       found.push_back(std::move(f));
     };
     if (search_.mode == WeightSearch::Mode::All) {
@@ -153,13 +169,31 @@ class SearchWriter {
         return sign * class_objective(results, objective_);
       };
       bnb.lower_bound = [&](std::span<const Simulation> sims) { return class_lower_bound(sims, objective_); };
-      bnb.on_pruned = on_vectors;
+      bnb.on_pruned = count;
       bnb.on_leaf = [&](const CertifiedLeaf& leaf) {
-        if (leaf.kind == CertifiedLeaf::Kind::Beaten) on_vectors(leaf.vectors);
+        if (leaf.kind == CertifiedLeaf::Kind::Beaten) count(leaf.vectors);
         journal.append_leaf(key, leaf);
       };
       bnb.incumbent = incumbent;
+      bnb.order = search_.order;
+      bnb.max_open = search_.max_open;
+      bnb.probes = spread_probes(grid_, root, search_.probes, id_);
+      bnb.on_probe = [&](const std::array<int, WeightGrid::kMaxWeights>& at, double objective) {
+        if (!(objective < incumbent)) return;
+        incumbent = objective;
+        best_weights = grid_.weights_at(at);
+      };
+      SearchAnytimeLog anytime(out_dir_, id_, key, grid_.count(root), sign, search_.weights);
+      bnb.on_anytime = [&](const AnytimeState& state) {
+        anytime.record(state, resolved.load(), best_weights, "running");
+      };
       out.stats = exact_search(specs, grid_, threads, keep, &bnb, &root, &subtrees, stop);
+      AnytimeState last;
+      last.best = out.stats.best;
+      last.lower = std::min(out.stats.best, out.stats.unresolved_bound);
+      last.open_branches = out.stats.unresolved_branches;
+      anytime.record(last, resolved.load(), best_weights, out.stats.stopped ? "stopped" : "finished");
+      out.standing = describe_search_status(anytime.last());
     }
     out.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return out;
@@ -228,6 +262,12 @@ class SearchWriter {
       out.stats.splits += r.at("splits").get<std::uint64_t>();
       out.stats.forks += r.at("forks").get<std::uint64_t>();
       out.wall_s += r.at("wall_s").get<double>();
+      if (r.contains("probes") && r.at("probes").is_number())
+        out.stats.probes += r.at("probes").get<std::size_t>();
+      if (r.contains("best_probe") && r.at("best_probe").is_number()) {
+        out.stats.best_probe =
+            std::min(out.stats.best_probe, direction_sign() * r.at("best_probe").get<double>());
+      }
       const json& c = r.at("certificate");
       if (c.is_null()) continue;
       out.stats.behaviours += c.at("finished_behaviours").get<std::uint64_t>();
@@ -390,6 +430,11 @@ class SearchWriter {
                 {"planner", planner_label(plan_.planners().at(unit_.planner))},
                 {"robot", plan_.robots().at(unit_.robot).label},
                 {"mode", search_.mode == WeightSearch::Mode::All ? "all" : "best"},
+                {"order", search_.mode == WeightSearch::Mode::All ? json(nullptr) : json(order_name())},
+                {"probes", search_.mode == WeightSearch::Mode::All ? json(nullptr) : json(stats.probes)},
+                {"best_probe", search_.mode == WeightSearch::Mode::All || !std::isfinite(stats.best_probe)
+                                   ? json(nullptr)
+                                   : json(direction_sign() * stats.best_probe)},
                 {"objective", std::string(objective_.name)},
                 {"box", box},
                 {"vectors", grid_.size()},
@@ -402,6 +447,12 @@ class SearchWriter {
                 {"wall_s", searched.wall_s},
                 {"merged_from_shards", shards},
                 {"instances", specs}};
+  }
+
+  /// Mode best's order of exploration ("order" in the sweep file).
+  [[nodiscard]] std::string order_name() const {
+    return search_.order == SearchOrder::Depth ? "depth"
+                                               : "bound (max_open " + std::to_string(search_.max_open) + ")";
   }
 
   /// Branch and bound minimises direction_sign() x the objective: 1 for a minimised objective, -1 for a
@@ -454,6 +505,42 @@ std::vector<SearchUnit> checked_units(const SweepPlan& plan, const Objective*& o
   return units;
 }
 
+/// Mode best: each search's status joined from its shards' (join_search_status()), written as
+/// out_dir's status file; returns a note for the error of a merge that lacks some shard (empty
+/// when no search has a status). `merged`: every shard finished, and a search some of whose
+/// shards have no status (run by an older fsweep) gets none.
+std::string join_shard_status(const SweepPlan& plan, const std::vector<SearchUnit>& units,
+                              const std::string& out_dir, const std::vector<std::string>& shard_dirs,
+                              bool merged = false) {
+  std::string note;
+  const Objective* objective = find_objective(plan.objective());
+  const double sign = objective->direction == Direction::Minimize ? 1.0 : -1.0;
+  for (std::size_t id = 0; id < units.size(); ++id) {
+    if (plan.strategies().at(units[id].entry).search->mode != WeightSearch::Mode::Best) continue;
+    std::vector<json> shards;
+    for (const std::string& dir : shard_dirs) {
+      const std::string path = dir + "/" + search_status_file(id);
+      json status = nullptr;
+      if (const auto text = read_file(path)) {
+        try {
+          status = parse_json_bounded(*text, path);
+        } catch (const std::exception&) {  // an unreadable status: that shard's bound is unknown
+          status = nullptr;
+        }
+      }
+      shards.push_back(std::move(status));
+    }
+    if (merged && std::find(shards.begin(), shards.end(), json(nullptr)) != shards.end()) continue;
+    const WeightGrid grid(plan.strategies().at(units[id].entry).search->values);
+    const json joint = join_search_status(shards, grid.size(), sign);
+    std::filesystem::create_directories(out_dir);
+    write_file_atomically(out_dir + "/" + search_status_file(id), joint.dump(2) + '\n');
+    note += "; search " + std::to_string(id) + " of the shards so far: " + describe_search_status(joint) +
+            " (" + out_dir + "/" + search_status_file(id) + ")";
+  }
+  return note;
+}
+
 }  // namespace
 
 SearchRunReport run_weight_searches(const SweepPlan& plan, const std::string& out_dir, int threads,
@@ -497,6 +584,10 @@ SearchRunReport run_weight_searches(const SweepPlan& plan, const std::string& ou
         std::fputs("fsweep: weight search stopped; what it finished is in search_journal.jsonl\n", stderr);
       }
       report.interrupted = true;
+      if (!searched.standing.empty()) {
+        report.standings.push_back("search " + std::to_string(id) + ": " + searched.standing + " (" +
+                                   search_status_file(id) + ")");
+      }
       report.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       return report;
     }
@@ -535,7 +626,8 @@ SearchRunReport merge_weight_searches(const SweepPlan& plan, const std::string& 
     if (!text) {
       throw ConfigError(path,
                         "missing: the shard's weight searches did not finish; rerun `fsweep run --shard` "
-                        "for it (it resumes from its search_journal.jsonl)");
+                        "for it (it resumes from its search_journal.jsonl)" +
+                            join_shard_status(plan, units, out_dir, shard_dirs));
     }
     json shard;
     try {
@@ -555,6 +647,7 @@ SearchRunReport merge_weight_searches(const SweepPlan& plan, const std::string& 
     SearchWriter writer(plan, units[id], id, *objective, out_dir);
     rows.push_back(writer.rows(writer.merged(shard_dirs, records[id]), shard_dirs, json(records[id])));
   }
+  (void)join_shard_status(plan, units, out_dir, shard_dirs, true);  // every shard finished: the optimum
   write_search_files(plan, units, std::move(rows), out_dir, report);
   report.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return report;

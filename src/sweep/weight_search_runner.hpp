@@ -64,8 +64,12 @@ struct SearchRunReport {
   double wall_s = 0.0;
   /// The files written, in the order above.
   std::vector<std::string> files;
-  /// Stopped by `stop` before every search finished: no file but the journal was written.
+  /// Stopped by `stop` before every search finished: no file but the journal and the stopped
+  /// search's anytime status (search_anytime.hpp) was written.
   bool interrupted = false;
+  /// Of a stopped search of mode best: where it stands (describe_search_status()), naming its
+  /// status file.
+  std::vector<std::string> standings;
 };
 
 /// Runs every search of `plan` (none: returns at once, writing nothing) on `threads` worker

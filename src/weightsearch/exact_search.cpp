@@ -7,11 +7,14 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -34,6 +37,34 @@ struct Node {
   SubtreeTally tally;
 };
 
+/// Branch and bound's bounds of the branches not yet resolved (AnytimeState::lower), one slot per
+/// branch. Used under the Explorer's mutex.
+class OpenBounds {
+ public:
+  using Slot = std::multiset<double>::iterator;
+  Slot open(double bound) { return bounds_.insert(bound); }
+  Slot raise(Slot slot, double bound) {
+    auto node = bounds_.extract(slot);
+    node.value() = bound;
+    return bounds_.insert(std::move(node));
+  }
+  void close(Slot slot) { bounds_.erase(slot); }
+  /// The smallest bound (+infinity: none open).
+  [[nodiscard]] double lowest() const {
+    return bounds_.empty() ? std::numeric_limits<double>::infinity() : *bounds_.begin();
+  }
+  [[nodiscard]] std::size_t size() const { return bounds_.size(); }
+
+ private:
+  std::multiset<double> bounds_;
+};
+
+/// A branch's slot in OpenBounds and the bound it holds (branch and bound only).
+struct OpenSlot {
+  OpenBounds::Slot slot;
+  double bound = 0.0;
+};
+
 /// One branch of the region tree being explored: one simulation per instance and the weight
 /// vectors they stand for.
 struct Branch {
@@ -49,6 +80,8 @@ struct Branch {
   /// Its directions in the coordinates of tied features (WeightGrid::tied_directions), for
   /// signs -1 and +1, built the first time the plain directions do not settle a decision.
   std::array<std::optional<WeightDirections>, 2> tied;
+  /// Branch and bound: its slot among the open bounds, until it is resolved.
+  std::optional<OpenSlot> open;
 };
 
 class Explorer {
@@ -192,16 +225,25 @@ class Explorer {
                                                   std::nullopt,
                                                   std::nullopt,
                                                   std::nullopt,
-                                                  {}});
+                                                  {},
+                                                  std::nullopt});
       fork->choices.push_back(shares[s].candidate);
+      if (b.open) fork->open = open_slot(b.open->bound);
       const int candidate = shares[s].candidate;
+      if (by_bound()) {
+        wait(Waiting{std::move(fork), candidate, instance});
+        continue;
+      }
       tasks_.run([this, fork, candidate, instance] {
         (void)fork->sims[instance].step_choosing(candidate);
         explore(std::move(*fork));
       });
     }
     release(b.node);
-    if (children.back() == nullptr) return false;
+    if (children.back() == nullptr) {
+      close_slot(b);
+      return false;
+    }
     WeightGrid::Share& last = shares.back();
     b.choices.push_back(last.candidate);
     b.node = std::move(children.back());
@@ -210,7 +252,9 @@ class Explorer {
     b.vectors.reset();
     b.directions.reset();
     b.tied = {};
-    return true;
+    if (!by_bound()) return true;
+    wait(Waiting{std::make_shared<Branch>(std::move(b)), last.candidate, instance});
+    return false;
   }
 
   [[nodiscard]] ExactSearchStats stats() const {
@@ -223,10 +267,88 @@ class Explorer {
     s.smallest_pruned_bound = smallest_pruned_bound_.load();
     s.best = best_.load();
     s.stopped = stopped_.load();
+    const std::lock_guard<std::mutex> lock(mutex_);
+    s.unresolved_bound = open_bounds_.lowest();
+    s.unresolved_branches = open_bounds_.size();
+    s.probes = probes_;
+    s.best_probe = best_probe_.load();
     return s;
   }
 
+  /// Runs the probes of `bnb` inside `region` alone on every instance (as tasks, one per probe;
+  /// waits for them) and lowers the best objective to theirs.
+  void probe(std::span<const RunSpec> instances, const WeightRegion& region) {
+    if (bnb_ == nullptr) return;
+    for (const auto& at : bnb_->probes) {
+      if (!grid_.contains(region, at)) continue;
+      ++probes_;
+      tasks_.run([this, instances, at] {
+        const std::vector<double> weights = grid_.weights_at(at);
+        std::vector<RunResult> results;
+        for (const RunSpec& spec : instances) {
+          Simulation sim(spec);
+          sim.set_weights(weights);
+          while (sim.step()) {
+            if (stopping()) return;
+          }
+          results.push_back(std::move(sim).result());
+        }
+        const double objective = bnb_->objective(results);
+        if (std::isnan(objective)) return;
+        lower_to(best_, objective);
+        lower_to(best_probe_, objective);
+        if (bnb_->on_probe) {
+          const std::lock_guard<std::mutex> lock(mutex_);
+          bnb_->on_probe(at, objective);
+        }
+      });
+    }
+    tasks_.wait();
+  }
+
+  /// Branch and bound: a slot among the open bounds for a new branch whose bound is `bound`.
+  OpenSlot open_slot(double bound) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    return OpenSlot{open_bounds_.open(bound), bound};
+  }
+
  private:
+  /// A branch waiting for a thread (SearchOrder::Bound): its choice at `instance`'s decision is
+  /// not yet stepped.
+  struct Waiting {
+    std::shared_ptr<Branch> branch;
+    int candidate = 0;
+    std::size_t instance = 0;
+  };
+
+  /// True when branches wait in order of their bounds (SearchOrder::Bound).
+  [[nodiscard]] bool by_bound() const { return bnb_ != nullptr && bnb_->order == SearchOrder::Bound; }
+
+  /// Puts `w` among the waiting branches, by its bound, and a task that will take one.
+  void wait(Waiting w) {
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      const double bound = w.branch->open ? w.branch->open->bound : -std::numeric_limits<double>::infinity();
+      waiting_.emplace(bound, std::move(w));
+    }
+    tasks_.run([this] { take_waiting(); });
+  }
+
+  /// Explores the waiting branch of the smallest bound, or of the largest while more than
+  /// max_open wait.
+  void take_waiting() {
+    Waiting w;
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      auto at = waiting_.size() > bnb_->max_open ? std::prev(waiting_.end()) : waiting_.begin();
+      w = std::move(at->second);
+      waiting_.erase(at);
+    }
+    if (stopping()) return;  // its slot stays open: unresolved
+    (void)w.branch->sims[w.instance].step_choosing(w.candidate);
+    explore(std::move(*w.branch));
+  }
+
   /// True (and remembered) once the caller's stop flag is set.
   bool stopping() {
     if (stop_ == nullptr || !stop_->load(std::memory_order_relaxed)) return false;
@@ -235,10 +357,13 @@ class Explorer {
   }
 
   /// Branch and bound: true (and counted) when `b`'s lower bound exceeds the best objective found.
-  bool pruned(const Branch& b) {
+  bool pruned(Branch& b) {
     if (bnb_ == nullptr) return false;
     const double bound = bnb_->lower_bound(b.sims);
-    if (!(bound > best_.load())) return false;
+    if (!(bound > best_.load())) {
+      raise_slot(b, bound);
+      return false;
+    }
     pruned_regions_.fetch_add(1, std::memory_order_relaxed);
     pruned_vectors_.fetch_add(*b.vectors, std::memory_order_relaxed);
     lower_to(smallest_pruned_bound_, bound);
@@ -261,8 +386,49 @@ class Explorer {
         bnb_->on_leaf(certified);
       }
     }
+    close_slot(b);
     release(b.node);
     return true;
+  }
+
+  /// The open bounds' share of AnytimeState (under the mutex).
+  [[nodiscard]] AnytimeState anytime_state() const {
+    AnytimeState s;
+    s.best = best_.load();
+    s.lower = std::min(s.best, open_bounds_.lowest());
+    s.open_branches = open_bounds_.size();
+    return s;
+  }
+
+  /// Raises `b`'s open bound to `bound` when it grew by more than a thousandth (a lagging bound
+  /// is still a bound: each branch's bound only grows as its runs go on), then reports the
+  /// state if it is time to.
+  void raise_slot(Branch& b, double bound) {
+    if (!b.open || !(bound > b.open->bound)) return;
+    if (!(bound - b.open->bound > 1e-3 * std::abs(bound)) && std::isfinite(b.open->bound)) return;
+    const std::lock_guard<std::mutex> lock(mutex_);
+    b.open->slot = open_bounds_.raise(b.open->slot, bound);
+    b.open->bound = bound;
+    maybe_report();
+  }
+
+  /// Takes `b`'s bound off the open ones: it is resolved.
+  void close_slot(Branch& b) {
+    if (!b.open) return;
+    const std::lock_guard<std::mutex> lock(mutex_);
+    open_bounds_.close(b.open->slot);
+    b.open.reset();
+    maybe_report();
+  }
+
+  /// Calls bnb->on_anytime when anytime_interval_s has passed since the last call (under the
+  /// mutex).
+  void maybe_report() {
+    if (!bnb_->on_anytime) return;
+    const auto now = std::chrono::steady_clock::now();
+    if (std::chrono::duration<double>(now - last_report_).count() < bnb_->anytime_interval_s) return;
+    last_report_ = now;
+    bnb_->on_anytime(anytime_state());
   }
 
   /// Ends one unfinished part of `node` (its own stretch, or a child's subtree). A node left with
@@ -285,6 +451,7 @@ class Explorer {
   }
 
   void finish(Branch b) {
+    close_slot(b);
     Behaviour out;
     out.vectors = b.vectors ? *b.vectors : grid_.count(b.region);
     out.representative = grid_.lexmin(b.region);
@@ -334,7 +501,10 @@ class Explorer {
   const WeightGrid& grid_;
   tbb::task_group& tasks_;
   const std::function<void(Behaviour&&)>& on_behaviour_;
-  std::mutex mutex_;
+  mutable std::mutex mutex_;
+  OpenBounds open_bounds_;
+  std::multimap<double, Waiting> waiting_;  // SearchOrder::Bound: by bound
+  std::chrono::steady_clock::time_point last_report_ = std::chrono::steady_clock::now();
   std::atomic<std::uint64_t> behaviours_{0};
   std::atomic<std::uint64_t> splits_{0};
   std::atomic<std::uint64_t> forks_{0};
@@ -346,6 +516,8 @@ class Explorer {
   std::atomic<std::uint64_t> pruned_vectors_{0};
   std::atomic<double> smallest_pruned_bound_{std::numeric_limits<double>::infinity()};
   std::atomic<double> best_{std::numeric_limits<double>::infinity()};
+  std::size_t probes_ = 0;
+  std::atomic<double> best_probe_{std::numeric_limits<double>::infinity()};
 };
 
 }  // namespace
@@ -381,6 +553,29 @@ std::uint64_t subtree_child(std::uint64_t parent, int choice) {
 std::uint64_t subtree_of(std::uint64_t root, std::span<const int> choices) {
   for (const int c : choices) root = subtree_child(root, c);
   return root;
+}
+
+std::vector<std::array<int, WeightGrid::kMaxWeights>> spread_probes(const WeightGrid& grid,
+                                                                    const WeightRegion& region,
+                                                                    std::size_t count, std::uint64_t seed) {
+  using Point = std::array<int, WeightGrid::kMaxWeights>;
+  std::vector<Point> out;
+  const auto take = [&](const Point& p) {
+    if (out.size() < count && grid.contains(region, p) && std::find(out.begin(), out.end(), p) == out.end())
+      out.push_back(p);
+  };
+  Point middle{};
+  for (int k = 0; k < grid.weights(); ++k)
+    middle[static_cast<std::size_t>(k)] = static_cast<int>(grid.values(k).size() / 2);
+  take(middle);
+  Rng rng(mix64(seed ^ 0x9B0BE5));
+  for (std::size_t tries = 0; tries < 64 * count && out.size() < count; ++tries) {
+    Point p{};
+    for (int k = 0; k < grid.weights(); ++k)
+      p[static_cast<std::size_t>(k)] = static_cast<int>(uniform_below(rng, grid.values(k).size()));
+    take(p);
+  }
+  return out;
 }
 
 ExactSearchStats exact_search(std::span<const RunSpec> instances, const WeightGrid& grid, int threads,
@@ -426,16 +621,18 @@ ExactSearchStats exact_search(std::span<const RunSpec> instances, const WeightGr
     WeightRegion everything = within != nullptr ? *within : grid.everything();
     const std::uint64_t root = subtree_root(everything);
     if (!everything.empty() && !explorer.skipped(root, nullptr)) {
-      tasks.run([&] {
-        explorer.explore(Branch{std::move(roots),
-                                std::move(everything),
-                                {},
-                                std::make_shared<Node>(Node{root, nullptr, 1, false, {}}),
-                                std::nullopt,
-                                std::nullopt,
-                                std::nullopt,
-                                {}});
-      });
+      explorer.probe(instances, everything);
+      auto first = std::make_shared<Branch>(Branch{std::move(roots),
+                                                   std::move(everything),
+                                                   {},
+                                                   std::make_shared<Node>(Node{root, nullptr, 1, false, {}}),
+                                                   std::nullopt,
+                                                   std::nullopt,
+                                                   std::nullopt,
+                                                   {},
+                                                   std::nullopt});
+      if (bnb != nullptr) first->open = explorer.open_slot(bnb->lower_bound(first->sims));
+      tasks.run([&explorer, first] { explorer.explore(std::move(*first)); });
     }
     tasks.wait();
     stats = explorer.stats();

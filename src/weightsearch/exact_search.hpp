@@ -27,6 +27,7 @@
 #include "sim/run_result.hpp"
 #include "sim/run_spec.hpp"
 #include "sim/simulation.hpp"
+#include "weightsearch/search_order.hpp"
 #include "weightsearch/weight_grid.hpp"
 
 namespace fsweep {
@@ -75,6 +76,19 @@ struct CertifiedLeaf {
   std::uint64_t trace = 0;
 };
 
+/// Where branch and bound stands while it runs (docs/weight-search.md, "Boxes out of reach"):
+/// the optimum of the searched region lies in [lower, best].
+struct AnytimeState {
+  /// The smallest objective finished so far (+infinity: none yet).
+  double best = std::numeric_limits<double>::infinity();
+  /// A certified lower bound of every objective in the region: the smaller of `best` and the
+  /// bounds of the branches not yet resolved (each admissible; a branch's bound is the one
+  /// taken at its last decision, or at the split that created it, so it may lag behind).
+  double lower = -std::numeric_limits<double>::infinity();
+  /// Branches not yet resolved.
+  std::size_t open_branches = 0;
+};
+
 /// Branch and bound: the search for the behaviours that minimise an objective, leaving out
 /// regions that provably cannot hold one.
 struct BranchAndBound {
@@ -94,6 +108,22 @@ struct BranchAndBound {
   /// The objective of a behaviour known before the search (e.g. found by a killed search that
   /// is resumed): regions whose bound exceeds it are pruned from the start. +infinity: none.
   double incumbent = std::numeric_limits<double>::infinity();
+  /// Called with the search's AnytimeState at most once every `anytime_interval_s` seconds while
+  /// it runs (as on_behaviour: from any thread, never at once with another call); may be empty.
+  /// ExactSearchStats holds the state at the end.
+  std::function<void(const AnytimeState&)> on_anytime;
+  double anytime_interval_s = 5.0;
+  /// Grid points (indices, as Behaviour::representative) run alone before the search, each
+  /// on every instance, the best of their objectives the first incumbent (below `incumbent`,
+  /// else ignored): branch and bound prunes from the start with a good one instead of the first
+  /// dive's. Points outside the searched region are left out. Each is some vector's objective,
+  /// so no optimal behaviour is pruned; only the time and the certificate's partition change.
+  std::vector<std::array<int, WeightGrid::kMaxWeights>> probes;
+  /// Called with each probe's point and objective (not NaN), as on_behaviour; may be empty.
+  std::function<void(const std::array<int, WeightGrid::kMaxWeights>&, double)> on_probe;
+  /// The order of exploration, and SearchOrder::Bound's most waiting branches (>= 1).
+  SearchOrder order = SearchOrder::Depth;
+  std::size_t max_open = kDefaultMaxOpenBranches;
 };
 
 /// What an exact search did.
@@ -110,6 +140,14 @@ struct ExactSearchStats {
   std::uint64_t pruned_vectors = 0;
   double smallest_pruned_bound = std::numeric_limits<double>::infinity();
   double best = std::numeric_limits<double>::infinity();
+  /// Branch and bound only: the smallest bound of the branches a stop left unresolved (each a
+  /// lower bound of every objective in its region), +infinity when none was left.
+  double unresolved_bound = std::numeric_limits<double>::infinity();
+  std::size_t unresolved_branches = 0;
+  /// Branch and bound only: the probes run (BranchAndBound::probes inside the region) and the
+  /// best of their objectives (+infinity: none had one).
+  std::size_t probes = 0;
+  double best_probe = std::numeric_limits<double>::infinity();
   /// True when `stop` ended the search early: the behaviours it reported and the subtrees it
   /// journaled are finished, the rest of the grid is not resolved (a rerun with the journal
   /// searches it).
@@ -150,6 +188,14 @@ struct SubtreeJournal {
   /// Called with the vector count of each skipped subtree (progress); may be empty.
   std::function<void(std::uint64_t)> on_skipped;
 };
+
+/// `count` grid points spread over `region` for BranchAndBound::probes: the grid's middle point
+/// if the region holds it, then seeded uniform points of the grid that lie in it (at most 64 x
+/// `count` tries), no point twice. A pure function of its arguments.
+[[nodiscard]] std::vector<std::array<int, WeightGrid::kMaxWeights>> spread_probes(const WeightGrid& grid,
+                                                                                  const WeightRegion& region,
+                                                                                  std::size_t count,
+                                                                                  std::uint64_t seed);
 
 /// Searches `grid` for the class `instances` (at least one), whose strategies must be
 /// linear-scored with grid.weights() features (their own weights do not matter). Calls `on_behaviour` once

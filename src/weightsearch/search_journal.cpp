@@ -144,7 +144,8 @@ std::unordered_map<std::uint64_t, SubtreeTally> SearchJournal::read(
       const json j = parse_json_bounded(line, path);
       if (j.at("key").get<std::string>() == shape.key) {
         if (j.contains("done")) {
-          done.emplace(hex_id(j.at("done"), "subtree id"), tally_of(j));
+          const std::uint64_t id = hex_id(j.at("done"), "subtree id");  // checked first: its error names it
+          done.emplace(id, tally_of(j));
         } else if (j.contains("leaf")) {
           JournaledLeaf leaf = leaf_of(j, shape);
           if (each_leaf) each_leaf(std::move(leaf));

@@ -385,7 +385,7 @@ std::vector<WeightGrid::IndexBox> WeightGrid::index_boxes(const WeightRegion& re
 
 void WeightGrid::join_along(std::vector<IndexBox>& boxes, std::size_t k) {
   const auto others = [k](const IndexBox& b) {
-    std::array<int, 2 * kMaxWeights> key{};
+    std::array<int, std::size_t{2} * kMaxWeights> key{};
     for (std::size_t d = 0; d < kMaxWeights; ++d) {
       key[2 * d] = d == k ? 0 : b.lo[d];
       key[2 * d + 1] = d == k ? 0 : b.hi[d];

@@ -7,7 +7,7 @@ Draws the plots (tools/plot.py --layout-json) of three sweeps and checks every f
 - no legend overlaps a panel (the axes' area), and the figure title overlaps none;
 - no two panels overlap.
 The sweeps: sweeps/examples/strategies_planners.json (48 configurations, 2 map classes), the
-default sweep, and the nightly suite's 702 configurations from the committed baseline
+default sweep, a small exact weight search of mode best (its gap curve), and the nightly suite's 702 configurations from the committed baseline
 (results/baseline/nightly/runs.csv, 6 map classes), whose progress.csv is made here from each
 run's final explored area (the layout is what is checked, not the curves).
 
@@ -89,6 +89,24 @@ def nightly_dir(fsweep, work):
     return out
 
 
+def search_dir(fsweep, work):
+    """A small exact weight search of mode best (about a second): its gap curve."""
+    out = os.path.join(work, "search")
+    sweep = {"schema_version": 1, "name": "search_layout",
+             "maps": [{"generator": "free", "w": 71, "h": 71, "res": 10, "label": "free 710 m"}],
+             "strategies": [{"name": "energy_aware", "label": "exact",
+                             "search": {"method": "exact", "mode": "best", "order": "bound"},
+                             "params": {"w1": {"range": [0, 15], "step": 1}, "w2": {"range": [0, 7], "step": 1},
+                                        "w3": {"range": [0, 7], "step": 1}, "w4": [0, 1, 2]}}],
+             "robot": {"sensor": {"range_m": 30}, "energy": "distance", "battery": 600}, "seed": 2016}
+    os.makedirs(work, exist_ok=True)
+    path = os.path.join(work, "search_layout.json")
+    with open(path, "w", encoding="utf-8") as f:
+        json.dump(sweep, f)
+    run([fsweep, "run", path, "--quiet", "--fresh", "--out", out])
+    return out
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("fsweep")
@@ -101,6 +119,7 @@ def main():
         dirs[name] = os.path.join(args.work, name)
         run([args.fsweep, "run", sweep, "--quiet", "--fresh", "--out", dirs[name]])
     dirs["nightly"] = nightly_dir(args.fsweep, args.work)
+    dirs["search"] = search_dir(args.fsweep, args.work)
     problems, figures = [], 0
     for name, d in dirs.items():
         layout = os.path.join(d, "layout.json")

@@ -20,6 +20,7 @@
 #include "core/statistics.hpp"
 #include "report/runs_schema.hpp"
 #include "sweep/merge.hpp"
+#include "sweep/search_anytime.hpp"
 #include "sweep/sweep_plan.hpp"
 #include "sweep/sweep_runner.hpp"
 #include "sweep/sweep_test_files.hpp"
@@ -444,7 +445,8 @@ TEST(WeightSearchRunner, AKilledBestSearchResumesWithItsJournalAsIncumbent) {
       {"w1", {0, 1, 2, 3}}, {"w2", {0, 2}}, {"w3", {{"range", {0, 5}}, {"step", 1}}}, {"w4", {0, 1}}};
   json sweep = search_and_grid(json::array({"office:w=32,h=32,seed=3"}), box, json::array());
   sweep["strategies"].erase(1);
-  sweep["strategies"][0]["search"] = {{"mode", "best"}};
+  // No probes: they would find the optimum first, leaving one behaviour to journal.
+  sweep["strategies"][0]["search"] = {{"mode", "best"}, {"probes", 0}};
   const std::string dir = run(sweep, "best_resume");
   const std::string behaviours = testing::read_file(dir + "/behaviours.csv");
   const std::string best = testing::read_file(dir + "/search_best.csv");
@@ -641,16 +643,22 @@ TEST(WeightSearchRunner, AKilledSearchResumesFromItsJournalWithTheSameFiles) {
   }
 }
 
-TEST(WeightSearchRunner, InterruptStopsTheSearchAndTheRerunResumesIt) {
-  // SIGINT during a search (after the runs) stops it: the manifest says "interrupted", no search
-  // file but the journal is written, the journal keeps what finished, and the same command
-  // then resumes and writes the files of an uninterrupted search.
+/// A search of the box [0, 3]^4 on an office map, without the grid entry.
+json office_search_of_256() {
   const json box = {{"w1", {{"range", {0, 3}}, {"step", 1}}},
                     {"w2", {{"range", {0, 3}}, {"step", 1}}},
                     {"w3", {{"range", {0, 3}}, {"step", 1}}},
                     {"w4", {{"range", {0, 3}}, {"step", 1}}}};
   json sweep = search_and_grid(json::array({"office:w=32,h=32,seed=3"}), box, json::array());
   sweep["strategies"].erase(1);
+  return sweep;
+}
+
+TEST(WeightSearchRunner, InterruptStopsTheSearchAndTheRerunResumesIt) {
+  // SIGINT during a search (after the runs) stops it: the manifest says "interrupted", no search
+  // file but the journal is written, the journal keeps what finished, and the same command
+  // then resumes and writes the files of an uninterrupted search.
+  json sweep = office_search_of_256();
   const std::string ref = run(sweep, "sigint_ref");
   const std::string dir = testing::fresh_dir("search", "sigint");
   const std::string journal = dir + "/search_journal.jsonl";
@@ -681,6 +689,146 @@ TEST(WeightSearchRunner, InterruptStopsTheSearchAndTheRerunResumesIt) {
     EXPECT_EQ(testing::read_file(dir + "/" + f), testing::read_file(ref + "/" + f)) << f;
   }
   std::filesystem::remove_all(ref);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(WeightSearchRunner, AStoppedBestSearchSaysWhereItStandsAndResumesItsCurve) {
+  // Mode best keeps its anytime state: a stop writes the best vector so far and a bound of the
+  // optimum (search_status_0.json, a row of search_anytime.csv); the rerun finishes with bound
+  // = best = the optimum, its curve going on in time.
+  json sweep = office_search_of_256();
+  for (const char* order : {"depth", "bound"}) {
+    sweep["strategies"][0]["search"] = {{"mode", "best"}, {"order", order}};
+    const std::string dir = testing::fresh_dir("search", std::string("anytime_") + order);
+    const std::string journal = dir + "/search_journal.jsonl";
+    testing::InterruptWhen interrupter([&] {
+      return std::filesystem::exists(journal) && journal_lines(testing::read_file(journal)).size() >= 6;
+    });
+    RunnerOptions o = testing::quiet_runner(dir);
+    const RunnerReport first = run_sweep(SweepPlan::from_json(sweep, "search.json"), o);
+    interrupter.join();
+    ASSERT_TRUE(first.searches.interrupted) << order << ": the search finished before the interrupt";
+    ASSERT_EQ(first.searches.standings.size(), 1U);
+    EXPECT_NE(first.searches.standings[0].find("search_status_0.json"), std::string::npos);
+    const json stopped = json::parse(testing::read_file(dir + "/search_status_0.json"));
+    EXPECT_EQ(stopped["status"], "stopped") << order;
+    EXPECT_GT(stopped["open_branches"].get<std::size_t>(), 0U) << order;
+    EXPECT_LT(stopped["resolved_vectors"].get<std::uint64_t>(), 256U) << order;
+
+    const RunnerReport second = run_sweep(SweepPlan::from_json(sweep, "search.json"), o);
+    ASSERT_FALSE(second.interrupted);
+    const json done = json::parse(testing::read_file(dir + "/search_status_0.json"));
+    const double optimum =
+        json::parse(testing::read_file(dir + "/searches.json"))["searches"][0]["certificate"]["optimum"];
+    EXPECT_EQ(done["status"], "finished") << order;
+    EXPECT_EQ(done["best"]["objective"].get<double>(), optimum) << order;
+    EXPECT_EQ(done["bound"].get<double>(), optimum) << order;
+    EXPECT_EQ(done["gap"].get<double>(), 0.0) << order;
+    EXPECT_EQ(done["resolved_vectors"], 256U) << order;
+    ASSERT_FALSE(stopped["bound"].is_null()) << order << ": a stop knows the bounds of its open branches";
+    EXPECT_LE(stopped["bound"].get<double>(), optimum) << order;
+    if (!stopped["best"].is_null()) {
+      EXPECT_GE(stopped["best"]["objective"].get<double>(), optimum) << order;
+    }
+    const Table curve = read_table(dir + "/search_anytime.csv");
+    ASSERT_GE(curve.rows.size(), 2U);
+    std::vector<std::string> statuses;
+    double last = -1.0;
+    for (const auto& row : curve.rows) {
+      statuses.push_back(row[curve.col("status")]);
+      const double elapsed = std::stod(row[curve.col("elapsed_s")]);
+      EXPECT_GE(elapsed, last) << order << ": the resumed curve's time went back";
+      last = elapsed;
+    }
+    EXPECT_EQ(std::count(statuses.begin(), statuses.end(), "stopped"), 1) << order;
+    EXPECT_EQ(statuses.back(), "finished") << order;
+    std::filesystem::remove_all(dir);
+  }
+}
+
+TEST(WeightSearchRunner, TheShardsStatusesJoinIntoTheWholeSearchs) {
+  // The best of the shards' best vectors, the weakest of their bounds, a shard without a status
+  // (never started) leaving the bound unknown.
+  const json finished = {{"status", "finished"},
+                         {"resolved_vectors", 100},
+                         {"bound", 10.0},
+                         {"best", {{"objective", 10.0}, {"weights", {{"w1", 1.0}}}}}};
+  const json stopped = {{"status", "stopped"},
+                        {"resolved_vectors", 40},
+                        {"bound", 7.5},
+                        {"best", {{"objective", 12.0}, {"weights", {{"w1", 9.0}}}}}};
+  const json joint = join_search_status(std::vector<json>{finished, stopped}, 200, 1.0);
+  EXPECT_EQ(joint["status"], "stopped");
+  EXPECT_EQ(joint["resolved_vectors"], 140U);
+  EXPECT_EQ(joint["best"]["objective"], 10.0);
+  EXPECT_EQ(joint["best"]["weights"]["w1"], 1.0);
+  EXPECT_EQ(joint["bound"], 7.5);
+  EXPECT_EQ(joint["gap"], 2.5);
+  EXPECT_EQ(joint["relative_gap"], 0.25);
+  EXPECT_NE(describe_search_status(joint).find("the optimum is at least 7.5 (gap 25%)"), std::string::npos)
+      << describe_search_status(joint);
+  const json unknown = join_search_status(std::vector<json>{finished, nullptr}, 200, 1.0);
+  EXPECT_TRUE(unknown["bound"].is_null());
+  EXPECT_TRUE(unknown["gap"].is_null());
+  EXPECT_EQ(join_search_status(std::vector<json>{finished, finished}, 200, 1.0)["status"], "finished");
+  // A maximised objective: the best is the largest, the bound an upper one.
+  json up = stopped;
+  up["bound"] = 15.0;
+  const json max = join_search_status(std::vector<json>{finished, up}, 200, -1.0);
+  EXPECT_EQ(max["best"]["objective"], 12.0);
+  EXPECT_EQ(max["bound"], 15.0);
+  EXPECT_EQ(max["gap"], 3.0);
+}
+
+TEST(WeightSearchRunner, AMergeOfUnfinishedShardsWritesTheirJointStatus) {
+  // Two shards ran; shard 1's search is then made unfinished (its searches.json removed): the
+  // merge refuses (as before) but says what the shards found so far and writes their joint
+  // status, its bound unknown while shard 1 has no status, else the weaker of the two.
+  const json box = {
+      {"w1", {{"range", {0, 15}}, {"step", 1}}}, {"w2", {0, 2}}, {"w3", {0, 3}}, {"w4", {0, 1}}};
+  json sweep = search_and_grid(json::array({"office:w=32,h=32,seed=3"}), box, json::array());
+  sweep["strategies"].erase(1);
+  sweep["strategies"][0]["search"] = {{"mode", "best"}};
+  const std::string dir = testing::fresh_dir("search", "anytime_shards");
+  for (const std::uint64_t shard : {0U, 1U}) {
+    RunnerOptions o = testing::quiet_runner(dir);
+    o.shard_index = shard;
+    o.shard_count = 2;
+    (void)run_sweep(SweepPlan::from_json(sweep, "search.json"), o);
+  }
+  const std::string status1 = dir + "/shard-1-of-2/search_status_0.json";
+  const json shard0 = json::parse(testing::read_file(dir + "/shard-0-of-2/search_status_0.json"));
+  json shard1 = json::parse(testing::read_file(status1));
+  EXPECT_EQ(shard0["status"], "finished");
+  EXPECT_EQ(shard0["vectors"], 64U);
+  EXPECT_EQ(shard0["gap"], 0.0);
+  std::filesystem::remove(dir + "/shard-1-of-2/searches.json");
+  std::filesystem::remove(status1);
+  const auto refused = [&] {
+    try {
+      (void)merge_shards(dir);
+    } catch (const ConfigError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(merged)");
+  };
+  const std::string message = refused();
+  EXPECT_NE(message.find("search 0 of the shards so far: best so far"), std::string::npos) << message;
+  EXPECT_NE(message.find("no bound on the optimum yet"), std::string::npos) << message;
+  json joint = json::parse(testing::read_file(dir + "/search_status_0.json"));
+  EXPECT_EQ(joint["best"], shard0["best"]);
+  EXPECT_TRUE(joint["bound"].is_null());
+  EXPECT_EQ(joint["resolved_vectors"], 64U);
+  // Shard 1 stopped with a bound below shard 0's optimum: the joint bound is it.
+  shard1["status"] = "stopped";
+  shard1["bound"] = shard0["bound"].get<double>() - 100.0;
+  shard1["resolved_vectors"] = 10;
+  testing::write_file(status1, shard1.dump());
+  (void)refused();
+  joint = json::parse(testing::read_file(dir + "/search_status_0.json"));
+  EXPECT_EQ(joint["status"], "stopped");
+  EXPECT_EQ(joint["bound"], shard1["bound"]);
+  EXPECT_EQ(joint["resolved_vectors"], 74U);
   std::filesystem::remove_all(dir);
 }
 
@@ -727,6 +875,24 @@ TEST(WeightSearchRunner, BadSearchEntriesAreRefusedWithTheirPath) {
   EXPECT_NE(
       with("/strategies/0/search/rank", json::array({{2, 0, 0, 0}})).find("/strategies/0/search/rank/0"),
       std::string::npos);
+  EXPECT_NE(best_refusal.find("/strategies/0/search/rank: mode \"best\""), std::string::npos) << best_refusal;
+  json ordered = base;
+  ordered["/strategies/0/search/order"_json_pointer] = "bound";
+  ordered["/strategies/0/search/max_open"_json_pointer] = 0;
+  const std::string order_refusal = refusal(ordered);
+  EXPECT_NE(order_refusal.find("/strategies/0/search/order: only a search of mode \"best\""),
+            std::string::npos)
+      << order_refusal;
+  EXPECT_NE(order_refusal.find("/strategies/0/search/max_open: value 0; allowed: integers 1 to 1000000"),
+            std::string::npos)
+      << order_refusal;
+  ordered["/strategies/0/search/mode"_json_pointer] = "best";
+  ordered["/strategies/0/search/order"_json_pointer] = "wide";
+  ordered["/strategies/0/search/max_open"_json_pointer] = 8;
+  EXPECT_NE(
+      refusal(ordered).find("/strategies/0/search/order: value \"wide\"; allowed: \"depth\", \"bound\""),
+      std::string::npos)
+      << refusal(ordered);
   json random = base;
   random["/strategies/0/name"_json_pointer] = "random_frontier";
   random["/strategies/0/params"_json_pointer] = json::object();

@@ -228,11 +228,8 @@ TEST(ExactSearch, ShardsFindPartsOfTheWholeSearchsBehavioursWithTheirTraces) {
   for (const Behaviour& b : whole) EXPECT_EQ(joined[b.trace], b.vectors);
 }
 
-TEST(ExactSearch, AnIncumbentPrunesEverythingWorseFromTheStart) {
-  // Branch and bound started with the optimum as its incumbent (a resumed search) reports only
-  // optimal behaviours, and the same ones as a search without it.
-  const RunSpec spec = spec_on("office:w=32,h=32,seed=3", 120.0);
-  const WeightGrid grid({integers(0, 3), integers(0, 2), integers(0, 5), integers(0, 2)});
+/// Branch and bound on the distance to final coverage of one run.
+BranchAndBound distance_bnb() {
   BranchAndBound bnb;
   bnb.objective = [](const std::vector<RunResult>& r) {
     return r.at(0).metrics.distance_to_final_coverage_m;
@@ -240,6 +237,15 @@ TEST(ExactSearch, AnIncumbentPrunesEverythingWorseFromTheStart) {
   bnb.lower_bound = [](std::span<const Simulation> sims) {
     return sims.front().metrics_so_far().distance_to_final_coverage_m;
   };
+  return bnb;
+}
+
+TEST(ExactSearch, AnIncumbentPrunesEverythingWorseFromTheStart) {
+  // Branch and bound started with the optimum as its incumbent (a resumed search) reports only
+  // optimal behaviours, and the same ones as a search without it.
+  const RunSpec spec = spec_on("office:w=32,h=32,seed=3", 120.0);
+  const WeightGrid grid({integers(0, 3), integers(0, 2), integers(0, 5), integers(0, 2)});
+  BranchAndBound bnb = distance_bnb();
   const auto search = [&](double incumbent, std::vector<double>& objectives) {
     bnb.incumbent = incumbent;
     return exact_search(
@@ -257,6 +263,108 @@ TEST(ExactSearch, AnIncumbentPrunesEverythingWorseFromTheStart) {
   for (const double o : warm_found) EXPECT_EQ(o, cold.best);
   EXPECT_EQ(warm_found.size(), static_cast<std::size_t>(std::count(first.begin(), first.end(), cold.best)));
   EXPECT_LT(warm.behaviours, cold.behaviours);
+
+  // Probes: the optimal vector run alone first is as good an incumbent.
+  std::vector<double> probed_found;
+  bnb.incumbent = std::numeric_limits<double>::infinity();
+  std::array<int, WeightGrid::kMaxWeights> optimal{};
+  (void)exact_search(
+      std::span<const RunSpec>(&spec, 1), grid, 1,
+      [&](Behaviour&& b) {
+        if (b.results.at(0).metrics.distance_to_final_coverage_m == cold.best) optimal = b.representative;
+      },
+      &bnb);
+  bnb.probes = {optimal};
+  std::vector<double> probed;
+  const ExactSearchStats with_probe = exact_search(
+      std::span<const RunSpec>(&spec, 1), grid, 2,
+      [&](Behaviour&& b) { probed.push_back(b.results.at(0).metrics.distance_to_final_coverage_m); }, &bnb);
+  EXPECT_EQ(with_probe.probes, 1U);
+  EXPECT_EQ(with_probe.best_probe, cold.best);
+  EXPECT_EQ(probed.size(), warm_found.size());
+  for (const double o : probed) EXPECT_EQ(o, cold.best);
+  const std::vector<std::array<int, WeightGrid::kMaxWeights>> spread =
+      spread_probes(grid, grid.everything(), 16, 7);
+  EXPECT_EQ(spread.size(), 16U);
+  EXPECT_EQ(spread, spread_probes(grid, grid.everything(), 16, 7)) << "not a pure function";
+  for (const auto& p : spread) EXPECT_TRUE(grid.contains(grid.everything(), p));
+}
+
+TEST(ExactSearch, BothOrdersFindTheSameOptimalBehaviours) {
+  // Smallest bound first (anytime) explores the tree in another order than depth first, with
+  // few waiting branches allowed (so it also drains by the largest bound): the optimal
+  // behaviours it reports are the same, for any thread count.
+  const RunSpec spec = spec_on("office:w=32,h=32,seed=3", 120.0);
+  const WeightGrid grid({integers(0, 3), integers(0, 2), integers(0, 5), integers(0, 2)});
+  const auto optimal = [&](SearchOrder order, std::size_t max_open, int threads) {
+    BranchAndBound bnb = distance_bnb();
+    bnb.order = order;
+    bnb.max_open = max_open;
+    std::vector<std::pair<std::vector<int>, double>> found;
+    const ExactSearchStats stats = exact_search(
+        std::span<const RunSpec>(&spec, 1), grid, threads,
+        [&](Behaviour&& b) {
+          found.emplace_back(b.choices, b.results.at(0).metrics.distance_to_final_coverage_m);
+        },
+        &bnb);
+    std::erase_if(found, [&](const auto& f) { return f.second != stats.best; });
+    std::sort(found.begin(), found.end());
+    EXPECT_EQ(stats.unresolved_bound, std::numeric_limits<double>::infinity())
+        << "a finished search left a branch open";
+    EXPECT_EQ(stats.unresolved_branches, 0U);
+    return found;
+  };
+  const auto depth = optimal(SearchOrder::Depth, kDefaultMaxOpenBranches, 2);
+  ASSERT_FALSE(depth.empty());
+  EXPECT_EQ(optimal(SearchOrder::Bound, kDefaultMaxOpenBranches, 1), depth);
+  EXPECT_EQ(optimal(SearchOrder::Bound, 2, 2), depth);
+}
+
+TEST(ExactSearch, TheAnytimeBoundNeverPassesTheOptimumAndRisesToIt) {
+  // Every anytime state brackets the optimum (lower <= optimum <= best), in both orders; a
+  // stopped search's unresolved bound is a lower bound of the optimum too.
+  const RunSpec spec = spec_on("office:w=32,h=32,seed=3", 120.0);
+  const WeightGrid grid({integers(0, 3), integers(0, 2), integers(0, 5), integers(0, 2)});
+  double optimum = 0.0;
+  {
+    BranchAndBound bnb = distance_bnb();
+    optimum = exact_search(
+                  std::span<const RunSpec>(&spec, 1), grid, 2, [](Behaviour&&) {}, &bnb)
+                  .best;
+  }
+  for (const SearchOrder order : {SearchOrder::Depth, SearchOrder::Bound}) {
+    BranchAndBound bnb = distance_bnb();
+    bnb.order = order;
+    bnb.anytime_interval_s = 0.0;  // every change
+    std::vector<AnytimeState> states;
+    bnb.on_anytime = [&](const AnytimeState& s) { states.push_back(s); };
+    (void)exact_search(
+        std::span<const RunSpec>(&spec, 1), grid, 2, [](Behaviour&&) {}, &bnb);
+    ASSERT_GE(states.size(), 10U);
+    double best = std::numeric_limits<double>::infinity();
+    for (const AnytimeState& s : states) {
+      EXPECT_LE(s.lower, optimum);
+      EXPECT_GE(s.best, optimum);
+      EXPECT_LE(s.best, best) << "the best objective rose";
+      best = s.best;
+    }
+    EXPECT_GT(states.back().lower, states.front().lower);
+    // Stopped halfway: the bound over what is left is below the optimum.
+    std::atomic<bool> stop{false};
+    BranchAndBound stopping = distance_bnb();
+    stopping.order = order;
+    int reported = 0;
+    const ExactSearchStats stopped = exact_search(
+        std::span<const RunSpec>(&spec, 1), grid, 2,
+        [&](Behaviour&&) {
+          if (++reported == 2) stop.store(true);
+        },
+        &stopping, nullptr, nullptr, &stop);
+    ASSERT_TRUE(stopped.stopped);
+    EXPECT_GT(stopped.unresolved_branches, 0U);
+    EXPECT_LE(stopped.unresolved_bound, optimum);
+    EXPECT_GE(stopped.best, optimum);
+  }
 }
 
 /// Journals behaviour `b` of the search of `root` as a finished leaf in `done`.
