@@ -65,22 +65,26 @@ inline void write_file(const std::string& path, const std::string& text) {
   out << text;
 }
 
-/// Sends this process SIGINT once `ready()` holds (polled every 0.5 ms; after 60 s without it,
-/// anyway), from a thread started by the constructor. Meanwhile SIGINT's own handler ignores it,
+/// Sends this process SIGINT `signals` times, back to back (as timeout(1) signals the process
+/// and its group), once `ready()` holds (polled every 0.5 ms; after 60 s without it, anyway),
+/// from a thread started by the constructor. Meanwhile SIGINT's own handler ignores it,
 /// so a late signal (after the code under test restored its handlers) does not end the test;
 /// join() waits for the thread and restores the previous handler.
 class InterruptWhen {
  public:
-  explicit InterruptWhen(std::function<bool()> ready) {
+  explicit InterruptWhen(std::function<bool()> ready, int signals = 1) {
     struct sigaction ignore {};
     ignore.sa_handler = [](int) {};
     ::sigaction(SIGINT, &ignore, &previous_);
-    thread_ = std::thread([ready = std::move(ready)] {
+    thread_ = std::thread([ready = std::move(ready), signals] {
       const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
       while (std::chrono::steady_clock::now() < deadline && !ready()) {
         std::this_thread::sleep_for(std::chrono::microseconds(500));
       }
-      ::kill(::getpid(), SIGINT);
+      for (int k = 0; k < signals; ++k) {
+        ::kill(::getpid(), SIGINT);
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));  // delivered one by one
+      }
     });
   }
   InterruptWhen(const InterruptWhen&) = delete;

@@ -383,6 +383,22 @@ TEST(SweepRunner, InterruptStopsAfterFlushingAndResumes) {
   fs::remove_all(dir);
 }
 
+TEST(SweepRunner, AStopSignalSentTwiceAtOnceStopsOnce) {
+  // timeout(1) sends its signal to the process and then to its process group: two SIGINTs
+  // within milliseconds are one stop (a second one a second or more later would kill). Runs
+  // on a large map keep the sweep stopping (finishing its runs in flight) when the second comes.
+  json sweep = long_sweep();
+  sweep["maps"] = {"rooms:w=240,h=180,door=3,seed=1"};
+  const std::string dir = temp_dir("sigint_twice");
+  testing::InterruptWhen interrupter(
+      [&] { return fs::exists(dir + "/runs.csv") && data_rows(dir + "/runs.csv") >= 3; }, 2);
+  const RunnerReport first = run(sweep, dir, 2);
+  interrupter.join();
+  ASSERT_TRUE(first.interrupted) << "the sweep finished before the interrupt";
+  EXPECT_EQ(nlohmann::json::parse(read_file(dir + "/manifest.json"))["status"], "interrupted");
+  fs::remove_all(dir);
+}
+
 TEST(SweepRunner, ResumeSkipsDone) {
   const std::string dir = temp_dir("skip");
   ASSERT_EQ(run(small_sweep(), dir, 2).ran, 48U);
