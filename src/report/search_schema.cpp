@@ -32,6 +32,11 @@ bool is_search_status_file(std::string_view name) {
   return name.starts_with(kStatusPrefix) && name.ends_with(kStatusSuffix);
 }
 
+std::vector<std::string> search_anytime_columns() {
+  return {kSearchIdColumn, "elapsed_s", "status", "resolved_vectors", kVectorsColumn, "open_branches",
+          "best",          "bound",     "gap",    "relative_gap"};
+}
+
 std::vector<std::string> behaviours_columns(std::span<const std::string> weights) {
   std::vector<std::string> h{kSearchIdColumn, kBehaviourIdColumn, kVectorsColumn};
   for (const auto& w : weights) h.push_back(w);

@@ -63,6 +63,9 @@ inline constexpr char kObjectiveColumn[] = "objective";
 /// search_ranks.csv (a row per `rank` vector): search_id, the weights, behaviour_id, objective,
 /// rank, vectors_better, vectors_tied, percentile.
 [[nodiscard]] std::vector<std::string> search_ranks_columns(std::span<const std::string> weights);
+/// search_anytime.csv (mode best, a row per report of a search's state): search_id, elapsed_s,
+/// status, resolved_vectors, vectors, open_branches, best, bound, gap, relative_gap.
+[[nodiscard]] std::vector<std::string> search_anytime_columns();
 /// search_heatmaps.csv: search_id, weight_a, weight_b, value_a, value_b, best_objective, behaviour_id.
 [[nodiscard]] std::vector<std::string> search_heatmaps_columns();
 /// vectors.csv (write_vectors): search_id, the weights, behaviour_id.

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <filesystem>
 #include <limits>
+#include <system_error>
 #include <utility>
 
 #include "core/csv_format.hpp"
@@ -57,15 +59,9 @@ SearchAnytimeLog::SearchAnytimeLog(std::string dir, std::size_t id, std::string 
     } catch (const std::exception&) {
     }
   }
-  if (read_file(curve_.path()).value_or(std::string()).empty()) {
-    std::string header;
-    for (const char* c : {kSearchIdColumn, "elapsed_s", "status", "resolved_vectors", kVectorsColumn,
-                          "open_branches", "best", "bound", "gap", "relative_gap"}) {
-      header += header.empty() ? "" : ",";
-      header += c;
-    }
-    curve_.write(header + '\n');
-  }
+  std::error_code ec;  // a missing file reads as empty
+  if (std::filesystem::file_size(curve_.path(), ec) == 0 || ec)
+    curve_.write(csv_record(search_anytime_columns()) + '\n');
 }
 
 void SearchAnytimeLog::record(const AnytimeState& state, std::uint64_t resolved,
@@ -92,10 +88,11 @@ void SearchAnytimeLog::record(const AnytimeState& state, std::uint64_t resolved,
   const auto cell = [&](const char* key) { return number_cell(status_number(s, key)); };
   const double best =
       std::isfinite(state.best) ? sign_ * state.best : std::numeric_limits<double>::quiet_NaN();
-  curve_.write(std::to_string(id_) + ',' + format_number(elapsed) + ',' + std::string(status) + ',' +
-               std::to_string(resolved) + ',' + std::to_string(vectors_) + ',' +
-               std::to_string(state.open_branches) + ',' + number_cell(best) + ',' + cell("bound") + ',' +
-               cell("gap") + ',' + cell("relative_gap") + '\n');
+  curve_.write(
+      csv_record({std::to_string(id_), format_number(elapsed), std::string(status), std::to_string(resolved),
+                  std::to_string(vectors_), std::to_string(state.open_branches), number_cell(best),
+                  cell("bound"), cell("gap"), cell("relative_gap")}) +
+      '\n');
   write_file_atomically(dir_ + "/" + search_status_file(id_), s.dump(2) + '\n');
   last_ = std::move(s);
 }

@@ -170,6 +170,20 @@ std::vector<std::string> linear_scored_names() {
   return out;
 }
 
+/// The integer `key` of a search object, `fallback` when absent; anything but an integer in
+/// [lo, hi] is a problem (and gives `fallback`).
+std::size_t search_count(const json& search, const char* key, std::size_t fallback, std::size_t lo,
+                         std::size_t hi, const std::string& at, std::vector<std::string>& problems) {
+  const json v = search.value(key, json(fallback));
+  if (v.is_number_integer() && (v.is_number_unsigned() || v.get<std::int64_t>() >= 0)) {
+    const auto n = v.get<std::uint64_t>();
+    if (n >= lo && n <= hi) return static_cast<std::size_t>(n);
+  }
+  problems.push_back(concat({at, "/", key, ": value ", value_text(v), "; allowed: integers ",
+                             std::to_string(lo), " to ", std::to_string(hi)}));
+  return fallback;
+}
+
 /// The search's method, mode and write_vectors (the search object's keys checked); false when
 /// the object is not one.
 bool read_search_settings(const json& search, const std::string& at, WeightSearch& ws,
@@ -207,27 +221,14 @@ bool read_search_settings(const json& search, const std::string& at, WeightSearc
     problems.push_back(
         at + "/order: only a search of mode \"best\" has an order; remove it or set \"mode\": \"best\"");
   }
-  const json max_open = search.value("max_open", json(kDefaultMaxOpenBranches));
-  if (!max_open.is_number_integer() || max_open.get<std::int64_t>() < 1 ||
-      max_open.get<std::int64_t>() > static_cast<std::int64_t>(kMaxOpenBranchesLimit)) {
-    problems.push_back(at + "/max_open: value " + value_text(max_open) + "; allowed: integers 1 to " +
-                       std::to_string(kMaxOpenBranchesLimit));
-  } else {
-    ws.max_open = max_open.get<std::size_t>();
-  }
+  ws.max_open =
+      search_count(search, "max_open", kDefaultMaxOpenBranches, 1, kMaxOpenBranchesLimit, at, problems);
   if (search.contains("max_open") && ws.order != SearchOrder::Bound) {
     problems.push_back(at +
                        "/max_open: only a search of order \"bound\" keeps branches waiting; remove it or set "
                        "\"order\": \"bound\"");
   }
-  const json probes = search.value("probes", json(kDefaultProbes));
-  if (!probes.is_number_integer() || probes.get<std::int64_t>() < 0 ||
-      probes.get<std::int64_t>() > static_cast<std::int64_t>(kMaxProbes)) {
-    problems.push_back(at + "/probes: value " + value_text(probes) + "; allowed: integers 0 to " +
-                       std::to_string(kMaxProbes));
-  } else {
-    ws.probes = probes.get<std::size_t>();
-  }
+  ws.probes = search_count(search, "probes", kDefaultProbes, 0, kMaxProbes, at, problems);
   if (search.contains("probes") && ws.mode != WeightSearch::Mode::Best) {
     problems.push_back(
         at + "/probes: only a search of mode \"best\" runs probes; remove it or set \"mode\": \"best\"");

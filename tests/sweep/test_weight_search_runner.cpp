@@ -742,6 +742,12 @@ TEST(WeightSearchRunner, AStoppedBestSearchSaysWhereItStandsAndResumesItsCurve) 
     }
     EXPECT_EQ(std::count(statuses.begin(), statuses.end(), "stopped"), 1) << order;
     EXPECT_EQ(statuses.back(), "finished") << order;
+    // --fresh starts the curve and the status over.
+    o.fresh = true;
+    (void)run_sweep(SweepPlan::from_json(sweep, "search.json"), o);
+    const Table fresh = read_table(dir + "/search_anytime.csv");
+    for (const auto& row : fresh.rows) EXPECT_NE(row[fresh.col("status")], "stopped") << order;
+    EXPECT_EQ(fresh.rows.back()[fresh.col("status")], "finished") << order;
     std::filesystem::remove_all(dir);
   }
 }
@@ -887,6 +893,11 @@ TEST(WeightSearchRunner, BadSearchEntriesAreRefusedWithTheirPath) {
             std::string::npos)
       << order_refusal;
   ordered["/strategies/0/search/mode"_json_pointer] = "best";
+  ordered["/strategies/0/search/probes"_json_pointer] = -1;
+  EXPECT_NE(refusal(ordered).find("/strategies/0/search/probes: value -1; allowed: integers 0 to 10000"),
+            std::string::npos)
+      << refusal(ordered);
+  ordered["/strategies/0/search/probes"_json_pointer] = 2;
   ordered["/strategies/0/search/order"_json_pointer] = "wide";
   ordered["/strategies/0/search/max_open"_json_pointer] = 8;
   EXPECT_NE(
