@@ -82,12 +82,14 @@ json write_search_certificate(const std::string& path, const json& header, const
   }
   if (vectors != grid.size()) {
     std::filesystem::remove(tmp);
-    return json{
-        {"file", nullptr},
-        {"why_not", "the journal's regions hold " + std::to_string(vectors) + " of the " +
-                        std::to_string(grid.size()) +
-                        " vectors: part of it was written by a version that did not journal pruned regions; "
-                        "rerun with --fresh for a certificate"}};
+    const std::string cause =
+        vectors < grid.size()
+            ? "part of it was written by a version that did not journal pruned regions"
+            : "some overlap: a version that pruned above the regions it had journaled resumed it";
+    return json{{"file", nullptr},
+                {"why_not", "the journal's regions hold " + std::to_string(vectors) + " of the " +
+                                std::to_string(grid.size()) + " vectors: " + cause +
+                                "; rerun with --fresh for a certificate"}};
   }
   std::filesystem::rename(tmp, path);
   return json{{"file", std::filesystem::path(path).filename().string()}, {"regions", regions}};

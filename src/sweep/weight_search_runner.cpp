@@ -135,11 +135,19 @@ class SearchWriter {
       done.emplace(subtree_of(root_id, f.behaviour.choices), leaf);
       better(f);
     }
-    for (const auto& [choices, leaf] : journaled.leaves) done.emplace(subtree_of(root_id, choices), leaf);
+    std::vector<std::vector<int>> paths;
+    paths.reserve(found.size() + journaled.leaves.size());
+    for (const FoundBehaviour& f : found) paths.push_back(f.behaviour.choices);
+    for (const auto& [choices, leaf] : journaled.leaves) {
+      done.emplace(subtree_of(root_id, choices), leaf);
+      paths.push_back(choices);
+    }
+    const std::unordered_set<std::uint64_t> ancestors = journal_ancestors(root_id, paths);
     out.resumed = found.size();
     SearchJournal journal(journal_path(out_dir_));
     SubtreeJournal subtrees;
     subtrees.done = &done;
+    subtrees.ancestors = &ancestors;
     subtrees.on_done = [&](std::uint64_t id, const SubtreeTally& t) { journal.append_done(key, id, t); };
     std::atomic<std::uint64_t> resolved{0};
     const auto count = [&](std::uint64_t n) {

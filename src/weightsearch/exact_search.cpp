@@ -360,7 +360,7 @@ class Explorer {
   bool pruned(Branch& b) {
     if (bnb_ == nullptr) return false;
     const double bound = bnb_->lower_bound(b.sims);
-    if (!(bound > best_.load())) {
+    if (!(bound > best_.load()) || above_journaled(b.node->id)) {
       raise_slot(b, bound);
       return false;
     }
@@ -389,6 +389,11 @@ class Explorer {
     close_slot(b);
     release(b.node);
     return true;
+  }
+
+  /// True when the journal holds a finished subtree below node `id` (SubtreeJournal::ancestors).
+  [[nodiscard]] bool above_journaled(std::uint64_t id) const {
+    return journal_ != nullptr && journal_->ancestors != nullptr && journal_->ancestors->contains(id);
   }
 
   /// The open bounds' share of AnytimeState (under the mutex).
@@ -553,6 +558,19 @@ std::uint64_t subtree_child(std::uint64_t parent, int choice) {
 std::uint64_t subtree_of(std::uint64_t root, std::span<const int> choices) {
   for (const int c : choices) root = subtree_child(root, c);
   return root;
+}
+
+std::unordered_set<std::uint64_t> journal_ancestors(std::uint64_t root,
+                                                    std::span<const std::vector<int>> choices) {
+  std::unordered_set<std::uint64_t> out;
+  for (const std::vector<int>& path : choices) {
+    std::uint64_t id = root;
+    for (const int c : path) {
+      out.insert(id);
+      id = subtree_child(id, c);
+    }
+  }
+  return out;
 }
 
 std::vector<std::array<int, WeightGrid::kMaxWeights>> spread_probes(const WeightGrid& grid,

@@ -22,6 +22,7 @@
 #include <limits>
 #include <span>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include "sim/run_result.hpp"
@@ -182,12 +183,21 @@ struct SubtreeJournal {
   /// The finished subtrees of a killed search of the same root, by id: leaves (its behaviours)
   /// and nodes whose every leaf had finished or been pruned.
   const std::unordered_map<std::uint64_t, SubtreeTally>* done = nullptr;
+  /// The ancestors of those finished subtrees, by id (journal_ancestors()): branch and bound
+  /// never prunes one whole, which would resolve its finished parts twice; it goes on to its
+  /// splits, where they are skipped. May be null.
+  const std::unordered_set<std::uint64_t>* ancestors = nullptr;
   /// Called when a node that split has finished, with its id and what its leaves resolved (as
   /// on_behaviour, from any thread but never at once with another call of either); may be empty.
   std::function<void(std::uint64_t, const SubtreeTally&)> on_done;
   /// Called with the vector count of each skipped subtree (progress); may be empty.
   std::function<void(std::uint64_t)> on_skipped;
 };
+
+/// The ids of the nodes above journaled finished leaves reached by `choices` from `root`
+/// (subtree_root()): every proper prefix of each, the root included, for SubtreeJournal::ancestors.
+[[nodiscard]] std::unordered_set<std::uint64_t> journal_ancestors(std::uint64_t root,
+                                                                  std::span<const std::vector<int>> choices);
 
 /// `count` grid points spread over `region` for BranchAndBound::probes: the grid's middle point
 /// if the region holds it, then seeded uniform points of the grid that lie in it (at most 64 x

@@ -17,6 +17,7 @@
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -440,6 +441,67 @@ TEST(ExactSearch, SkippingFinishedSubtreesResumesWithTheRestOfTheBehaviours) {
       EXPECT_EQ(again.forks, full.forks) << "leaves alone are skipped where they are forked";
     } else {
       EXPECT_LT(again.forks, full.forks) << kept;
+    }
+  }
+}
+
+TEST(ExactSearch, APrunedBranchNeverSwallowsAJournaledLeaf) {
+  // A resumed branch and bound whose incumbent is already the optimum prunes higher in the tree
+  // than the killed search did: a branch it would prune whole may hold leaves the journal has.
+  // It must go on to their splits and skip them there, so that the journal's regions and the
+  // rerun's partition the box, each vector once (a certificate counts them).
+  const RunSpec spec = spec_on("office:w=32,h=32,seed=3", 120.0);
+  const WeightGrid grid({integers(0, 3), integers(0, 2), integers(0, 5), integers(0, 2)});
+  const std::uint64_t root = subtree_root(grid.everything());
+  BranchAndBound bnb = distance_bnb();
+  std::vector<std::pair<std::vector<int>, std::uint64_t>> leaves;  // pruned and beaten: path, vectors
+  bnb.on_leaf = [&](const CertifiedLeaf& l) {
+    leaves.emplace_back(std::vector<int>(l.choices.begin(), l.choices.end()), l.vectors);
+  };
+  // Reported: the behaviours no better one was known for when they finished (the first ones
+  // are not optimal).
+  const ExactSearchStats cold = exact_search(
+      std::span<const RunSpec>(&spec, 1), grid, 1,
+      [&](Behaviour&& b) { leaves.emplace_back(b.choices, b.vectors); }, &bnb);
+  ASSERT_GE(leaves.size(), 10U);
+  // Every other one journaled, as a killed search leaves them.
+  std::unordered_map<std::uint64_t, SubtreeTally> done;
+  std::vector<std::vector<int>> paths;
+  std::uint64_t journaled = 0;
+  for (std::size_t i = 0; i < leaves.size(); i += 2) {
+    SubtreeTally t;
+    t.vectors = leaves[i].second;
+    journaled += t.vectors;
+    done.emplace(subtree_of(root, leaves[i].first), t);
+    paths.push_back(leaves[i].first);
+  }
+  const std::unordered_set<std::uint64_t> ancestors = journal_ancestors(root, paths);
+  EXPECT_TRUE(ancestors.contains(root));
+  EXPECT_FALSE(ancestors.contains(subtree_of(root, paths.front()))) << "a leaf is not its own ancestor";
+  for (const bool guarded : {false, true}) {
+    for (const int threads : {1, 2}) {
+      Resume resume(done);
+      if (guarded) resume.journal.ancestors = &ancestors;
+      BranchAndBound warm = distance_bnb();
+      warm.incumbent = cold.best;
+      std::uint64_t resolved = 0;
+      warm.on_pruned = [&](std::uint64_t v) { resolved += v; };
+      warm.on_leaf = [&](const CertifiedLeaf& l) {
+        if (l.kind == CertifiedLeaf::Kind::Beaten) resolved += l.vectors;
+      };
+      const ExactSearchStats again = exact_search(
+          std::span<const RunSpec>(&spec, 1), grid, threads, [&](Behaviour&& b) { resolved += b.vectors; },
+          &warm, nullptr, &resume.journal);
+      EXPECT_EQ(again.best, cold.best);
+      // What the rerun resolves (and journals) besides the journal's leaves.
+      if (guarded) {
+        EXPECT_EQ(resume.skipped, journaled) << threads << " threads";
+        EXPECT_EQ(resolved + journaled, grid.size()) << threads << " threads";
+      } else {
+        // Unguarded, it does prune above journaled leaves (or this test would test nothing).
+        EXPECT_LT(resume.skipped, journaled) << threads << " threads";
+        EXPECT_GT(resolved + journaled, grid.size()) << threads << " threads";
+      }
     }
   }
 }
