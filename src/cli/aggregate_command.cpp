@@ -45,7 +45,8 @@ Command add_aggregate_command(CLI::App& app) {
       "Recompute summary.csv, progress_summary.csv and best.csv of a sweep from runs.csv and progress.csv");
   sub->add_option("DIR", o->dir, "Sweep output directory (holding runs.csv and progress.csv)")->required();
   sub->add_option("--objective", o->objective,
-                  "Ranking of best.csv: distance_to_final_coverage_m, area_per_metre or energy (default: the "
+                  "Ranking of best.csv: distance_to_final_coverage_m, area_per_metre, energy or "
+                  "distance_to_coverage_target_m (default: the "
                   "sweep file's output.objective, else distance_to_final_coverage_m)");
   return [o] { return run_aggregate(*o); };
 }

@@ -48,7 +48,8 @@ Command add_merge_command(CLI::App& app) {
       "Join the shards (DIR/shard-i-of-N/) of a sweep into DIR/runs.csv and progress.csv and aggregate them");
   sub->add_option("DIR", o->dir, "Sweep output directory holding the shard-i-of-N directories")->required();
   sub->add_option("--objective", o->objective,
-                  "Ranking of best.csv: distance_to_final_coverage_m, area_per_metre or energy (default: the "
+                  "Ranking of best.csv: distance_to_final_coverage_m, area_per_metre, energy or "
+                  "distance_to_coverage_target_m (default: the "
                   "sweep file's output.objective, else distance_to_final_coverage_m)");
   return [o] { return run_merge(*o); };
 }

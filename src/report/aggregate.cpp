@@ -273,7 +273,18 @@ void write_best(const std::string& path, RunsTable& runs, const Objective& objec
   std::vector<Statistics> stats;
   std::vector<std::size_t> order;
   for (std::size_t id = 0; id < runs.configs.size(); ++id) {
-    stats.push_back(describe(runs.configs[id].metrics[metric]));
+    std::vector<double> values = runs.configs[id].metrics[metric];
+    // Runs without a value as the worst (the objective's missing_is_worst); a quantile at one
+    // of them has no value.
+    if (objective.missing_is_worst) {
+      const double worst = std::numeric_limits<double>::infinity();
+      values.resize(static_cast<std::size_t>(runs.configs[id].n),
+                    objective.direction == Direction::Maximize ? -worst : worst);
+    }
+    stats.push_back(describe(values));
+    for (double& v : stats.back()) {
+      if (std::isinf(v)) v = std::numeric_limits<double>::quiet_NaN();
+    }
     order.push_back(id);
   }
   // Median ascending (descending for area per metre); no value last; ties by configuration order.

@@ -87,6 +87,8 @@ Columns metric_columns(const RunResult& r) {
       {"target_path_ratio", format_number(m.target_path_ratio)},
       {"target_x", std::to_string(m.target_x)},
       {"target_y", std::to_string(m.target_y)},
+      {"distance_to_coverage_target_m",
+       m.distance_to_coverage_target_m ? format_number(*m.distance_to_coverage_target_m) : std::string()},
   };
 }
 

@@ -191,13 +191,18 @@ struct Objective {
   std::string_view name;
   Direction direction;
   std::string_view column;
+  /// A run without a value (an empty cell) counts as the worst in rankings (best.csv): it never
+  /// reached what the objective measures.
+  bool missing_is_worst = false;
 };
 
 /// The objectives, the default first.
-inline constexpr std::array<Objective, 3> kObjectives{{
+inline constexpr std::array<Objective, 4> kObjectives{{
     {"distance_to_final_coverage_m", Direction::Minimize, "distance_to_final_coverage_m"},
     {"area_per_metre", Direction::Maximize, "area_per_metre"},
     {"energy", Direction::Minimize, "energy"},
+    // Needs sim.stop_at_coverage; a run that never reaches the target has none (ranked after).
+    {"distance_to_coverage_target_m", Direction::Minimize, "distance_to_coverage_target_m", true},
 }};
 
 /// The objective called `name`, or nullptr.

@@ -34,6 +34,8 @@ double class_lower_bound(std::span<const Simulation> sims, const Objective& obje
       sum += m.distance_to_final_coverage_m;
     } else if (objective.column == "energy") {
       sum += m.energy;
+    } else if (objective.column == "distance_to_coverage_target_m") {
+      sum += s.coverage_target_bound_m();
     } else {
       return -std::numeric_limits<double>::infinity();
     }

@@ -30,7 +30,9 @@ inline namespace report {
 /// order (rounding is monotone):
 /// - distance_to_final_coverage_m: the distance at the last reveal so far (the final coverage
 ///   is reached at a reveal no earlier than it);
-/// - energy: the energy used so far (every step costs energy >= 0).
+/// - energy: the energy used so far (every step costs energy >= 0);
+/// - distance_to_coverage_target_m: the distance so far plus the travel that can reveal the
+///   cells still needed to reach the target (Simulation::coverage_target_bound_m()).
 /// Nothing is known of area_per_metre: -infinity (no pruning).
 [[nodiscard]] double class_lower_bound(std::span<const Simulation> sims, const Objective& objective);
 

@@ -60,6 +60,8 @@ class Belief {
   /// Known observable cells / observable cells of `setup` (1 when there are none).
   [[nodiscard]] double completeness(const RunSetup& setup) const;
   /// Reachable free cells still unknown.
+  /// Known free cells reachable from the start (the numerator of coverage()).
+  [[nodiscard]] int known_reachable() const { return known_reachable_; }
   [[nodiscard]] int unknown_reachable(const RunSetup& setup) const {
     return setup.reachable_count - known_reachable_;
   }

@@ -2,6 +2,7 @@
 /// @file run_result.hpp
 /// What a run measured.
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -103,6 +104,10 @@ struct RunMetrics {
   /// -1 and -1 without a target.
   int target_x = -1;
   int target_y = -1;
+  /// With a coverage target (SimParams::stop_at_coverage): distance_m when the coverage
+  /// reached it, which ended the run `target_reached`; empty without a target or when the run
+  /// ended before reaching it.
+  std::optional<double> distance_to_coverage_target_m;
 
   /// Every field equal (doubles exactly; the timing fields too).
   friend bool operator==(const RunMetrics&, const RunMetrics&) = default;

@@ -103,6 +103,12 @@ ParamDecl<SimParams> make_sim_params() {
       .range(0, 100)
       .unit("m")
       .omitted_at_default();
+  d.number("stop_at_coverage", &P::stop_at_coverage,
+           "a coverage target: the run ends `target_reached` at the scan that makes the known "
+           "reachable free area this share of the reachable free area, and distance_to_coverage_target_m "
+           "records the distance then; 0: none")
+      .range(0, 1)
+      .omitted_at_default();
   return d;
 }
 

@@ -73,6 +73,11 @@ struct SimParams {
   /// (to the nearest point of its square) is never offered to a strategy as a goal, as if
   /// dropped. Paths may still pass such cells: only goals keep the margin.
   double target_margin_m = 0.0;
+  /// A coverage target, a share in (0, 1] (0, the default: none, and left out of to_json): the
+  /// run ends `target_reached` at the scan that makes the known reachable free cells at least
+  /// this share of the reachable free cells (RunMetrics::coverage >= it), and
+  /// RunMetrics::distance_to_coverage_target_m records the distance then.
+  double stop_at_coverage = 0.0;
 };
 
 /// The declared parameters of the sweep's "sim" object; `fsweep describe sim` prints them.

@@ -1,14 +1,17 @@
 #include "sim/simulation.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "core/csv_format.hpp"
 #include "core/random.hpp"
 #include "planners/registry.hpp"
 #include "strategies/registry.hpp"
@@ -98,6 +101,14 @@ void Simulation::sense() {
   if (belief_.sense(sensor_, *setup_, robot_.position, robot_.heading, robot_.dock) > 0) {
     recorder_.metrics().distance_to_final_coverage_m = recorder_.metrics().distance_m;
   }
+  // sim.stop_at_coverage: the scan that reaches the target ends the run.
+  const double share = setup_->spec.sim.stop_at_coverage;
+  if (share > 0.0 && !recorder_.ended() &&
+      belief_.known_reachable() >= share * static_cast<double>(setup_->reachable_count)) {
+    RunMetrics& m = recorder_.metrics();
+    m.distance_to_coverage_target_m = m.distance_m;
+    recorder_.end(EndReason::TargetReached, "coverage target " + format_number(share) + " reached");
+  }
 }
 
 void Simulation::sample_progress() {
@@ -126,7 +137,7 @@ bool Simulation::move_to(Cell next) {
   recorder_.record_position(next);
   sense();
   sample_progress();
-  return true;
+  return !recorder_.ended();
 }
 
 bool Simulation::stop_cell_known_free() const {
@@ -297,7 +308,7 @@ bool Simulation::travel(const Decision& decision, const Journey& journey) {
   RunMetrics& m = recorder_.metrics();
   if (journey.goal == robot_.position) {
     sense();  // look again from here (a noisy sensor may have missed cells)
-    return true;
+    return !recorder_.ended();
   }
   PlanRequest request;
   request.start = robot_.position;
@@ -377,6 +388,23 @@ void Simulation::finish() {
     recorder_.end(EndReason::Stuck,
                   "strategy " + strategy_->name() + " finished with reachable frontiers left");
   }
+}
+
+double Simulation::coverage_target_bound_m() const {
+  const RunMetrics& m = recorder_.metrics();
+  if (m.distance_to_coverage_target_m) return *m.distance_to_coverage_target_m;
+  if (recorder_.ended()) return m.distance_m;
+  // Every cell a later scan reveals has its centre within the sensor range of the centre of a
+  // cell the robot stands on from now on, so its whole square lies within R = range + res / sqrt(2)
+  // of the path it travels from here. That path's R-neighbourhood has area at most
+  // pi R^2 + 2 R d for a path of length d, and holds the revealed cells' disjoint squares.
+  const RunSetup& setup = *setup_;
+  const double needed = setup.spec.sim.stop_at_coverage * static_cast<double>(setup.reachable_count) -
+                        static_cast<double>(belief_.known_reachable());
+  const double res = setup.resolution_m;
+  const double reach = setup.spec.robot.sensor.range_m + res * std::sqrt(0.5);
+  const double area = needed * res * res - std::numbers::pi * reach * reach;
+  return m.distance_m + std::max(0.0, area / (2.0 * reach));
 }
 
 RunResult Simulation::result() const& { return completed(recorder_.result()); }

@@ -117,6 +117,13 @@ class Simulation {
   /// The metrics counted so far, without the map-dependent ones result() completes (areas,
   /// coverage): what the exact search's branch and bound reads.
   [[nodiscard]] const RunMetrics& metrics_so_far() const { return recorder_.metrics(); }
+  /// With a coverage target (SimParams::stop_at_coverage), a lower bound of the distance at
+  /// which this run reaches it, for the weight search's branch and bound: the distance then
+  /// once reached; distance_m once ended without reaching it (it never will: any value
+  /// bounds it); else distance_m plus the travel that can reveal the cells still needed, with
+  /// every revealed cell's square within R = range + res / sqrt(2) of the path and a path of
+  /// length d passing within R of at most (pi R^2 + 2 R d) / res^2 cells.
+  [[nodiscard]] double coverage_target_bound_m() const;
   /// The result so far (final once ended()).
   [[nodiscard]] RunResult result() const&;
   /// The same, moving the trajectory and the progress curve out of a simulation that is done

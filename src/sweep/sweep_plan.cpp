@@ -138,6 +138,11 @@ SweepPlan SweepPlan::build(const json& sweep, const std::string& file, std::vect
   }
   try {
     plan.sim_ = sim_params_from_json(sim, "/sim");
+    if (plan.objective_ == "distance_to_coverage_target_m" && !(plan.sim_.stop_at_coverage > 0.0)) {
+      problems.emplace_back(
+          "/output/objective: distance_to_coverage_target_m needs a coverage target, /sim/stop_at_coverage "
+          "in (0, 1] (without one no run has a distance to it)");
+    }
   } catch (const ConfigError& e) {
     problems.emplace_back(e.what());
   }

@@ -369,7 +369,13 @@ class SearchWriter {
     return instance_cells(RunResult{}, plan_.maps().at(unit_.maps.front()), plan_.search_instance(unit_, 0));
   }
   [[nodiscard]] JournalShape journal_shape(const std::string& key, const Columns& names) const {
-    return JournalShape{key, &grid_, instance_count(), names.size()};
+    JournalShape shape{key, &grid_, instance_count(), names.size()};
+    // Journals written before runs had a coverage target lack that column; its cells are empty.
+    const auto added = std::find_if(names.begin(), names.end(), [](const auto& column) {
+      return column.first == "distance_to_coverage_target_m";
+    });
+    if (added != names.end()) shape.added_cell = static_cast<std::size_t>(added - names.begin());
+    return shape;
   }
 
   /// Mode best: writes the certificate of the whole search from the journals in `dirs` (its own,

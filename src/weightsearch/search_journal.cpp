@@ -112,6 +112,12 @@ JournaledBehaviour behaviour_of(const json& j, const JournalShape& shape) {
   b.choices = j.at("choices").get<std::vector<int>>();
   b.trace = hex_id(j.at("trace"), "trace");
   for (const json& row : j.at("cells")) {
+    if (row.size() + 1 == shape.cells && shape.added_cell < shape.cells) {
+      std::vector<std::string> cells = row.get<std::vector<std::string>>();
+      cells.insert(cells.begin() + static_cast<std::ptrdiff_t>(shape.added_cell), std::string());
+      out.cells.push_back(std::move(cells));
+      continue;
+    }
     if (row.size() != shape.cells) throw std::runtime_error("another build's columns");
     out.cells.push_back(row.get<std::vector<std::string>>());
   }

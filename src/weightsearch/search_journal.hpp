@@ -19,6 +19,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -59,6 +60,9 @@ struct JournalShape {
   /// Instances (rows of cells) per behaviour, and cells per row.
   std::size_t instances = 0;
   std::size_t cells = 0;
+  /// A cell that lines of older journals lack (a column added since, empty for them): a row one
+  /// cell short gets an empty cell inserted here. cells: none.
+  std::size_t added_cell = std::numeric_limits<std::size_t>::max();
 };
 
 /// What to do with a line that does not parse or does not fit the shape.

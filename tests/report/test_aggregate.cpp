@@ -177,6 +177,32 @@ TEST(Best, RanksByEachObjectivesMedian) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(Best, RunsThatNeverReachTheCoverageTargetRankAsTheWorst) {
+  // distance_to_coverage_target_m: w1=10 reached it once in three runs (median: a run without a
+  // value, so no median, ranked last); w1=20 twice (8.5); w1=30 two runs of three (median 7).
+  const auto dir = make_sweep_dir("coverage_target");
+  write_text(dir / "runs.csv",
+             "run_index,run_key,map_class,map,strategy,strategy.w1,seed,end_reason,end_detail,distance_m,"
+             "distance_to_coverage_target_m,optimal_distance_m,competitive_ratio\n"
+             "0,00000000000000a0,free,free,energy_aware,10,1,target_reached,,5,5,,\n"
+             "1,00000000000000a1,free,free,energy_aware,10,2,range_limited,,3,,,\n"
+             "2,00000000000000a2,free,free,energy_aware,10,3,range_limited,,4,,,\n"
+             "3,00000000000000b0,free,free,energy_aware,20,1,target_reached,,8,8,,\n"
+             "4,00000000000000b1,free,free,energy_aware,20,2,target_reached,,9,9,,\n"
+             "5,00000000000000c0,free,free,energy_aware,30,1,target_reached,,7,7,,\n"
+             "6,00000000000000c1,free,free,energy_aware,30,2,stuck,,2,,,\n"
+             "7,00000000000000c2,free,free,energy_aware,30,3,target_reached,,6,6,,\n");
+  write_text(dir / "progress.csv", "run_index,run_key,distance_m,explored_area_m2,coverage,energy\n");
+  EXPECT_EQ(best_order(dir, "distance_to_coverage_target_m"), (std::vector<std::string>{"2", "1", "0"}));
+  const auto rows = read_rows(dir / "best.csv");
+  EXPECT_DOUBLE_EQ(num(rows[0], "distance_to_coverage_target_m.median"), 7.0);
+  EXPECT_EQ(rows[0].at("n"), "3");
+  EXPECT_EQ(rows[0].at("distance_to_coverage_target_m.q95"), "") << "the worst 5% never reached it";
+  EXPECT_DOUBLE_EQ(num(rows[1], "distance_to_coverage_target_m.median"), 8.5);
+  EXPECT_EQ(rows[2].at("distance_to_coverage_target_m.median"), "");
+  std::filesystem::remove_all(dir);
+}
+
 TEST(Best, DefaultsToDistanceToFinalCoverageThenManifest) {
   const auto dir = make_sweep_dir("manifest");
   EXPECT_EQ(best_order(dir, ""), (std::vector<std::string>{"2", "1", "0"}));

@@ -226,8 +226,11 @@ TEST(ConfigKey, RunsHeaderKeysOverItsConfigColumns) {
 
 TEST(Objectives, DefaultFirstEachWithDirectionAndMetricColumn) {
   EXPECT_EQ(kObjectives[0].name, "distance_to_final_coverage_m");
-  EXPECT_EQ(objective_names(),
-            (std::vector<std::string>{"distance_to_final_coverage_m", "area_per_metre", "energy"}));
+  EXPECT_EQ(objective_names(), (std::vector<std::string>{"distance_to_final_coverage_m", "area_per_metre",
+                                                         "energy", "distance_to_coverage_target_m"}));
+  // Only the coverage target's distance is missing for some runs (those that never reach it).
+  for (const Objective& o : kObjectives)
+    EXPECT_EQ(o.missing_is_worst, o.name == "distance_to_coverage_target_m") << o.name;
   const Objective* area = find_objective("area_per_metre");
   ASSERT_NE(area, nullptr);
   EXPECT_EQ(area->direction, Direction::Maximize);
@@ -245,7 +248,7 @@ TEST(Objectives, UnknownNameListsTheKnownOnes) {
   EXPECT_EQ(find_objective(""), nullptr);
   EXPECT_EQ(config_error([] { (void)require_objective("speed", "--objective"); }),
             "--objective: unknown objective 'speed'; allowed: distance_to_final_coverage_m, area_per_metre, "
-            "energy");
+            "energy, distance_to_coverage_target_m");
 }
 
 }  // namespace test_runs_schema

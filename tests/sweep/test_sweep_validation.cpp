@@ -172,7 +172,18 @@ TEST(SweepValidation, TopLevelScalars) {
   s["output"] = json{{"objective", "speed"}};
   EXPECT_HAS(problems_of(s),
              "/output/objective: value \"speed\" not allowed; allowed: distance_to_final_coverage_m, "
-             "area_per_metre, energy");
+             "area_per_metre, energy, distance_to_coverage_target_m");
+  // The distance to a coverage target needs the target.
+  s["output"] = json{{"objective", "distance_to_coverage_target_m"}};
+  EXPECT_HAS(
+      problems_of(s),
+      "/output/objective: distance_to_coverage_target_m needs a coverage target, /sim/stop_at_coverage "
+      "in (0, 1]");
+  s["sim"] = json{{"stop_at_coverage", 1.2}};
+  EXPECT_HAS(problems_of(s), "sim/stop_at_coverage");
+  s["sim"] = json{{"stop_at_coverage", 0.9}};
+  const std::string fine = problems_of(s);
+  EXPECT_EQ(fine.find("stop_at_coverage"), std::string::npos) << fine;
   json v2 = minimal();
   v2["schema_version"] = 2;
   EXPECT_HAS(problems_of(v2), "/schema_version: value 2 not supported; allowed: 1");

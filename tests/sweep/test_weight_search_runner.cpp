@@ -8,6 +8,7 @@
 #include <cmath>
 #include <csignal>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -518,19 +519,25 @@ TEST(WeightSearchRunner, AMapClassIsSearchedJointlyByItsMean) {
 
 TEST(WeightSearchRunner, BestModeFindsTheBruteForceOptimumWithEveryTieAndPrunes) {
   // A box with ties at the optimum (w2 and w4 that change nothing there), the objective the
-  // default (distance to the final coverage) and energy.
+  // default (distance to the final coverage), energy, and the distance to a coverage target
+  // (runs that never reach it have none and rank after).
   const json box = {{"w1", {{"range", {0, 3}}, {"step", 1}}},
                     {"w2", {0, 2}},
                     {"w3", {{"range", {0, 3}}, {"step", 1}}},
                     {"w4", {0, 1, 3}}};
-  for (const std::string objective : {"distance_to_final_coverage_m", "energy"}) {
+  for (const std::string objective :
+       {"distance_to_final_coverage_m", "energy", "distance_to_coverage_target_m"}) {
     json sweep = search_and_grid(json::array({"office:w=32,h=32,seed=3"}), box, json::array());
     sweep["strategies"][0]["search"] = {{"mode", "best"}};
     sweep["output"] = {{"objective", objective}};
+    if (objective == "distance_to_coverage_target_m") sweep["sim"] = {{"stop_at_coverage", 0.8}};
     const std::string dir = run(sweep, "best_" + objective);
     const Table runs = read_table(dir + "/runs.csv");
     std::vector<double> values;
-    for (const auto& row : runs.rows) values.push_back(std::stod(row[runs.col(objective)]));
+    for (const auto& row : runs.rows) {
+      const std::string& cell = row[runs.col(objective)];
+      values.push_back(cell.empty() ? std::numeric_limits<double>::infinity() : std::stod(cell));
+    }
     const double optimum = *std::min_element(values.begin(), values.end());
     const Table best = read_table(dir + "/search_best.csv");
     ASSERT_GE(best.rows.size(), 1U);

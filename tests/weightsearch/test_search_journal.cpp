@@ -66,6 +66,26 @@ std::unordered_map<std::uint64_t, SubtreeTally> read_into(const std::string& pat
                              [&](JournaledBehaviour&& b) { out.push_back(std::move(b)); });
 }
 
+TEST(SearchJournal, ALineOfAnOlderBuildGetsTheAddedCellEmpty) {
+  // Written with 2 cells per row, read with 3 where the middle one was added since: the rows
+  // get it empty; without an added cell the line does not fit (damage, refused).
+  const Fixture fx;
+  const std::string path = scratch_journal("added_cell");
+  {
+    SearchJournal journal(path);
+    journal.append("k", fx.behaviour(0, 5), {{"complete", "12.5"}, {"battery", "3"}});
+  }
+  JournalShape shape = fx.shape("k");
+  shape.added_cell = 1;
+  Read read;
+  (void)read_into(path, shape, JournalDamage::Refuse, read);
+  ASSERT_EQ(read.size(), 1U);
+  EXPECT_EQ(read[0].cells,
+            (std::vector<std::vector<std::string>>{{"complete", "", "12.5"}, {"battery", "", "3"}}));
+  Read refused;
+  EXPECT_THROW((void)read_into(path, fx.shape("k"), JournalDamage::Refuse, refused), ConfigError);
+}
+
 TEST(SearchJournal, ReadsBackWhatItAppendedForItsKeyOnly) {
   const Fixture fx;
   ASSERT_EQ(fx.shares.size(), 2U);

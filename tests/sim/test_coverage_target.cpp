@@ -1,0 +1,103 @@
+// A coverage target (sim.stop_at_coverage) ends a run `target_reached` at the scan that reaches
+// the share: the run is the run without a target up to that scan. The lower bound the weight
+// search prunes by (Simulation::coverage_target_bound_m) never exceeds the distance it bounds.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "core/config_error.hpp"
+#include "sim/simulation.hpp"
+#include "strategies/registry.hpp"
+#include "world/map_spec.hpp"
+
+namespace fsweep {
+namespace {
+
+using nlohmann::json;
+
+RunSpec rooms_run(const std::string& strategy) {
+  RunSpec spec;
+  spec.map = std::make_shared<const WorldMap>(load_map_spec("rooms:w=30,h=24,door=3,seed=5"));
+  spec.strategy = configure_strategy(strategy, nullptr);
+  spec.robot.sensor.range_m = 3.0;
+  spec.seed = 7;
+  return spec;
+}
+
+TEST(CoverageTarget, EndsTheRunAtTheScanThatReachesTheShare) {
+  RunSpec spec = rooms_run("closest_frontier");
+  const RunResult full = simulate(spec);
+  ASSERT_EQ(full.end, EndReason::Complete);
+  EXPECT_FALSE(full.metrics.distance_to_coverage_target_m.has_value());
+  double previous = 0.0;
+  for (const double share : {0.25, 0.5, 0.9, 1.0}) {
+    spec.sim.stop_at_coverage = share;
+    const RunResult r = simulate(spec);
+    ASSERT_EQ(r.end, EndReason::TargetReached) << share << ": " << r.end_detail;
+    EXPECT_NE(r.end_detail.find("coverage target"), std::string::npos) << r.end_detail;
+    EXPECT_GE(r.metrics.coverage, share);
+    ASSERT_TRUE(r.metrics.distance_to_coverage_target_m.has_value());
+    EXPECT_EQ(*r.metrics.distance_to_coverage_target_m, r.metrics.distance_m);
+    EXPECT_EQ(r.metrics.distance_to_final_coverage_m, r.metrics.distance_m);
+    // The same run as without the target, up to where it stopped.
+    ASSERT_LE(r.trajectory.size(), full.trajectory.size());
+    EXPECT_TRUE(std::equal(r.trajectory.begin(), r.trajectory.end(), full.trajectory.begin())) << share;
+    EXPECT_GE(r.metrics.distance_m, previous);
+    previous = r.metrics.distance_m;
+  }
+  // The whole reachable area is known at the full run's last reveal at the latest (walls may
+  // be revealed after it).
+  EXPECT_LE(previous, full.metrics.distance_to_final_coverage_m);
+  EXPECT_LT(previous, full.metrics.distance_m) << "the full run travels on after its last reveal";
+}
+
+TEST(CoverageTarget, ARunThatNeverReachesItHasNoDistanceToIt) {
+  // A battery too small to see the far rooms: the run ends range_limited below the share.
+  RunSpec spec = rooms_run("closest_frontier");
+  spec.robot.battery_capacity = 20.0;
+  spec.sim.stop_at_coverage = 0.95;
+  const RunResult r = simulate(spec);
+  ASSERT_NE(r.end, EndReason::TargetReached) << r.end_detail;
+  EXPECT_LT(r.metrics.coverage, 0.95);
+  EXPECT_FALSE(r.metrics.distance_to_coverage_target_m.has_value());
+}
+
+TEST(CoverageTarget, TheSearchsBoundNeverExceedsTheDistanceToTheTarget) {
+  for (const std::string strategy : {"closest_frontier", "energy_aware"}) {
+    RunSpec spec = rooms_run(strategy);
+    spec.sim.stop_at_coverage = 0.9;
+    Simulation sim(spec);
+    std::vector<double> bounds{sim.coverage_target_bound_m()};
+    while (sim.step()) bounds.push_back(sim.coverage_target_bound_m());
+    bounds.push_back(sim.coverage_target_bound_m());
+    const RunResult r = sim.result();
+    ASSERT_TRUE(r.metrics.distance_to_coverage_target_m.has_value()) << strategy;
+    const double reached = *r.metrics.distance_to_coverage_target_m;
+    for (std::size_t i = 0; i < bounds.size(); ++i)
+      EXPECT_LE(bounds[i], reached) << strategy << " step " << i;
+    EXPECT_EQ(bounds.back(), reached);
+    // At the start, far more cells are needed than one sensor disc holds: the bound says so.
+    EXPECT_GT(bounds.front(), 0.0) << strategy;
+  }
+}
+
+TEST(CoverageTarget, IsReadAndWrittenOnlyWhenSet) {
+  EXPECT_FALSE(json(SimParams{}).contains("stop_at_coverage")) << "run keys without a target unchanged";
+  EXPECT_EQ(json(sim_params_from_json(json{{"stop_at_coverage", 0.9}}, "sim")).at("stop_at_coverage"), 0.9);
+  for (const json& bad : {json{{"stop_at_coverage", -0.1}}, json{{"stop_at_coverage", 1.5}},
+                          json{{"stop_at_coverage", "most"}}}) {
+    try {
+      (void)sim_params_from_json(bad, "sim");
+      ADD_FAILURE() << bad.dump();
+    } catch (const ConfigError& e) {
+      EXPECT_NE(std::string(e.what()).find("sim/stop_at_coverage"), std::string::npos) << e.what();
+    }
+  }
+}
+
+}  // namespace
+}  // namespace fsweep
