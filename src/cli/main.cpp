@@ -1,15 +1,19 @@
 /// @file main.cpp
 /// `fsweep`: the frontier-sweep command line. Errors in the configuration print one message
-/// naming the file, JSON path or map cell and exit with code 2.
+/// naming the file, JSON path or map cell and exit with code 2; a file the machine does not let
+/// it write (a full disk, a file size limit, a read-only directory) prints one naming the file
+/// and the OS error and exits with code 1.
 
 #include <malloc.h>
 
+#include <csignal>
 #include <iostream>
 #include <map>
 
 #include "cli/commands.hpp"
 #include "cli/option_checks.hpp"
 #include "core/config_error.hpp"
+#include "core/io_error.hpp"
 #include "sweep/manifest.hpp"
 
 namespace {
@@ -27,12 +31,20 @@ void keep_freed_memory() {
   (void)mallopt(M_MMAP_THRESHOLD, kMmapThreshold);
 }
 
+/// A write past the file size limit (`ulimit -f`, RLIMIT_FSIZE) raises SIGXFSZ, whose default
+/// action kills the process (exit status 153 in a shell) in the middle of a write, without a word.
+/// Ignored, the write fails with EFBIG instead, and the writers report it as any full disk
+/// (IoError: the file and the OS error, every file left whole). Set here, once for the process:
+/// a signal's disposition is the process's, which a library should not change under its caller.
+void fail_writes_past_the_file_size_limit() { (void)std::signal(SIGXFSZ, SIG_IGN); }
+
 }  // namespace
 
 // A function-try-block: whatever escapes the setup or a command ends in the message and exit code
 // 2 too, not in std::terminate.
 int main(int argc, char** argv) try {
   keep_freed_memory();
+  fail_writes_past_the_file_size_limit();
   CLI::App app{"frontier-sweep: experiments on 2D frontier exploration strategies and planners"};
   std::string version = fsweep::version_text();
   version.pop_back();  // CLI11 ends the text with its own newline
@@ -78,6 +90,9 @@ int main(int argc, char** argv) try {
   } catch (const fsweep::ConfigError& e) {
     std::cerr << "fsweep: error: " << e.what() << '\n';
     return 2;
+  } catch (const fsweep::IoError& e) {  // not the user's input: 1, as a run that cannot finish
+    std::cerr << "fsweep: error: " << e.what() << '\n';
+    return 1;
   } catch (const std::exception& e) {
     std::cerr << "fsweep: error: " << e.what() << '\n';
     return 2;

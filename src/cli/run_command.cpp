@@ -1,8 +1,10 @@
 /// @file run_command.cpp
 /// `fsweep run SWEEP.json`: the main job. Prints the run count before starting, progress on
 /// stderr, then where the results are. Exit 0 when done, 130 when interrupted (Ctrl-C, SIGTERM;
-/// rerun the same command to resume), 2 on configuration errors.
+/// rerun the same command to resume), 2 on configuration errors, 1 when a file cannot be written
+/// (a full disk, a file size limit; every file is left whole, and the same command resumes).
 
+#include <cerrno>
 #include <charconv>
 #include <cstdio>
 #include <iostream>
@@ -15,6 +17,7 @@
 #include "cli/output_dir.hpp"
 #include "cli/sweep_warnings.hpp"
 #include "core/config_error.hpp"
+#include "core/io_error.hpp"
 #include "report/sqlite_export.hpp"
 #include "sweep/sweep_plan.hpp"
 #include "sweep/sweep_runner.hpp"
@@ -54,6 +57,28 @@ std::pair<std::uint64_t, std::uint64_t> parse_shard(const std::string& s) {
     throw ConfigError("--shard", "expected i/n with 0 <= i < n (e.g. 3/16), got '" + s + "'");
   }
   return {i, n};
+}
+
+/// What a sweep stopped by IoError `os_error` needs before the same command resumes it.
+std::string resume_note(int os_error) {
+  std::string once = "once the cause is removed";
+  switch (os_error) {
+    case ENOSPC:
+    case EDQUOT:
+      once = "once space is freed";
+      break;
+    case EFBIG:
+      once = "once the file size limit is raised";
+      break;
+    case EROFS:
+    case EACCES:
+    case EPERM:
+      once = "once the directory is writable";
+      break;
+    default:
+      break;
+  }
+  return "nothing was lost: rerun the same command to resume " + once;
 }
 
 int run_command(const RunCommandOptions& o) {
@@ -151,7 +176,13 @@ Command add_run_command(CLI::App& app) {
                 "the run is done");
   sub->add_option("--shard", o->shard,
                   "Run shard i of n (runs with index % n == i) into <out>/shard-i-of-n/, e.g. 0/4");
-  return [o] { return run_command(*o); };
+  return [o] {
+    try {
+      return run_command(*o);
+    } catch (const IoError& e) {
+      throw e.with_note(resume_note(e.os_error()));
+    }
+  };
 }
 
 }  // namespace fsweep::cli

@@ -2,12 +2,13 @@
 
 #include <unistd.h>
 
-#include <filesystem>
+#include <cerrno>
 #include <fstream>
 #include <sstream>
 #include <utility>
 
 #include "core/config_error.hpp"
+#include "core/replacing_file.hpp"
 
 namespace fsweep {
 inline namespace core {
@@ -15,17 +16,21 @@ inline namespace core {
 std::string temp_path(const std::string& path) { return path + ".tmp." + std::to_string(::getpid()); }
 
 void write_file_atomically(const std::string& path, std::string_view contents) {
-  const std::string tmp = temp_path(path);
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw ConfigError(tmp, "cannot open for writing");
-    out.write(contents.data(), static_cast<std::streamsize>(contents.size()));
-    out.close();
-    if (!out) throw ConfigError(tmp, "write failed");
+  ReplacingFile file(path);
+  file.write(contents);
+  file.commit();
+}
+
+int write_fully(int fd, std::string_view bytes) {
+  while (!bytes.empty()) {
+    const ssize_t n = ::write(fd, bytes.data(), bytes.size());
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) return errno;
+    // A write past a file size limit or onto a full disk writes what fits and returns its
+    // count; the next one fails with the reason.
+    bytes.remove_prefix(static_cast<std::size_t>(n));
   }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) throw ConfigError(path, "cannot replace: " + ec.message());
+  return 0;
 }
 
 std::optional<std::string> read_file(const std::string& path) {

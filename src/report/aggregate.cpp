@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
-#include <fstream>
 #include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -19,6 +18,7 @@
 #include "core/files.hpp"
 #include "core/json_text.hpp"
 #include "core/random.hpp"
+#include "core/replacing_file.hpp"
 #include "core/statistics.hpp"
 #include "report/runs_schema.hpp"
 #include "sim/run_result.hpp"
@@ -59,23 +59,16 @@ struct ProgressBands {
   double max_final_m = -std::numeric_limits<double>::infinity();
 };
 
-/// A CSV file written to `<path>.tmp` and renamed into place by close().
+/// A CSV file written to a temp file and renamed into place by close() (core/replacing_file.hpp:
+/// a failed write throws IoError and leaves the old file).
 class CsvOut {
  public:
-  explicit CsvOut(std::string path)
-      : path_(std::move(path)), f_(path_ + ".tmp", std::ios::binary | std::ios::trunc) {
-    if (!f_) throw ConfigError(path_ + ".tmp", "cannot open for writing");
-  }
-  void row(const std::vector<std::string>& fields) { f_ << csv_record(fields) << '\n'; }
-  void close() {
-    f_.close();
-    if (!f_) throw ConfigError(path_ + ".tmp", "write failed");
-    std::filesystem::rename(path_ + ".tmp", path_);
-  }
+  explicit CsvOut(std::string path) : file_(std::move(path)) {}
+  void row(const std::vector<std::string>& fields) { file_.write(csv_record(fields) + '\n'); }
+  void close() { file_.commit(); }
 
  private:
-  std::string path_;
-  std::ofstream f_;
+  ReplacingFile file_;
 };
 
 RunsTable read_runs(const std::string& path) {

@@ -177,7 +177,7 @@ struct CompareReport {
 [[nodiscard]] std::string compare_html(const CompareReport& report);
 
 /// Writes compare.csv and compare.html into `out_dir` (created if missing), each through a temp
-/// file and rename. Throws ConfigError naming the file when it cannot be written.
+/// file and rename. Throws IoError naming the file when it cannot be written.
 void write_compare_outputs(const CompareReport& report, const std::string& out_dir);
 
 }  // namespace report

@@ -3,6 +3,7 @@
 #include <sqlite3.h>
 
 #include <array>
+#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstring>
@@ -19,6 +20,7 @@
 #include "core/config_error.hpp"
 #include "core/csv_reader.hpp"
 #include "core/files.hpp"
+#include "core/io_error.hpp"
 #include "core/shard_dirs.hpp"
 #include "report/runs_schema.hpp"
 
@@ -91,7 +93,8 @@ std::string sql_identifier(std::string_view name) {
   return out + "\"";
 }
 
-/// An SQLite connection that closes itself; its errors are ConfigErrors at its file.
+/// An SQLite connection that closes itself; its errors are ConfigErrors at its file, but for a
+/// file the machine does not let it write (a full disk, a file size limit): IoError.
 class Database {
  public:
   explicit Database(std::string path) : path_(std::move(path)) {
@@ -109,7 +112,15 @@ class Database {
   void exec(const std::string& sql) {
     if (sqlite3_exec(db_, sql.c_str(), nullptr, nullptr, nullptr) != SQLITE_OK) fail();
   }
-  [[noreturn]] void fail() const { throw ConfigError(path_, std::string("SQLite: ") + sqlite3_errmsg(db_)); }
+  [[noreturn]] void fail() const {
+    const std::string what = std::string("SQLite: ") + sqlite3_errmsg(db_);
+    const int code = sqlite3_errcode(db_) & 0xff;  // the primary code of an extended one
+    int os_error = 0;  // of the database file's last failed call (sqlite3_system_errno() had 0 for EFBIG)
+    (void)sqlite3_file_control(db_, "main", SQLITE_FCNTL_LAST_ERRNO, &os_error);
+    if (code == SQLITE_FULL && os_error == 0) os_error = ENOSPC;  // a short write: full, as SQLite says
+    if ((code == SQLITE_FULL || code == SQLITE_IOERR) && os_error != 0) throw IoError(path_, what, os_error);
+    throw ConfigError(path_, what);
+  }
   [[nodiscard]] sqlite3* handle() const { return db_; }
 
  private:

@@ -57,8 +57,8 @@ struct TrajectoryTitle {
 [[nodiscard]] std::string trajectory_png(const WorldMap& map, const RunResult& result, int scale = 0,
                                          const TrajectoryTitle& title = {});
 
-/// trajectory_png() written to `path` (temp file and rename). Throws ConfigError naming the
-/// file if writing fails.
+/// trajectory_png() written to `path` (temp file and rename). Throws IoError naming the file
+/// if writing fails.
 void write_trajectory_png(const std::string& path, const WorldMap& map, const RunResult& result,
                           int scale = 0, const TrajectoryTitle& title = {});
 

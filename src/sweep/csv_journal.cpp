@@ -10,6 +10,8 @@
 #include "core/config_error.hpp"
 #include "core/csv_format.hpp"
 #include "core/files.hpp"
+#include "core/io_error.hpp"
+#include "core/replacing_file.hpp"
 #include "sweep/done_runs.hpp"
 
 namespace fsweep {
@@ -113,9 +115,8 @@ void note_dropped(std::vector<CsvDroppedLines>& out, std::uint64_t first, std::u
 /// Copies the byte ranges `keep` of `path` into a temp file and renames it over `path`.
 void rewrite_ranges(const std::string& path, const std::vector<Span>& keep) {
   std::ifstream in(path, std::ios::binary);
-  const std::string tmp = temp_path(path);
-  std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-  if (!in || !out) throw ConfigError(path, "cannot rewrite (repairing the file)");
+  if (!in) throw ConfigError(path, "cannot read (repairing the file)");
+  ReplacingFile out(path);
   std::array<char, 1 << 16> buf{};
   for (const Span& s : keep) {
     in.seekg(static_cast<std::streamoff>(s.begin));
@@ -124,13 +125,11 @@ void rewrite_ranges(const std::string& path, const std::vector<Span>& keep) {
       const auto n = static_cast<std::streamsize>(std::min<std::uint64_t>(left, buf.size()));
       in.read(buf.data(), n);
       if (in.gcount() != n) throw ConfigError(path, "short read while repairing the file");
-      out.write(buf.data(), n);
+      out.write({buf.data(), static_cast<std::size_t>(n)});
       left -= static_cast<std::uint64_t>(n);
     }
   }
-  out.close();
-  if (!out) throw ConfigError(tmp, "write failed (repairing " + path + ")");
-  std::filesystem::rename(tmp, path);
+  out.commit();
 }
 
 }  // namespace
@@ -253,7 +252,7 @@ CsvRepairStats CsvJournal::repair(const RecordFilter& keep, const std::function<
   if (!dropped_before_kept) {
     std::error_code ec;
     std::filesystem::resize_file(path_, kept.back().end, ec);
-    if (ec) throw ConfigError(path_, "cannot truncate a torn record: " + ec.message());
+    if (ec) throw IoError(path_, "cannot truncate a torn record", ec.value());
   } else {
     rewrite_ranges(path_, kept);
     stats.rewritten = true;
@@ -302,11 +301,10 @@ void CsvJournal::rewrite_in_order(std::size_t index_field, const Rewrite& rewrit
 
   // 2. Header, then the records, into a temp file renamed over the file.
   std::ifstream in(path_, std::ios::binary);
-  const std::string tmp = temp_path(path_);
-  std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-  if (!in || !out) throw ConfigError(path_, "cannot rewrite (putting its rows in run order)");
+  if (!in) throw ConfigError(path_, "cannot read (putting its rows in run order)");
+  ReplacingFile out(path_);
   const std::string header = rewrite.header.empty() ? header_ : rewrite.header;
-  out << header << '\n';
+  out.write(header + '\n');
   std::string bytes;
   for (const Record& r : records) {
     bytes.resize(r.span.end - r.span.begin);
@@ -316,18 +314,16 @@ void CsvJournal::rewrite_in_order(std::size_t index_field, const Rewrite& rewrit
       throw ConfigError(path_, "short read while putting its rows in run order");
     }
     if (!rewrite.fill) {
-      out << bytes;
+      out.write(bytes);
       continue;
     }
     RecordParser parser;
     for (const char c : bytes) (void)parser.feed(c);  // the record ends with its newline
     std::vector<std::string> fields = parser.fields();
     rewrite.fill(r.index, fields);
-    out << csv_record(fields) << '\n';
+    out.write(csv_record(fields) + '\n');
   }
-  out.close();
-  if (!out) throw ConfigError(tmp, "write failed (putting the rows of " + path_ + " in run order)");
-  std::filesystem::rename(tmp, path_);
+  out.commit();
   header_ = header;
 }
 

@@ -93,7 +93,9 @@ class CsvJournal {
   void append(std::string_view records);
   /// Bytes queued and not yet written.
   [[nodiscard]] std::size_t pending() const { return buffer_.size(); }
-  /// Writes the queued bytes (throws ConfigError naming the file on a write error).
+  /// Writes the queued bytes, all or none (core/append_file.hpp): IoError naming the file and
+  /// the OS error when the machine refuses them (a full disk, a file size limit), and then
+  /// they stay queued.
   void flush();
 
   [[nodiscard]] const std::string& path() const { return path_; }

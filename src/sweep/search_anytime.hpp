@@ -38,7 +38,7 @@ class SearchAnytimeLog {
 
   /// Appends a row to the curve and rewrites the status file. `state` signed as branch and
   /// bound minimises; `best_weights`: the weight vector of the best objective (empty: none yet);
-  /// `status`: "running", "stopped" or "finished". Throws ConfigError naming a file it cannot write.
+  /// `status`: "running", "stopped" or "finished". Throws IoError naming a file it cannot write.
   void record(const AnytimeState& state, std::uint64_t resolved, std::span<const double> best_weights,
               std::string_view status);
 

@@ -3,13 +3,11 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <string>
 #include <utility>
 
-#include "core/config_error.hpp"
-#include "core/files.hpp"
 #include "core/random.hpp"
+#include "core/replacing_file.hpp"
 #include "report/search_objective.hpp"
 
 namespace fsweep {
@@ -38,50 +36,44 @@ json value_json(double v) { return std::isnan(v) ? json(nullptr) : json(v); }
 
 json write_search_certificate(const std::string& path, const json& header, const CertificateSource& source) {
   const WeightGrid& grid = *source.shape.grid;
-  const std::string tmp = temp_path(path);
   std::uint64_t vectors = 0;
   std::uint64_t regions = 0;
-  {
-    std::ofstream out = open_for_writing(tmp);
-    out << header.dump() << '\n';
-    const auto put = [&](json line, const WeightRegion& region, std::uint64_t count) {
-      line["boxes"] = index_boxes(grid, region);
-      out << line.dump() << '\n';
-      vectors += count;
-      ++regions;
-    };
-    for (const std::string& journal : source.journals) {
-      (void)SearchJournal::read(
-          journal, source.shape, JournalDamage::Refuse, "",
-          [&](JournaledBehaviour&& b) {
-            // The class mean of the objective's cells, as the search computed it.
-            double sum = 0.0;
-            for (const auto& cells : b.cells) {
-              sum += metric_number(cells.at(source.objective_cell));
-            }
-            put(json{{"kind", "finished"},
-                     {"value", value_json(sum / static_cast<double>(b.cells.size()))},
-                     {"choices", b.behaviour.choices},
-                     {"trace", hex64(b.behaviour.trace)}},
-                b.behaviour.region, b.behaviour.vectors);
-          },
-          [&](JournaledLeaf&& leaf) {
-            json line{{"choices", leaf.choices}, {"value", value_json(source.sign * leaf.value)}};
-            if (leaf.kind == CertifiedLeaf::Kind::Pruned) {
-              line["kind"] = "pruned";
-              line["steps"] = leaf.steps;
-            } else {
-              line["kind"] = "finished";
-              line["trace"] = hex64(leaf.trace);
-            }
-            put(std::move(line), leaf.region, leaf.vectors);
-          });
-    }
-    out.close();
-    if (!out) throw ConfigError(tmp, "write failed");
+  ReplacingFile out(path);  // put in place only when the regions partition the box
+  out.write(header.dump() + '\n');
+  const auto put = [&](json line, const WeightRegion& region, std::uint64_t count) {
+    line["boxes"] = index_boxes(grid, region);
+    out.write(line.dump() + '\n');
+    vectors += count;
+    ++regions;
+  };
+  for (const std::string& journal : source.journals) {
+    (void)SearchJournal::read(
+        journal, source.shape, JournalDamage::Refuse, "",
+        [&](JournaledBehaviour&& b) {
+          // The class mean of the objective's cells, as the search computed it.
+          double sum = 0.0;
+          for (const auto& cells : b.cells) {
+            sum += metric_number(cells.at(source.objective_cell));
+          }
+          put(json{{"kind", "finished"},
+                   {"value", value_json(sum / static_cast<double>(b.cells.size()))},
+                   {"choices", b.behaviour.choices},
+                   {"trace", hex64(b.behaviour.trace)}},
+              b.behaviour.region, b.behaviour.vectors);
+        },
+        [&](JournaledLeaf&& leaf) {
+          json line{{"choices", leaf.choices}, {"value", value_json(source.sign * leaf.value)}};
+          if (leaf.kind == CertifiedLeaf::Kind::Pruned) {
+            line["kind"] = "pruned";
+            line["steps"] = leaf.steps;
+          } else {
+            line["kind"] = "finished";
+            line["trace"] = hex64(leaf.trace);
+          }
+          put(std::move(line), leaf.region, leaf.vectors);
+        });
   }
   if (vectors != grid.size()) {
-    std::filesystem::remove(tmp);
     const std::string cause =
         vectors < grid.size()
             ? "part of it was written by a version that did not journal pruned regions"
@@ -91,7 +83,7 @@ json write_search_certificate(const std::string& path, const json& header, const
                                 std::to_string(grid.size()) + " vectors: " + cause +
                                 "; rerun with --fresh for a certificate"}};
   }
-  std::filesystem::rename(tmp, path);
+  out.commit();
   return json{{"file", std::filesystem::path(path).filename().string()}, {"regions", regions}};
 }
 

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cerrno>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -20,6 +21,7 @@
 #include <thread>
 
 #include "core/config_error.hpp"
+#include "core/io_error.hpp"
 #include "report/aggregate.hpp"
 #include "report/runs_schema.hpp"
 #include "report/search_schema.hpp"
@@ -106,7 +108,8 @@ class DirectoryLock {
   explicit DirectoryLock(const std::string& dir) {
     const std::string path = dir + "/.fsweep.lock";
     fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-    if (fd_ < 0) throw ConfigError(dir, "cannot create " + path + " (is the output directory writable?)");
+    if (fd_ < 0)
+      throw IoError(path, "cannot create the lock file (is the output directory writable?)", errno);
     if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
       ::close(fd_);
       throw ConfigError(dir, "another fsweep run is writing to this directory");
@@ -364,8 +367,18 @@ void run_searches(const SweepPlan& plan, const RunnerOptions& options, int threa
   info.status = "running";
   write_manifest(manifest_path, manifest_json(plan, info));
   // A stop after the last run was dispatched ends the searches at once (nothing searched).
-  report.searches = run_weight_searches(plan, dir, threads, options.progress, options.shard_index,
-                                        options.shard_count, &stop_requested);
+  try {
+    report.searches = run_weight_searches(plan, dir, threads, options.progress, options.shard_index,
+                                          options.shard_count, &stop_requested);
+  } catch (...) {  // e.g. a journal that cannot be written: the manifest says so, as for the runs
+    info.status = "failed";
+    info.end_utc = utc_now_iso8601();
+    try {
+      write_manifest(manifest_path, manifest_json(plan, info));
+    } catch (...) {  // NOLINT(bugprone-empty-catch): the first error is the one to report
+    }
+    throw;
+  }
   report.interrupted = report.searches.interrupted;
   info.status = report.interrupted ? "interrupted" : "complete";
   info.end_utc = utc_now_iso8601();
@@ -432,10 +445,15 @@ RunnerReport run_sweep(const SweepPlan& plan, const RunnerOptions& options) {
     info.runs.ran = report.ran;
     info.runs.ran_failed = report.failed;
     info.wall_s = seconds_since(wall_start);
+    // Each on its own: a journal that cannot be written (a full disk) must not keep the manifest
+    // from saying "failed". The first error is the one to report.
     try {
       pipeline.flush();
+    } catch (...) {  // NOLINT(bugprone-empty-catch)
+    }
+    try {
       write_manifest(manifest_path, manifest_json(plan, info));
-    } catch (...) {  // NOLINT(bugprone-empty-catch): the first error is the one to report
+    } catch (...) {  // NOLINT(bugprone-empty-catch)
     }
     throw;
   }

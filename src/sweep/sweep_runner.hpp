@@ -171,10 +171,12 @@ struct RunnerReport {
   OptimumReport optima;
 };
 
-/// Runs the plan. Throws ConfigError for unusable outputs (unwritable directory, another runner
-/// on it, a sweep file changed since the outputs were made other than by adding runs, without
-/// `fresh`; runs.csv with other columns) and for bad options; write errors during the run also
-/// throw ConfigError naming the file (the manifest then says "failed").
+/// Runs the plan. Throws ConfigError for unusable outputs (another runner on the directory, a
+/// sweep file changed since the outputs were made other than by adding runs, without `fresh`;
+/// runs.csv with other columns) and for bad options. A file the machine does not let it write
+/// (an unwritable directory, a full disk, a file size limit) throws IoError naming the file and
+/// the OS error; every file is then left whole (the manifest says "failed" when the runs were
+/// stopped by it), and the same call resumes once the file can be written.
 [[nodiscard]] RunnerReport run_sweep(const SweepPlan& plan, const RunnerOptions& options);
 
 }  // namespace sweep

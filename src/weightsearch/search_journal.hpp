@@ -92,8 +92,9 @@ class SearchJournal {
       const std::function<void(JournaledBehaviour&&)>& each,
       const std::function<void(JournaledLeaf&&)>& each_leaf = {});
 
-  /// Opens the journal at `path` for appending (created if missing); throws ConfigError naming
-  /// it when it cannot be.
+  /// Opens the journal at `path` for appending (created if missing); throws IoError naming it
+  /// and the OS error when it cannot be. The appends throw IoError too, each line whole or not
+  /// at all (core/append_file.hpp).
   explicit SearchJournal(std::string path) : file_(std::move(path)) { file_.open(); }
 
   /// Appends a finished behaviour's line (its region, choices and trace) with its `cells`.

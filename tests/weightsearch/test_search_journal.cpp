@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/config_error.hpp"
+#include "core/io_error.hpp"
 #include "strategies/strategy.hpp"
 #include "weightsearch/search_journal.hpp"
 #include "weightsearch/weight_grid.hpp"
@@ -212,8 +213,8 @@ TEST(SearchJournal, AnUnwritablePlaceIsAnErrorNamingTheFileAndTheOsError) {
   try {
     SearchJournal journal(path);
     ADD_FAILURE() << "opened " << path;
-  } catch (const ConfigError& e) {
-    EXPECT_EQ(e.where(), path);
+  } catch (const IoError& e) {
+    EXPECT_EQ(e.path(), path);
     EXPECT_NE(std::string(e.what()).find("No such file or directory"), std::string::npos) << e.what();
   }
 }
