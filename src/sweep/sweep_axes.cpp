@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <map>
 #include <memory>
@@ -12,6 +13,7 @@
 #include <set>
 
 #include "core/config_error.hpp"
+#include "core/csv_reader.hpp"
 #include "core/json_excerpt.hpp"
 #include "planners/registry.hpp"
 #include "sim/heuristics.hpp"
@@ -413,6 +415,120 @@ void read_name_and_label(const json& item, const std::string& where, const std::
   }
 }
 
+/// A CSV cell of a vectors file as a JSON number: an integer when written as one (as a sweep
+/// file's list would hold it, so run keys agree), else a double; nullopt when not a number.
+std::optional<json> csv_number(const std::string& cell) {
+  const std::optional<double> v = parse_number(cell);
+  if (!v || !std::isfinite(*v)) return std::nullopt;
+  const bool integral = !cell.empty() && cell.find_first_not_of("-0123456789") == std::string::npos;
+  if (integral && std::abs(*v) < 9.0e15) return json(static_cast<std::int64_t>(*v));
+  return json(*v);
+}
+
+/// The tuples of `"vectors": {"file": ...}`: a CSV file whose header names the parameters.
+void read_vectors_file(const std::string& path, const std::string& where, std::vector<std::string>& names,
+                       std::vector<std::vector<json>>& tuples, std::vector<std::string>& problems) {
+  try {
+    CsvReader in(path);
+    names = in.header();
+    std::size_t line = 1;
+    while (in.next()) {
+      ++line;
+      std::vector<json> tuple;
+      for (std::size_t c = 0; c < in.fields().size(); ++c) {
+        const std::optional<json> v = csv_number(in.fields()[c]);
+        if (!v) {
+          problems.push_back(concat({where, ": ", path, ":", std::to_string(line), ": column ", names[c],
+                                     ": '", in.fields()[c], "' is not a number"}));
+          return;
+        }
+        tuple.push_back(*v);
+      }
+      tuples.push_back(std::move(tuple));
+    }
+  } catch (const ConfigError& e) {
+    problems.push_back(concat({where, ": ", e.what()}));
+  }
+}
+
+/// The weight names of linear-scored strategy `name` (the shorthand `"vectors": [[...], ...]`),
+/// or empty when it is not one.
+std::vector<std::string> linear_weight_names(const std::string& name) {
+  if (!strategy_traits(name).linear_scored) return {};
+  const std::unique_ptr<Strategy> probe = configure_strategy(name, nullptr).make(0);
+  const LinearScoredStrategy* linear = probe->linear_scored();
+  return linear != nullptr ? linear->weight_names() : std::vector<std::string>{};
+}
+
+/// The entry's `"vectors"`: whole parameter tuples, as one axis per parameter (each tuple's
+/// value at the same index) that the caller zips into one group. Forms: a list of tuples (a
+/// linear-scored strategy's weights in its order), {"params": [names], "values": [tuples]}, or
+/// {"file": "tuples.csv"} (relative to the sweep file's folder; its header names the
+/// parameters). Returns the names, in order; empty when absent or bad (a problem then).
+std::vector<std::string> vector_axes(const json& item, const std::string& where, SweepPaths& paths,
+                                     std::map<std::string, Axis>& axes, std::vector<std::string>& problems) {
+  if (!item.contains("vectors")) return {};
+  const std::string at = where + "/vectors";
+  const json& v = item["vectors"];
+  std::vector<std::string> names;
+  std::vector<std::vector<json>> tuples;
+  const std::string forms =
+      "allowed: a list of weight vectors ([[w1, w2, ...], ...], a linear-scored strategy's weights in "
+      "its order), {\"params\": [names], \"values\": [[...], ...]} or {\"file\": \"tuples.csv\"} whose "
+      "header names the parameters";
+  if (v.is_array()) {
+    names = linear_weight_names(item.value("name", std::string()));
+    if (names.empty()) {
+      problems.push_back(at + ": a list of vectors names no parameters and this strategy has no weights; " +
+                         forms);
+      return {};
+    }
+    tuples = std::vector<std::vector<json>>();
+    for (const json& t : v)
+      tuples.push_back(t.is_array() ? t.get<std::vector<json>>() : std::vector<json>{t});
+  } else if (v.is_object() && v.contains("file") && v.size() == 1 && v["file"].is_string()) {
+    const std::optional<std::string> path =
+        paths.resolve(v["file"].get<std::string>(), SweepPaths::Kind::File, at + "/file", problems);
+    if (!path) return {};
+    read_vectors_file(*path, at + "/file", names, tuples, problems);
+  } else if (v.is_object() && v.size() == 2 && v.contains("params") && v.contains("values") &&
+             v["params"].is_array() && v["values"].is_array() &&
+             std::all_of(v["params"].begin(), v["params"].end(),
+                         [](const json& n) { return n.is_string(); })) {
+    names = v["params"].get<std::vector<std::string>>();
+    for (const json& t : v["values"])
+      tuples.push_back(t.is_array() ? t.get<std::vector<json>>() : std::vector<json>{t});
+  } else {
+    problems.push_back(at + ": value " + value_text(v) + " not allowed; " + forms);
+    return {};
+  }
+  if (names.empty() || tuples.empty() || tuples.size() > kMaxAxisValues) {
+    problems.push_back(concat({at, ": ", std::to_string(tuples.size()), " vectors of ",
+                               std::to_string(names.size()), " parameters; allowed: 1 to ",
+                               std::to_string(kMaxAxisValues), " vectors of at least one parameter"}));
+    return {};
+  }
+  for (std::size_t k = 0; k < tuples.size(); ++k) {
+    if (tuples[k].size() != names.size()) {
+      problems.push_back(concat({at, "/", std::to_string(k), ": value ", value_text(json(tuples[k])),
+                                 " not allowed; allowed: one value for each of ", join_names(names)}));
+      return {};
+    }
+  }
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (axes.contains(names[i])) {
+      problems.push_back(concat(
+          {at, ": parameter '", names[i], "' is also in params; allowed: each parameter in one place"}));
+      return {};
+    }
+    Axis a{names[i], at, v, {}};
+    a.values.reserve(tuples.size());
+    for (const std::vector<json>& t : tuples) a.values.push_back(t[i]);
+    axes.emplace(names[i], std::move(a));
+  }
+  return names;
+}
+
 /// The entry's parameter axes, in key order, and its heuristics (a simulation setting,
 /// src/sim/heuristics.hpp) beside them: one list of names, or a list of such lists to sweep
 /// them, an axis named "heuristics" that orders and zips like a parameter.
@@ -420,13 +536,21 @@ std::map<std::string, Axis> strategy_axes(const json& item, const std::string& w
                                           std::vector<std::string>& problems) {
   std::map<std::string, Axis> axes;
   const json params = item.value("params", json::object());
+  // A zipped parameter may repeat values; its group's tuples may not (zip_groups()).
+  std::set<std::string> zipped;
+  for (const json& group : item.value("zip", json::array())) {
+    if (!group.is_array()) continue;
+    for (const json& name : group) {
+      if (name.is_string()) zipped.insert(name.get<std::string>());
+    }
+  }
   if (!params.is_object()) {
     problems.push_back(where + "/params: expected an object {parameter: value, list or range}, got " +
                        value_text(params));
   } else {
     for (const auto& [key, value] : params.items()) {
       const std::string path = concat({where, "/params/", key});
-      Axis a{key, path, value, expand_values(value, path, problems)};
+      Axis a{key, path, value, expand_values(value, path, problems, zipped.contains(key))};
       axes.emplace(key, std::move(a));
     }
   }
@@ -435,7 +559,8 @@ std::map<std::string, Axis> strategy_axes(const json& item, const std::string& w
     const json& h = item["heuristics"];
     const bool swept = h.is_array() && !h.empty() &&
                        std::all_of(h.begin(), h.end(), [](const json& e) { return e.is_array(); });
-    Axis a{"heuristics", path, h, swept ? expand_values(h, path, problems) : std::vector<json>{h}};
+    Axis a{"heuristics", path, h,
+           swept ? expand_values(h, path, problems, zipped.contains("heuristics")) : std::vector<json>{h}};
     for (std::size_t k = 0; k < a.values.size(); ++k) {
       try {
         (void)heuristics_from_json(a.values[k], swept ? value_path(h, path, k) : path);
@@ -454,9 +579,37 @@ struct ZipGroups {
   std::vector<std::vector<std::string>> zips;
 };
 
+/// A problem for the first tuple of zip group `names` (equal-length axes) that repeats an
+/// earlier one: they would be the same runs.
+void check_distinct_tuples(const std::vector<std::string>& names, const std::map<std::string, Axis>& axes,
+                           const std::string& where, std::vector<std::string>& problems) {
+  std::map<std::vector<json>, std::size_t> first_at;
+  const std::size_t count = axes.at(names.front()).values.size();
+  for (std::size_t k = 0; k < count; ++k) {
+    std::vector<json> tuple;
+    tuple.reserve(names.size());
+    for (const std::string& n : names) tuple.push_back(axes.at(n).values[k]);
+    const auto [at, fresh] = first_at.emplace(tuple, k);
+    if (fresh) continue;
+    std::string text;
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      text += concat({i == 0 ? "" : ", ", names[i], " = ", value_text(tuple[i])});
+    }
+    problems.push_back(concat({where, ": tuple ", std::to_string(k), " (", text, ") repeats tuple ",
+                               std::to_string(at->second),
+                               "; allowed: distinct tuples (repeated ones would be the same runs)"}));
+    return;
+  }
+}
+
 ZipGroups zip_groups(const json& item, const std::string& where, const std::map<std::string, Axis>& axes,
-                     std::vector<std::string>& problems) {
+                     const std::vector<std::string>& vectors, std::vector<std::string>& problems) {
   ZipGroups out;
+  if (!vectors.empty()) {
+    for (const std::string& name : vectors) out.group_of.emplace(name, 0);
+    out.zips.push_back(vectors);
+    check_distinct_tuples(vectors, axes, where + "/vectors", problems);
+  }
   const json zip = item.value("zip", json::array());
   if (!zip.is_array()) problems.push_back(where + "/zip: expected a list of lists of parameter names");
   for (std::size_t g = 0; zip.is_array() && g < zip.size(); ++g) {
@@ -478,8 +631,8 @@ ZipGroups zip_groups(const json& item, const std::string& where, const std::map<
         problems.push_back(concat({gwhere, "/", std::to_string(m), ": '", name,
                                    "' is not a parameter of this entry; allowed: ", names_given}));
       } else if (!out.group_of.emplace(name, out.zips.size()).second) {
-        problems.push_back(
-            concat({gwhere, "/", std::to_string(m), ": '", name, "' is already in another zip group"}));
+        problems.push_back(concat({gwhere, "/", std::to_string(m), ": '", name,
+                                   "' is already in another zip group or in the entry's vectors"}));
       } else {
         names.push_back(name);
         sizes.insert(axes.at(name).values.size());
@@ -489,6 +642,8 @@ ZipGroups zip_groups(const json& item, const std::string& where, const std::map<
     if (sizes.size() > 1) {
       problems.push_back(concat(
           {gwhere, ": zipped parameters vary together and need equal numbers of values; got ", counts}));
+    } else if (!names.empty()) {
+      check_distinct_tuples(names, axes, gwhere, problems);
     }
     out.zips.push_back(std::move(names));
   }
@@ -556,11 +711,11 @@ void check_declared(const std::string& name, const std::map<std::string, Axis>& 
 
 /// Strategy entry `item` at `where`, or nothing when it has problems (added to `problems`).
 std::optional<StrategyEntry> parse_strategy(const json& item, const std::string& where,
-                                            const std::vector<std::string>& known,
+                                            const std::vector<std::string>& known, SweepPaths& paths,
                                             std::vector<std::string>& problems) {
   const std::size_t before = problems.size();
   try {
-    require_known_keys(item, {"name", "label", "params", "heuristics", "zip", "search"}, where);
+    require_known_keys(item, {"name", "label", "params", "heuristics", "zip", "vectors", "search"}, where);
   } catch (const ConfigError& e) {
     problems.emplace_back(e.what());
     return std::nullopt;
@@ -568,8 +723,15 @@ std::optional<StrategyEntry> parse_strategy(const json& item, const std::string&
   StrategyEntry entry;
   // 1. Name and label, 2. parameter axes, 3. zip groups.
   read_name_and_label(item, where, known, entry, problems);
-  const std::map<std::string, Axis> axes = strategy_axes(item, where, problems);
-  const ZipGroups zips = zip_groups(item, where, axes, problems);
+  if (problems.size() != before) return std::nullopt;
+  std::map<std::string, Axis> axes = strategy_axes(item, where, problems);
+  const std::vector<std::string> vectors = vector_axes(item, where, paths, axes, problems);
+  if (!vectors.empty() && item.contains("search")) {
+    problems.push_back(where +
+                       "/vectors: a search covers the whole box of its weights; allowed: vectors or "
+                       "search, not both");
+  }
+  const ZipGroups zips = zip_groups(item, where, axes, vectors, problems);
   if (problems.size() != before) return std::nullopt;
   // 4. Groups.
   build_groups(axes, zips, where, entry, problems);
@@ -587,7 +749,8 @@ std::optional<StrategyEntry> parse_strategy(const json& item, const std::string&
 
 }  // namespace
 
-std::vector<StrategyEntry> parse_strategies(const json& strategies, std::vector<std::string>& problems) {
+std::vector<StrategyEntry> parse_strategies(const json& strategies, SweepPaths& paths,
+                                            std::vector<std::string>& problems) {
   std::vector<StrategyEntry> out;
   if (!strategies.is_array() || strategies.empty()) {
     problems.push_back("/strategies: expected a non-empty list of {\"name\", \"params\"} objects, got " +
@@ -596,7 +759,8 @@ std::vector<StrategyEntry> parse_strategies(const json& strategies, std::vector<
   }
   const std::vector<std::string> known = strategy_names();
   for (std::size_t i = 0; i < strategies.size(); ++i) {
-    if (auto entry = parse_strategy(strategies[i], "/strategies/" + std::to_string(i), known, problems)) {
+    if (auto entry =
+            parse_strategy(strategies[i], "/strategies/" + std::to_string(i), known, paths, problems)) {
       out.push_back(std::move(*entry));
     }
   }

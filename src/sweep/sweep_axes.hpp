@@ -67,8 +67,9 @@ class SweepPaths {
                                                std::vector<std::string>& problems,
                                                std::vector<SkippedMap>& skipped, bool competitive = false);
 
-/// `strategies`: entries with their parameter groups, each axis value validated.
-[[nodiscard]] std::vector<StrategyEntry> parse_strategies(const nlohmann::json& strategies,
+/// `strategies`: entries with their parameter groups, each axis value validated; the files of
+/// `"vectors": {"file": ...}` found by `paths`.
+[[nodiscard]] std::vector<StrategyEntry> parse_strategies(const nlohmann::json& strategies, SweepPaths& paths,
                                                           std::vector<std::string>& problems);
 
 /// `planners` (null: the default [{"type": "astar"}]).

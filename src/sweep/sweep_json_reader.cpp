@@ -1,6 +1,6 @@
 /// @file sweep_json_reader.cpp
-/// parse_sweep_json: nlohmann's parser with a callback that finds duplicate keys and stops at
-/// kMaxSweepNesting, and its exceptions turned into messages naming the file, line and column;
+/// parse_sweep_json: a SAX pass that finds duplicate keys and stops at kMaxSweepNesting, then
+/// nlohmann's parser, and its exceptions turned into messages naming the file, line and column;
 /// apply_sweep_overrides: the command line's PATH=VALUE overrides.
 
 #include "sweep/sweep_json_reader.hpp"
@@ -30,38 +30,39 @@ struct NestingTooDeep {
   std::string path;
 };
 
-/// Duplicate keys of one object, found while parsing (nlohmann keeps only the last), and the
-/// JSON path of the value being parsed.
+/// Duplicate keys of one object, found by a SAX pass over the text (nlohmann keeps only the
+/// last), and the JSON path of the value being read. A SAX pass, not the DOM parser's callback:
+/// nlohmann's callback parser looks through the enclosing container at every value's end,
+/// quadratic in a list of 100,000 strategy entries.
 class DuplicateKeyFinder {
  public:
-  bool operator()(json::parse_event_t event, json& parsed) {
-    switch (event) {
-      case json::parse_event_t::object_start:
-      case json::parse_event_t::array_start:
-        if (stack_.size() + 1 > static_cast<std::size_t>(kMaxSweepNesting)) throw NestingTooDeep{path()};
-        stack_.push_back(Frame{event == json::parse_event_t::object_start, {}, {}, 0});
-        break;
-      case json::parse_event_t::key: {
-        Frame& top = stack_.back();
-        top.key = parsed.get<std::string>();
-        if (!top.keys.insert(top.key).second) {
-          problems_.push_back(path() + ": duplicate key '" + top.key +
-                              "'; allowed: each key once (JSON keeps only "
-                              "the last)");
-        }
-        break;
-      }
-      case json::parse_event_t::object_end:
-      case json::parse_event_t::array_end:
-        stack_.pop_back();
-        element_done();
-        break;
-      case json::parse_event_t::value:
-        element_done();
-        break;
+  bool null() { return value(); }
+  bool boolean(bool /*v*/) { return value(); }
+  bool number_integer(json::number_integer_t /*v*/) { return value(); }
+  bool number_unsigned(json::number_unsigned_t /*v*/) { return value(); }
+  bool number_float(json::number_float_t /*v*/, const std::string& /*text*/) { return value(); }
+  bool string(std::string& /*v*/) { return value(); }
+  bool binary(json::binary_t& /*v*/) { return value(); }
+  bool start_object(std::size_t /*elements*/) { return open(true); }
+  bool start_array(std::size_t /*elements*/) { return open(false); }
+  bool end_object() { return close(); }
+  bool end_array() { return close(); }
+  bool key(std::string& k) {
+    Frame& top = stack_.back();
+    top.key = k;
+    if (!top.keys.insert(top.key).second) {
+      problems_.push_back(path() + ": duplicate key '" + top.key +
+                          "'; allowed: each key once (JSON keeps only "
+                          "the last)");
     }
     return true;
   }
+  /// Ends the pass; the DOM parser then throws the same error with its message.
+  bool parse_error(std::size_t /*position*/, const std::string& /*token*/,
+                   const nlohmann::detail::exception& /*error*/) {
+    return false;
+  }
+
   [[nodiscard]] const std::vector<std::string>& problems() const { return problems_; }
   /// The JSON path of the value being parsed ("/" at the top), cut after kMaxPathText characters.
   [[nodiscard]] std::string path() const {
@@ -80,8 +81,19 @@ class DuplicateKeyFinder {
     std::string key;
     std::size_t index;
   };
-  void element_done() {
+  bool open(bool object) {
+    if (stack_.size() + 1 > static_cast<std::size_t>(kMaxSweepNesting)) throw NestingTooDeep{path()};
+    stack_.push_back(Frame{object, {}, {}, 0});
+    return true;
+  }
+  bool close() {
+    stack_.pop_back();
+    return value();
+  }
+  /// A value of the enclosing container is done.
+  bool value() {
     if (!stack_.empty() && !stack_.back().object) ++stack_.back().index;
+    return true;
   }
   std::vector<Frame> stack_;
   std::vector<std::string> problems_;
@@ -96,8 +108,9 @@ SweepJson parse_sweep_json(const std::string& text, const std::string& path) {
   auto finder = std::make_shared<DuplicateKeyFinder>();
   SweepJson out;
   try {
-    out.value = json::parse(
-        text, [finder](int /*depth*/, json::parse_event_t e, json& p) { return (*finder)(e, p); });
+    // The pass stops at a syntax error, which the parse then throws with its message.
+    (void)json::sax_parse(text, finder.get());
+    out.value = json::parse(text);
   } catch (const NestingTooDeep& e) {
     throw ConfigError(text_position(path, text, first_too_deep_opening(text, kMaxSweepNesting)),
                       e.path + ": arrays and objects are nested more than " +

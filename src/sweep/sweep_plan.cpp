@@ -18,6 +18,7 @@
 #include "planners/registry.hpp"
 #include "sim/heuristics.hpp"
 #include "strategies/registry.hpp"
+#include "sweep/entry_overlap.hpp"
 #include "sweep/sweep_axes.hpp"
 #include "sweep/sweep_json_reader.hpp"
 #include "world/sensor.hpp"
@@ -150,8 +151,10 @@ SweepPlan SweepPlan::build(const json& sweep, const std::string& file, std::vect
   // 3. The axes.
   sweep_detail::SweepPaths paths(file);
   plan.maps_ = sweep_detail::parse_maps(get("maps"), paths, problems, plan.skipped_maps_, competitive);
+  const std::size_t before_strategies = problems.size();
+  plan.strategies_ = sweep_detail::parse_strategies(get("strategies"), paths, problems);
+  if (problems.size() == before_strategies) sweep_detail::check_entry_overlaps(plan.strategies_, problems);
   plan.path_warnings_ = paths.warnings();
-  plan.strategies_ = sweep_detail::parse_strategies(get("strategies"), problems);
   plan.planners_ = sweep_detail::parse_planners(get("planners"), problems);
   plan.robots_ = sweep_detail::parse_robots(get("robot"), problems);
   plan.check_baseline(get("baseline"), problems);

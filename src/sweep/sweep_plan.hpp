@@ -20,10 +20,11 @@
 ///   from there with a warning (path_warnings()). They are kept as written in run keys, labels
 ///   and runs.csv, so none of these depends on where the files lie. Every map is loaded during
 ///   validation and kept in memory for the whole sweep.
-/// - `strategies` (required, non-empty list of {"name", "label"?, "params"?, "zip"?}): `params`
-///   maps each strategy parameter to a sweep value. `zip` is a list of groups (lists of
-///   parameter names) whose values vary together: the lists of one group must have equal
-///   lengths, a parameter may be in one group only.
+/// - `strategies` (required, non-empty list of {"name", "label"?, "params"?, "zip"?,
+///   "vectors"?}): `params` maps each strategy parameter to a sweep value. `zip` is a list of
+///   groups (lists of parameter names) whose values vary together: the lists of one group must
+///   have equal lengths (values may repeat, tuples may not), a parameter may be in one group
+///   only. `vectors` lists whole tuples, one more zipped group (docs/sweeps.md, "Product").
 /// - `planners`: list of {"type": name, "params": {...}} or plain name strings; default
 ///   [{"type": "astar"}]. Planner parameters are not swept (list several planners instead).
 /// - `robot`: the robot_params_from_json object (run_spec.hpp), where any leaf may be a sweep
@@ -52,7 +53,8 @@
 ///   value i is lo + i*s rounded to the decimals of lo, hi and s (so 0.1 steps give 0.3, not
 ///   0.30000000000000004); hi is included when it is within 1e-9 steps of a grid point.
 /// - at most kMaxAxisValues values per axis; duplicate values in one axis are errors (they
-///   would give runs with equal run keys). Nothing is clamped or rounded silently.
+///   would give runs with equal run keys), but for zipped axes, where only repeated tuples are
+///   errors. Nothing is clamped or rounded silently.
 ///
 /// # Validation
 /// Every problem is collected and thrown as one ConfigError whose message lists them, one per
@@ -65,8 +67,8 @@
 /// the same way, then every robot variant (they are materialised, at most kMaxRobotVariants).
 /// Checked against every map: a given dock is a free cell, the sensor range is at least one
 /// diagonal cell. Repeated maps, planners, robot variants or list values are errors (their
-/// runs would have equal run keys); the same configuration reached from two strategy entries
-/// is not detected. A sweep of more than 2^64 runs is an error.
+/// runs would have equal run keys), and so is the same configuration reached from two strategy
+/// entries (check_entry_overlaps(), entry_overlap.hpp). A sweep of more than 2^64 runs is an error.
 
 /// # Run order
 /// The order of rows in every output: maps (slowest), then strategy configurations (entries
@@ -127,8 +129,11 @@ inline constexpr std::uint64_t kMaxRobotVariants = 1'000'000;
 /// Expands one sweep value (format above): a scalar or non-range object (one value), a list
 /// (its elements), or {"range": [lo, hi], "step": s}. Appends problems ("<where>: message"
 /// with the bad value and what is allowed) to `problems` and returns no values for a bad one.
+/// A list's repeated values are a problem unless `repeats_allowed` (a zipped parameter: its
+/// tuples must differ, not its values).
 [[nodiscard]] std::vector<nlohmann::json> expand_values(const nlohmann::json& v, const std::string& where,
-                                                        std::vector<std::string>& problems);
+                                                        std::vector<std::string>& problems,
+                                                        bool repeats_allowed = false);
 
 /// One map of the sweep after expanding its "seeds"; loaded once at validation.
 // NOLINTNEXTLINE(bugprone-exception-escape): false positive inside nlohmann::json's noexcept move
@@ -304,6 +309,8 @@ class SweepPlan {
   [[nodiscard]] std::uint64_t configuration_count() const;
   /// Strategy configurations over all entries.
   [[nodiscard]] std::uint64_t strategy_configuration_count() const { return strategy_offsets_.back(); }
+  /// The strategy configurations of the entries before entry `e` (0 <= e <= entries).
+  [[nodiscard]] std::uint64_t strategy_offset(std::size_t e) const { return strategy_offsets_.at(e); }
   /// Mixed-radix decode of `index` (< run_count(); throws std::out_of_range otherwise).
   [[nodiscard]] RunCoordinates coordinates(std::uint64_t index) const;
   /// Run `index` resolved once (see SweepRun).

@@ -196,6 +196,32 @@ std::vector<std::string> sweep_warnings(const SweepPlan& plan) {
   return out;
 }
 
+namespace {
+
+/// What the config columns of an entry's representative runs depend on beside the planner and
+/// robot: its strategy, the names of its representative's resolved parameters (a parameter
+/// omitted at its default has no column there) and whether it has heuristics; and every
+/// parameter the entry gives (each gets a column).
+std::string column_signature(const StrategyEntry& entry) {
+  nlohmann::json params = entry.params_at(0);
+  std::string out = entry.name;
+  if (params.is_object() && params.contains("heuristics")) {
+    out += "|heuristics";
+    params.erase("heuristics");
+    if (params.empty()) params = nullptr;
+  }
+  out += '|';
+  const StrategyConfig resolved = configure_strategy(entry.name, params);
+  for (const auto& [name, value] : resolved.params.items()) out += name + ',';
+  out += '|';
+  for (const StrategyEntry::Group& group : entry.groups) {
+    for (const std::string& name : group.names) out += name + ',';
+  }
+  return out;
+}
+
+}  // namespace
+
 std::uint64_t representative_run(const SweepPlan& plan, std::size_t strategy_entry, std::size_t planner,
                                  std::size_t robot) {
   const auto axes = plan.axes();
@@ -203,8 +229,7 @@ std::uint64_t representative_run(const SweepPlan& plan, std::size_t strategy_ent
   const std::uint64_t planners = axes[2].second;
   const std::uint64_t robots = axes[3].second;
   const auto reps = static_cast<std::uint64_t>(plan.repetitions());
-  std::uint64_t strategy = 0;
-  for (std::size_t e = 0; e < strategy_entry; ++e) strategy += plan.strategies()[e].count();
+  const std::uint64_t strategy = plan.strategy_offset(strategy_entry);
   const std::uint64_t index = ((strategy * planners + planner) * robots + robot) * reps;
   const RunCoordinates c = plan.coordinates(index);
   if (c.strategy_entry != strategy_entry || c.strategy_combo != 0 || c.planner != planner ||
@@ -219,9 +244,13 @@ SweepTable::SweepTable(const SweepPlan& plan) {
   //    the column that precedes it in that list (so strategy.w1..w4 join strategy.distance).
   std::vector<std::string> config;
   const auto axes = plan.axes();
+  // Entries whose representatives resolve to the same parameter names (and heuristics or none)
+  // give the same columns: merged once (a sweep may have 100,000 entries of one vector each).
+  std::set<std::string> merged;
   if (plan.run_count() > 0) {
     for (std::size_t e = 0; e < plan.strategies().size(); ++e) {
       if (plan.strategies()[e].search) continue;  // no runs: its results are the search's files
+      if (!merged.insert(column_signature(plan.strategies()[e])).second) continue;
       for (std::size_t p = 0; p < axes.at(2).second; ++p) {
         for (std::size_t r = 0; r < axes.at(3).second; ++r) {
           std::size_t cursor = 0;  // insertion point

@@ -156,7 +156,8 @@ std::string with_thousands(std::uint64_t n) {
 
 }  // namespace sweep_detail
 
-std::vector<json> expand_values(const json& v, const std::string& where, std::vector<std::string>& problems) {
+std::vector<json> expand_values(const json& v, const std::string& where, std::vector<std::string>& problems,
+                                bool repeats_allowed) {
   if (v.is_object() && v.contains("range")) return expand_range(v, where, problems);
   if (!v.is_array()) return {v};
   if (v.empty()) {
@@ -169,6 +170,7 @@ std::vector<json> expand_values(const json& v, const std::string& where, std::ve
                        " per axis");
     return {};
   }
+  if (repeats_allowed) return std::vector<json>(v.begin(), v.end());
   // Equal values would give runs with equal run keys (json compares 1 and 1.0 as equal).
   std::set<json> seen;
   bool duplicate = false;

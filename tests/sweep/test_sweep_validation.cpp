@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/config_error.hpp"
+#include "strategies/registry.hpp"
 #include "sweep/sweep_json_reader.hpp"
 #include "sweep/sweep_plan.hpp"
 #include "sweep/sweep_table.hpp"
@@ -138,6 +139,133 @@ TEST(SweepValidation, ZipGroupsNeedEqualLengthsAndKnownParameters) {
              "/strategies/0/zip/0: zipped parameters vary together and need equal numbers of values; got w1: "
              "3, w3: 2");
   EXPECT_HAS(m, "/strategies/0/zip/1/0: 'w9' is not a parameter of this entry; allowed: w1, w3");
+}
+
+TEST(SweepValidation, ZippedParametersMayRepeatValuesButNotTuples) {
+  // (1, 2) and (1, 3) are different runs; a repeated (1, 2) would be the same run twice; a
+  // parameter outside the zip may not repeat a value.
+  json s = minimal();
+  s["strategies"] = json::parse(R"([{"name": "energy_aware", "params": {"w1": [1, 1, 2], "w3": [2, 3, 2]},
+                                     "zip": [["w1", "w3"]]}])");
+  EXPECT_EQ(problems_of(s), "");
+  EXPECT_EQ(SweepPlan::from_json(s, "s.json").strategies()[0].count(), 3U);
+  s["strategies"][0]["params"]["w3"] = json{2, 3, 2, 3};
+  s["strategies"][0]["params"]["w1"] = json{1, 1, 2, 1};
+  EXPECT_HAS(
+      problems_of(s),
+      "/strategies/0/zip/0: tuple 3 (w1 = 1, w3 = 3) repeats tuple 1; allowed: distinct tuples (repeated "
+      "ones would be the same runs)");
+  s["strategies"][0]["params"]["w4"] = json{5, 5};
+  EXPECT_HAS(problems_of(s), "/strategies/0/params/w4/1: value 5 repeats an earlier element");
+  // Heuristics zipped with a weight: the same list of heuristics twice, with different weights.
+  json h = minimal();
+  h["strategies"] = json::parse(R"([{"name": "energy_aware", "params": {"w1": [1, 2]},
+                                     "heuristics": [["rr"], ["rr"]], "zip": [["heuristics", "w1"]]}])");
+  EXPECT_EQ(problems_of(h), "");
+}
+
+TEST(SweepValidation, WholeVectorsAreOneZippedGroupOfTuples) {
+  json s = minimal();
+  // The shorthand: a linear-scored strategy's weights in its order; times another parameter.
+  s["strategies"] = json::parse(R"([{"name": "energy_aware",
+      "vectors": [[10, 0, 9, 20], [220, 21, 104, 100], [10, 0, 9, 21]], "params": {"unit": ["m", "cell"]}}])");
+  const SweepPlan plan = SweepPlan::from_json(s, "s.json");
+  const StrategyEntry& e = plan.strategies()[0];
+  EXPECT_EQ(e.count(), 6U);
+  EXPECT_EQ(e.params_at(0), (json{{"unit", "m"}, {"w1", 10}, {"w2", 0}, {"w3", 9}, {"w4", 20}}));
+  EXPECT_EQ(e.params_at(4), (json{{"unit", "cell"}, {"w1", 220}, {"w2", 21}, {"w3", 104}, {"w4", 100}}))
+      << e.params_at(4).dump();
+  // Named parameters, and a CSV file beside the sweep file (integers stay integers).
+  s["strategies"] = json::parse(
+      R"([{"name": "energy_aware", "vectors": {"params": ["w3", "w1"], "values": [[9, 1], [0, 2]]}}])");
+  EXPECT_EQ(SweepPlan::from_json(s, "s.json").strategies()[0].params_at(1), (json{{"w1", 2}, {"w3", 0}}));
+  const std::string csv = write_temp("vectors.csv", "w1,w2,w3,w4\n10,0,9,20\n220,21,104,100.5\n");
+  s["strategies"] = json{
+      {{"name", "energy_aware"}, {"vectors", {{"file", std::filesystem::path(csv).filename().string()}}}}};
+  const SweepPlan from_csv =
+      SweepPlan::from_json(s, (std::filesystem::path(csv).parent_path() / "s.json").string());
+  ASSERT_EQ(from_csv.strategies()[0].count(), 2U);
+  EXPECT_EQ(from_csv.strategies()[0].params_at(0).dump(), R"({"w1":10,"w2":0,"w3":9,"w4":20})");
+  EXPECT_EQ(from_csv.strategies()[0].params_at(1).at("w4"), 100.5);
+  std::filesystem::remove(csv);
+}
+
+TEST(SweepValidation, WholeVectorsThatDoNotFitAreProblems) {
+  json s = minimal();
+  const auto problem = [&](const char* entry) {
+    s["strategies"] = json::array({json::parse(entry)});
+    return problems_of(s);
+  };
+  EXPECT_HAS(
+      problem(R"({"name": "energy_aware", "vectors": [[1, 2, 3, 4], [1, 2, 3]]})"),
+      "/strategies/0/vectors/1: value [1,2,3] not allowed; allowed: one value for each of w1, w2, w3, w4");
+  EXPECT_HAS(problem(R"({"name": "energy_aware", "vectors": [[1, 2, 3, 4], [5, 6, 7, 8], [1, 2, 3, 4]]})"),
+             "/strategies/0/vectors: tuple 2 (w1 = 1, w2 = 2, w3 = 3, w4 = 4) repeats tuple 0");
+  EXPECT_HAS(problem(R"({"name": "energy_aware", "vectors": [[1, 2, 3, 4]], "params": {"w2": [0, 1]}})"),
+             "/strategies/0/vectors: parameter 'w2' is also in params; allowed: each parameter in one place");
+  EXPECT_HAS(problem(R"({"name": "random_frontier", "vectors": [[1]]})"),
+             "/strategies/0/vectors: a list of vectors names no parameters and this strategy has no weights");
+  EXPECT_HAS(
+      problem(R"({"name": "energy_aware", "vectors": [[1, 2, 3, 4]], "search": {"mode": "all"}})"),
+      "/strategies/0/vectors: a search covers the whole box of its weights; allowed: vectors or search");
+  EXPECT_HAS(problem(R"({"name": "energy_aware", "vectors": [[-1, 2, 3, 4]]})"), "/strategies/0/vectors");
+  EXPECT_HAS(problem(R"({"name": "energy_aware", "vectors": {"file": "no_such_vectors.csv"}})"),
+             "/strategies/0/vectors/file");
+  EXPECT_HAS(
+      problem(R"({"name": "energy_aware", "vectors": {"params": ["w1"]}})"),
+      "/strategies/0/vectors: value {\"params\":[\"w1\"]} not allowed; allowed: a list of weight vectors");
+  const std::string csv = write_temp("bad_vectors.csv", "w1,w2\n1,x\n");
+  s["strategies"] = json{{{"name", "energy_aware"}, {"vectors", {{"file", csv}}}}};
+  EXPECT_HAS(problems_of(s), csv + ":2: column w2: 'x' is not a number");
+  std::filesystem::remove(csv);
+}
+
+TEST(SweepValidation, TheSameConfigurationFromTwoEntriesIsCaughtWhenRead) {
+  json s = minimal();
+  const auto problems_with = [&](const char* strategies) {
+    s["strategies"] = json::parse(strategies);
+    return problems_of(s);
+  };
+  // Two labels, one configuration: w1 = 2 (1.0 and 1 are one value too).
+  EXPECT_HAS(
+      problems_with(R"([{"name": "energy_aware", "label": "a", "params": {"w1": [1, 2]}},
+                               {"name": "energy_aware", "label": "b", "params": {"w1": [2.0, 3]}}])"),
+      "/strategies/1: the same configuration as /strategies/0 (energy_aware: w1 = 2); a label is not part "
+      "of a run's identity, so both entries would run it; allowed: each configuration in one entry");
+  // Defaults filled in: closest frontier with nothing set twice; energy_aware's declared default
+  // of w2 written out in one entry.
+  EXPECT_HAS(problems_with(R"([{"name": "closest_frontier"}, {"name": "closest_frontier", "label": "CF2"}])"),
+             "/strategies/1: the same configuration as /strategies/0 (closest_frontier)");
+  const json w2 = strategy_registry().params("energy_aware").at(1).default_value;
+  s["strategies"] = json::array({json{{"name", "energy_aware"}, {"params", {{"w1", 4}}}},
+                                 json{{"name", "energy_aware"}, {"params", {{"w1", 4}, {"w2", w2}}}}});
+  EXPECT_HAS(problems_of(s), "/strategies/1: the same configuration as /strategies/0");
+  // Disjoint values, another strategy, another unit: no overlap.
+  EXPECT_EQ(problems_with(R"([{"name": "energy_aware", "params": {"w1": [1, 2]}},
+                              {"name": "energy_aware", "params": {"w1": [3, 4]}},
+                              {"name": "energy_aware", "params": {"w1": [1, 2], "unit": "cell"}},
+                              {"name": "closest_frontier"}])"),
+            "");
+  // Zipped tuples compare as tuples: (1, 3) is not among (1, 2), (2, 3); (2, 3) is.
+  const char* zipped =
+      R"({"name": "energy_aware", "params": {"w1": [1, 2], "w3": [2, 3]}, "zip": [["w1", "w3"]]})";
+  EXPECT_EQ(problems_with(
+                (std::string("[") + zipped + R"(, {"name": "energy_aware", "params": {"w1": 1, "w3": 3}}])")
+                    .c_str()),
+            "");
+  EXPECT_HAS(
+      problems_with(
+          (std::string("[") + zipped +
+           R"(, {"name": "energy_aware", "vectors": {"params": ["w3", "w1"], "values": [[9, 9], [3, 2]]}}])")
+              .c_str()),
+      "/strategies/1: the same configuration as /strategies/0 (energy_aware: w1 = 2, w3 = 3)");
+  // Billions of configurations each, lazily: the value sets intersect.
+  EXPECT_HAS(problems_with(R"([{"name": "energy_aware", "params": {"w1": {"range": [0, 250], "step": 1},
+                                  "w2": {"range": [0, 250], "step": 1}, "w3": {"range": [0, 250], "step": 1},
+                                  "w4": {"range": [0, 250], "step": 1}}},
+                               {"name": "energy_aware", "label": "paper", "params": {"w1": 220, "w2": 21, "w3": 104, "w4": 100}}])"),
+             "/strategies/1: the same configuration as /strategies/0 (energy_aware: w1 = 220, w2 = 21, w3 = "
+             "104, w4 = 100)");
 }
 
 TEST(SweepValidation, RepetitionsStateTheRealLimit) {
