@@ -3,6 +3,7 @@
 /// The robot's map: unknown / free / occupied per cell, built only from sensor updates.
 
 #include <cstdint>
+#include <vector>
 
 #include "world/grid.hpp"
 
@@ -13,11 +14,21 @@ inline namespace world {
 enum class CellState : std::uint8_t { Unknown = 0, Free = 1, Occupied = 2 };
 
 /// What the robot knows. Cells outside the grid count as occupied.
+///
+/// Beside the cells it keeps their freedom as bits, by rows and by columns (bit x of row y and
+/// bit y of column x set when cell (x, y) is known free; 64 cells a word, the bits past the
+/// grid's edge clear), for planners that scan a row or column a word at a time (`jps`). They
+/// follow every reveal() and forget().
 class KnownMap {
  public:
   KnownMap() = default;
   KnownMap(int width, int height, double resolution_m)
-      : cells_(width, height, CellState::Unknown), resolution_m_(resolution_m) {}
+      : cells_(width, height, CellState::Unknown),
+        resolution_m_(resolution_m),
+        row_words_((width + 63) / 64),
+        column_words_((height + 63) / 64),
+        free_rows_(static_cast<std::size_t>(row_words_) * static_cast<std::size_t>(height), 0),
+        free_columns_(static_cast<std::size_t>(column_words_) * static_cast<std::size_t>(width), 0) {}
 
   [[nodiscard]] int width() const { return cells_.width(); }
   [[nodiscard]] int height() const { return cells_.height(); }
@@ -36,10 +47,13 @@ class KnownMap {
   [[nodiscard]] bool is_unknown(int index) const { return cells_[index] == CellState::Unknown; }
 
   /// Records an observation of a so far unknown cell. Returns true when the cell was unknown.
-  bool reveal(int index, bool occupied) {
+  bool reveal(int index, bool occupied) { return reveal(index, cells_.cell(index), occupied); }
+  /// The same for a caller that has the cell `c` of `index` at hand (the sensor's scans).
+  bool reveal(int index, Cell c, bool occupied) {
     if (cells_[index] != CellState::Unknown) return false;
     cells_[index] = occupied ? CellState::Occupied : CellState::Free;
     ++(occupied ? occupied_count_ : free_count_);
+    if (!occupied) set_free_bits(c, true);
     return true;
   }
 
@@ -51,6 +65,7 @@ class KnownMap {
     if (s == CellState::Unknown) return false;
     --(s == CellState::Occupied ? occupied_count_ : free_count_);
     cells_[index] = CellState::Unknown;
+    if (s == CellState::Free) set_free_bits(cells_.cell(index), false);
     return true;
   }
 
@@ -59,13 +74,46 @@ class KnownMap {
   [[nodiscard]] int known_count() const { return free_count_ + occupied_count_; }
   [[nodiscard]] const Grid<CellState>& cells() const { return cells_; }
 
-  friend bool operator==(const KnownMap&, const KnownMap&) = default;
+  /// Words per row of free_row() and per column of free_column().
+  [[nodiscard]] int row_words() const { return row_words_; }
+  [[nodiscard]] int column_words() const { return column_words_; }
+  /// Row y's free cells as bits (bit x % 64 of word x / 64), row_words() words; 0 <= y < height.
+  [[nodiscard]] const std::uint64_t* free_row(int y) const {
+    return free_rows_.data() + static_cast<std::size_t>(y) * static_cast<std::size_t>(row_words_);
+  }
+  /// Column x's free cells as bits (bit y % 64 of word y / 64), column_words() words.
+  [[nodiscard]] const std::uint64_t* free_column(int x) const {
+    return free_columns_.data() + static_cast<std::size_t>(x) * static_cast<std::size_t>(column_words_);
+  }
+
+  friend bool operator==(const KnownMap& a, const KnownMap& b) {
+    // The bits follow the cells.
+    return a.cells_ == b.cells_ && a.resolution_m_ == b.resolution_m_ && a.free_count_ == b.free_count_ &&
+           a.occupied_count_ == b.occupied_count_;
+  }
 
  private:
+  void set_free_bits(Cell c, bool free) {
+    const auto flip = [free](std::uint64_t& word, int bit) {
+      const std::uint64_t mask = std::uint64_t{1} << static_cast<unsigned>(bit);
+      word = free ? (word | mask) : (word & ~mask);
+    };
+    flip(free_rows_[static_cast<std::size_t>(c.y) * static_cast<std::size_t>(row_words_) +
+                    static_cast<std::size_t>(c.x / 64)],
+         c.x % 64);
+    flip(free_columns_[static_cast<std::size_t>(c.x) * static_cast<std::size_t>(column_words_) +
+                       static_cast<std::size_t>(c.y / 64)],
+         c.y % 64);
+  }
+
   Grid<CellState> cells_;
   double resolution_m_ = 1.0;
   int free_count_ = 0;
   int occupied_count_ = 0;
+  int row_words_ = 0;
+  int column_words_ = 0;
+  std::vector<std::uint64_t> free_rows_;
+  std::vector<std::uint64_t> free_columns_;
 };
 
 /// A KnownMap that knows every cell of the ground truth (for planning on known maps).

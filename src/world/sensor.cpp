@@ -495,7 +495,7 @@ std::span<const int> Sensor::scan(const WorldMap& truth, KnownMap& known, Cell a
       if (known_state[index] != CellState::Unknown) continue;
       if (limit_fov && rank != 0 && angle_distance(tables_->angles[rank], heading_rad) > half_fov) continue;
       if (noisy && rank != 0 && uniform01(rng) < params_.miss_probability) continue;
-      known.reveal(index, false);
+      known.reveal(index, Cell{x, y}, false);
       revealed_.push_back(index);
     }
     return revealed_;
@@ -526,7 +526,7 @@ std::span<const int> Sensor::scan(const WorldMap& truth, KnownMap& known, Cell a
       // 4. Seeded miss: one draw per visible unknown cell, in table order; the robot's own
       //    cell is never missed.
       if (noisy && rank != 0 && uniform01(rng) < params_.miss_probability) continue;
-      known.reveal(index, occ[index] != 0);
+      known.reveal(index, Cell{at.x + order[rank].dx, at.y + order[rank].dy}, occ[index] != 0);
       revealed_.push_back(index);
     }
   }

@@ -174,6 +174,54 @@ TEST(JpsPlanner, RandomMapsMatchAStar) {
   EXPECT_GT(gaps, 500);
 }
 
+// Maps wider and taller than a word of 64 cells (jumps scan rows and columns by words, with
+// the forced-neighbour bits carried across word boundaries), and a map that is partly known and
+// changes between queries (cells revealed, some forgotten): the bits follow it.
+TEST(JpsPlanner, MultiWordAndChangingMapsMatchAStar) {
+  JpsPlanner jps;
+  const auto astar = make_planner("astar", nullptr);
+  int solved = 0;
+  for (const auto& [width, height] : {std::pair{130, 70}, std::pair{64, 129}, std::pair{200, 65}}) {
+    for (const double density : {0.05, 0.25}) {
+      const std::uint64_t seed = static_cast<std::uint64_t>(width + height);
+      const KnownMap known = testing::random_known_map(width, height, density, seed);
+      Rng rng = make_rng(seed, "jps_wide_queries");
+      for (int q = 0; q < 40; ++q) {
+        const Cell start = testing::random_free_cell(known, rng);
+        const Cell goal = testing::random_free_cell(known, rng);
+        for (const bool cut : {false, true}) {
+          const PlanRequest req = request_for(start, goal, cut);
+          if (expect_same_as_astar(jps, *astar, known, req, query_text(req)) == PlanStatus::Success) ++solved;
+        }
+      }
+    }
+  }
+  EXPECT_GT(solved, 400);
+  // A map revealed in steps: each step reveals a random tenth of the unknown cells (a tenth of
+  // those occupied), forgets a few free ones, and plans between known free cells.
+  const KnownMap truth = testing::random_known_map(150, 90, 0.2, 5);
+  KnownMap known(truth.width(), truth.height(), truth.resolution_m());
+  Rng rng = make_rng(5, "jps_changing");
+  int changing = 0;
+  for (int step = 0; step < 12; ++step) {
+    for (int i = 0; i < known.size(); ++i) {
+      if (known.is_unknown(i) && uniform01(rng) < 0.1 + 0.08 * step) known.reveal(i, !truth.is_free(i));
+      if (known.is_free(i) && uniform01(rng) < 0.01) (void)known.forget(i);
+    }
+    if (known.free_count() < 2) continue;
+    for (int q = 0; q < 20; ++q) {
+      const Cell start = testing::random_free_cell(known, rng);
+      const Cell goal = testing::random_free_cell(known, rng);
+      for (const bool cut : {false, true}) {
+        const PlanRequest req = request_for(start, goal, cut);
+        const std::string what = "step " + std::to_string(step) + " " + query_text(req);
+        if (expect_same_as_astar(jps, *astar, known, req, what) == PlanStatus::Success) ++changing;
+      }
+    }
+  }
+  EXPECT_GT(changing, 100);
+}
+
 TEST(JpsPlanner, DiagonalGapBetweenTwoOccupiedCellsIsNotPassed) {
   // The only way from S to G is the diagonal step (1,1) -> (2,2), between the occupied (2,1)
   // and (1,2): passable only with corner cutting.

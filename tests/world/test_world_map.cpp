@@ -37,6 +37,36 @@ TEST(WorldMap, ContentHashCoversCellsSizeResolutionAndStartButNotTheSource) {
     EXPECT_NE(content_hash(*m), content_hash(base));
 }
 
+TEST(KnownMap, FreeBitsByRowAndColumnFollowTheCells) {
+  // 70 x 130: rows of two words, columns of three; reveals and forgets in a seeded order.
+  KnownMap known(70, 130, 1.0);
+  EXPECT_EQ(known.row_words(), 2);
+  EXPECT_EQ(known.column_words(), 3);
+  std::uint64_t state = 7;
+  for (int round = 0; round < 4; ++round) {
+    for (int i = 0; i < known.size(); ++i) {
+      state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+      const auto draw = static_cast<unsigned>(state >> 60U);
+      if (draw < 6) (void)known.reveal(i, draw < 2);
+      if (draw == 15) (void)known.forget(i);
+    }
+    for (int y = 0; y < known.height(); ++y) {
+      for (int x = 0; x < known.width(); ++x) {
+        const bool free = known.is_free(Cell{x, y});
+        const auto bit = [](const std::uint64_t* words, int i) {
+          return ((words[i / 64] >> (i % 64)) & 1U) != 0;
+        };
+        ASSERT_EQ(bit(known.free_row(y), x), free) << x << "," << y << " round " << round;
+        ASSERT_EQ(bit(known.free_column(x), y), free) << x << "," << y << " round " << round;
+      }
+      // The bits past the edge stay clear.
+      EXPECT_EQ(known.free_row(y)[1] >> 6U, 0U);
+    }
+  }
+  const KnownMap copy = known;
+  EXPECT_TRUE(copy == known);
+}
+
 TEST(KnownMap, ForgetMakesACellUnknownAgainAndKeepsTheCounts) {
   KnownMap known(3, 2, 1.0);
   EXPECT_TRUE(known.reveal(0, false));
