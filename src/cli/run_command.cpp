@@ -2,13 +2,17 @@
 /// `fsweep run SWEEP.json`: the main job. Prints the run count before starting, progress on
 /// stderr, then where the results are. Exit 0 when done, 130 when interrupted (Ctrl-C, SIGTERM;
 /// rerun the same command to resume), 2 on configuration errors, 1 when a file cannot be written
-/// (a full disk, a file size limit; every file is left whole, and the same command resumes).
+/// (a full disk, a file size limit; every file is left whole, and the same command resumes) and
+/// when the memory guard stopped an exact weight search (`--max-memory`; its journal is whole, and
+/// a rerun with enough memory resumes it).
 
 #include <cerrno>
 #include <charconv>
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
+#include <string>
 #include <string_view>
 #include <tuple>
 #include <vector>
@@ -18,6 +22,7 @@
 #include "cli/sweep_warnings.hpp"
 #include "core/config_error.hpp"
 #include "core/io_error.hpp"
+#include "core/memory_limit.hpp"
 #include "report/sqlite_export.hpp"
 #include "sweep/sweep_plan.hpp"
 #include "sweep/sweep_runner.hpp"
@@ -34,6 +39,7 @@ struct RunCommandOptions {
   bool quiet = false;
   std::string shard;
   bool sqlite = false;
+  std::string max_memory;
 };
 
 std::string one_decimal(double v) {
@@ -57,6 +63,18 @@ std::pair<std::uint64_t, std::uint64_t> parse_shard(const std::string& s) {
     throw ConfigError("--shard", "expected i/n with 0 <= i < n (e.g. 3/16), got '" + s + "'");
   }
   return {i, n};
+}
+
+/// Reads --max-memory's SIZE (core/memory_limit.hpp's parse_memory_size()).
+MemoryLimit parse_max_memory(const std::string& s) {
+  const std::optional<std::uint64_t> bytes = parse_memory_size(s);
+  if (!bytes) {
+    throw ConfigError("--max-memory",
+                      "expected a size above 0: a number of bytes, or a number with K, M, G or T (powers of "
+                      "1024) such as 512M, 1.5G or 4G; got '" +
+                          s + "'");
+  }
+  return MemoryLimit{*bytes, "--max-memory " + s};
 }
 
 /// What a sweep stopped by IoError `os_error` needs before the same command resumes it.
@@ -96,6 +114,7 @@ int run_command(const RunCommandOptions& o) {
   options.sweep_file = o.sweep_file;
   options.progress = !o.quiet;
   if (!o.shard.empty()) std::tie(options.shard_index, options.shard_count) = parse_shard(o.shard);
+  if (!o.max_memory.empty()) options.max_memory = parse_max_memory(o.max_memory);
 
   const std::uint64_t reps = static_cast<std::uint64_t>(plan.repetitions());
   std::cout << "sweep " << plan.name() << ": " << plan.run_count() << " runs (" << plan.configuration_count()
@@ -143,6 +162,11 @@ int run_command(const RunCommandOptions& o) {
                                                            : "")
             << (r.searches.searches > 0 ? ", " + join_names(r.searches.files) : std::string())
             << (plan.competitive() ? std::string(", ") + kOptimaFile : std::string()) << ")\n";
+  if (r.searches.memory_stop) {  // the machine's limit, not the user's input, stopped it
+    std::cout << std::flush;
+    std::cerr << "fsweep: error: " << r.searches.memory_stop->message << '\n';
+    return 1;
+  }
   if (r.interrupted) {
     std::cout << "rerun the same command to resume"
               << (o.sqlite ? " (results.sqlite is written once it is done)" : "") << "\n";
@@ -176,6 +200,11 @@ Command add_run_command(CLI::App& app) {
                 "the run is done");
   sub->add_option("--shard", o->shard,
                   "Run shard i of n (runs with index % n == i) into <out>/shard-i-of-n/, e.g. 0/4");
+  sub->add_option(
+         "--max-memory", o->max_memory,
+         "Memory the exact weight searches may use, e.g. 4G, 512M, 1.5G or bytes; a search is stopped, "
+         "its journal whole, at 90% of it (default: the cgroup's limit, else the machine's memory)")
+      ->type_name("SIZE");
   return [o] {
     try {
       return run_command(*o);

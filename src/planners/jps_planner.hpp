@@ -16,9 +16,9 @@
 /// a blocked step, or (diagonal jumps) a cell from which a straight jump along either component
 /// finds a jump point. Straight jumps scan their row or column a word of 64 cells at a time
 /// (KnownMap's free bits; Harabor & Grastien, "Improving Jump Point Search", ICAPS 2014), finding
-/// the same jump points as a scan cell by cell. The A* runs on jump points (BestFirstSearch, octile heuristic, the edge
-/// cost the octile length of the straight or diagonal segment); the direction of arrival at a
-/// jump point is read from its parent.
+/// the same jump points as a scan cell by cell. The A* runs on jump points (BestFirstSearch, octile
+/// heuristic, the edge cost the octile length of the straight or diagonal segment); the direction of arrival
+/// at a jump point is read from its parent.
 
 #include <limits>
 #include <memory>

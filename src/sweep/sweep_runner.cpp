@@ -163,6 +163,8 @@ void check_options(const RunnerOptions& options) {
     throw ConfigError("--shard", "must be i/n with 0 <= i < n, got " + std::to_string(options.shard_index) +
                                      "/" + std::to_string(options.shard_count));
   }
+  if (options.max_memory && options.max_memory->bytes == 0)
+    throw ConfigError("--max-memory", "must be > 0 bytes");
 }
 
 /// Removes the temp files of a runner killed while replacing a file ("runs.csv.tmp.<pid>").
@@ -354,8 +356,23 @@ void record_end(const RunnerReport& report, const Resumed& resumed, ManifestInfo
   info.status = report.interrupted ? "interrupted" : "complete";
 }
 
+/// manifest_json() with the weight searches' memory limit, `max_memory`: {bytes, source} (null
+/// when none could be read), at the top level and in this session's entry (the limit may change
+/// from one session to the next). Only in sweeps with searches: the limit guards nothing else.
+nlohmann::json manifest_of(const SweepPlan& plan, const ManifestInfo& info, const RunnerReport& report) {
+  nlohmann::json manifest = manifest_json(plan, info);
+  if (plan.search_units().empty()) return manifest;
+  nlohmann::json limit = nullptr;
+  if (report.max_memory) limit = {{"bytes", report.max_memory->bytes}, {"source", report.max_memory->source}};
+  manifest["max_memory"] = limit;
+  manifest["sessions"].back()["max_memory"] = limit;
+  return manifest;
+}
+
 /// The exact weight searches (weight_search_runner.hpp), after the runs: searches.json is
 /// written last, so its presence means every search file is complete and nothing is searched.
+/// A search the memory guard stopped leaves the manifest "failed": the environment, not the
+/// user, ended it, as a file that cannot be written does.
 void run_searches(const SweepPlan& plan, const RunnerOptions& options, int threads,
                   const std::string& manifest_path, Clock::time_point wall_start, ManifestInfo& info,
                   RunnerReport& report) {
@@ -365,22 +382,23 @@ void run_searches(const SweepPlan& plan, const RunnerOptions& options, int threa
     return;
   }
   info.status = "running";
-  write_manifest(manifest_path, manifest_json(plan, info));
+  write_manifest(manifest_path, manifest_of(plan, info, report));
   // A stop after the last run was dispatched ends the searches at once (nothing searched).
   try {
-    report.searches = run_weight_searches(plan, dir, threads, options.progress, options.shard_index,
-                                          options.shard_count, &stop_requested);
+    report.searches =
+        run_weight_searches(plan, dir, threads, options.progress, options.shard_index, options.shard_count,
+                            &stop_requested, SearchMemoryGuard{report.max_memory, options.resident_memory});
   } catch (...) {  // e.g. a journal that cannot be written: the manifest says so, as for the runs
     info.status = "failed";
     info.end_utc = utc_now_iso8601();
     try {
-      write_manifest(manifest_path, manifest_json(plan, info));
+      write_manifest(manifest_path, manifest_of(plan, info, report));
     } catch (...) {  // NOLINT(bugprone-empty-catch): the first error is the one to report
     }
     throw;
   }
   report.interrupted = report.searches.interrupted;
-  info.status = report.interrupted ? "interrupted" : "complete";
+  info.status = report.searches.memory_stop ? "failed" : report.interrupted ? "interrupted" : "complete";
   info.end_utc = utc_now_iso8601();
   report.wall_s = seconds_since(wall_start);
   info.wall_s = report.wall_s;
@@ -399,6 +417,7 @@ RunnerReport run_sweep(const SweepPlan& plan, const RunnerOptions& options) {
   const auto wall_start = Clock::now();
   RunnerReport report;
   report.threads = threads;
+  report.max_memory = options.max_memory ? options.max_memory : default_memory_limit();
   report.out_dir = output_directory(plan, options);
   const std::string& dir = report.out_dir;
   const DirectoryLock lock(dir);
@@ -423,7 +442,7 @@ RunnerReport run_sweep(const SweepPlan& plan, const RunnerOptions& options) {
   info.runs.total = shard_size(plan.run_count(), options.shard_index, options.shard_count);
   info.runs.done = resumed.done.size();
   info.runs.failed = resumed.failed;
-  write_manifest(manifest_path, manifest_json(plan, info));
+  write_manifest(manifest_path, manifest_of(plan, info, report));
   report.total = info.runs.total;
 
   // The offline optima of the runs on competitive maps, once per key before the runs (so the
@@ -452,7 +471,7 @@ RunnerReport run_sweep(const SweepPlan& plan, const RunnerOptions& options) {
     } catch (...) {  // NOLINT(bugprone-empty-catch)
     }
     try {
-      write_manifest(manifest_path, manifest_json(plan, info));
+      write_manifest(manifest_path, manifest_of(plan, info, report));
     } catch (...) {  // NOLINT(bugprone-empty-catch)
     }
     throw;
@@ -468,7 +487,7 @@ RunnerReport run_sweep(const SweepPlan& plan, const RunnerOptions& options) {
     run_searches(plan, options, threads, manifest_path, wall_start, info, report);
   }
   signals.reset();
-  write_manifest(manifest_path, manifest_json(plan, info));
+  write_manifest(manifest_path, manifest_of(plan, info, report));
 
   if (!report.interrupted && options.shard_count == 1) aggregate(dir, {});
   return report;

@@ -95,6 +95,11 @@
 /// outcome or metric columns of another build, and sweeps with exact weight searches (before or
 /// after: their files are of the earlier sweep's instances).
 ///
+/// Memory: a weight search whose memory in use reaches 90% of RunnerOptions::max_memory is
+/// stopped as by a signal (below) but the manifest says "failed" and the report has
+/// searches.memory_stop (weight_search_runner.hpp). The limit is recorded in the manifest:
+/// `max_memory` {bytes, source}, at the top level and in the session's entry (sweeps with searches).
+///
 /// Signals: SIGINT/SIGTERM stop dispatching new runs; runs in flight finish and are written,
 /// the files are flushed, the manifest says "interrupted", and run_sweep returns with
 /// `interrupted` set. During the exact weight searches they stop the search at each branch's
@@ -109,8 +114,11 @@
 /// shard resumes on its own; aggregation is left to the merge.
 
 #include <cstdint>
+#include <functional>
+#include <optional>
 #include <string>
 
+#include "core/memory_limit.hpp"
 #include "sweep/optimum_table.hpp"
 #include "sweep/sweep_plan.hpp"
 #include "sweep/weight_search_runner.hpp"
@@ -145,6 +153,13 @@ struct RunnerOptions {
   /// index % n == i. n = 1: all runs. n = 0 or i >= n: ConfigError.
   std::uint64_t shard_index = 0;
   std::uint64_t shard_count = 1;
+  /// The memory limit of the exact weight searches' guard (weight_search_runner.hpp,
+  /// SearchMemoryGuard; `fsweep run --max-memory`); nullopt: default_memory_limit() (the
+  /// cgroup's limit, else the machine's memory). Recorded in the manifest as `max_memory`.
+  std::optional<MemoryLimit> max_memory;
+  /// What the guard reads as the memory in use; empty: the process's resident set. Tests give
+  /// their own to stop a search at a point of their choosing.
+  std::function<std::optional<std::uint64_t>()> resident_memory;
 };
 
 struct RunnerReport {
@@ -163,7 +178,10 @@ struct RunnerReport {
   /// Of those outputs, the finished runs kept (in the changed sweep's run order).
   std::uint64_t kept = 0;
   /// The sweep's exact weight searches, run after its runs (when those were not interrupted).
+  /// A search the memory guard stopped sets searches.memory_stop, and `interrupted`.
   SearchRunReport searches;
+  /// The guard's limit (RunnerOptions::max_memory or the default); nullopt when none could be read.
+  std::optional<MemoryLimit> max_memory;
   /// Their files were already there (searches.json), so they were not run again.
   bool searches_done_before = false;
   /// The offline optima of the runs on competitive maps (optimum_table.hpp), prepared before the

@@ -12,6 +12,7 @@
 #include <map>
 #include <mutex>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -24,6 +25,8 @@
 #include "core/csv_reader.hpp"
 #include "core/files.hpp"
 #include "core/json_text.hpp"
+#include "core/memory_watch.hpp"
+#include "core/readable_number.hpp"
 #include "core/statistics.hpp"
 #include "report/runs_schema.hpp"
 #include "report/search_objective.hpp"
@@ -87,7 +90,95 @@ struct Searched {
   /// Mode best: where the search stands (describe_search_status() of its last anytime status);
   /// empty in mode all.
   std::string standing;
+  /// Set when the memory guard stopped it (stats.stopped is set too).
+  std::optional<MemoryStop> memory_stop;
 };
+
+/// The memory guard reads the memory in use every this many behaviours found or read back from
+/// the journal (besides every kMemoryWatchInterval): a check costs a few microseconds, a
+/// behaviour milliseconds to find and a tenth of one to read back.
+constexpr std::size_t kBehavioursPerMemoryCheck = 16;
+
+/// What the guard `memory` reads as the memory in use: its own reader, else the resident set.
+MemoryWatch::Reader memory_reader(const SearchMemoryGuard& memory) {
+  return memory.resident ? memory.resident : MemoryWatch::Reader(resident_memory_bytes);
+}
+
+/// True when `guard` (may be null) has seen the memory reach its threshold, reading it at every
+/// kBehavioursPerMemoryCheck-th behaviour (`held`: the behaviours held so far).
+bool past_memory_threshold(MemoryWatch* guard, std::size_t held) {
+  if (guard == nullptr) return false;
+  return guard->reached() || (held % kBehavioursPerMemoryCheck == 0 && guard->check());
+}
+
+/// `out` as the memory guard `guard` stopped it at `stage`: stats.stopped, and the memory stop
+/// with the behaviours and branches it held (its search id, limit and message are the caller's).
+Searched stopped_by_memory(Searched out, const MemoryWatch& guard, MemoryStop::Stage stage) {
+  out.stats.stopped = true;
+  MemoryStop& s = out.memory_stop.emplace();
+  s.in_use_bytes = guard.reached().value_or(0);
+  s.held_behaviours = out.found.size();
+  s.open_branches = out.stats.unresolved_branches;
+  s.stage = stage;
+  return out;
+}
+
+/// What a memory stop says (MemoryStop::message): what happened, what the journal keeps, and
+/// the ways on for a search of `search`.
+std::string describe_memory_stop(const MemoryStop& s, const WeightSearch& search) {
+  std::string text = "exact weight search " + std::to_string(s.search_id);
+  switch (s.stage) {
+    case MemoryStop::Stage::Starting:
+      text += " cannot start within the memory limit: before it began, the process used ";
+      break;
+    case MemoryStop::Stage::Resuming:
+      text += " cannot resume within the memory limit: reading its journal back, the process used ";
+      break;
+    case MemoryStop::Stage::Searching:
+      text += " stopped at the memory limit: the process used ";
+      break;
+  }
+  text += readable_memory_size(s.in_use_bytes) + ", past " + readable_number(kMemorySafetyShare * 100.0) +
+          "% of the limit of " + readable_memory_size(s.limit.bytes) + " (" + s.limit.source + ")";
+  if (s.stage != MemoryStop::Stage::Starting) {
+    text += ", holding " + readable_number(static_cast<double>(s.held_behaviours)) + " behaviours";
+  }
+  if (s.open_branches > 0)
+    text += " and " + readable_number(static_cast<double>(s.open_branches)) + " open branches";
+  text +=
+      "; search_journal.jsonl keeps what it finished. To go on: rerun with a larger --max-memory (it resumes "
+      "from the journal) where the machine has the memory, ";
+  if (search.mode == WeightSearch::Mode::All) {
+    text += "search in \"mode\": \"best\" if only the optimal behaviours are needed, ";
+  } else if (search.order == SearchOrder::Bound) {
+    text += "search in \"order\": \"depth\" or with a smaller \"max_open\" (fewer branches wait), ";
+  }
+  text += "or search the box in shards (fsweep run --shard i/N; docs/weight-search.md, \"Shards\")";
+  return text;
+}
+
+/// The finished subtrees of a search of `root` that `journaled` holds, added to journaled.done:
+/// its nodes, and its behaviours (`found`, read from it) and other leaves as finished leaves.
+/// Returns their ancestors (SubtreeJournal::ancestors).
+std::unordered_set<std::uint64_t> journaled_subtrees(const WeightRegion& root,
+                                                     const std::vector<FoundBehaviour>& found,
+                                                     Journal& journaled) {
+  const std::uint64_t root_id = subtree_root(root);
+  std::vector<std::vector<int>> paths;
+  paths.reserve(found.size() + journaled.leaves.size());
+  for (const FoundBehaviour& f : found) {
+    SubtreeTally leaf;
+    leaf.vectors = f.behaviour.vectors;
+    leaf.behaviours = 1;
+    journaled.done.emplace(subtree_of(root_id, f.behaviour.choices), leaf);
+    paths.push_back(f.behaviour.choices);
+  }
+  for (const auto& [choices, leaf] : journaled.leaves) {
+    journaled.done.emplace(subtree_of(root_id, choices), leaf);
+    paths.push_back(choices);
+  }
+  return journal_ancestors(root_id, paths);
+}
 
 class SearchWriter {
  public:
@@ -108,17 +199,25 @@ class SearchWriter {
   /// `on_vectors(n)`: n more vectors resolved. Every behaviour found and every finished subtree
   /// goes to the journal at once; those a killed search of the same key journaled are kept and
   /// skipped (mode best: the best journaled behaviour is the incumbent to beat).
+  ///
+  /// `stop`: ends the search early (exact_search). `guard`: the memory guard (may be null), whose
+  /// stop() is `stop`, watching while the journal is read back and while the search runs; a
+  /// search past its threshold returns stopped_by_memory(): before reading anything when it is
+  /// past it at the start, before searching anything when the journal alone reaches it.
   Searched search(int threads, const std::function<void(std::uint64_t)>& on_vectors, const WeightRegion& root,
-                  const std::atomic<bool>* stop) {
+                  const std::atomic<bool>* stop, MemoryWatch* guard) {
     const std::vector<RunSpec> specs = instance_specs();
     const auto start = std::chrono::steady_clock::now();
     Searched out;
     std::vector<FoundBehaviour>& found = out.found;
     const std::string key = unit_key(specs.size());
-    Journal journaled = read_journal(key, out_dir_, JournalDamage::Repair, true);
+    if (guard != nullptr && guard->check())
+      return stopped_by_memory(std::move(out), *guard, MemoryStop::Stage::Starting);
+    Journal journaled = read_journal(key, out_dir_, JournalDamage::Repair, true, guard);
     found = std::move(journaled.found);
-    // The subtrees the journal holds finished: its nodes, and its behaviours as leaves.
-    const std::uint64_t root_id = subtree_root(root);
+    if (guard != nullptr && guard->reached())
+      return stopped_by_memory(std::move(out), *guard, MemoryStop::Stage::Resuming);
+    const std::unordered_set<std::uint64_t> ancestors = journaled_subtrees(root, found, journaled);
     std::unordered_map<std::uint64_t, SubtreeTally>& done = journaled.done;
     const double sign = direction_sign();
     double incumbent = std::numeric_limits<double>::infinity();
@@ -128,21 +227,7 @@ class SearchWriter {
       incumbent = sign * f.objective;
       best_weights = grid_.weights_at(f.behaviour.representative);
     };
-    for (const FoundBehaviour& f : found) {
-      SubtreeTally leaf;
-      leaf.vectors = f.behaviour.vectors;
-      leaf.behaviours = 1;
-      done.emplace(subtree_of(root_id, f.behaviour.choices), leaf);
-      better(f);
-    }
-    std::vector<std::vector<int>> paths;
-    paths.reserve(found.size() + journaled.leaves.size());
-    for (const FoundBehaviour& f : found) paths.push_back(f.behaviour.choices);
-    for (const auto& [choices, leaf] : journaled.leaves) {
-      done.emplace(subtree_of(root_id, choices), leaf);
-      paths.push_back(choices);
-    }
-    const std::unordered_set<std::uint64_t> ancestors = journal_ancestors(root_id, paths);
+    for (const FoundBehaviour& f : found) better(f);
     out.resumed = found.size();
     SearchJournal journal(journal_path(out_dir_));
     SubtreeJournal subtrees;
@@ -168,6 +253,7 @@ class SearchWriter {
       tables_.admit(f);
       better(f);
       found.push_back(std::move(f));
+      (void)past_memory_threshold(guard, found.size());
     };
     if (search_.mode == WeightSearch::Mode::All) {
       out.stats = exact_search(specs, grid_, threads, keep, nullptr, &root, &subtrees, stop);
@@ -204,6 +290,8 @@ class SearchWriter {
       out.standing = describe_search_status(anytime.last());
     }
     out.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (out.stats.stopped && guard != nullptr && guard->reached())
+      return stopped_by_memory(std::move(out), *guard, MemoryStop::Stage::Searching);
     return out;
   }
 
@@ -327,15 +415,20 @@ class SearchWriter {
   /// This search's behaviours and finished subtrees in the journal of `dir` (SearchJournal::read():
   /// `damage` Repair for a search about to append to its own journal, Refuse for a merge reading a
   /// finished shard's). `admitting`: each behaviour goes through admit() as it is read (a resumed
-  /// search's own journal; a merge admits the behaviours the shards' parts make up).
+  /// search's own journal; a merge admits the behaviours the shards' parts make up). `guard`: the
+  /// memory guard of a resumed search; once the memory reaches its threshold, the behaviours
+  /// read after are dropped (the read goes on to the end: stopped early, it would cut the journal
+  /// as damaged there).
   [[nodiscard]] Journal read_journal(const std::string& key, const std::string& dir, JournalDamage damage,
-                                     bool admitting) {
+                                     bool admitting, MemoryWatch* guard = nullptr) {
     Journal out;
     const Columns names = cell_names();
     const std::string_view hint =
         "; the shard's journal is damaged: delete its searches.json and rerun its `fsweep run --shard i/N`, "
         "which keeps the lines before this one and redoes the rest";
+    std::size_t read = 0;
     const auto behaviour = [&](JournaledBehaviour&& journaled) {
+      if (past_memory_threshold(guard, ++read)) return;
       FoundBehaviour f;
       f.behaviour = std::move(journaled.behaviour);
       for (std::vector<std::string>& row : journaled.cells) {
@@ -559,7 +652,7 @@ std::string join_shard_status(const SweepPlan& plan, const std::vector<SearchUni
 
 SearchRunReport run_weight_searches(const SweepPlan& plan, const std::string& out_dir, int threads,
                                     bool progress, std::uint64_t shard_index, std::uint64_t shard_count,
-                                    const std::atomic<bool>* stop) {
+                                    const std::atomic<bool>* stop, const SearchMemoryGuard& memory) {
   SearchRunReport report;
   const Objective* objective = nullptr;
   const std::vector<SearchUnit> units = checked_units(plan, objective);
@@ -578,6 +671,9 @@ SearchRunReport run_weight_searches(const SweepPlan& plan, const std::string& ou
     total += grid.count(roots.back());
   }
   ProgressMeter meter(total, "weight vectors", progress);
+  // One memory guard for the searches; its flag, which they poll, forwards `stop`.
+  std::optional<MemoryWatch> guard;
+  if (memory.limit) guard.emplace(memory.limit->bytes, memory_reader(memory), stop);
   std::uint64_t done = 0;
   std::mutex mutex;
   std::vector<SearchRows> rows;
@@ -591,13 +687,19 @@ SearchRunReport run_weight_searches(const SweepPlan& plan, const std::string& ou
           done += n;
           meter.update(done, 0);
         },
-        roots[id], stop);
+        roots[id], guard ? guard->stop() : stop, guard ? &*guard : nullptr);
     if (searched.stats.stopped) {
       meter.finish(done, 0);
       if (progress) {
         std::fputs("fsweep: weight search stopped; what it finished is in search_journal.jsonl\n", stderr);
       }
       report.interrupted = true;
+      if (searched.memory_stop) {
+        MemoryStop& s = report.memory_stop.emplace(std::move(*searched.memory_stop));
+        s.search_id = id;
+        s.limit = *memory.limit;
+        s.message = describe_memory_stop(s, *plan.strategies().at(units[id].entry).search);
+      }
       if (!searched.standing.empty()) {
         report.standings.push_back("search " + std::to_string(id) + ": " + searched.standing + " (" +
                                    search_status_file(id) + ")");

@@ -47,13 +47,46 @@
 
 #include <atomic>
 #include <cstdint>
+#include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "core/memory_limit.hpp"
 #include "sweep/sweep_plan.hpp"
 
 namespace fsweep {
 inline namespace sweep {
+
+/// The searches' memory guard (docs/weight-search.md, "Memory"): while a search runs (and while
+/// it reads its journal to resume) the memory in use is read every few tens of milliseconds and
+/// every 16 behaviours; once it reaches core/memory_watch.hpp's kMemorySafetyShare of `limit`,
+/// the search stops as at a Ctrl-C, its journal whole.
+struct SearchMemoryGuard {
+  /// The limit; nullopt: no guard.
+  std::optional<MemoryLimit> limit;
+  /// The memory in use; empty: the process's resident set (resident_memory_bytes()).
+  std::function<std::optional<std::uint64_t>()> resident;
+};
+
+/// Why the memory guard stopped a search.
+struct MemoryStop {
+  std::size_t search_id = 0;
+  MemoryLimit limit;
+  /// The memory in use when it reached the guard's threshold.
+  std::uint64_t in_use_bytes = 0;
+  /// Behaviours the search held then (mode all holds every one it found or read back).
+  std::uint64_t held_behaviours = 0;
+  /// Mode best: branches still waiting or running then.
+  std::size_t open_branches = 0;
+  /// When: before the search read or searched anything (the process was already past the
+  /// threshold), while it read its journal back to resume (nothing searched), or while searching.
+  enum class Stage { Starting, Resuming, Searching };
+  Stage stage = Stage::Searching;
+  /// What happened and what to do: the limit, the memory in use, the behaviours held, and the
+  /// ways on (a larger --max-memory, mode best, shards).
+  std::string message;
+};
 
 struct SearchRunReport {
   std::size_t searches = 0;
@@ -70,6 +103,8 @@ struct SearchRunReport {
   /// Of a stopped search of mode best: where it stands (describe_search_status()), naming its
   /// status file.
   std::vector<std::string> standings;
+  /// Set when the memory guard stopped the search (`interrupted` is set too).
+  std::optional<MemoryStop> memory_stop;
 };
 
 /// Runs every search of `plan` (none: returns at once, writing nothing) on `threads` worker
@@ -83,9 +118,12 @@ struct SearchRunReport {
 /// `stop` (e.g. set by SIGINT): once it is true the search in progress ends at the next decision
 /// of each branch (exact_search), nothing else is searched or written, and the report says
 /// `interrupted`. What finished is in the journal, flushed line by line, so a rerun resumes.
+/// `memory`: the guard, which stops a search the same way (within 50 ms of the memory reaching
+/// its threshold) and says so in the report's `memory_stop`.
 SearchRunReport run_weight_searches(const SweepPlan& plan, const std::string& out_dir, int threads,
                                     bool progress, std::uint64_t shard_index = 0,
-                                    std::uint64_t shard_count = 1, const std::atomic<bool>* stop = nullptr);
+                                    std::uint64_t shard_count = 1, const std::atomic<bool>* stop = nullptr,
+                                    const SearchMemoryGuard& memory = {});
 
 /// Joins the searches of `plan` run as shards into `shard_dirs` (each with its searches.json and
 /// a journal without a damaged line, else ConfigError naming the file or line; the shards' files
