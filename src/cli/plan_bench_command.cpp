@@ -9,10 +9,10 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <set>
+#include <sstream>
 #include <thread>
 
 #include "cli/commands.hpp"
@@ -53,7 +53,7 @@ struct PlanBenchOptions {
 void write_queries_csv(const std::string& path, const std::vector<std::string>& names,
                        const std::vector<BenchQuery>& queries,
                        const std::vector<std::vector<BenchPlan>>& plans) {
-  std::ofstream f = open_for_writing(path);
+  std::ostringstream f;  // written whole at the end (write_file_atomically: IoError)
   f << "query,start_x,start_y,goal_x,goal_y,optimal_cells";
   for (const std::string& n : names) {
     for (const char* col : {"status", "length_ratio", "energy", "turns", "time_s"})
@@ -71,12 +71,12 @@ void write_queries_csv(const std::string& path, const std::vector<std::string>& 
     }
     f << '\n';
   }
-  if (!f) throw ConfigError(path, "write failed");
+  write_file_atomically(path, f.str());
 }
 
 void write_bench_summary_csv(const std::string& path, const std::vector<std::string>& names,
                              const std::vector<BenchSummary>& summaries) {
-  std::ofstream f = open_for_writing(path);
+  std::ostringstream f;  // written whole at the end (write_file_atomically: IoError)
   f << "planner,queries,solved,timeouts,success_rate";
   for (const char* metric : {"length_ratio", "energy", "turns", "time_ms"}) {
     for (const char* stat : {"mean", "q05", "q25", "median", "q75", "q95"}) f << ',' << metric << '_' << stat;
@@ -91,7 +91,7 @@ void write_bench_summary_csv(const std::string& path, const std::vector<std::str
     }
     f << '\n';
   }
-  if (!f) throw ConfigError(path, "write failed");
+  write_file_atomically(path, f.str());
 }
 
 /// The preamble of ompl_benchmark.log: what was benchmarked (the setup block), on what machine.

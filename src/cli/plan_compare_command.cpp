@@ -8,12 +8,12 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <set>
+#include <sstream>
 
 #include "cli/commands.hpp"
 #include "cli/kv_options.hpp"
@@ -104,7 +104,7 @@ void print_compare_table(const PlanCompareOptions& o, const KnownMap& known, con
 
 void write_pairs_csv(const std::string& path, const std::vector<std::string>& names,
                      const std::vector<ComparePair>& pairs, const std::vector<std::vector<PairPlan>>& plans) {
-  std::ofstream f = open_for_writing(path);
+  std::ostringstream f;  // written whole at the end (write_file_atomically: IoError)
   f << "pair,source_x,source_y,target_x,target_y,start_heading";
   for (const std::string& n : names) {
     for (const char* col : {"status", "length_m", "energy", "stops", "turns", "expansions", "time_s"}) {
@@ -123,12 +123,12 @@ void write_pairs_csv(const std::string& path, const std::vector<std::string>& na
     }
     f << '\n';
   }
-  if (!f) throw ConfigError(path, "write failed");
+  write_file_atomically(path, f.str());
 }
 
 void write_compare_summary_csv(const std::string& path, const std::vector<std::string>& names,
                                const CompareSummary& s) {
-  std::ofstream f = open_for_writing(path);
+  std::ostringstream f;  // written whole at the end (write_file_atomically: IoError)
   f << "baseline,candidate,pairs_used";
   for (const char* metric : {"energy_saving_pct", "length_increase_pct"}) {
     for (const char* stat : {"mean", "q05", "q25", "median", "q75", "q95"}) f << ',' << metric << '_' << stat;
@@ -158,7 +158,7 @@ void write_compare_summary_csv(const std::string& path, const std::vector<std::s
     }
     f << '\n';
   }
-  if (!f) throw ConfigError(path, "write failed");
+  write_file_atomically(path, f.str());
 }
 
 void write_manifest(const std::string& path, const PlanCompareOptions& o, const KnownMap& known,
@@ -182,9 +182,9 @@ void write_manifest(const std::string& path, const PlanCompareOptions& o, const 
   j["pair_rule"] =
       "distinct unordered {source, target} of distinct known-free cells reachable from each other, "
       "source and target uniform over free cells (rejection sampling)";
-  std::ofstream f = open_for_writing(path);
+  std::ostringstream f;  // written whole at the end (write_file_atomically: IoError)
   f << j.dump(2) << '\n';
-  if (!f) throw ConfigError(path, "write failed");
+  write_file_atomically(path, f.str());
 }
 
 int run_plan_compare(const PlanCompareOptions& o) {

@@ -12,7 +12,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -25,6 +24,7 @@
 #include "cli/output_dir.hpp"
 #include "cli/sweep_warnings.hpp"
 #include "core/config_error.hpp"
+#include "core/files.hpp"
 #include "sweep/slurm_script.hpp"
 #include "sweep/sweep_plan.hpp"
 
@@ -93,12 +93,8 @@ std::string absolute_path(const std::string& p) {
 }
 
 void write_script(const std::string& path, const std::string& text) {
-  {
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    out << text;
-    if (!out) throw ConfigError(path, "cannot write the script");
-  }
-  ::chmod(path.c_str(), 0755);  // convenient to run by hand; sbatch does not need it
+  write_file_atomically(path, text);  // IoError naming the file and the OS error
+  ::chmod(path.c_str(), 0755);        // convenient to run by hand; sbatch does not need it
 }
 
 /// "3" or "2 to 3": runs per shard of an N-way split of `runs` runs.

@@ -7,7 +7,6 @@
 #include <sstream>
 #include <utility>
 
-#include "core/config_error.hpp"
 #include "core/replacing_file.hpp"
 
 namespace fsweep {
@@ -48,12 +47,6 @@ std::string read_first_line(const std::string& path) {
   std::string line;
   if (!std::getline(in, line) || in.eof()) return {};  // no newline: not a complete line
   return line;
-}
-
-std::ofstream open_for_writing(const std::string& path) {
-  std::ofstream f(path, std::ios::binary | std::ios::trunc);
-  if (!f) throw ConfigError(path, "cannot open for writing");
-  return f;
 }
 
 }  // namespace core

@@ -4,7 +4,6 @@
 /// them write (a full disk, a file size limit, a read-only directory) throws IoError
 /// (core/io_error.hpp) naming it and the OS error.
 
-#include <fstream>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -14,9 +13,6 @@ inline namespace core {
 
 /// A temp file name beside `path`, unique to this process: `path` + ".tmp." + pid.
 [[nodiscard]] std::string temp_path(const std::string& path);
-
-/// `path` opened for binary writing, truncated; throws ConfigError at `path` when it cannot be.
-[[nodiscard]] std::ofstream open_for_writing(const std::string& path);
 
 /// Writes `contents` to `path` atomically: a temp file in the same directory, then rename
 /// (core/replacing_file.hpp). Throws IoError naming the file and the OS error; the old file is

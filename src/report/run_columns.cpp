@@ -1,7 +1,7 @@
 /// @file run_columns.cpp
 /// The writer side of runs_schema.hpp: a run's configuration and metrics as columns.
 
-#include <fstream>
+#include <sstream>
 
 #include "core/config_error.hpp"
 #include "core/csv_format.hpp"
@@ -114,22 +114,25 @@ std::string progress_cells(const ProgressSample& s) {
 }
 
 void write_csv(const std::string& path, const std::vector<Columns>& rows) {
-  auto f = open_for_writing(path);
-  if (rows.empty()) return;
+  std::ostringstream f;  // written whole at the end (write_file_atomically: IoError)
   std::vector<std::string> cells;
-  for (const auto& [name, value] : rows[0]) cells.push_back(name);
-  f << csv_record(cells) << '\n';
+  if (!rows.empty()) {
+    for (const auto& [name, value] : rows[0]) cells.push_back(name);
+    f << csv_record(cells) << '\n';
+  }
   for (const auto& row : rows) {
     cells.clear();
     for (const auto& [name, value] : row) cells.push_back(value);
     f << csv_record(cells) << '\n';
   }
+  write_file_atomically(path, f.str());
 }
 
 void write_progress_csv(const std::string& path, const RunResult& result) {
-  auto f = open_for_writing(path);
+  std::ostringstream f;  // written whole at the end (write_file_atomically: IoError)
   f << csv_record({kProgressColumns.begin(), kProgressColumns.end()}) << '\n';
   for (const auto& s : result.progress) f << progress_cells(s) << '\n';
+  write_file_atomically(path, f.str());
 }
 
 }  // namespace report

@@ -286,4 +286,24 @@ TEST(CliWriteFailures, AWeightSearchWhoseJournalReachesTheLimitExits1AndTheRerun
   }
 }
 
+TEST(CliWriteFailures, TheOtherCommandsReportAFileTheyCannotWriteTheSameWay) {
+  // fsweep sim's CSVs (and plan-bench's, plan-compare's, slurm's script: the same helper) under
+  // a limit smaller than its run.csv: exit 1 naming the file and the OS error, no file cut
+  // short, no temp file left.
+  const std::string out = fsweep::testing::fresh_dir("write_failures", "sim");
+  const Ended e = run_fsweep({"sim", "--map", "rooms:w=40,h=30,door=3,seed=1", "--strategy",
+                              "closest_frontier", "--robot", "sensor.range_m=6", "--out", out},
+                             100);
+  EXPECT_TRUE(e.exited) << "killed by signal " << e.signal << "\n" << e.output;
+  EXPECT_EQ(e.code, 1) << e.output;
+  EXPECT_NE(e.output.find(": write failed: File too large"), std::string::npos) << e.output;
+  EXPECT_NE(e.output.find(out + "/"), std::string::npos) << e.output;
+  for (const auto& entry : fs::directory_iterator(out)) {
+    EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos) << entry.path();
+    if (entry.path().extension() == ".csv") {
+      EXPECT_LE(fs::file_size(entry.path()), 100U) << entry.path();
+    }
+  }
+}
+
 }  // namespace test_cli_write_failures
