@@ -415,14 +415,16 @@ void read_name_and_label(const json& item, const std::string& where, const std::
   }
 }
 
-/// A CSV cell of a vectors file as a JSON number: an integer when written as one (as a sweep
-/// file's list would hold it, so run keys agree), else a double; nullopt when not a number.
+/// A CSV cell of a vectors file as the JSON number it reads as (so 10 stays an integer, as a
+/// sweep file's list would hold it, and run keys agree); else a number by parse_number() (such as
+/// "+1"), as a double; nullopt when it is no finite number.
 std::optional<json> csv_number(const std::string& cell) {
-  const std::optional<double> v = parse_number(cell);
-  if (!v || !std::isfinite(*v)) return std::nullopt;
-  const bool integral = !cell.empty() && cell.find_first_not_of("-0123456789") == std::string::npos;
-  if (integral && std::abs(*v) < 9.0e15) return json(static_cast<std::int64_t>(*v));
-  return json(*v);
+  const json v = json::parse(cell, nullptr, false);
+  if (!v.is_discarded() && v.is_number())
+    return std::isfinite(v.get<double>()) ? std::optional<json>(v) : std::nullopt;
+  const std::optional<double> d = parse_number(cell);
+  if (!d || !std::isfinite(*d)) return std::nullopt;
+  return json(*d);
 }
 
 /// The tuples of `"vectors": {"file": ...}`: a CSV file whose header names the parameters.
