@@ -8,6 +8,8 @@
 #include <system_error>
 #include <vector>
 
+#include "core/config_error.hpp"
+
 namespace fsweep::cli {
 namespace {
 
@@ -125,6 +127,17 @@ std::string parse_error_message(const CLI::App& app, const CLI::ParseError& e) {
   }
   const std::string name = parsed.back()->get_name();
   return "fsweep: error: " + name + ": " + e.what() + "\n(fsweep " + name + " --help lists its options)";
+}
+
+MemoryLimit parse_max_memory(const std::string& s) {
+  const std::optional<std::uint64_t> bytes = parse_memory_size(s);
+  if (!bytes) {
+    throw ConfigError("--max-memory",
+                      "expected a size above 0: a number of bytes, or a number with K, M, G or T (powers of "
+                      "1024) such as 512M, 1.5G or 4G; got '" +
+                          s + "'");
+  }
+  return MemoryLimit{*bytes, "--max-memory " + s};
 }
 
 }  // namespace fsweep::cli

@@ -8,6 +8,8 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
+#include "core/memory_limit.hpp"
+
 namespace fsweep::cli {
 
 /// A check that the number given is > 0 ("must be > 0, got '-1'"); CLI11's PositiveNumber
@@ -29,5 +31,10 @@ void check_number_options(CLI::App& app);
 /// command being parsed and ends with where to find its options. One or more lines, no newline
 /// at the end.
 [[nodiscard]] std::string parse_error_message(const CLI::App& app, const CLI::ParseError& e);
+
+/// The limit --max-memory SIZE gives (`fsweep run`, `fsweep merge`): a number of bytes or a number
+/// with K, M, G or T (core/memory_limit.hpp's parse_memory_size()). Throws ConfigError naming the
+/// option and what is allowed.
+[[nodiscard]] MemoryLimit parse_max_memory(const std::string& s);
 
 }  // namespace fsweep::cli

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "cli/option_checks.hpp"
 #include "cli/output_dir.hpp"
 #include "cli/sweep_warnings.hpp"
 #include "core/config_error.hpp"
@@ -63,18 +64,6 @@ std::pair<std::uint64_t, std::uint64_t> parse_shard(const std::string& s) {
     throw ConfigError("--shard", "expected i/n with 0 <= i < n (e.g. 3/16), got '" + s + "'");
   }
   return {i, n};
-}
-
-/// Reads --max-memory's SIZE (core/memory_limit.hpp's parse_memory_size()).
-MemoryLimit parse_max_memory(const std::string& s) {
-  const std::optional<std::uint64_t> bytes = parse_memory_size(s);
-  if (!bytes) {
-    throw ConfigError("--max-memory",
-                      "expected a size above 0: a number of bytes, or a number with K, M, G or T (powers of "
-                      "1024) such as 512M, 1.5G or 4G; got '" +
-                          s + "'");
-  }
-  return MemoryLimit{*bytes, "--max-memory " + s};
 }
 
 /// What a sweep stopped by IoError `os_error` needs before the same command resumes it.

@@ -1,19 +1,18 @@
 #include "sim/trajectory_image.hpp"
 
 #include <stb/stb_easy_font.h>
-#include <stb/stb_image_write.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "core/config_error.hpp"
 #include "core/files.hpp"
 #include "core/readable_number.hpp"
+#include "world/png_image.hpp"
 
 namespace fsweep {
 inline namespace sim {
@@ -128,18 +127,7 @@ class Canvas {
     return stb_easy_font_width(text.data()) * size;
   }
   /// The canvas as PNG file bytes.
-  [[nodiscard]] std::string png() const {
-    std::string bytes;
-    auto append = [](void* context, void* data, int size) {
-      static_cast<std::string*>(context)->append(static_cast<const char*>(data),
-                                                 static_cast<std::size_t>(size));
-    };
-    if (stbi_write_png_to_func(append, &bytes, w_, h_, 3, px_.data(), w_ * 3) == 0) {
-      throw std::runtime_error("stb could not encode a PNG of " + std::to_string(w_) + " x " +
-                               std::to_string(h_) + " pixels");
-    }
-    return bytes;
-  }
+  [[nodiscard]] std::string png() const { return encode_png(w_, h_, px_); }
 
  private:
   void put(int x, int y, Rgb rgb) {

@@ -1,9 +1,12 @@
 #include "sweep/manifest.hpp"
 
+#include <fcntl.h>
 #include <oneapi/tbb/version.h>
+#include <unistd.h>
 
 #include <ctime>
 #include <fstream>
+#include <string_view>
 
 #include "core/files.hpp"
 #include "core/host_info.hpp"
@@ -204,6 +207,42 @@ double sessions_runs_per_s(const nlohmann::json& sessions) {
 
 void write_manifest(const std::string& path, const nlohmann::json& manifest) {
   write_file_atomically(path, manifest.dump(2) + "\n");
+}
+
+namespace {
+
+/// Changes the top-level `"status": "running"` of the manifest at `path` (as write_manifest()
+/// formats it) to `"status": "failed" ` by overwriting those 9 bytes in place; false when the file
+/// or the field is not there or the write fails.
+bool mark_running_manifest_failed_in_place(const std::string& path) {
+  const std::optional<std::string> text = read_file(path);
+  if (!text) return false;
+  constexpr std::string_view kKey = "\n  \"status\": ";
+  constexpr std::string_view kRunning = "\"running\"";
+  constexpr std::string_view kFailed = "\"failed\" ";
+  static_assert(kRunning.size() == kFailed.size());
+  const std::size_t at = text->find(std::string(kKey) + std::string(kRunning));
+  if (at == std::string::npos) return false;
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);  // NOLINT(cppcoreguidelines-pro-type-vararg)
+  if (fd < 0) return false;
+  const auto offset = static_cast<off_t>(at + kKey.size());
+  const bool written =
+      ::pwrite(fd, kFailed.data(), kFailed.size(), offset) == static_cast<ssize_t>(kFailed.size());
+  return ::close(fd) == 0 && written;
+}
+
+}  // namespace
+
+void record_failed_manifest(const std::string& path, const nlohmann::json& manifest) noexcept {
+  try {
+    write_manifest(path, manifest);
+    return;
+  } catch (...) {  // NOLINT(bugprone-empty-catch): the status alone, in place, below
+  }
+  try {
+    (void)mark_running_manifest_failed_in_place(path);
+  } catch (...) {  // NOLINT(bugprone-empty-catch): the error being reported is the first one
+  }
 }
 
 std::optional<nlohmann::json> read_manifest(const std::string& path) {

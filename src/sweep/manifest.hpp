@@ -92,6 +92,13 @@ struct ManifestInfo {
 /// Writes `manifest` to `path` (temp file and rename: never torn).
 void write_manifest(const std::string& path, const nlohmann::json& manifest);
 
+/// Records that the session failed: `manifest` (its status "failed") written as write_manifest()
+/// does; when the machine refuses that write too (the full disk or the file size limit that
+/// stopped the session), the manifest already at `path` has its top-level status changed from
+/// "running" to "failed" in place, the same number of bytes (`"failed" `), so no space is needed.
+/// Never throws: it runs while another error is reported, and that one is the one to report.
+void record_failed_manifest(const std::string& path, const nlohmann::json& manifest) noexcept;
+
 /// The manifest at `path`; nullopt when the file is missing, unreadable or has no sweep_hash.
 [[nodiscard]] std::optional<nlohmann::json> read_manifest(const std::string& path);
 

@@ -290,7 +290,8 @@ nlohmann::json merged_manifest(const std::vector<Shard>& shards, const MergeRepo
 
 }  // namespace
 
-MergeReport merge_shards(const std::string& dir, const std::string& objective) {
+MergeReport merge_shards(const std::string& dir, const std::string& objective,
+                         const SearchMemoryGuard& memory) {
   MergeReport report;
   if (!fs::is_directory(dir)) throw ConfigError(dir, "not a directory");
   const std::vector<Shard> shards = read_shards(dir, report);
@@ -318,7 +319,12 @@ MergeReport merge_shards(const std::string& dir, const std::string& objective) {
       }
     }
   } else if (!plan->search_units().empty()) {
-    report.searches = merge_weight_searches(*plan, dir, dirs).searches;
+    const SearchRunReport searches = merge_weight_searches(*plan, dir, dirs, memory);
+    if (searches.memory_stop) {
+      report.memory_stop = searches.memory_stop->message;
+      return report;
+    }
+    report.searches = searches.searches;
   }
   write_file_atomically(dir + "/runs.csv", runs_text);
   write_file_atomically(dir + "/progress.csv", progress_text);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/shard_dirs.hpp"
+#include "sweep/weight_search_runner.hpp"
 
 namespace fsweep {
 inline namespace sweep {
@@ -25,6 +26,9 @@ struct MergeReport {
   bool written = false;  ///< merged files and aggregates written (problems is empty)
   /// Exact weight searches merged (merge_weight_searches(), weight_search_runner.hpp).
   std::size_t searches = 0;
+  /// Set when the memory guard stopped the searches' merge: what it says (MemoryStop::message).
+  /// Nothing is written then.
+  std::string memory_stop;
 };
 
 /// Merges the shards under `dir`. Every shard directory (name `shard-<i>-of-<n>`) must have the
@@ -44,8 +48,10 @@ struct MergeReport {
 /// sessions by start time, start_utc the first session's, status
 /// "complete") atomically, and runs aggregate(dir, {objective}). A sweep with exact weight
 /// searches has them merged first (merge_weight_searches(): every shard needs its
-/// searches.json, else ConfigError and nothing is written).
-[[nodiscard]] MergeReport merge_shards(const std::string& dir, const std::string& objective = {});
+/// searches.json, else ConfigError and nothing is written), under the memory guard `memory`
+/// (no guard by default): past its threshold, report.memory_stop says so and nothing is written.
+[[nodiscard]] MergeReport merge_shards(const std::string& dir, const std::string& objective = {},
+                                       const SearchMemoryGuard& memory = {});
 
 }  // namespace sweep
 }  // namespace fsweep

@@ -11,6 +11,7 @@
 
 #include "core/csv_format.hpp"
 #include "core/files.hpp"
+#include "core/replacing_file.hpp"
 #include "core/statistics.hpp"
 #include "report/search_objective.hpp"
 #include "report/search_schema.hpp"
@@ -315,42 +316,41 @@ void SearchTables::write_vectors(const std::vector<FoundBehaviour>& found, Searc
 void write_search_files(const SweepPlan& plan, const std::vector<SearchUnit>& units,
                         std::vector<SearchRows> rows, const std::string& out_dir, SearchRunReport& report) {
   const WeightSearch& first = *plan.strategies().at(units.front().entry).search;
-  std::string behaviours = SearchTables::behaviours_header(first) + '\n';
-  std::string summary = SearchTables::summary_header() + '\n';
-  std::string best = SearchTables::best_header(first) + '\n';
-  std::string ranks = SearchTables::ranks_header(first) + '\n';
-  std::string heatmaps = SearchTables::heatmaps_header() + '\n';
-  std::string vectors = SearchTables::vectors_header(first) + '\n';
   bool any_vectors = false;
   bool any_all = false;
+  for (const SearchUnit& unit : units) {
+    const WeightSearch& s = *plan.strategies().at(unit.entry).search;
+    any_vectors = any_vectors || s.write_vectors;
+    any_all = any_all || s.mode == WeightSearch::Mode::All;
+  }
+  // Each file streamed: its header, then every search's rows, each released once written, so
+  // the files' text is held once (in the rows), not copied whole beside them.
+  const std::filesystem::path dir(out_dir);
+  const auto write = [&](const char* name, const std::string& header, std::string SearchRows::*part) {
+    ReplacingFile file((dir / name).string());
+    file.write(header + '\n');
+    for (SearchRows& r : rows) {
+      file.write(r.*part);
+      std::string().swap(r.*part);
+    }
+    file.commit();
+    report.files.emplace_back(name);
+  };
+  write(kBehavioursFile, SearchTables::behaviours_header(first), &SearchRows::behaviours);
+  write(kSearchBestFile, SearchTables::best_header(first), &SearchRows::best);
+  if (any_all) {
+    write(kSearchSummaryFile, SearchTables::summary_header(), &SearchRows::summary);
+    write(kSearchRanksFile, SearchTables::ranks_header(first), &SearchRows::ranks);
+    write(kSearchHeatmapsFile, SearchTables::heatmaps_header(), &SearchRows::heatmaps);
+  }
+  if (any_vectors) write(kVectorsFile, SearchTables::vectors_header(first), &SearchRows::vectors);
   json searches = json::array();
   for (std::size_t id = 0; id < units.size(); ++id) {
     const WeightSearch& s = *plan.strategies().at(units[id].entry).search;
-    behaviours += rows[id].behaviours;
-    summary += rows[id].summary;
-    best += rows[id].best;
-    ranks += rows[id].ranks;
-    heatmaps += rows[id].heatmaps;
-    vectors += rows[id].vectors;
-    any_vectors = any_vectors || s.write_vectors;
-    any_all = any_all || s.mode == WeightSearch::Mode::All;
     (s.mode == WeightSearch::Mode::All ? report.behaviours : report.optimal) +=
         rows[id].record.at("behaviours").get<std::uint64_t>();
     report.vectors += s.vectors();
     searches.push_back(std::move(rows[id].record));
-  }
-  const std::filesystem::path dir(out_dir);
-  std::vector<std::pair<std::string, const std::string*>> files{{kBehavioursFile, &behaviours},
-                                                                {kSearchBestFile, &best}};
-  if (any_all) {
-    files.emplace_back(kSearchSummaryFile, &summary);
-    files.emplace_back(kSearchRanksFile, &ranks);
-    files.emplace_back(kSearchHeatmapsFile, &heatmaps);
-  }
-  if (any_vectors) files.emplace_back(kVectorsFile, &vectors);
-  for (const auto& [name, text] : files) {
-    write_file_atomically((dir / name).string(), *text);
-    report.files.push_back(name);
   }
   // Last: its presence marks the search files as complete.
   write_file_atomically((dir / kSearchesFile).string(), json{{"searches", searches}}.dump(2) + '\n');

@@ -391,10 +391,7 @@ void run_searches(const SweepPlan& plan, const RunnerOptions& options, int threa
   } catch (...) {  // e.g. a journal that cannot be written: the manifest says so, as for the runs
     info.status = "failed";
     info.end_utc = utc_now_iso8601();
-    try {
-      write_manifest(manifest_path, manifest_of(plan, info, report));
-    } catch (...) {  // NOLINT(bugprone-empty-catch): the first error is the one to report
-    }
+    record_failed_manifest(manifest_path, manifest_of(plan, info, report));
     throw;
   }
   report.interrupted = report.searches.interrupted;
@@ -470,10 +467,7 @@ RunnerReport run_sweep(const SweepPlan& plan, const RunnerOptions& options) {
       pipeline.flush();
     } catch (...) {  // NOLINT(bugprone-empty-catch)
     }
-    try {
-      write_manifest(manifest_path, manifest_of(plan, info, report));
-    } catch (...) {  // NOLINT(bugprone-empty-catch)
-    }
+    record_failed_manifest(manifest_path, manifest_of(plan, info, report));
     throw;
   }
 

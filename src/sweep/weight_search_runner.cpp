@@ -99,9 +99,32 @@ struct Searched {
 /// behaviour milliseconds to find and a tenth of one to read back.
 constexpr std::size_t kBehavioursPerMemoryCheck = 16;
 
+/// What formatting a finished search's files takes beyond what the search held, per row of
+/// behaviours.csv (a behaviour times an instance), with room: the free-space box [0, 15]^4 (6,834
+/// behaviours, one instance) went from 71.7 to 84.0 MiB resident (1.8 KB a row) while formatting.
+constexpr std::uint64_t kFormattingBytesPerRow = 2048;
+
 /// What the guard `memory` reads as the memory in use: its own reader, else the resident set.
 MemoryWatch::Reader memory_reader(const SearchMemoryGuard& memory) {
   return memory.resident ? memory.resident : MemoryWatch::Reader(resident_memory_bytes);
+}
+
+/// A stop at `stage` (Writing or Merging) when formatting the files of a finished search that
+/// holds `held` behaviours of `instances` instances each (kFormattingBytesPerRow a row) would
+/// take the memory in use past `guard`'s threshold; nullopt without a guard or when it fits.
+std::optional<MemoryStop> formatting_would_pass(const MemoryWatch* guard, const SearchMemoryGuard& memory,
+                                                std::size_t held, std::size_t instances,
+                                                MemoryStop::Stage stage) {
+  if (guard == nullptr) return std::nullopt;
+  const std::uint64_t in_use = memory_reader(memory)().value_or(0);
+  const std::uint64_t needed = held * instances * kFormattingBytesPerRow;
+  if (in_use + needed < guard->threshold_bytes()) return std::nullopt;
+  MemoryStop s;
+  s.in_use_bytes = in_use;
+  s.needed_bytes = needed;
+  s.held_behaviours = held;
+  s.stage = stage;
+  return s;
 }
 
 /// True when `guard` (may be null) has seen the memory reach its threshold, reading it at every
@@ -126,6 +149,19 @@ Searched stopped_by_memory(Searched out, const MemoryWatch& guard, MemoryStop::S
 /// What a memory stop says (MemoryStop::message): what happened, what the journal keeps, and
 /// the ways on for a search of `search`.
 std::string describe_memory_stop(const MemoryStop& s, const WeightSearch& search) {
+  const auto in_use = [&s] {
+    std::string text = readable_memory_size(s.in_use_bytes);
+    if (s.needed_bytes > 0) text += " and would need about " + readable_memory_size(s.needed_bytes) + " more";
+    return text + ", past " + readable_number(kMemorySafetyShare * 100.0) + "% of the limit of " +
+           readable_memory_size(s.limit.bytes) + " (" + s.limit.source + "), holding " +
+           readable_number(static_cast<double>(s.held_behaviours)) + " behaviours";
+  };
+  if (s.stage == MemoryStop::Stage::Merging) {
+    return "merging exact weight search " + std::to_string(s.search_id) +
+           "'s shards reached the memory limit: the process used " + in_use() +
+           "; nothing was written. To go on: rerun fsweep merge with a larger --max-memory where the machine "
+           "has the memory (the merge holds every behaviour of the whole search)";
+  }
   std::string text = "exact weight search " + std::to_string(s.search_id);
   switch (s.stage) {
     case MemoryStop::Stage::Starting:
@@ -137,17 +173,28 @@ std::string describe_memory_stop(const MemoryStop& s, const WeightSearch& search
     case MemoryStop::Stage::Searching:
       text += " stopped at the memory limit: the process used ";
       break;
+    case MemoryStop::Stage::Merging:  // above
+    case MemoryStop::Stage::Writing:
+      text += s.needed_bytes > 0
+                  ? " finished, but formatting its files would pass the memory limit: the process used "
+                  : " finished, but formatting its files reached the memory limit: the process used ";
+      break;
   }
-  text += readable_memory_size(s.in_use_bytes) + ", past " + readable_number(kMemorySafetyShare * 100.0) +
-          "% of the limit of " + readable_memory_size(s.limit.bytes) + " (" + s.limit.source + ")";
-  if (s.stage != MemoryStop::Stage::Starting) {
-    text += ", holding " + readable_number(static_cast<double>(s.held_behaviours)) + " behaviours";
+  if (s.stage == MemoryStop::Stage::Starting) {
+    text += readable_memory_size(s.in_use_bytes) + ", past " + readable_number(kMemorySafetyShare * 100.0) +
+            "% of the limit of " + readable_memory_size(s.limit.bytes) + " (" + s.limit.source + ")";
+  } else {
+    text += in_use();
   }
   if (s.open_branches > 0)
     text += " and " + readable_number(static_cast<double>(s.open_branches)) + " open branches";
   text +=
-      "; search_journal.jsonl keeps what it finished. To go on: rerun with a larger --max-memory (it resumes "
-      "from the journal) where the machine has the memory, ";
+      s.stage == MemoryStop::Stage::Writing
+          ? "; search_journal.jsonl holds the whole search and no other search file was written. To go "
+            "on: rerun with a larger --max-memory (it reads the journal back and writes the files) where "
+            "the machine has the memory, "
+          : "; search_journal.jsonl keeps what it finished. To go on: rerun with a larger --max-memory (it "
+            "resumes from the journal) where the machine has the memory, ";
   if (search.mode == WeightSearch::Mode::All) {
     text += "search in \"mode\": \"best\" if only the optimal behaviours are needed, ";
   } else if (search.order == SearchOrder::Bound) {
@@ -325,12 +372,21 @@ class SearchWriter {
   /// The parts of the whole grid's behaviours that searches of its shards found in `dirs`,
   /// merged: behaviours with one trace are one behaviour of the whole search (Behaviour::trace),
   /// its region the union of theirs. `records`: each shard's searches.json record of this search.
-  Searched merged(const std::vector<std::string>& dirs, const std::vector<json>& records) {
+  /// `guard` (may be null): the memory guard; once it reached its threshold reading a journal,
+  /// the rest is not read and `out` is stopped_by_memory() (stage Merging).
+  Searched merged(const std::vector<std::string>& dirs, const std::vector<json>& records,
+                  MemoryWatch* guard) {
     Searched out;
     const std::string key = unit_key(instance_count());
     std::map<std::uint64_t, std::size_t> by_trace;
     for (const std::string& dir : dirs) {
-      for (FoundBehaviour& f : read_journal(key, dir, JournalDamage::Refuse, false).found) {
+      std::vector<FoundBehaviour> read = read_journal(key, dir, JournalDamage::Refuse, false, guard).found;
+      if (guard != nullptr && guard->reached()) {
+        out.found.insert(out.found.end(), std::make_move_iterator(read.begin()),
+                         std::make_move_iterator(read.end()));
+        return stopped_by_memory(std::move(out), *guard, MemoryStop::Stage::Merging);
+      }
+      for (FoundBehaviour& f : read) {
         const auto [at, is_new] = by_trace.emplace(f.behaviour.trace, out.found.size());
         if (is_new) {
           out.found.push_back(std::move(f));
@@ -688,29 +744,50 @@ SearchRunReport run_weight_searches(const SweepPlan& plan, const std::string& ou
           meter.update(done, 0);
         },
         roots[id], guard ? guard->stop() : stop, guard ? &*guard : nullptr);
-    if (searched.stats.stopped) {
+    // A stop (Ctrl-C, the memory guard) ends the searches; `memory_stop`: the guard's.
+    const auto stopped = [&](std::optional<MemoryStop> memory_stop) {
       meter.finish(done, 0);
       if (progress) {
         std::fputs("fsweep: weight search stopped; what it finished is in search_journal.jsonl\n", stderr);
       }
       report.interrupted = true;
-      if (searched.memory_stop) {
-        MemoryStop& s = report.memory_stop.emplace(std::move(*searched.memory_stop));
+      if (memory_stop) {
+        MemoryStop& s = report.memory_stop.emplace(std::move(*memory_stop));
         s.search_id = id;
         s.limit = *memory.limit;
         s.message = describe_memory_stop(s, *plan.strategies().at(units[id].entry).search);
       }
+      report.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    };
+    if (searched.stats.stopped) {
+      stopped(std::move(searched.memory_stop));
       if (!searched.standing.empty()) {
         report.standings.push_back("search " + std::to_string(id) + ": " + searched.standing + " (" +
                                    search_status_file(id) + ")");
       }
-      report.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       return report;
     }
     if (shard_count > 1) {
       shard_records.push_back(writer.shard_record(searched, shard_index, shard_count));
-    } else {
-      rows.push_back(writer.rows(std::move(searched), {out_dir}));
+      continue;
+    }
+    // Its files' text, formatted beside the behaviours, may be what reaches the limit: stop
+    // before formatting when the estimate passes it, after when the formatting did (the journal
+    // holds the finished search; no other search file is written).
+    const std::size_t held = searched.found.size();
+    if (std::optional<MemoryStop> s = formatting_would_pass(
+            guard ? &*guard : nullptr, memory, held, writer.instance_count(), MemoryStop::Stage::Writing)) {
+      stopped(std::move(s));
+      return report;
+    }
+    rows.push_back(writer.rows(std::move(searched), {out_dir}));
+    if (guard && (guard->reached() || guard->check())) {
+      MemoryStop s;
+      s.in_use_bytes = guard->reached().value_or(0);
+      s.held_behaviours = held;
+      s.stage = MemoryStop::Stage::Writing;
+      stopped(std::move(s));
+      return report;
     }
   }
   meter.finish(done, 0);
@@ -728,7 +805,8 @@ SearchRunReport run_weight_searches(const SweepPlan& plan, const std::string& ou
 }
 
 SearchRunReport merge_weight_searches(const SweepPlan& plan, const std::string& out_dir,
-                                      const std::vector<std::string>& shard_dirs) {
+                                      const std::vector<std::string>& shard_dirs,
+                                      const SearchMemoryGuard& memory) {
   SearchRunReport report;
   const Objective* objective = nullptr;
   const std::vector<SearchUnit> units = checked_units(plan, objective);
@@ -758,10 +836,28 @@ SearchRunReport merge_weight_searches(const SweepPlan& plan, const std::string& 
       throw ConfigError(path, std::string("not a shard's searches.json of this sweep: ") + e.what());
     }
   }
+  std::optional<MemoryWatch> guard;
+  if (memory.limit) guard.emplace(memory.limit->bytes, memory_reader(memory), nullptr);
+  const auto stopped = [&](std::size_t id, MemoryStop s) {
+    s.search_id = id;
+    s.limit = *memory.limit;
+    s.stage = MemoryStop::Stage::Merging;
+    s.message = describe_memory_stop(s, *plan.strategies().at(units[id].entry).search);
+    report.memory_stop = std::move(s);
+    report.interrupted = true;
+    return report;
+  };
   std::vector<SearchRows> rows;
   for (std::size_t id = 0; id < units.size(); ++id) {
     SearchWriter writer(plan, units[id], id, *objective, out_dir);
-    rows.push_back(writer.rows(writer.merged(shard_dirs, records[id]), shard_dirs, json(records[id])));
+    Searched merged = writer.merged(shard_dirs, records[id], guard ? &*guard : nullptr);
+    if (merged.memory_stop) return stopped(id, std::move(*merged.memory_stop));
+    if (std::optional<MemoryStop> s =
+            formatting_would_pass(guard ? &*guard : nullptr, memory, merged.found.size(),
+                                  writer.instance_count(), MemoryStop::Stage::Merging)) {
+      return stopped(id, std::move(*s));
+    }
+    rows.push_back(writer.rows(std::move(merged), shard_dirs, json(records[id])));
   }
   (void)join_shard_status(plan, units, out_dir, shard_dirs, true);  // every shard finished: the optimum
   write_search_files(plan, units, std::move(rows), out_dir, report);

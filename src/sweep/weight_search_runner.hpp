@@ -79,9 +79,16 @@ struct MemoryStop {
   std::uint64_t held_behaviours = 0;
   /// Mode best: branches still waiting or running then.
   std::size_t open_branches = 0;
+  /// Stage Writing: what formatting the files was estimated to need beyond `in_use_bytes`
+  /// (kFormattingBytesPerRow a row of behaviours.csv); 0 when the formatting itself reached it.
+  std::uint64_t needed_bytes = 0;
   /// When: before the search read or searched anything (the process was already past the
-  /// threshold), while it read its journal back to resume (nothing searched), or while searching.
-  enum class Stage { Starting, Resuming, Searching };
+  /// threshold), while it read its journal back to resume (nothing searched), while searching, or
+  /// once it finished, formatting its files (the journal then holds the whole search: a rerun
+  /// with the memory reads it back and writes them).
+  /// Merging: `fsweep merge` reading the shards' journals back, or formatting the merged files
+  /// (nothing is written then).
+  enum class Stage { Starting, Resuming, Searching, Writing, Merging };
   Stage stage = Stage::Searching;
   /// What happened and what to do: the limit, the memory in use, the behaviours held, and the
   /// ways on (a larger --max-memory, mode best, shards).
@@ -132,8 +139,13 @@ SearchRunReport run_weight_searches(const SweepPlan& plan, const std::string& ou
 /// unsharded search writes. In searches.json the counts of work (splits, forks, wall_s, the
 /// certificate's pruned regions) are the shards' sums and `merged_from_shards` keeps each
 /// shard's record (for mode best, its certificate).
+///
+/// `memory`: the guard, watching while the shards' journals are read back and checking before the
+/// files are formatted; past its threshold the merge stops with report.memory_stop (stage
+/// Merging) and writes nothing.
 SearchRunReport merge_weight_searches(const SweepPlan& plan, const std::string& out_dir,
-                                      const std::vector<std::string>& shard_dirs);
+                                      const std::vector<std::string>& shard_dirs,
+                                      const SearchMemoryGuard& memory = {});
 
 }  // namespace sweep
 }  // namespace fsweep

@@ -1,7 +1,5 @@
 #include "world/segmentation.hpp"
 
-#include <stb/stb_image_write.h>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -9,7 +7,8 @@
 #include <cstdint>
 #include <numeric>
 
-#include "core/config_error.hpp"
+#include "core/files.hpp"
+#include "world/png_image.hpp"
 
 namespace fsweep {
 inline namespace world {
@@ -451,8 +450,7 @@ void write_segments_png(const std::string& path, const KnownMap& known, const Se
       }
     }
   }
-  if (stbi_write_png(path.c_str(), w, h, 3, px.data(), w * 3) == 0)
-    throw ConfigError(path, "cannot write PNG");
+  write_file_atomically(path, encode_png(w, h, px));
 }
 
 }  // namespace world

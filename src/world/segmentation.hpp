@@ -62,8 +62,8 @@ struct Segmentation {
 
 /// Writes a PNG picture of `s` over `known`: each room segment in its own colour (a hash of
 /// its id), left-over segments in pale shades of grey-blue, occupied cells black, unknown cells
-/// dark grey. Each cell is `scale` x `scale` pixels (>= 1). Throws ConfigError when writing
-/// fails.
+/// dark grey. Each cell is `scale` x `scale` pixels (>= 1). Throws IoError (core/io_error.hpp)
+/// naming the file and the OS error when it cannot be written.
 void write_segments_png(const std::string& path, const KnownMap& known, const Segmentation& s, int scale = 2);
 
 /// Squared clearance of every cell of `known` (step 1, in cells^2; 0 on occupied cells).

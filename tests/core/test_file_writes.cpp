@@ -4,11 +4,9 @@
 // (RLIMIT_FSIZE lowered for this process, as `ulimit -f` does, with SIGXFSZ ignored as fsweep
 // ignores it) and /dev/full, which refuses every write as a full disk does.
 #include <gtest/gtest.h>
-#include <sys/resource.h>
 #include <unistd.h>
 
 #include <cerrno>
-#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <optional>
@@ -16,6 +14,7 @@
 #include <string>
 
 #include "core/append_file.hpp"
+#include "core/file_size_limit_for_tests.hpp"
 #include "core/files.hpp"
 #include "core/io_error.hpp"
 #include "core/replacing_file.hpp"
@@ -24,31 +23,7 @@ namespace fsweep {
 namespace test_file_writes {  // not anonymous: unity builds
 
 namespace fs = std::filesystem;
-
-/// Limits the files this process writes to `bytes` while it lives, SIGXFSZ ignored; then
-/// restores both.
-class FileSizeLimit {
- public:
-  explicit FileSizeLimit(rlim_t bytes) {
-    ::getrlimit(RLIMIT_FSIZE, &old_);
-    rlimit limit = old_;
-    limit.rlim_cur = bytes;
-    ok_ = ::setrlimit(RLIMIT_FSIZE, &limit) == 0;
-    old_handler_ = std::signal(SIGXFSZ, SIG_IGN);
-  }
-  FileSizeLimit(const FileSizeLimit&) = delete;
-  FileSizeLimit& operator=(const FileSizeLimit&) = delete;
-  ~FileSizeLimit() {
-    ::setrlimit(RLIMIT_FSIZE, &old_);
-    std::signal(SIGXFSZ, old_handler_);
-  }
-  [[nodiscard]] bool ok() const { return ok_; }
-
- private:
-  rlimit old_{};
-  void (*old_handler_)(int) = nullptr;
-  bool ok_ = false;
-};
+using test_support::FileSizeLimit;
 
 std::string temp_dir(const std::string& name) {
   const fs::path dir =

@@ -2,8 +2,9 @@
 // stops as at a Ctrl-C, its journal whole and the manifest "failed", with a message naming the
 // limit, the memory and the behaviours held; a rerun with enough memory resumes to the files of
 // an uninterrupted search. A resume whose journal alone reaches the threshold stops before
-// searching, its journal untouched. The memory in use is the test's own reader, which passes the
-// limit at a point of the search's choosing (the guard reads it every 16 behaviours).
+// searching, its journal untouched; one whose files' formatting would pass it stops before
+// formatting them, its journal holding the whole search. The memory in use is the test's own reader, which
+// passes the limit at a point of the search's choosing (the guard reads it every 16 behaviours).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -17,6 +18,7 @@
 #include <thread>
 #include <vector>
 
+#include "sweep/merge.hpp"
 #include "sweep/sweep_plan.hpp"
 #include "sweep/sweep_runner.hpp"
 #include "sweep/sweep_test_files.hpp"
@@ -133,6 +135,86 @@ TEST(SearchMemoryGuard, AModeAllSearchStopsPastTheLimitWithItsJournalWholeAndRes
   EXPECT_EQ(manifest(dir)["status"], "complete");
   const json record = json::parse(testing::read_file(dir + "/searches.json"))["searches"][0];
   EXPECT_GE(record["resumed_behaviours"].get<std::size_t>(), stop.held_behaviours);
+  for (const std::string& f : kSearchFiles) {
+    EXPECT_EQ(testing::read_file(dir + "/" + f), testing::read_file(ref + "/" + f)) << f;
+  }
+}
+
+TEST(SearchMemoryGuard, ASearchWhoseFilesWouldPassTheLimitStopsBeforeFormattingThem) {
+  const json sweep = search_of_256();
+  const std::string ref = testing::fresh_dir("memory_guard", "ref_writing");
+  (void)run_guarded(sweep, ref, {});
+  const std::size_t behaviours = journaled_behaviours(ref + "/search_journal.jsonl");
+
+  // The memory stays below the threshold while searching; formatting its files (2 KB a row of
+  // behaviours.csv, one instance here) would pass it.
+  const std::string dir = testing::fresh_dir("memory_guard", "writing");
+  const RunnerReport first = run_guarded(sweep, dir, [] { return std::optional<std::uint64_t>(kBelow); });
+  ASSERT_TRUE(first.searches.memory_stop) << "the search was not stopped";
+  const MemoryStop& stop = *first.searches.memory_stop;
+  EXPECT_TRUE(first.interrupted);
+  EXPECT_EQ(stop.stage, MemoryStop::Stage::Writing);
+  EXPECT_EQ(stop.held_behaviours, behaviours);
+  EXPECT_EQ(stop.in_use_bytes, kBelow);
+  EXPECT_EQ(stop.needed_bytes, behaviours * 2048);
+  EXPECT_NE(
+      stop.message.find("exact weight search 0 finished, but formatting its files would pass the memory "
+                        "limit: the process used 100 B and would need about"),
+      std::string::npos)
+      << stop.message;
+  EXPECT_NE(stop.message.find("search_journal.jsonl holds the whole search"), std::string::npos)
+      << stop.message;
+  EXPECT_EQ(manifest(dir)["status"], "failed");
+  EXPECT_FALSE(std::filesystem::exists(dir + "/searches.json"));
+  for (const std::string& f : kSearchFiles) EXPECT_FALSE(std::filesystem::exists(dir + "/" + f)) << f;
+  expect_whole_journal(dir + "/search_journal.jsonl");
+  EXPECT_EQ(journaled_behaviours(dir + "/search_journal.jsonl"), behaviours);
+
+  // With the memory, the rerun searches nothing and writes the uninterrupted search's files.
+  const RunnerReport second = run_guarded(sweep, dir, {});
+  EXPECT_FALSE(second.searches.memory_stop);
+  EXPECT_EQ(manifest(dir)["status"], "complete");
+  const json record = json::parse(testing::read_file(dir + "/searches.json"))["searches"][0];
+  EXPECT_EQ(record["resumed_behaviours"].get<std::size_t>(), behaviours);
+  for (const std::string& f : kSearchFiles) {
+    EXPECT_EQ(testing::read_file(dir + "/" + f), testing::read_file(ref + "/" + f)) << f;
+  }
+}
+
+TEST(SearchMemoryGuard, AMergeOfShardsPastTheLimitWritesNothingAndAMergeWithTheMemoryWritesTheWhole) {
+  const json sweep = search_of_256();
+  const std::string ref = testing::fresh_dir("memory_guard", "ref_merge");
+  (void)run_guarded(sweep, ref, {});
+  const std::string dir = testing::fresh_dir("memory_guard", "merge");
+  for (std::uint64_t i = 0; i < 2; ++i) (void)testing::run_test_shard(sweep, dir, i, 2);
+
+  // Past the threshold from the start: the guard's first read (its thread's, or the one at the
+  // 16th behaviour read back) stops it.
+  SearchMemoryGuard past{MemoryLimit{kLimit, "test"}, [] { return std::optional<std::uint64_t>(kPast); }};
+  const MergeReport stopped = merge_shards(dir, {}, past);
+  EXPECT_FALSE(stopped.written);
+  for (const char* part :
+       {"merging exact weight search 0's shards reached the memory limit: the process used "
+        "950 B, past 90% of the limit of 1,000 B (test), holding ",
+        " behaviours; nothing was written. To go on: rerun fsweep merge with a larger "
+        "--max-memory"}) {
+    EXPECT_NE(stopped.memory_stop.find(part), std::string::npos) << stopped.memory_stop;
+  }
+  for (const std::string& f : kSearchFiles) EXPECT_FALSE(std::filesystem::exists(dir + "/" + f)) << f;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/runs.csv"));
+  EXPECT_FALSE(std::filesystem::exists(dir + "/manifest.json"));
+
+  // Below it, but formatting the whole search's files would pass it: stopped before formatting.
+  SearchMemoryGuard below{MemoryLimit{kLimit, "test"}, [] { return std::optional<std::uint64_t>(kBelow); }};
+  const MergeReport formatting = merge_shards(dir, {}, below);
+  EXPECT_FALSE(formatting.written);
+  EXPECT_NE(formatting.memory_stop.find("the process used 100 B and would need about"), std::string::npos)
+      << formatting.memory_stop;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/searches.json"));
+
+  const MergeReport merged = merge_shards(dir);
+  EXPECT_TRUE(merged.written);
+  EXPECT_TRUE(merged.memory_stop.empty());
   for (const std::string& f : kSearchFiles) {
     EXPECT_EQ(testing::read_file(dir + "/" + f), testing::read_file(ref + "/" + f)) << f;
   }
