@@ -13,12 +13,13 @@
 ///   budget and does the same work every time (PRMstar is bounded the same way but checks for
 ///   a solution in a second thread, so its work varies a little; see ompl_planner.hpp).
 ///   `solved` is the fraction of queries solved.
-/// - `BM_ScenarioQuery/<planner>/<map>`: `astar` and `jps` on every reachable query (optimal
+/// - `BM_ScenarioQuery/<planner>/<map>`: `astar`, `jps` and `jps+` on every reachable query (optimal
 ///   length > 0) of each MovingAI scenario in tests/data (arena 160 queries, den312d 320,
 ///   room-64-64-8 1000), start heading 0, no corner cutting. One iteration plans the whole set;
 ///   `s_per_query` is the mean time per query, `expansions/query` the settled states (cells for
-///   `astar`, jump points for `jps`) and `cells/query` the mean path length in cells (equal for
-///   both: the check that they answer alike). Compare them with interleaved repetitions:
+///   `astar`, jump points for `jps` and `jps+`; `jps+` builds its table in the untimed warm-up)
+///   and `cells/query` the mean path length in cells (equal for all: the check that they answer
+///   alike). Compare them with interleaved repetitions:
 ///   `--benchmark_filter=ScenarioQuery --benchmark_repetitions=9
 ///   --benchmark_enable_random_interleaving=true`.
 /// - `BM_TextbookAstar/<map>`: the yardstick of `astar` (bench/textbook_astar.hpp: a compact
@@ -342,9 +343,9 @@ void scenario_query(benchmark::State& state, const std::string& name, std::size_
   state.counters["cells/query"] = cells / static_cast<double>(s.queries.size());  // 1 m cells
 }
 
-/// BM_ScenarioQuery/<planner>/<map> for astar and jps on every map of kScenarioMaps.
+/// BM_ScenarioQuery/<planner>/<map> for astar, jps and jps+ on every map of kScenarioMaps.
 const bool kScenarioQueriesRegistered = [] {
-  for (const char* name : {"astar", "jps"}) {
+  for (const char* name : {"astar", "jps", "jps+"}) {
     for (std::size_t m = 0; m < kScenarioMaps.size(); ++m) {
       const std::string label = std::string("BM_ScenarioQuery/") + name + "/" + kScenarioMaps[m].label;
       benchmark::RegisterBenchmark(label.c_str(), scenario_query, std::string(name), m)

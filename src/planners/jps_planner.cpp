@@ -3,9 +3,10 @@
 #include <array>
 #include <bit>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
-#include "planners/search_result.hpp"
+#include "planners/jump_points.hpp"
 
 namespace fsweep {
 inline namespace planners {
@@ -17,7 +18,7 @@ struct Step {
   int dy = 0;
 };
 
-constexpr int sign_of(int v) { return (v > 0) - (v < 0); }
+using jump_points::sign_of;
 
 /// Search environment of one JPS query (the BestFirstSearch contract of grid_search.hpp): states
 /// are cell indices, but only jump points are ever opened; a successor is the jump point found
@@ -50,38 +51,9 @@ class JumpEnvironment {
     int count = 0;
     const auto add = [&](int dx, int dy) { steps[static_cast<std::size_t>(count++)] = Step{dx, dy}; };
     const int parent = search_.parent(state);
-    if (parent < 0) {
-      // 1. The start: every direction.
-      for (const Cell d : kDirections) add(d.x, d.y);
-    } else {
-      const Cell from = cell_of(parent);
-      const int dx = sign_of(at.x - from.x);
-      const int dy = sign_of(at.y - from.y);
-      add(dx, dy);  // 2. The natural neighbour straight ahead ...
-      if (dx == 0 || dy == 0) {
-        // 3. ... after a straight move, plus the forced ones on each side q.
-        for (const Step q : {Step{dy, dx}, Step{-dy, -dx}}) {
-          if constexpr (kCut) {
-            if (!is_free(at.x + q.dx, at.y + q.dy) && is_free(at.x + dx + q.dx, at.y + dy + q.dy))
-              add(dx + q.dx, dy + q.dy);
-          } else {
-            if (is_free(at.x + q.dx, at.y + q.dy) && !is_free(at.x - dx + q.dx, at.y - dy + q.dy)) {
-              add(q.dx, q.dy);
-              add(dx + q.dx, dy + q.dy);
-            }
-          }
-        }
-      } else {
-        // 4. ... after a diagonal move, plus both of its straight components and (corner
-        //    cutting only) the forced neighbours.
-        add(dx, 0);
-        add(0, dy);
-        if constexpr (kCut) {
-          if (!is_free(at.x - dx, at.y) && is_free(at.x - dx, at.y + dy)) add(-dx, dy);
-          if (!is_free(at.x, at.y - dy) && is_free(at.x + dx, at.y - dy)) add(dx, -dy);
-        }
-      }
-    }
+    jump_points::pruned_directions<kCut>(
+        at, parent < 0 ? std::nullopt : std::optional<Cell>(cell_of(parent)),
+        [this](int x, int y) { return is_free(x, y); }, add);
     for (int k = 0; k < count; ++k) {
       const Step s = steps[static_cast<std::size_t>(k)];
       const int found = s.dx == 0 || s.dy == 0 ? jump_straight(at, s) : jump_diagonal(at, s);
@@ -111,13 +83,10 @@ class JumpEnvironment {
     const int line = across ? c.y : c.x;
     const int from = across ? c.x : c.y;
     const int dir = across ? s.dx : s.dy;
-    const int lines = across ? height_ : width_;
     const int length = across ? width_ : height_;
     const int words = across ? known_.row_words() : known_.column_words();
-    const auto bits = [&](int l) -> const std::uint64_t* {
-      if (l < 0 || l >= lines) return nullptr;
-      return across ? known_.free_row(l) : known_.free_column(l);
-    };
+    // Lines -1 and `lines` are KnownMap's clear guard lines.
+    const auto bits = [&](int l) { return across ? known_.free_row(l) : known_.free_column(l); };
     const LineScan scan{bits(line), bits(line - 1), bits(line + 1), words};
     const int stop = dir > 0 ? scan.first_after(from) : scan.last_before(from);
     // The goal on this line before the stop (the stop is blocked or a jump point itself).
@@ -133,20 +102,18 @@ class JumpEnvironment {
   /// jump_straight(): where a straight jump along it stops.
   struct LineScan {
     const std::uint64_t* line;
-    const std::uint64_t* side_a;  ///< null: off the grid (no free cell)
+    const std::uint64_t* side_a;
     const std::uint64_t* side_b;
     int words;
 
-    [[nodiscard]] static std::uint64_t word(const std::uint64_t* bits, int w, int words) {
-      return bits != nullptr && w >= 0 && w < words ? bits[w] : 0;
-    }
-    [[nodiscard]] bool free(int p) const { return ((word(line, p / 64, words) >> (p % 64)) & 1U) != 0; }
+    /// Words -1 and `words` of every line are KnownMap's clear guards: no bounds checks.
+    [[nodiscard]] bool free(int p) const { return ((line[p / 64] >> (p % 64)) & 1U) != 0; }
     /// Word w of a side's bits shifted so that bit i holds cell i - 1 (`previous`) or i + 1.
-    [[nodiscard]] std::uint64_t previous(const std::uint64_t* side, int w) const {
-      return (word(side, w, words) << 1U) | (word(side, w - 1, words) >> 63U);
+    [[nodiscard]] static std::uint64_t previous(const std::uint64_t* side, int w) {
+      return (side[w] << 1U) | (side[w - 1] >> 63U);
     }
-    [[nodiscard]] std::uint64_t next(const std::uint64_t* side, int w) const {
-      return (word(side, w, words) >> 1U) | (word(side, w + 1, words) << 63U);
+    [[nodiscard]] static std::uint64_t next(const std::uint64_t* side, int w) {
+      return (side[w] >> 1U) | (side[w + 1] << 63U);
     }
     /// Word w of the cells where a jump in direction `dir` stops: blocked, or with a forced
     /// neighbour (jps_planner.hpp's rules). Without corner cutting, side cell p is free and the
@@ -154,14 +121,14 @@ class JumpEnvironment {
     [[nodiscard]] std::uint64_t stops(int w, int dir) const {
       std::uint64_t forced = 0;
       for (const std::uint64_t* side : {side_a, side_b}) {
-        const std::uint64_t here = word(side, w, words);
+        const std::uint64_t here = side[w];
         if constexpr (kCut) {
           forced |= ~here & (dir > 0 ? next(side, w) : previous(side, w));
         } else {
           forced |= here & ~(dir > 0 ? previous(side, w) : next(side, w));
         }
       }
-      return ~word(line, w, words) | forced;
+      return ~line[w] | forced;
     }
     /// The first stop after cell `from` (cells past the line's end are blocked).
     [[nodiscard]] int first_after(int from) const {
@@ -210,32 +177,6 @@ class JumpEnvironment {
   const OctileSearch& search_;
 };
 
-/// Every cell of a chain of jump points, each consecutive pair on one straight or diagonal line.
-std::vector<Cell> fill_segments(const std::vector<Cell>& jump_points) {
-  std::vector<Cell> cells;
-  if (jump_points.empty()) return cells;
-  cells.push_back(jump_points.front());
-  for (std::size_t i = 1; i < jump_points.size(); ++i) {
-    const Cell to = jump_points[i];
-    const int dx = sign_of(to.x - cells.back().x);
-    const int dy = sign_of(to.y - cells.back().y);
-    while (cells.back() != to) cells.push_back(Cell{cells.back().x + dx, cells.back().y + dy});
-  }
-  return cells;
-}
-
-/// One query's search over `Env`: the filled-in cells from start to goal, or the failure.
-template <typename Env>
-SearchResult search_jumps(OctileSearch& search, Env env, const KnownMap& known, Cell start,
-                          const StopCondition& stop) {
-  SearchLimits limits;
-  limits.stop = stop;
-  const SearchOutcome outcome = search.run(env, known.index(start), limits);
-  SearchResult result = search_result(search, outcome, [&known](int s) { return known.cell(s); });
-  result.path = fill_segments(result.path);
-  return result;
-}
-
 }  // namespace
 
 std::unique_ptr<Planner> JpsPlanner::clone() const { return std::make_unique<JpsPlanner>(params_); }
@@ -244,11 +185,11 @@ SearchResult JpsPlanner::search(const KnownMap& known, const PlanRequest& reques
                                 const StopCondition& stop) {
   // Start == goal settles the start as the goal (a one-cell path).
   if (request.allow_corner_cutting) {
-    return search_jumps(search_, JumpEnvironment<true>(known, request.goal, search_), known, request.start,
-                        stop);
+    return jump_points::search_jumps(search_, JumpEnvironment<true>(known, request.goal, search_), known,
+                                     request.start, stop);
   }
-  return search_jumps(search_, JumpEnvironment<false>(known, request.goal, search_), known, request.start,
-                      stop);
+  return jump_points::search_jumps(search_, JumpEnvironment<false>(known, request.goal, search_), known,
+                                   request.start, stop);
 }
 
 }  // namespace planners

@@ -8,6 +8,7 @@
 #include "planners/budget_params.hpp"
 #include "planners/grid_planner.hpp"
 #include "planners/jps_planner.hpp"
+#include "planners/jps_plus_planner.hpp"
 #include "planners/lattice_planner.hpp"
 #include "planners/ompl_planner.hpp"
 #include "planners/registry.hpp"
@@ -45,6 +46,12 @@ ParamDecl<JpsPlannerParams> jps_params() {
   return d;
 }
 
+ParamDecl<JpsPlusPlannerParams> jps_plus_params() {
+  ParamDecl<JpsPlusPlannerParams> d;
+  declare_budget(d, "jump points one query may settle");
+  return d;
+}
+
 ParamDecl<LatticePlannerParams> lattice_params() {
   ParamDecl<LatticePlannerParams> d;
   declare_budget(d, "(cell, heading) states one query may settle");
@@ -73,6 +80,12 @@ PlannerCatalog make_catalog() {
                           "settling only jump points",
                           jps_params,
                           [](const JpsPlannerParams& p) -> Made { return std::make_unique<JpsPlanner>(p); });
+  c.add<JpsPlusPlannerParams>(
+      "jps+", JpsPlusPlanner::kCapabilities,
+      "JPS+ (Harabor 2012, Rabin 2015): jps over jump distances precomputed per cell and heading, "
+      "astar's lengths; the table is rebuilt whenever the map changed, so it pays off on static maps only",
+      jps_plus_params,
+      [](const JpsPlusPlannerParams& p) -> Made { return std::make_unique<JpsPlusPlanner>(p); });
   c.add<LatticePlannerParams>("lattice", LatticePlanner::kCapabilities,
                               "Mei 2006 minimum-energy planner on the (cell, heading) lattice, Dijkstra",
                               lattice_params, [](const LatticePlannerParams& p) -> Made {

@@ -54,6 +54,7 @@ TEST(PlannerRegistry, CapabilitiesPerPlanner) {
       {"astar", Determinism::Always, true, false},
       {"dijkstra", Determinism::Always, true, false},
       {"jps", Determinism::Always, true, false},
+      {"jps+", Determinism::Always, true, false},
       {"lattice", Determinism::Always, false, false},  // energy-optimal, not length-optimal
       {"lattice_astar", Determinism::Always, false, false},
       {"shortest_fewest_turns", Determinism::Always, true, false},

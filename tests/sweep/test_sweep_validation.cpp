@@ -341,7 +341,8 @@ TEST(SweepValidation, PlannerProblems) {
   json s = minimal();
   s["planners"] = json::parse(R"(["rrt", {"type": "astar", "params": {"radius": 1}}, {"kind": "astar"}])");
   const std::string m = problems_of(s);
-  EXPECT_HAS(m, "/planners/0: unknown planner 'rrt'; known: astar, dijkstra, jps, lattice, lattice_astar");
+  EXPECT_HAS(m,
+             "/planners/0: unknown planner 'rrt'; known: astar, dijkstra, jps, jps+, lattice, lattice_astar");
   EXPECT_HAS(m, "/planners/1/params/radius: unknown key 'radius'");
   EXPECT_HAS(m, "/planners/2/kind: unknown key 'kind'; allowed: type, params");
 }

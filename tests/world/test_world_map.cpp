@@ -59,8 +59,22 @@ TEST(KnownMap, FreeBitsByRowAndColumnFollowTheCells) {
         ASSERT_EQ(bit(known.free_row(y), x), free) << x << "," << y << " round " << round;
         ASSERT_EQ(bit(known.free_column(x), y), free) << x << "," << y << " round " << round;
       }
-      // The bits past the edge stay clear.
+      // The bits past the edge stay clear, and so do the guard words on either side.
       EXPECT_EQ(known.free_row(y)[1] >> 6U, 0U);
+      EXPECT_EQ(known.free_row(y)[-1], 0U);
+      EXPECT_EQ(known.free_row(y)[known.row_words()], 0U);
+    }
+    for (int x = 0; x < known.width(); ++x) {
+      EXPECT_EQ(known.free_column(x)[-1], 0U);
+      EXPECT_EQ(known.free_column(x)[known.column_words()], 0U);
+    }
+    // The guard lines beyond the edges, words -1 to row_words() (column_words()), stay clear.
+    for (const int y : {-1, known.height()}) {
+      for (int w = -1; w <= known.row_words(); ++w) EXPECT_EQ(known.free_row(y)[w], 0U) << y << " " << w;
+    }
+    for (const int x : {-1, known.width()}) {
+      for (int w = -1; w <= known.column_words(); ++w)
+        EXPECT_EQ(known.free_column(x)[w], 0U) << x << " " << w;
     }
   }
   const KnownMap copy = known;

@@ -1,0 +1,96 @@
+#pragma once
+/// @file jump_points.hpp
+/// What `jps` (jps_planner.hpp) and `jps+` (jps_plus_planner.hpp) share: the directions a jump
+/// point search follows from a state (its pruning rules under either corner rule), and the
+/// query's search over jump points with the cells between them filled in.
+
+#include <algorithm>
+#include <cstdlib>
+#include <optional>
+#include <vector>
+
+#include "planners/search_result.hpp"
+#include "search/grid_search.hpp"
+#include "world/grid.hpp"
+#include "world/known_map.hpp"
+
+namespace fsweep {
+inline namespace planners {
+namespace jump_points {
+
+constexpr int sign_of(int v) { return (v > 0) - (v < 0); }
+
+/// Calls add(dx, dy) for each direction a jump point search follows from `at`, reached from
+/// `from` (nullopt: the start, every direction in grid.hpp's order). After a straight move:
+/// ahead, and the forced neighbours on each side; after a diagonal one: ahead, its two straight
+/// components and (corner cutting only) the forced neighbours. `kCut` is
+/// PlanRequest::allow_corner_cutting (the rules of jps_planner.hpp's file comment); `is_free(x,
+/// y)`: known free and inside the grid.
+template <bool kCut, typename IsFree, typename Add>
+void pruned_directions(Cell at, std::optional<Cell> from, const IsFree& is_free, Add&& add) {
+  if (!from) {
+    for (const Cell d : kDirections) add(d.x, d.y);
+    return;
+  }
+  const int dx = sign_of(at.x - from->x);
+  const int dy = sign_of(at.y - from->y);
+  add(dx, dy);
+  if (dx == 0 || dy == 0) {
+    for (const Cell q : {Cell{dy, dx}, Cell{-dy, -dx}}) {
+      if constexpr (kCut) {
+        if (!is_free(at.x + q.x, at.y + q.y) && is_free(at.x + dx + q.x, at.y + dy + q.y))
+          add(dx + q.x, dy + q.y);
+      } else {
+        if (is_free(at.x + q.x, at.y + q.y) && !is_free(at.x - dx + q.x, at.y - dy + q.y)) {
+          add(q.x, q.y);
+          add(dx + q.x, dy + q.y);
+        }
+      }
+    }
+    return;
+  }
+  add(dx, 0);
+  add(0, dy);
+  if constexpr (kCut) {
+    if (!is_free(at.x - dx, at.y) && is_free(at.x - dx, at.y + dy)) add(-dx, dy);
+    if (!is_free(at.x, at.y - dy) && is_free(at.x + dx, at.y - dy)) add(dx, -dy);
+  }
+}
+
+/// Every cell of a chain of jump points, each consecutive pair on one straight or diagonal line.
+[[nodiscard]] inline std::vector<Cell> fill_segments(const std::vector<Cell>& jump_points) {
+  std::vector<Cell> cells;
+  if (jump_points.empty()) return cells;
+  std::size_t count = 1;  // the cells of each segment past its first: its Chebyshev length
+  for (std::size_t i = 1; i < jump_points.size(); ++i) {
+    const Cell a = jump_points[i - 1];
+    const Cell b = jump_points[i];
+    count += static_cast<std::size_t>(std::max(std::abs(b.x - a.x), std::abs(b.y - a.y)));
+  }
+  cells.reserve(count);
+  cells.push_back(jump_points.front());
+  for (std::size_t i = 1; i < jump_points.size(); ++i) {
+    const Cell to = jump_points[i];
+    const int dx = sign_of(to.x - cells.back().x);
+    const int dy = sign_of(to.y - cells.back().y);
+    while (cells.back() != to) cells.push_back(Cell{cells.back().x + dx, cells.back().y + dy});
+  }
+  return cells;
+}
+
+/// One query's search over the jump point environment `env`: the filled-in cells from start to
+/// goal, or the failure.
+template <typename Env>
+[[nodiscard]] SearchResult search_jumps(OctileSearch& search, Env env, const KnownMap& known, Cell start,
+                                        const StopCondition& stop) {
+  SearchLimits limits;
+  limits.stop = stop;
+  const SearchOutcome outcome = search.run(env, known.index(start), limits);
+  SearchResult result = search_result(search, outcome, [&known](int s) { return known.cell(s); });
+  result.path = fill_segments(result.path);
+  return result;
+}
+
+}  // namespace jump_points
+}  // namespace planners
+}  // namespace fsweep
