@@ -471,7 +471,9 @@ def plot_search_anytime(path, out):
         curves.setdefault(r["search_id"], []).append(r)
     written = []
     for search, points in curves.items():
-        t = [number(r["elapsed_s"]) / 60.0 for r in points]
+        longest = max(number(r["elapsed_s"]) for r in points)
+        unit, per = ("s", 1.0) if longest < 120 else ("min", 60.0) if longest < 7200 else ("h", 3600.0)
+        t = [number(r["elapsed_s"]) / per for r in points]
         best = [number(r["best"]) for r in points]
         bound = [number(r["bound"]) for r in points]
         labels = ["best objective found", "certified bound of the optimum", "gap"]
@@ -481,25 +483,39 @@ def plot_search_anytime(path, out):
         legend_in = legend_height_in(labels, 7.0)
         fig, (ax, legend_ax) = plt.subplots(2, 1, figsize=(7.0, 4.5 + legend_in), layout="constrained",
                                             gridspec_kw={"height_ratios": [4.5, legend_in]})
-        ax.step(t, best, where="post", color="tab:blue", label="best objective found")
-        ax.step(t, bound, where="post", color="tab:red", label="certified bound of the optimum")
+        # Markers too: a search stopped early may have a single point.
+        ax.step(t, best, where="post", color="tab:blue", marker="o", markersize=3, label="best objective found")
+        ax.step(t, bound, where="post", color="tab:red", marker="o", markersize=3,
+                label="certified bound of the optimum")
         ax.fill_between(t, bound, best, step="post", color="tab:grey", alpha=0.25, label="gap")
-        if stops:
-            ax.plot([t[k] for k in stops], [best[k] for k in stops], "kx", label="stopped (resumed after)")
+        if stops:  # on the best found, or on the bound before any was found
+            ax.plot([t[k] for k in stops], [bound[k] if math.isnan(best[k]) else best[k] for k in stops], "kx",
+                    label="stopped (resumed after)")
         last = points[-1]
         gap = number(last["relative_gap"])
         state = {"finished": "finished", "stopped": "stopped", "running": "running"}.get(last["status"], "")
-        ax.set_title(wrapped(f"exact search {search}: {state} after {t[-1]:.3g} min, "
-                             f"{last['resolved_vectors']} of {last['vectors']} vectors resolved, "
+        seconds = number(last["elapsed_s"])
+        took = (f"{seconds:.2g} s" if seconds < 60 else f"{seconds / 60:.3g} min" if seconds < 3600
+                else f"{seconds / 3600:.3g} h")
+        ax.set_title(wrapped(f"exact search {search}: {state} after {took}, "
+                             f"{int(number(last['resolved_vectors'])):,} of {int(number(last['vectors'])):,} "
+                             "vectors resolved, "
                              + (f"gap {100.0 * gap:.3g}%" if not math.isnan(gap) else "gap unknown"), 70),
                      fontsize=10)
-        ax.set_xlabel("search time (min, over every resumed process)", fontsize=11)
+        ax.set_xlabel(f"search time ({unit}, over every resumed process)", fontsize=11)
         ax.set_ylabel("objective", fontsize=11)
         ax.grid(alpha=0.3)
         handles, labels = ax.get_legend_handles_labels()
         legend_below(fig, legend_ax, handles, labels, 7.0)
         written.append(save(fig, out, f"search{search}_gap.png"))
     return written
+
+
+def write_layout(path):
+    """The figures' bounding boxes (LAYOUT) as JSON at `path` (--layout-json); nothing without one."""
+    if path:
+        with open(path, "w", encoding="utf-8") as f:
+            json.dump(LAYOUT, f, indent=1)
 
 
 def main():
@@ -516,6 +532,7 @@ def main():
     if not os.path.exists(os.path.join(args.dir, "summary.csv")) and os.path.exists(anytime):
         # A stopped weight search: its curve is all there is to draw.
         written = plot_search_anytime(anytime, out)
+        write_layout(args.layout_json)
         print(f"wrote {', '.join(os.path.join(out, w) for w in written)}")
         return
     summary_header, summary_rows = read_csv(os.path.join(args.dir, "summary.csv"))
@@ -535,9 +552,7 @@ def main():
     written += plot_heatmaps(summary_header, summary_rows, best_header, best_rows, out)
     written += plot_search_heatmaps(os.path.join(args.dir, "search_heatmaps.csv"), out)
     written += plot_search_anytime(anytime, out)
-    if args.layout_json:
-        with open(args.layout_json, "w", encoding="utf-8") as f:
-            json.dump(LAYOUT, f, indent=1)
+    write_layout(args.layout_json)
     print(f"wrote {', '.join(os.path.join(out, w) for w in written)}")
 
 

@@ -7,7 +7,9 @@ Draws the plots (tools/plot.py --layout-json) of three sweeps and checks every f
 - no legend overlaps a panel (the axes' area), and the figure title overlaps none;
 - no two panels overlap.
 The sweeps: sweeps/examples/strategies_planners.json (48 configurations, 2 map classes), the
-default sweep, a small exact weight search of mode best (its gap curve), and the nightly suite's 702 configurations from the committed baseline
+default sweep, a small exact weight search of mode best (its gap curve), the same search over the
+full box [0, 250]^4 stopped by a Ctrl-C after 2 s (a directory with only its gap curve to draw),
+and the nightly suite's 702 configurations from the committed baseline
 (results/baseline/nightly/runs.csv, 6 map classes), whose progress.csv is made here from each
 run's final explored area (the layout is what is checked, not the curves).
 
@@ -107,6 +109,30 @@ def search_dir(fsweep, work):
     return out
 
 
+def stopped_search_dir(fsweep, work):
+    """The same search over a box too large to finish in 2 s, stopped by a Ctrl-C (SIGINT) after
+    2 s: no summary.csv, only the gap curve of search_anytime.csv, which `fsweep plot` then draws."""
+    out = os.path.join(work, "stopped")
+    path = os.path.join(work, "search_layout.json")
+    with open(path, encoding="utf-8") as f:
+        sweep = json.load(f)
+    sweep["name"] = "search_stopped"
+    sweep["strategies"][0]["params"] = {"w1": {"range": [0, 250], "step": 1}, "w2": {"range": [0, 250], "step": 1},
+                                        "w3": {"range": [0, 250], "step": 1}, "w4": {"range": [0, 250], "step": 1}}
+    stopped = os.path.join(work, "search_stopped.json")
+    with open(stopped, "w", encoding="utf-8") as f:
+        json.dump(sweep, f)
+    shutil.rmtree(out, ignore_errors=True)
+    r = subprocess.run(["timeout", "--preserve-status", "-s", "INT", "2", fsweep, "run", stopped, "--quiet", "--out", out], cwd=SOURCE,
+                       capture_output=True, text=True)
+    if r.returncode != 130:
+        sys.exit(f"check_plot_layout.py: the stopped search exited {r.returncode}, not 130 (Ctrl-C):\n"
+                 f"{r.stdout}{r.stderr}")
+    if os.path.exists(os.path.join(out, "summary.csv")) or not os.path.exists(os.path.join(out, "search_anytime.csv")):
+        sys.exit("check_plot_layout.py: the stopped search left a summary.csv or no search_anytime.csv")
+    return out
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("fsweep")
@@ -120,6 +146,7 @@ def main():
         run([args.fsweep, "run", sweep, "--quiet", "--fresh", "--out", dirs[name]])
     dirs["nightly"] = nightly_dir(args.fsweep, args.work)
     dirs["search"] = search_dir(args.fsweep, args.work)
+    dirs["stopped"] = stopped_search_dir(args.fsweep, args.work)
     problems, figures = [], 0
     for name, d in dirs.items():
         layout = os.path.join(d, "layout.json")
@@ -129,8 +156,10 @@ def main():
             for png, figure in json.load(f).items():
                 figures += 1
                 problems += problems_of(f"{name}/{png}", figure)
-    if figures < 6:
+    if figures < 7:
         problems.append(f"only {figures} figures were drawn")
+    if not os.path.exists(os.path.join(dirs["stopped"], "plots", "search0_gap.png")):
+        problems.append("the stopped search's gap curve (search0_gap.png) was not drawn")
     for p in problems:
         print(p)
     print(f"check_plot_layout.py: {figures} figures, {len(problems)} problems")
