@@ -17,7 +17,8 @@ Belief::Belief(const RunSetup& setup)
       dropped_(static_cast<std::size_t>(known_.size()), 0) {}
 
 int Belief::sense(Sensor& sensor, const RunSetup& setup, Cell at, int heading, Cell dock) {
-  const auto revealed = sensor.scan(setup.map(), known_, at, heading_angle(heading), sensor_rng_);
+  const auto revealed = sensor.scan(setup.map(), known_, at, heading_angle(heading), sensor_rng_,
+                                    setup.observable.data().data());
   frontiers_.update(known_, revealed);
   clusters_.revealed(revealed);
   keep_margin(setup, revealed);

@@ -463,7 +463,7 @@ void Sensor::for_each_visible(int width, int height, Cell at, double heading_rad
 }
 
 std::span<const int> Sensor::scan(const WorldMap& truth, KnownMap& known, Cell at, double heading_rad,
-                                  Rng& rng) {
+                                  Rng& rng, const std::uint8_t* observable) {
   if (params_.model == SensorModel::Beams) {
     return beams_.scan(truth, known, at, heading_rad, params_.miss_probability, rng);
   }
@@ -472,9 +472,10 @@ std::span<const int> Sensor::scan(const WorldMap& truth, KnownMap& known, Cell a
   const std::uint8_t* occ = truth.occupied.data().data();
   const bool noisy = params_.miss_probability > 0.0;
   const CellState* const known_state = known.cells().data().data();
-  // 0. Nothing to reveal when every cell in range on the map is known (a robot standing in
-  //    explored space): a byte search along the rows of the disc costs less than the sweep.
-  if (all_known(known, at)) return revealed_;
+  // 0. Nothing to reveal when every cell in range on the map is known, or never seen from
+  //    anywhere (a robot standing in explored space): a byte search along the rows of the disc
+  //    costs less than the sweep.
+  if (all_known(known, at, observable)) return revealed_;
   const Offset* const order = tables_->order.data();
   const int width = truth.width();
   const int at_index = at.y * width + at.x;
@@ -566,12 +567,21 @@ bool Sensor::open_disc(const WorldMap& truth, Cell at) const {
                         });
 }
 
-bool Sensor::all_known(const KnownMap& known, Cell at) const {
+bool Sensor::all_known(const KnownMap& known, Cell at, const std::uint8_t* observable) const {
   static_assert(static_cast<int>(CellState::Unknown) == 0 && sizeof(CellState) == 1);
   const CellState* const state = known.cells().data().data();
   return every_disc_row(tables_->extent, known.width(), known.height(), at,
-                        [state](std::ptrdiff_t first, std::size_t count) {
-                          return std::memchr(state + first, 0, count) == nullptr;
+                        [state, observable](std::ptrdiff_t first, std::size_t count) {
+                          const CellState* from = state + first;
+                          const CellState* const end = from + count;
+                          while (from < end) {
+                            const void* unknown = std::memchr(from, 0, static_cast<std::size_t>(end - from));
+                            if (unknown == nullptr) return true;
+                            from = static_cast<const CellState*>(unknown);
+                            if (observable == nullptr || observable[from - state] != 0) return false;
+                            ++from;
+                          }
+                          return true;
                         });
 }
 

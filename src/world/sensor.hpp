@@ -147,7 +147,13 @@ class Sensor {
   /// indices of the cells revealed by this scan: grid model in increasing offset-table order,
   /// beam model in scan order (beam by beam, along each beam). The span stays valid until the
   /// next call. `rng` is used only when miss_probability > 0.
-  std::span<const int> scan(const WorldMap& truth, KnownMap& known, Cell at, double heading_rad, Rng& rng);
+  ///
+  /// `observable` (optional, grid model): per cell of `truth`, 0 when no scan from where the robot
+  /// can stand ever sees it (the inside of a building: RunSetup::observable). A scan whose range
+  /// holds no unknown cell but such ones reveals nothing and is skipped, as one whose range is all
+  /// known; the cells revealed are the same either way.
+  std::span<const int> scan(const WorldMap& truth, KnownMap& known, Cell at, double heading_rad, Rng& rng,
+                            const std::uint8_t* observable = nullptr);
 
   /// What a scan from `at` facing `heading_rad` would see on the robot's own map `known`, for
   /// information-gain estimates (Holz 2010 section IV-B/C): the same range, field of view and
@@ -186,8 +192,9 @@ class Sensor {
   void for_each_visible(int width, int height, Cell at, double heading_rad, Skip&& skip, Opaque&& opaque,
                         Visit&& visit) const;
 
-  /// True when every cell within range of `at` on the map is known (scan() has nothing to do).
-  [[nodiscard]] bool all_known(const KnownMap& known, Cell at) const;
+  /// True when every cell within range of `at` on the map is known, or 0 in `observable` (may be
+  /// null: every cell may be seen) (scan() has nothing to do).
+  [[nodiscard]] bool all_known(const KnownMap& known, Cell at, const std::uint8_t* observable) const;
   /// True when no cell within range of `at` on `truth` is occupied (kOpenDiscMaxCells).
   [[nodiscard]] bool open_disc(const WorldMap& truth, Cell at) const;
 
