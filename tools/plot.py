@@ -483,9 +483,10 @@ def plot_search_anytime(path, out):
         legend_in = legend_height_in(labels, 7.0)
         fig, (ax, legend_ax) = plt.subplots(2, 1, figsize=(7.0, 4.5 + legend_in), layout="constrained",
                                             gridspec_kw={"height_ratios": [4.5, legend_in]})
-        # Markers too: a search stopped early may have a single point.
-        ax.step(t, best, where="post", color="tab:blue", marker="o", markersize=3, label="best objective found")
-        ax.step(t, bound, where="post", color="tab:red", marker="o", markersize=3,
+        # Markers on a short curve: a search stopped early may have a single point.
+        marker = "o" if len(t) <= 20 else None
+        ax.step(t, best, where="post", color="tab:blue", marker=marker, markersize=3, label="best objective found")
+        ax.step(t, bound, where="post", color="tab:red", marker=marker, markersize=3,
                 label="certified bound of the optimum")
         ax.fill_between(t, bound, best, step="post", color="tab:grey", alpha=0.25, label="gap")
         if stops:  # on the best found, or on the bound before any was found
