@@ -23,9 +23,9 @@ struct MergeCommandOptions {
 };
 
 int run_merge(const MergeCommandOptions& o) {
-  check_output_dir(o.dir, OutputKind::Sweep, "DIR (and --out of the sharded runs)");
   SearchMemoryGuard memory;
   memory.limit = o.max_memory.empty() ? default_memory_limit() : parse_max_memory(o.max_memory);
+  check_output_dir(o.dir, OutputKind::Sweep, "DIR (and --out of the sharded runs)");
   const MergeReport r = merge_shards(o.dir, o.objective, memory);
   if (!r.memory_stop.empty()) {
     std::cerr << "fsweep merge: " << o.dir << ": " << r.memory_stop << "\n";

@@ -109,15 +109,14 @@ MemoryWatch::Reader memory_reader(const SearchMemoryGuard& memory) {
   return memory.resident ? memory.resident : MemoryWatch::Reader(resident_memory_bytes);
 }
 
-/// A stop at `stage` (Writing or Merging) when formatting the files of a finished search that
-/// holds `held` behaviours of `instances` instances each (kFormattingBytesPerRow a row) would
-/// take the memory in use past `guard`'s threshold; nullopt without a guard or when it fits.
+/// A stop at `stage` (Writing or Merging) when formatting `rows` rows of behaviours.csv for a
+/// finished search that holds `held` behaviours (kFormattingBytesPerRow a row) would take the
+/// memory in use past `guard`'s threshold; nullopt without a guard or when it fits.
 std::optional<MemoryStop> formatting_would_pass(const MemoryWatch* guard, const SearchMemoryGuard& memory,
-                                                std::size_t held, std::size_t instances,
-                                                MemoryStop::Stage stage) {
+                                                std::size_t held, std::size_t rows, MemoryStop::Stage stage) {
   if (guard == nullptr) return std::nullopt;
   const std::uint64_t in_use = memory_reader(memory)().value_or(0);
-  const std::uint64_t needed = held * instances * kFormattingBytesPerRow;
+  const std::uint64_t needed = rows * kFormattingBytesPerRow;
   if (in_use + needed < guard->threshold_bytes()) return std::nullopt;
   MemoryStop s;
   s.in_use_bytes = in_use;
@@ -157,8 +156,9 @@ std::string describe_memory_stop(const MemoryStop& s, const WeightSearch& search
            readable_number(static_cast<double>(s.held_behaviours)) + " behaviours";
   };
   if (s.stage == MemoryStop::Stage::Merging) {
-    return "merging exact weight search " + std::to_string(s.search_id) +
-           "'s shards reached the memory limit: the process used " + in_use() +
+    return "merging exact weight search " + std::to_string(s.search_id) + "'s shards " +
+           (s.needed_bytes > 0 ? "would pass" : "reached") + " the memory limit: the process used " +
+           in_use() +
            "; nothing was written. To go on: rerun fsweep merge with a larger --max-memory where the machine "
            "has the memory (the merge holds every behaviour of the whole search)";
   }
@@ -352,10 +352,7 @@ class SearchWriter {
     std::vector<FoundBehaviour>& found = searched.found;
     if (search_.mode == WeightSearch::Mode::Best) {
       const double sign = direction_sign();
-      double optimum = std::numeric_limits<double>::infinity();
-      for (const FoundBehaviour& f : found) {
-        if (!std::isnan(f.objective)) optimum = std::min(optimum, sign * f.objective);
-      }
+      const double optimum = signed_optimum(found);
       std::erase_if(found, [&](const FoundBehaviour& f) { return !(sign * f.objective == optimum); });
       searched.stats.best = optimum;
       for (const FoundBehaviour& f : found) optimal_vectors_ += f.behaviour.vectors;
@@ -367,6 +364,29 @@ class SearchWriter {
       rows.record["certificate"].update(write_certificate(journal_dirs, searched.stats.best));
     }
     return rows;
+  }
+
+  /// The smallest direction_sign() x objective among `found` (+infinity when none has one): the
+  /// optimum that mode best keeps the behaviours of.
+  [[nodiscard]] double signed_optimum(const std::vector<FoundBehaviour>& found) const {
+    double optimum = std::numeric_limits<double>::infinity();
+    for (const FoundBehaviour& f : found) {
+      if (!std::isnan(f.objective)) optimum = std::min(optimum, direction_sign() * f.objective);
+    }
+    return optimum;
+  }
+
+  /// The rows of behaviours.csv that rows() formats for `found`: a row per behaviour and
+  /// instance, of every behaviour in mode all, of the optimal ones in mode best.
+  [[nodiscard]] std::size_t rows_to_format(const std::vector<FoundBehaviour>& found) const {
+    std::size_t kept = found.size();
+    if (search_.mode == WeightSearch::Mode::Best) {
+      const double optimum = signed_optimum(found);
+      kept = static_cast<std::size_t>(std::count_if(found.begin(), found.end(), [&](const FoundBehaviour& f) {
+        return direction_sign() * f.objective == optimum;
+      }));
+    }
+    return kept * instance_count();
   }
 
   /// The parts of the whole grid's behaviours that searches of its shards found in `dirs`,
@@ -775,8 +795,9 @@ SearchRunReport run_weight_searches(const SweepPlan& plan, const std::string& ou
     // before formatting when the estimate passes it, after when the formatting did (the journal
     // holds the finished search; no other search file is written).
     const std::size_t held = searched.found.size();
-    if (std::optional<MemoryStop> s = formatting_would_pass(
-            guard ? &*guard : nullptr, memory, held, writer.instance_count(), MemoryStop::Stage::Writing)) {
+    if (std::optional<MemoryStop> s =
+            formatting_would_pass(guard ? &*guard : nullptr, memory, held,
+                                  writer.rows_to_format(searched.found), MemoryStop::Stage::Writing)) {
       stopped(std::move(s));
       return report;
     }
@@ -854,7 +875,7 @@ SearchRunReport merge_weight_searches(const SweepPlan& plan, const std::string& 
     if (merged.memory_stop) return stopped(id, std::move(*merged.memory_stop));
     if (std::optional<MemoryStop> s =
             formatting_would_pass(guard ? &*guard : nullptr, memory, merged.found.size(),
-                                  writer.instance_count(), MemoryStop::Stage::Merging)) {
+                                  writer.rows_to_format(merged.found), MemoryStop::Stage::Merging)) {
       return stopped(id, std::move(*s));
     }
     rows.push_back(writer.rows(std::move(merged), shard_dirs, json(records[id])));

@@ -1,6 +1,7 @@
-// `fsweep run --max-memory`: sizes it refuses (exit 2, naming the option); a weight search the
-// guard stops, with the process's real memory, exits 1 with its journal whole, and the same
-// command without the tight limit resumes it to the files of an uninterrupted search.
+// `fsweep run --max-memory` and `fsweep merge --max-memory`: sizes they refuse (exit 2, naming
+// the option); a weight search the guard stops, with the process's real memory, exits 1 with its
+// journal whole, and the same command without the tight limit resumes it to the files of an
+// uninterrupted search.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -63,14 +64,18 @@ TEST(CliMaxMemory, SizesOtherThanBytesOrKMGTAreRefusedNamingTheOption) {
   const std::string dir = fsweep::testing::fresh_temp_dir("max_memory", "bad");
   const std::string sweep = write_small_search(dir);
   for (const char* bad : {"4X", "0", "1.5", "-1G", "4GB"}) {
-    const CliOutcome r = run_fsweep("run " + sweep + " --out " + dir + "/out --quiet --max-memory=" + bad);
-    EXPECT_EQ(r.code, 2) << bad << "\n" << r.output;
-    EXPECT_NE(
-        r.output.find("fsweep: error: --max-memory: expected a size above 0: a number of bytes, or a number "
-                      "with K, M, G or T (powers of 1024) such as 512M, 1.5G or 4G; got '" +
-                      std::string(bad) + "'"),
-        std::string::npos)
-        << r.output;
+    for (const std::string& command :
+         {"run " + sweep + " --out " + dir + "/out --quiet", "merge " + dir + "/out"}) {
+      const CliOutcome r = run_fsweep(command + " --max-memory=" + bad);
+      EXPECT_EQ(r.code, 2) << command << " " << bad << "\n" << r.output;
+      EXPECT_NE(r.output.find(
+                    "fsweep: error: --max-memory: expected a size above 0: a number of bytes, or a number "
+                    "with K, M, G or T (powers of 1024) such as 512M, 1.5G or 4G; got '" +
+                    std::string(bad) + "'"),
+                std::string::npos)
+          << command << "\n"
+          << r.output;
+    }
   }
 }
 

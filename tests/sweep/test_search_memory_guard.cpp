@@ -181,6 +181,29 @@ TEST(SearchMemoryGuard, ASearchWhoseFilesWouldPassTheLimitStopsBeforeFormattingT
   }
 }
 
+TEST(SearchMemoryGuard, ABestSearchCountsOnlyTheOptimalBehavioursItFormats) {
+  // Mode best holds behaviours that were the best when they finished but formats only the
+  // optimal ones: a limit with room for those rows (and not for a row per behaviour held) lets
+  // it write its files.
+  const json sweep = search_of_256("best");
+  const std::string ref = testing::fresh_dir("memory_guard", "ref_best_rows");
+  (void)run_guarded(sweep, ref, {});
+  const json record = json::parse(testing::read_file(ref + "/searches.json"))["searches"][0];
+  const auto optimal = record["behaviours"].get<std::uint64_t>();
+  const std::size_t finished = journaled_behaviours(ref + "/search_journal.jsonl");
+  ASSERT_GT(finished, optimal + 2) << "the search should finish non-optimal behaviours first";
+
+  const std::string dir = testing::fresh_dir("memory_guard", "best_rows");
+  RunnerOptions o = testing::quiet_runner(dir);
+  o.max_memory = MemoryLimit{(kBelow + (optimal + 1) * 2048) * 10 / 9 + 1, "test"};
+  o.resident_memory = [] { return std::optional<std::uint64_t>(kBelow); };
+  const RunnerReport r = run_sweep(SweepPlan::from_json(sweep, "memory_guard.json"), o);
+  EXPECT_FALSE(r.searches.memory_stop) << r.searches.memory_stop->message;
+  for (const char* f : {"behaviours.csv", "search_best.csv"}) {
+    EXPECT_EQ(testing::read_file(dir + "/" + f), testing::read_file(ref + "/" + f)) << f;
+  }
+}
+
 TEST(SearchMemoryGuard, AMergeOfShardsPastTheLimitWritesNothingAndAMergeWithTheMemoryWritesTheWhole) {
   const json sweep = search_of_256();
   const std::string ref = testing::fresh_dir("memory_guard", "ref_merge");
