@@ -308,6 +308,7 @@ bool Simulation::travel(const Decision& decision, const Journey& journey) {
   RunMetrics& m = recorder_.metrics();
   if (journey.goal == robot_.position) {
     sense();  // look again from here (a noisy sensor may have missed cells)
+    if (!recorder_.ended()) look_around();
     return !recorder_.ended();
   }
   PlanRequest request;
@@ -347,7 +348,46 @@ bool Simulation::travel(const Decision& decision, const Journey& journey) {
       break;
     }
   }
+  if (!recorder_.ended() && robot_.position == journey.goal) look_around();
   return !recorder_.ended();
+}
+
+void Simulation::look_around() {
+  if (setup_->spec.robot.sensor.fov_deg >= 360.0) return;
+  const KnownMap& known = belief_.known();
+  const EnergyModel& e = setup_->spec.robot.energy;
+  unsigned faced = 1U << static_cast<unsigned>(robot_.heading);
+  for (;;) {
+    // The unfaced heading toward an unknown neighbour that is the smallest turn away, clockwise
+    // first on a tie.
+    int next = -1;
+    for (int turn = 1; turn <= 4 && next < 0; ++turn) {
+      for (const int h : {(robot_.heading + turn) & 7, (robot_.heading - turn) & 7}) {
+        const Cell d = kDirections[static_cast<std::size_t>(h)];
+        const Cell n{robot_.position.x + d.x, robot_.position.y + d.y};
+        if ((faced & (1U << static_cast<unsigned>(h))) == 0 && known.in_bounds(n) &&
+            known.state(n) == CellState::Unknown) {
+          next = h;
+          break;
+        }
+      }
+    }
+    if (next < 0) return;
+    const int turns = heading_difference(next, robot_.heading);
+    if (!robot_.battery.draw(e.turn(turns), 0.0)) {
+      recorder_.end(EndReason::BatteryDepleted, "battery empty at " + cell_text(robot_.position));
+      return;
+    }
+    RunMetrics& m = recorder_.metrics();
+    ++m.stops;
+    ++m.turns;
+    m.turned_deg += 45.0 * turns;
+    m.energy += e.turn(turns);
+    robot_.heading = next;
+    faced |= 1U << static_cast<unsigned>(next);
+    sense();
+    if (recorder_.ended()) return;
+  }
 }
 
 void Simulation::arrive(const Decision& decision, const Journey& journey) {

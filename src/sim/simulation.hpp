@@ -41,6 +41,9 @@ inline namespace sim {
 /// - Frontier goals are cluster representatives (split at `cluster_max_length_m`).
 /// - A goal whose visit revealed nothing while it is still a frontier cell is dropped (it is
 ///   unobservable, e.g. behind a sensor blind spot); so is a goal the planner cannot reach.
+/// - A robot whose field of view is narrower than 360 degrees looks around (look_around()) at
+///   the goal of each journey it reaches, also when it stands on the goal already (the first
+///   decision of a run that starts facing a wall).
 /// - Arriving at the dock recharges the battery (a recharge is counted when it was not full).
 /// - A move the battery cannot pay for ends the run with BatteryDepleted.
 /// - A GoTo with Decision::max_steps > 0 travels at most that many cell steps, then the next
@@ -158,6 +161,11 @@ class Simulation {
   [[nodiscard]] RunResult completed(RunResult recorded) const;
   /// Plans and travels toward `journey.goal` (step 2 of step()); false when the run ended.
   bool travel(const Decision& decision, const Journey& journey);
+  /// At a goal the robot reached or stands on, with a field of view narrower than 360 degrees:
+  /// turns in place toward each unknown neighbour of its cell it has not faced, the smallest
+  /// turn first (clockwise on a tie), scanning after each turn, until none is left; each turn
+  /// costs a stop and the turn's energy (EnergyModel::turn), as in a path.
+  void look_around();
   /// After a journey (step 3 of step()): recharge, drop an unobservable goal, the stuck rule.
   void arrive(const Decision& decision, const Journey& journey);
   /// Ends the run on a Finish decision (or a ReturnToDock at the dock).

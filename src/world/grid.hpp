@@ -33,20 +33,26 @@ inline constexpr std::array<Cell, 8> kDirections{Cell{1, 0},  Cell{1, 1},   Cell
 /// Length of one step in heading h (cells): 1 orthogonally, sqrt(2) diagonally.
 constexpr double step_length(int heading) { return (heading & 1) != 0 ? kSqrt2 : 1.0; }
 
-/// Heading index (0..7) of a unit step (dx, dy), each in {-1, 0, 1}, not both 0.
+/// Heading index (0..7) of a unit step (dx, dy), each in {-1, 0, 1}, not both 0; -1 for (0, 0)
+/// or a longer step. A table read (it runs once per path step in measure_path()).
 constexpr int heading_of(int dx, int dy) {
-  for (int h = 0; h < 8; ++h) {
-    if (kDirections[static_cast<std::size_t>(h)].x == dx &&
-        kDirections[static_cast<std::size_t>(h)].y == dy) {
-      return h;
-    }
-  }
-  return -1;
+  constexpr std::array<int, 9> kHeadingOfStep{5, 6, 7, 4, -1, 0, 3, 2, 1};  // at (dy + 1) * 3 + dx + 1
+  if (dx < -1 || dx > 1 || dy < -1 || dy > 1) return -1;
+  const int at = (dy + 1) * 3 + dx + 1;
+  return kHeadingOfStep[static_cast<std::size_t>(at)];
 }
+static_assert([] {
+  for (int h = 0; h < 8; ++h) {
+    if (heading_of(kDirections[static_cast<std::size_t>(h)].x, kDirections[static_cast<std::size_t>(h)].y) !=
+        h)
+      return false;
+  }
+  return heading_of(0, 0) == -1 && heading_of(2, 0) == -1;
+}());
 
 /// Smallest number of 45-degree steps between two headings (0..4).
 constexpr int heading_difference(int a, int b) {
-  const int d = ((a - b) % 8 + 8) % 8;
+  const int d = (a - b) & 7;  // (a - b) mod 8 in 0..7, negative differences included
   return d > 4 ? 8 - d : d;
 }
 

@@ -1,12 +1,16 @@
 // A sensor with a field of view (SensorParams::fov_deg < 360, facing the robot's heading), and
-// the beam lidar model, work with every registered strategy.
+// the beam lidar model, work with every registered strategy; a robot with a narrow view looks
+// around at its goals (Simulation::look_around).
 #include <gtest/gtest.h>
 
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <utility>
+#include <vector>
 
 #include "sim/simulation.hpp"
 #include "strategies/registry.hpp"
+#include "world/energy_model.hpp"
 #include "world/map_spec.hpp"
 
 namespace fsweep {
@@ -52,6 +56,66 @@ TEST(FieldOfView, EveryStrategyExploresWithABeamLidar) {
   beams.model = SensorModel::Beams;
   beams.beams = 31;
   expect_every_strategy_explores(beams, grid);
+}
+
+TEST(FieldOfView, EveryStrategyExploresWithANarrowViewWhicheverWayItStarts) {
+  // 60 degrees, starting toward each side: on this map heading 0 faces a wall at the start, where
+  // the robot used to see only its own cell and end at once, "complete".
+  const auto map = std::make_shared<const WorldMap>(load_map_spec("rooms:w=40,h=30,door=3,seed=2"));
+  for (const auto& name : strategy_names()) {
+    for (const int heading : {0, 2, 4, 6}) {
+      RunSpec s;
+      s.map = map;
+      s.strategy = configure_strategy(name, nullptr);
+      s.robot.sensor.range_m = 5.0;
+      s.robot.sensor.fov_deg = 60.0;
+      s.robot.start_heading = heading;
+      s.seed = 5;
+      const RunResult r = simulate(s);
+      EXPECT_EQ(r.end, EndReason::Complete) << name << " heading " << heading << " " << r.end_detail;
+      EXPECT_GT(r.metrics.coverage, 0.99) << name << " heading " << heading;
+    }
+  }
+}
+
+/// A corridor of 5 free cells, one high, the robot at its west end.
+RunSpec corridor_run(double fov_deg, int start_heading) {
+  WorldMap map;
+  map.occupied = Grid<std::uint8_t>(5, 1, 0);
+  map.source = "test corridor";
+  RunSpec s;
+  s.map = std::make_shared<const WorldMap>(std::move(map));
+  s.strategy = configure_strategy("closest_frontier", nullptr);
+  s.robot.sensor.range_m = 10.0;
+  s.robot.sensor.fov_deg = fov_deg;
+  s.robot.start_heading = start_heading;
+  s.robot.energy = energy_preset("mei2006");
+  return s;
+}
+
+TEST(FieldOfView, ARobotFacingTheMapsEdgeTurnsRoundAndPaysForTheTurn) {
+  // Facing west, off the map: it sees its own cell, decides to look from where it stands, turns
+  // 180 degrees (one stop, one turn) toward its only unknown neighbour, and sees the corridor.
+  const RunResult r = simulate(corridor_run(90.0, 4));
+  EXPECT_EQ(r.end, EndReason::Complete) << r.end_detail;
+  EXPECT_DOUBLE_EQ(r.metrics.coverage, 1.0);
+  EXPECT_DOUBLE_EQ(r.metrics.distance_m, 0.0);
+  EXPECT_EQ(r.metrics.turns, 1);
+  EXPECT_EQ(r.metrics.stops, 1);
+  EXPECT_DOUBLE_EQ(r.metrics.turned_deg, 180.0);
+  EXPECT_DOUBLE_EQ(r.metrics.energy, energy_preset("mei2006").turn(4));
+}
+
+TEST(FieldOfView, ARobotThatSeesAllAroundNeverTurnsInPlace) {
+  for (const double fov : {360.0, 90.0}) {
+    // Facing east, the corridor is in view at once; all around, it is whichever way it faces.
+    for (const int heading : fov == 360.0 ? std::vector<int>{4, 0} : std::vector<int>{0}) {
+      const RunResult r = simulate(corridor_run(fov, heading));
+      EXPECT_DOUBLE_EQ(r.metrics.coverage, 1.0) << fov << " " << heading;
+      EXPECT_EQ(r.metrics.turns, 0) << fov << " " << heading;
+      EXPECT_DOUBLE_EQ(r.metrics.energy, 0.0) << fov << " " << heading;
+    }
+  }
 }
 
 }  // namespace
