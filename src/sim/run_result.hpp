@@ -80,10 +80,12 @@ struct RunMetrics {
   /// The share of the removable entropy removed, (H_0 - H_expl) / (H_0 - H_full) with H_0 the
   /// empty map's and H_full the fully explored map's (0 over O), is exactly |K & O| / |O|.
   /// (The paper prints c = (1 - H_full / H_expl) * 100, which would be 0 for a complete map;
-  /// we read it as this ratio.) An unknown observable cell always leaves a frontier cell next
-  /// to it, so a `complete` run without dropped goals and without a target margin
-  /// (SimParams::target_margin_m, which keeps cells near walls from being goals) has
-  /// completeness exactly 1.
+  /// we read it as this ratio.) Without corner cutting an unknown observable cell always leaves
+  /// a frontier cell next to it, so a `complete` run without dropped goals and without a target
+  /// margin (SimParams::target_margin_m, which keeps cells near walls from being goals) has
+  /// completeness exactly 1. With corner cutting R also holds free cells reached only through a
+  /// diagonal gap between two occupied cells, which no ray passes and no frontier marks: a
+  /// `complete` run can end below 1 (docs/model.md, "Completeness").
   double completeness = 0.0;
   /// `rr` heuristic (src/sim/heuristics.hpp): journeys cut short because the goal stopped
   /// being worth reaching, each followed by a new decision. 0 without `rr`.

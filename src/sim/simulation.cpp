@@ -308,7 +308,7 @@ bool Simulation::travel(const Decision& decision, const Journey& journey) {
   RunMetrics& m = recorder_.metrics();
   if (journey.goal == robot_.position) {
     sense();  // look again from here (a noisy sensor may have missed cells)
-    if (!recorder_.ended()) look_around();
+    if (!recorder_.ended()) look_around(decision);
     return !recorder_.ended();
   }
   PlanRequest request;
@@ -348,12 +348,16 @@ bool Simulation::travel(const Decision& decision, const Journey& journey) {
       break;
     }
   }
-  if (!recorder_.ended() && robot_.position == journey.goal) look_around();
+  if (!recorder_.ended() && robot_.position == journey.goal) look_around(decision);
   return !recorder_.ended();
 }
 
-void Simulation::look_around() {
-  if (setup_->spec.robot.sensor.fov_deg >= 360.0) return;
+void Simulation::look_around(const Decision& decision) {
+  const std::optional<Cell>& stop = setup_->stop_cell;
+  if (setup_->spec.robot.sensor.fov_deg >= 360.0 || decision.kind != Decision::Kind::GoTo ||
+      (stop && *stop == robot_.position)) {
+    return;
+  }
   const KnownMap& known = belief_.known();
   const EnergyModel& e = setup_->spec.robot.energy;
   unsigned faced = 1U << static_cast<unsigned>(robot_.heading);

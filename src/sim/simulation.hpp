@@ -42,8 +42,8 @@ inline namespace sim {
 /// - A goal whose visit revealed nothing while it is still a frontier cell is dropped (it is
 ///   unobservable, e.g. behind a sensor blind spot); so is a goal the planner cannot reach.
 /// - A robot whose field of view is narrower than 360 degrees looks around (look_around()) at
-///   the goal of each journey it reaches, also when it stands on the goal already (the first
-///   decision of a run that starts facing a wall).
+///   the goal of each GoTo journey it reaches, also when it stands on the goal already (the
+///   first decision of a run that starts facing a wall); not at the dock or the stop cell.
 /// - Arriving at the dock recharges the battery (a recharge is counted when it was not full).
 /// - A move the battery cannot pay for ends the run with BatteryDepleted.
 /// - A GoTo with Decision::max_steps > 0 travels at most that many cell steps, then the next
@@ -161,11 +161,12 @@ class Simulation {
   [[nodiscard]] RunResult completed(RunResult recorded) const;
   /// Plans and travels toward `journey.goal` (step 2 of step()); false when the run ended.
   bool travel(const Decision& decision, const Journey& journey);
-  /// At a goal the robot reached or stands on, with a field of view narrower than 360 degrees:
-  /// turns in place toward each unknown neighbour of its cell it has not faced, the smallest
-  /// turn first (clockwise on a tie), scanning after each turn, until none is left; each turn
-  /// costs a stop and the turn's energy (EnergyModel::turn), as in a path.
-  void look_around();
+  /// At the goal of a GoTo `decision` the robot reached or stands on (not the stop cell of
+  /// sim.stop_at_cell), with a field of view narrower than 360 degrees: turns in place toward
+  /// each unknown neighbour of its cell it has not faced, the smallest turn first (clockwise on
+  /// a tie), scanning after each turn, until none is left; each turn costs a stop and the
+  /// turn's energy (EnergyModel::turn), as in a path.
+  void look_around(const Decision& decision);
   /// After a journey (step 3 of step()): recharge, drop an unobservable goal, the stuck rule.
   void arrive(const Decision& decision, const Journey& journey);
   /// Ends the run on a Finish decision (or a ReturnToDock at the dock).

@@ -118,5 +118,25 @@ TEST(FieldOfView, ARobotThatSeesAllAroundNeverTurnsInPlace) {
   }
 }
 
+TEST(FieldOfView, ARobotDoesNotLookAroundAtItsNavigationTarget) {
+  // Three rows, the robot in the middle one facing east along it with a one-degree view: it sees
+  // the row, goes straight to the stop cell at its end and stops there without turning, though
+  // unknown cells lie beside it.
+  WorldMap map;
+  map.occupied = Grid<std::uint8_t>(5, 3, 0);
+  map.start = Cell{0, 1};
+  map.source = "test three rows";
+  RunSpec s;
+  s.map = std::make_shared<const WorldMap>(std::move(map));
+  s.strategy = configure_strategy("closest_frontier", nullptr);
+  s.robot.sensor.range_m = 10.0;
+  s.robot.sensor.fov_deg = 1.0;
+  s.sim.stop_at_cell = Cell{4, 1};
+  const RunResult r = simulate(s);
+  EXPECT_EQ(r.end, EndReason::TargetReached) << r.end_detail;
+  EXPECT_EQ(r.metrics.turns, 0);
+  EXPECT_DOUBLE_EQ(r.metrics.distance_m, 4.0);
+}
+
 }  // namespace
 }  // namespace fsweep
