@@ -468,10 +468,13 @@ RunResult Simulation::completed(RunResult recorded) const {
   r.metrics.completeness = belief_.completeness(setup);
   r.metrics.residual_unknown_m2 = belief_.unknown_reachable(setup) * cell_area;
   r.metrics.frontier_cells_left = belief_.frontiers().count();
-  // Close the curve with the final state at the exact final distance.
+  // Close the curve with the final state at the exact final distance; a sample already there
+  // was taken before what the robot revealed without moving since (a look around, a second look).
+  const ProgressSample last{distance_m, r.metrics.explored_area_m2, r.metrics.coverage, r.metrics.energy};
   if (r.progress.empty() || r.progress.back().distance_m < distance_m) {
-    r.progress.push_back(
-        ProgressSample{distance_m, r.metrics.explored_area_m2, r.metrics.coverage, r.metrics.energy});
+    r.progress.push_back(last);
+  } else {
+    r.progress.back() = last;
   }
   r.final_known = known;
   r.final_frontiers = belief_.frontiers().cells();

@@ -104,6 +104,11 @@ TEST(FieldOfView, ARobotFacingTheMapsEdgeTurnsRoundAndPaysForTheTurn) {
   EXPECT_EQ(r.metrics.stops, 1);
   EXPECT_DOUBLE_EQ(r.metrics.turned_deg, 180.0);
   EXPECT_DOUBLE_EQ(r.metrics.energy, energy_preset("mei2006").turn(4));
+  // The progress curve ends with what the turn revealed, at the same distance.
+  ASSERT_FALSE(r.progress.empty());
+  EXPECT_DOUBLE_EQ(r.progress.back().distance_m, 0.0);
+  EXPECT_DOUBLE_EQ(r.progress.back().coverage, 1.0);
+  EXPECT_DOUBLE_EQ(r.progress.back().energy, energy_preset("mei2006").turn(4));
 }
 
 TEST(FieldOfView, ARobotThatSeesAllAroundNeverTurnsInPlace) {
