@@ -699,6 +699,36 @@ TEST(WeightSearchRunner, InterruptStopsTheSearchAndTheRerunResumesIt) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(WeightSearchRunner, AStoppedSearchResumesAfterItsSweepsDescriptionAloneChanged) {
+  // The description is prose: a new one is the same sweep, so the stopped search resumes to
+  // the files of an uninterrupted one. Any other change (here the seed) is still refused.
+  json sweep = office_search_of_256();
+  const std::string ref = run(sweep, "describe_ref");
+  const std::string dir = testing::fresh_dir("search", "describe");
+  const std::string journal = dir + "/search_journal.jsonl";
+  testing::InterruptWhen interrupter([&] {
+    return std::filesystem::exists(journal) && journal_lines(testing::read_file(journal)).size() >= 4;
+  });
+  RunnerOptions o = testing::quiet_runner(dir);
+  ASSERT_TRUE(run_sweep(SweepPlan::from_json(sweep, "search.json"), o).interrupted)
+      << "the search finished before the interrupt";
+  interrupter.join();
+
+  json reseeded = sweep;
+  reseeded["seed"] = sweep.value("seed", 0) + 1;
+  EXPECT_THROW((void)run_sweep(SweepPlan::from_json(reseeded, "search.json"), o), ConfigError);
+  sweep["description"] = "the same search, described anew";
+  const RunnerReport second = run_sweep(SweepPlan::from_json(sweep, "search.json"), o);
+  EXPECT_FALSE(second.interrupted);
+  const json record = json::parse(testing::read_file(dir + "/searches.json"))["searches"][0];
+  EXPECT_GT(record["resumed_behaviours"].get<std::size_t>(), 0U);
+  for (const char* f : {"behaviours.csv", "search_summary.csv", "search_best.csv", "vectors.csv"}) {
+    EXPECT_EQ(testing::read_file(dir + "/" + f), testing::read_file(ref + "/" + f)) << f;
+  }
+  std::filesystem::remove_all(ref);
+  std::filesystem::remove_all(dir);
+}
+
 TEST(WeightSearchRunner, AStoppedBestSearchSaysWhereItStandsAndResumesItsCurve) {
   // Mode best keeps its anytime state: a stop writes the best vector so far and a bound of the
   // optimum (search_status_0.json, a row of search_anytime.csv); the rerun finishes with bound
