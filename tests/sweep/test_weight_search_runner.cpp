@@ -661,6 +661,19 @@ json office_search_of_256() {
   return sweep;
 }
 
+/// Runs `sweep`'s search into `dir` and interrupts it (SIGINT) once its journal holds `lines`
+/// lines; the report of that first, stopped run.
+RunnerReport run_until_journal_holds(const json& sweep, const std::string& dir, std::size_t lines) {
+  const std::string journal = dir + "/search_journal.jsonl";
+  testing::InterruptWhen interrupter([&] {
+    return std::filesystem::exists(journal) && journal_lines(testing::read_file(journal)).size() >= lines;
+  });
+  RunnerOptions o = testing::quiet_runner(dir);
+  const RunnerReport first = run_sweep(SweepPlan::from_json(sweep, "search.json"), o);
+  interrupter.join();
+  return first;
+}
+
 TEST(WeightSearchRunner, InterruptStopsTheSearchAndTheRerunResumesIt) {
   // SIGINT during a search (after the runs) stops it: the manifest says "interrupted", no search
   // file but the journal is written, the journal keeps what finished, and the same command
@@ -669,13 +682,8 @@ TEST(WeightSearchRunner, InterruptStopsTheSearchAndTheRerunResumesIt) {
   const std::string ref = run(sweep, "sigint_ref");
   const std::string dir = testing::fresh_dir("search", "sigint");
   const std::string journal = dir + "/search_journal.jsonl";
-
-  testing::InterruptWhen interrupter([&] {
-    return std::filesystem::exists(journal) && journal_lines(testing::read_file(journal)).size() >= 4;
-  });
+  const RunnerReport first = run_until_journal_holds(sweep, dir, 4);
   RunnerOptions o = testing::quiet_runner(dir);
-  const RunnerReport first = run_sweep(SweepPlan::from_json(sweep, "search.json"), o);
-  interrupter.join();
   ASSERT_TRUE(first.interrupted) << "the search finished before the interrupt";
   EXPECT_TRUE(first.searches.interrupted);
   EXPECT_EQ(json::parse(testing::read_file(dir + "/manifest.json"))["status"], "interrupted");
@@ -705,14 +713,9 @@ TEST(WeightSearchRunner, AStoppedSearchResumesAfterItsSweepsDescriptionAloneChan
   json sweep = office_search_of_256();
   const std::string ref = run(sweep, "describe_ref");
   const std::string dir = testing::fresh_dir("search", "describe");
-  const std::string journal = dir + "/search_journal.jsonl";
-  testing::InterruptWhen interrupter([&] {
-    return std::filesystem::exists(journal) && journal_lines(testing::read_file(journal)).size() >= 4;
-  });
-  RunnerOptions o = testing::quiet_runner(dir);
-  ASSERT_TRUE(run_sweep(SweepPlan::from_json(sweep, "search.json"), o).interrupted)
+  ASSERT_TRUE(run_until_journal_holds(sweep, dir, 4).interrupted)
       << "the search finished before the interrupt";
-  interrupter.join();
+  RunnerOptions o = testing::quiet_runner(dir);
 
   json reseeded = sweep;
   reseeded["seed"] = sweep.value("seed", 0) + 1;
@@ -737,13 +740,8 @@ TEST(WeightSearchRunner, AStoppedBestSearchSaysWhereItStandsAndResumesItsCurve) 
   for (const char* order : {"depth", "bound"}) {
     sweep["strategies"][0]["search"] = {{"mode", "best"}, {"order", order}};
     const std::string dir = testing::fresh_dir("search", std::string("anytime_") + order);
-    const std::string journal = dir + "/search_journal.jsonl";
-    testing::InterruptWhen interrupter([&] {
-      return std::filesystem::exists(journal) && journal_lines(testing::read_file(journal)).size() >= 6;
-    });
+    const RunnerReport first = run_until_journal_holds(sweep, dir, 6);
     RunnerOptions o = testing::quiet_runner(dir);
-    const RunnerReport first = run_sweep(SweepPlan::from_json(sweep, "search.json"), o);
-    interrupter.join();
     ASSERT_TRUE(first.searches.interrupted) << order << ": the search finished before the interrupt";
     ASSERT_EQ(first.searches.standings.size(), 1U);
     EXPECT_NE(first.searches.standings[0].find("search_status_0.json"), std::string::npos);
