@@ -40,9 +40,9 @@
 ///   cell) and returns every path cell (search_result() writes the jump points, fill_segments() the
 ///   cells between them into a second vector); BM_TextbookJps does none of it, BM_TextbookJpsPlanned
 ///   all of it but the stop condition;
-/// - `jps` scans KnownMap's bit rows and columns, which follow every revealed cell and have no
-///   border, so each word read is bounds-checked (lines off the grid, words past either end); the
-///   yardstick owns a padded static copy and reads without checks;
+/// - `jps` scans KnownMap's bit rows and columns, which follow every revealed cell (a guard word
+///   at each end of a line and a guard line beyond each edge, so no read is bounds-checked); the
+///   yardstick owns a padded static copy of its own;
 /// - `jps` runs the project's A* (BestFirstSearchT over an environment: a 4-ary indexed heap of
 ///   packed 128-bit keys, 16-byte nodes, the direction of arrival from the parent's cell) and serves
 ///   both corner rules; the yardstick has its own binary heap and MovingAI's rule only;

@@ -26,13 +26,23 @@ using jump_points::sign_of;
 /// them. `kCut` is PlanRequest::allow_corner_cutting (the rules of the file comment of
 /// jps_planner.hpp). The direction a state was reached in comes from its parent in `search`,
 /// which runs this environment (a settled state's parent is final).
+///
+/// Every cell test reads KnownMap's free bits (free_row(), free_column()), whose guard words
+/// and guard lines are clear: a cell one step off the grid reads as blocked with no bounds
+/// check. Each of the eight directions has its own jump (jump_straight<kDx, kDy>() or
+/// jump_diagonal<kDx, kDy>(), as the ICAPS 2014 paper's jump functions), so that its shifts,
+/// scan order and steps are constants.
 template <bool kCut>
 class JumpEnvironment {
  public:
   using Cost = OctileCost;
   JumpEnvironment(const KnownMap& known, Cell goal, const OctileSearch& search)
-      : known_(known),
-        cells_(known.cells().data().data()),
+      : rows_(known.free_row(0)),
+        row_stride_(known.row_words() + 2),
+        row_words_(known.row_words()),
+        columns_(known.free_column(0)),
+        column_stride_(known.column_words() + 2),
+        column_words_(known.column_words()),
         width_(known.width()),
         height_(known.height()),
         goal_(goal),
@@ -55,122 +65,157 @@ class JumpEnvironment {
         at, parent < 0 ? std::nullopt : std::optional<Cell>(cell_of(parent)),
         [this](int x, int y) { return is_free(x, y); }, add);
     for (int k = 0; k < count; ++k) {
-      const Step s = steps[static_cast<std::size_t>(k)];
-      const int found = s.dx == 0 || s.dy == 0 ? jump_straight(at, s) : jump_diagonal(at, s);
-      if (found >= 0) sink(found, octile_cost(at, cell_of(found)));
+      const std::optional<Cell> found = jump(at, steps[static_cast<std::size_t>(k)]);
+      if (found) sink(index_of(*found), octile_cost(at, *found));
     }
   }
 
  private:
   [[nodiscard]] Cell cell_of(int state) const { return Cell{state % width_, state / width_}; }
   [[nodiscard]] int index_of(Cell c) const { return c.y * width_ + c.x; }
-  /// Known free and inside the grid.
-  [[nodiscard]] bool is_free(int x, int y) const {
-    return x >= 0 && y >= 0 && x < width_ && y < height_ && cells_[y * width_ + x] == CellState::Free;
+  /// Free bits of row y (-1 <= y <= height) and column x (-1 <= x <= width), guards included.
+  [[nodiscard]] const std::uint64_t* row(int y) const {
+    return rows_ + static_cast<std::ptrdiff_t>(y) * row_stride_;
   }
-  /// The diagonal step from `c` by `s` is allowed (octile_grid.hpp's rule).
-  [[nodiscard]] bool diagonal_allowed(Cell c, Step s) const {
-    return is_free(c.x + s.dx, c.y + s.dy) &&
-           (kCut || (is_free(c.x + s.dx, c.y) && is_free(c.x, c.y + s.dy)));
+  [[nodiscard]] const std::uint64_t* column(int x) const {
+    return columns_ + static_cast<std::ptrdiff_t>(x) * column_stride_;
   }
-  /// The first jump point from `c` along the straight direction `s` (the goal or a cell with a
-  /// forced neighbour), or -1 if a blocked cell comes first. Scans the row (or column) a word of
-  /// 64 cells at a time (Harabor & Grastien, "Improving Jump Point Search", ICAPS 2014): the
-  /// first cell past `c` that is blocked or has a forced neighbour, from the bits of its line
-  /// and of the two lines beside it (KnownMap::free_row(), free_column()).
-  [[nodiscard]] int jump_straight(Cell c, Step s) const {
-    const bool across = s.dy == 0;  // along a row
-    const int line = across ? c.y : c.x;
-    const int from = across ? c.x : c.y;
-    const int dir = across ? s.dx : s.dy;
-    const int length = across ? width_ : height_;
-    const int words = across ? known_.row_words() : known_.column_words();
-    // Lines -1 and `lines` are KnownMap's clear guard lines.
-    const auto bits = [&](int l) { return across ? known_.free_row(l) : known_.free_column(l); };
-    const LineScan scan{bits(line), bits(line - 1), bits(line + 1), words};
-    const int stop = dir > 0 ? scan.first_after(from) : scan.last_before(from);
+  /// Bit p of a line whose words -1.. are readable (p >= -64): arithmetic shifts, so p = -1
+  /// reads the leading guard word.
+  [[nodiscard]] static bool bit(const std::uint64_t* line, int p) {
+    return ((line[p >> 6] >> static_cast<unsigned>(p & 63)) & 1U) != 0;
+  }
+  /// Known free; (x, y) inside the grid or one cell beyond an edge (blocked).
+  [[nodiscard]] bool is_free(int x, int y) const { return bit(row(y), x); }
+
+  /// The first jump point from `c` along `s`: the jump of that direction.
+  [[nodiscard]] std::optional<Cell> jump(Cell c, Step s) const {
+    switch ((s.dy + 1) * 3 + s.dx + 1) {
+      case 0:
+        return jump_diagonal<-1, -1>(c);
+      case 1:
+        return jump_straight<0, -1>(c);
+      case 2:
+        return jump_diagonal<1, -1>(c);
+      case 3:
+        return jump_straight<-1, 0>(c);
+      case 5:
+        return jump_straight<1, 0>(c);
+      case 6:
+        return jump_diagonal<-1, 1>(c);
+      case 7:
+        return jump_straight<0, 1>(c);
+      default:
+        return jump_diagonal<1, 1>(c);
+    }
+  }
+
+  /// The first jump point from `c` along the straight direction (kDx, kDy) (the goal or a cell
+  /// with a forced neighbour), or none if a blocked cell comes first. Scans the row (or column)
+  /// a word of 64 cells at a time (Harabor & Grastien, "Improving Jump Point Search", ICAPS
+  /// 2014): the first cell past `c` that is blocked or has a forced neighbour, from the bits of
+  /// its line and of the two lines beside it (lines -1 and `lines` are KnownMap's clear guards).
+  template <int kDx, int kDy>
+  [[nodiscard]] std::optional<Cell> jump_straight(Cell c) const {
+    constexpr bool kAcross = kDy == 0;  // along a row
+    constexpr int kDir = kAcross ? kDx : kDy;
+    const int line = kAcross ? c.y : c.x;
+    const int from = kAcross ? c.x : c.y;
+    const auto bits = [this](int l) {
+      if constexpr (kAcross) {
+        return row(l);
+      } else {
+        return column(l);
+      }
+    };
+    const std::uint64_t* here = bits(line);
+    const int stop =
+        stop_after<kDir>(here, bits(line - 1), bits(line + 1), kAcross ? row_words_ : column_words_, from);
     // The goal on this line before the stop (the stop is blocked or a jump point itself).
-    const int goal_line = across ? goal_.y : goal_.x;
-    const int goal_at = across ? goal_.x : goal_.y;
-    if (goal_line == line && (goal_at - from) * dir > 0 && (stop - goal_at) * dir >= 0)
-      return index_of(goal_);
-    if (stop < 0 || stop >= length || !scan.free(stop)) return -1;
-    return across ? index_of(Cell{stop, line}) : index_of(Cell{line, stop});
+    const int goal_line = kAcross ? goal_.y : goal_.x;
+    const int goal_at = kAcross ? goal_.x : goal_.y;
+    if (goal_line == line && (goal_at - from) * kDir > 0 && (stop - goal_at) * kDir >= 0) return goal_;
+    if (!bit(here, stop)) return std::nullopt;
+    return kAcross ? Cell{stop, line} : Cell{line, stop};
   }
 
-  /// One line of cells (a row or column) and the lines on either side as free bits, for
-  /// jump_straight(): where a straight jump along it stops.
-  struct LineScan {
-    const std::uint64_t* line;
-    const std::uint64_t* side_a;
-    const std::uint64_t* side_b;
-    int words;
-
-    /// Words -1 and `words` of every line are KnownMap's clear guards: no bounds checks.
-    [[nodiscard]] bool free(int p) const { return ((line[p / 64] >> (p % 64)) & 1U) != 0; }
-    /// Word w of a side's bits shifted so that bit i holds cell i - 1 (`previous`) or i + 1.
-    [[nodiscard]] static std::uint64_t previous(const std::uint64_t* side, int w) {
+  /// The first cell past `from` in direction kDir (+1 or -1) of a line of `words` words whose
+  /// bits are `line`, with `side_a` and `side_b` the lines beside it, that is blocked or has a
+  /// forced neighbour: without corner cutting, a side cell free and the one behind it (p - kDir)
+  /// not; with it, a side cell blocked and the one ahead free. -1 when the scan passes the line's
+  /// start, words * 64 when it passes its last word (cells past the line's end are blocked).
+  template <int kDir>
+  [[nodiscard]] static int stop_after(const std::uint64_t* line, const std::uint64_t* side_a,
+                                      const std::uint64_t* side_b, int words, int from) {
+    // Word w of a side's bits shifted so that bit i holds cell i - 1 (`previous`) or i + 1; a
+    // line's words -1 and `words` are clear guards.
+    const auto previous = [](const std::uint64_t* side, int w) {
       return (side[w] << 1U) | (side[w - 1] >> 63U);
-    }
-    [[nodiscard]] static std::uint64_t next(const std::uint64_t* side, int w) {
-      return (side[w] >> 1U) | (side[w + 1] << 63U);
-    }
-    /// Word w of the cells where a jump in direction `dir` stops: blocked, or with a forced
-    /// neighbour (jps_planner.hpp's rules). Without corner cutting, side cell p is free and the
-    /// one behind it (p - dir) is not; with it, side cell p is blocked and the one ahead free.
-    [[nodiscard]] std::uint64_t stops(int w, int dir) const {
+    };
+    const auto next = [](const std::uint64_t* side, int w) { return (side[w] >> 1U) | (side[w + 1] << 63U); };
+    const auto stops = [&](int w) {
       std::uint64_t forced = 0;
       for (const std::uint64_t* side : {side_a, side_b}) {
-        const std::uint64_t here = side[w];
         if constexpr (kCut) {
-          forced |= ~here & (dir > 0 ? next(side, w) : previous(side, w));
+          forced |= ~side[w] & (kDir > 0 ? next(side, w) : previous(side, w));
         } else {
-          forced |= here & ~(dir > 0 ? previous(side, w) : next(side, w));
+          forced |= side[w] & ~(kDir > 0 ? previous(side, w) : next(side, w));
         }
       }
       return ~line[w] | forced;
-    }
-    /// The first stop after cell `from` (cells past the line's end are blocked).
-    [[nodiscard]] int first_after(int from) const {
-      const int start = from + 1;
-      for (int w = start / 64; w < words; ++w) {
-        std::uint64_t m = stops(w, +1);
-        if (w == start / 64) m &= ~std::uint64_t{0} << static_cast<unsigned>(start % 64);
-        if (m != 0) return w * 64 + std::countr_zero(m);
+    };
+    const int start = from + kDir;
+    int w = start / 64;
+    if constexpr (kDir > 0) {
+      if (w >= words) return words * 64;
+      std::uint64_t m = stops(w) & (~std::uint64_t{0} << static_cast<unsigned>(start % 64));
+      while (m == 0) {
+        if (++w == words) return words * 64;
+        m = stops(w);
       }
-      return words * 64;
-    }
-    /// The last stop before cell `from` (-1: the line's start is passed).
-    [[nodiscard]] int last_before(int from) const {
-      const int start = from - 1;
-      for (int w = start / 64; start >= 0 && w >= 0; --w) {
-        std::uint64_t m = stops(w, -1);
-        if (w == start / 64) m &= ~std::uint64_t{0} >> static_cast<unsigned>(63 - start % 64);
-        if (m != 0) return w * 64 + 63 - std::countl_zero(m);
+      return w * 64 + std::countr_zero(m);
+    } else {
+      if (start < 0) return -1;
+      std::uint64_t m = stops(w) & (~std::uint64_t{0} >> static_cast<unsigned>(63 - start % 64));
+      while (m == 0) {
+        if (--w < 0) return -1;
+        m = stops(w);
       }
-      return -1;
+      return w * 64 + 63 - std::countl_zero(m);
     }
-  };
-  /// The first jump point from `c` along the diagonal `s`: the goal, a cell with a forced
-  /// neighbour (corner cutting only), or a cell from which jump_straight() along (dx, 0) or
-  /// (0, dy) finds one; -1 if a disallowed step comes first.
-  [[nodiscard]] int jump_diagonal(Cell c, Step s) const {
-    while (diagonal_allowed(c, s)) {
-      c = Cell{c.x + s.dx, c.y + s.dy};
-      if (c == goal_) return index_of(c);
-      if constexpr (kCut) {
-        if ((!is_free(c.x - s.dx, c.y) && is_free(c.x - s.dx, c.y + s.dy)) ||
-            (!is_free(c.x, c.y - s.dy) && is_free(c.x + s.dx, c.y - s.dy))) {
-          return index_of(c);
-        }
-      }
-      if (jump_straight(c, Step{s.dx, 0}) >= 0 || jump_straight(c, Step{0, s.dy}) >= 0) return index_of(c);
-    }
-    return -1;
   }
 
-  const KnownMap& known_;
-  const CellState* cells_;
+  /// The first jump point from `c` along the diagonal (kDx, kDy): the goal, a cell with a forced
+  /// neighbour (corner cutting only), or a cell from which jump_straight() along (kDx, 0) or
+  /// (0, kDy) finds one; none if a disallowed step comes first.
+  template <int kDx, int kDy>
+  [[nodiscard]] std::optional<Cell> jump_diagonal(Cell c) const {
+    while (true) {
+      // The step (octile_grid.hpp's rule): its target free and, without corner cutting, both
+      // cells beside it.
+      const std::uint64_t* ahead = row(c.y + kDy);
+      if (!bit(ahead, c.x + kDx)) return std::nullopt;
+      if constexpr (!kCut) {
+        if (!bit(ahead, c.x) || !bit(row(c.y), c.x + kDx)) return std::nullopt;
+      }
+      c = Cell{c.x + kDx, c.y + kDy};
+      if (c == goal_) return c;
+      if constexpr (kCut) {
+        if ((!is_free(c.x - kDx, c.y) && is_free(c.x - kDx, c.y + kDy)) ||
+            (!is_free(c.x, c.y - kDy) && is_free(c.x + kDx, c.y - kDy))) {
+          return c;
+        }
+      }
+      if (jump_straight<kDx, 0>(c) || jump_straight<0, kDy>(c)) return c;
+    }
+  }
+
+  const std::uint64_t* rows_;
+  std::ptrdiff_t row_stride_;
+  int row_words_;
+  const std::uint64_t* columns_;
+  std::ptrdiff_t column_stride_;
+  int column_words_;
   int width_;
   int height_;
   Cell goal_;

@@ -82,6 +82,13 @@ std::string version_text() {
 
 std::string sweep_hash(const nlohmann::json& sweep) { return hex64(fnv1a(sweep.dump())); }
 
+bool same_sweep_but_description(nlohmann::json before, nlohmann::json now) {
+  if (!before.is_object() || !now.is_object()) return false;
+  before.erase("description");
+  now.erase("description");
+  return before == now;
+}
+
 std::string utc_now_iso8601() {
   const std::time_t t = std::time(nullptr);
   std::tm tm{};

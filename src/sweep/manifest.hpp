@@ -99,6 +99,11 @@ void write_manifest(const std::string& path, const nlohmann::json& manifest);
 /// Never throws: it runs while another error is reported, and that one is the one to report.
 void record_failed_manifest(const std::string& path, const nlohmann::json& manifest) noexcept;
 
+/// Two versions of a sweep file (the manifests' "sweep") that differ in their "description"
+/// alone: the same runs and searches. A results directory resumes as it is (its manifest takes
+/// the new hash), and shards run before and after the change merge.
+[[nodiscard]] bool same_sweep_but_description(nlohmann::json before, nlohmann::json now);
+
 /// The manifest at `path`; nullopt when the file is missing, unreadable or has no sweep_hash.
 [[nodiscard]] std::optional<nlohmann::json> read_manifest(const std::string& path);
 

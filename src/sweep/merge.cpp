@@ -82,6 +82,13 @@ std::string first_map_difference(const nlohmann::json& a, const nlohmann::json& 
   return "the lists of maps (" + std::to_string(ma.size()) + " and " + std::to_string(mb.size()) + " maps)";
 }
 
+/// True when two manifests record the same sweep: the same hash, or sweep files that differ in
+/// their description alone.
+bool same_sweep_of(const nlohmann::json& a, const nlohmann::json& b) {
+  return a["sweep_hash"] == b["sweep_hash"] ||
+         same_sweep_but_description(a.value("sweep", nlohmann::json()), b.value("sweep", nlohmann::json()));
+}
+
 /// True when a session of a shard ran the sweep with hash `hash`: the shards extended it
 /// (sweep_runner.hpp, Extending).
 bool shards_ran(const std::vector<Shard>& shards, const nlohmann::json& hash) {
@@ -101,7 +108,10 @@ void refuse_results_of_another_sweep(const std::string& dir, const std::vector<S
   const std::string path = dir + "/manifest.json";
   if (!fs::exists(path)) return;
   const nlohmann::json held = read_json(path);
-  if (held["sweep_hash"] == first.manifest["sweep_hash"] || shards_ran(shards, held["sweep_hash"])) return;
+  if (held["sweep_hash"] == first.manifest["sweep_hash"] || shards_ran(shards, held["sweep_hash"]) ||
+      same_sweep_of(held, first.manifest)) {
+    return;
+  }
   throw ConfigError(dir, "holds the results of " + describe_sweep(held) + ", its shards are of " +
                              describe_sweep(first.manifest) + " (" + first.dir +
                              "); nothing written: merge the shards of one sweep into its own directory");
@@ -126,7 +136,7 @@ std::vector<Shard> read_shards(const std::string& dir, MergeReport& report) {
   }
   for (Shard& s : shards) s.manifest = read_json(s.dir + "/manifest.json");
   for (const Shard& s : shards) {
-    if (s.manifest["sweep_hash"] != shards.front().manifest["sweep_hash"]) {
+    if (!same_sweep_of(s.manifest, shards.front().manifest)) {
       throw ConfigError(dir, "shards of different sweeps (sweep_hash " +
                                  s.manifest["sweep_hash"].get<std::string>() + " in " + s.dir + ", " +
                                  shards.front().manifest["sweep_hash"].get<std::string>() + " in " +
@@ -251,8 +261,8 @@ std::string merged_progress(const std::vector<Shard>& shards,
   return text;
 }
 
-/// The merged folder's manifest: the first shard's, with the shards' counts summed, their
-/// sessions by start time, and the longest shard's wall time.
+/// The merged folder's manifest: the first shard's (its sweep and description), with the shards' counts
+/// summed, their sessions by start time, and the longest shard's wall time.
 nlohmann::json merged_manifest(const std::vector<Shard>& shards, const MergeReport& report) {
   nlohmann::json manifest = shards.front().manifest;
   std::uint64_t failed = 0;

@@ -177,15 +177,6 @@ void remove_torn_replacements(const std::string& dir) {
   }
 }
 
-/// Two versions of a sweep file that differ in their "description" alone: the same runs and
-/// searches, so the results directory resumes as it is (the manifest takes the new hash).
-bool same_but_description(nlohmann::json before, nlohmann::json now) {
-  if (!before.is_object() || !now.is_object()) return false;
-  before.erase("description");
-  now.erase("description");
-  return before == now;
-}
-
 /// What the directory's earlier outputs allow: with `fresh`, none are kept; outputs of an
 /// earlier version of the sweep file are extended (extend_outputs() refuses unless the change
 /// only adds runs); outputs of an older fsweep or of other maps are refused. Returns the earlier
@@ -208,7 +199,7 @@ nlohmann::json reconcile_earlier_outputs(const SweepPlan& plan, const RunnerOpti
   sessions = manifest_sessions(*old);
   const std::string old_hash = (*old)["sweep_hash"].get<std::string>();
   if (old_hash != sweep_hash(plan.source()) &&
-      !same_but_description(old->value("sweep", nlohmann::json()), plan.source())) {
+      !same_sweep_but_description(old->value("sweep", nlohmann::json()), plan.source())) {
     report.kept = extend_outputs(plan, ShardOf{options.shard_index, options.shard_count}, table, dir, *old);
     report.extended_from = old_hash;
   } else if (!old->contains("maps") && has_rows(dir + "/runs.csv")) {

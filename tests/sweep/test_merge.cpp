@@ -210,6 +210,30 @@ TEST_F(MergeTest, MismatchedShardCountsAndSweepsAreErrors) {
   fs::remove_all(fs::temp_directory_path() / ("fsweep_merge_empty_" + std::to_string(::getpid())));
 }
 
+TEST_F(MergeTest, ShardsRunBeforeAndAfterADescriptionAloneChangedMerge) {
+  const std::string dir = temp_dir("described");
+  json described = tiny_sweep();
+  described["description"] = "shard 1 ran after this sentence was added";
+  run(tiny_sweep(), dir, 0, 2);
+  run(described, dir, 1, 2);
+  const MergeReport r = merge_shards(dir);
+  EXPECT_TRUE(r.written) << joined(r.problems);
+  EXPECT_EQ(joined(without_timing(read_file(dir + "/runs.csv"))),
+            joined(without_timing(read_file(*whole_ + "/runs.csv"))));
+  // The merged manifest is the first shard's: its sweep, without the description.
+  const json m = json::parse(read_file(dir + "/manifest.json"));
+  EXPECT_EQ(m["sweep"], tiny_sweep());
+  fs::remove_all(dir);
+  // Shards of a new description merged over an unsharded run of the old one: the same sweep.
+  const std::string over = temp_dir("described_over");
+  run(tiny_sweep(), over, 0, 1);
+  for (std::uint64_t i = 0; i < 2; ++i) run(described, over, i, 2);
+  const MergeReport again = merge_shards(over);
+  EXPECT_TRUE(again.written) << joined(again.problems);
+  EXPECT_EQ(json::parse(read_file(over + "/manifest.json"))["sweep"], described);
+  fs::remove_all(over);
+}
+
 TEST_F(MergeTest, ShardsRunOnDifferentMapContentsAreRefused) {
   const std::string dir = temp_dir("edited_map");
   const std::string map_path = dir + "/m.txt";  // beside the shards: merge looks at shard-* only
