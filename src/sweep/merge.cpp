@@ -101,17 +101,14 @@ bool shards_ran(const std::vector<Shard>& shards, const nlohmann::json& hash) {
 }
 
 /// Throws ConfigError when `dir` already holds the merged (or unsharded) results of another sweep
-/// than the shards' (its manifest.json's sweep_hash differs, and is not of a sweep the shards
+/// than the shards' (not same_sweep_of() the first shard's, and not of a sweep the shards
 /// extended), as an unsharded run refuses.
 void refuse_results_of_another_sweep(const std::string& dir, const std::vector<Shard>& shards) {
   const Shard& first = shards.front();
   const std::string path = dir + "/manifest.json";
   if (!fs::exists(path)) return;
   const nlohmann::json held = read_json(path);
-  if (held["sweep_hash"] == first.manifest["sweep_hash"] || shards_ran(shards, held["sweep_hash"]) ||
-      same_sweep_of(held, first.manifest)) {
-    return;
-  }
+  if (same_sweep_of(held, first.manifest) || shards_ran(shards, held["sweep_hash"])) return;
   throw ConfigError(dir, "holds the results of " + describe_sweep(held) + ", its shards are of " +
                              describe_sweep(first.manifest) + " (" + first.dir +
                              "); nothing written: merge the shards of one sweep into its own directory");
@@ -261,8 +258,8 @@ std::string merged_progress(const std::vector<Shard>& shards,
   return text;
 }
 
-/// The merged folder's manifest: the first shard's (its sweep and description), with the shards' counts
-/// summed, their sessions by start time, and the longest shard's wall time.
+/// The merged folder's manifest: the first shard's (its sweep and description), with the
+/// shards' counts summed, their sessions by start time, and the longest shard's wall time.
 nlohmann::json merged_manifest(const std::vector<Shard>& shards, const MergeReport& report) {
   nlohmann::json manifest = shards.front().manifest;
   std::uint64_t failed = 0;
