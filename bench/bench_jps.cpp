@@ -46,7 +46,7 @@
 /// - `jps` runs the project's A* (BestFirstSearchT over an environment: a 4-ary indexed heap of
 ///   packed 128-bit keys, 16-byte nodes, the direction of arrival from the parent's cell) and serves
 ///   both corner rules; the yardstick has its own binary heap and MovingAI's rule only;
-/// - its diagonal steps test bounds and cell states through is_free(); the yardstick reads a padded
+/// - its diagonal steps and pruning tests read those bit rows too; the yardstick reads a padded
 ///   byte grid.
 
 #include <benchmark/benchmark.h>
