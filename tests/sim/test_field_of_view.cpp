@@ -143,5 +143,48 @@ TEST(FieldOfView, ARobotDoesNotLookAroundAtItsNavigationTarget) {
   EXPECT_DOUBLE_EQ(r.metrics.distance_m, 4.0);
 }
 
+TEST(FieldOfView, ARobotDoesNotLookAroundAtTheDockItReturnsTo) {
+  // A battery that forces returns and a 90-degree view: a step that ends with a recharge (a
+  // return to the dock) turns where its path changes direction, and at most once more (toward its
+  // first move), but never in place at the dock, though on this map the dock has unknown
+  // neighbours at some of the returns.
+  RunSpec s;
+  s.map = std::make_shared<const WorldMap>(load_map_spec("random:w=30,h=30,p=0.2,seed=3"));
+  s.strategy = configure_strategy("closest_frontier", nullptr);
+  s.robot.sensor.range_m = 5.0;
+  s.robot.sensor.fov_deg = 90.0;
+  s.robot.battery_capacity = 60.0;
+  Simulation sim(s);
+  int returns = 0;
+  int returns_beside_unknown = 0;
+  while (!sim.ended()) {
+    const RunMetrics before = sim.metrics_so_far();
+    const std::size_t moved_before = sim.result().trajectory.size();
+    (void)sim.step();
+    const RunMetrics& after = sim.metrics_so_far();
+    if (after.recharges == before.recharges) continue;
+    const std::vector<Cell> trajectory = sim.result().trajectory;
+    ASSERT_GE(moved_before, 1U);
+    int direction_changes = 0;
+    for (std::size_t i = moved_before + 1; i < trajectory.size(); ++i) {
+      const Cell a{trajectory[i - 1].x - trajectory[i - 2].x, trajectory[i - 1].y - trajectory[i - 2].y};
+      const Cell b{trajectory[i].x - trajectory[i - 1].x, trajectory[i].y - trajectory[i - 1].y};
+      if (a != b) ++direction_changes;
+    }
+    ++returns;
+    EXPECT_LE(after.turns - before.turns, direction_changes + 1) << "return " << returns;
+    const Cell dock = sim.robot();
+    for (const Cell d : kDirections) {
+      const Cell n{dock.x + d.x, dock.y + d.y};
+      if (sim.known().in_bounds(n) && sim.known().state(n) == CellState::Unknown) {
+        ++returns_beside_unknown;
+        break;
+      }
+    }
+  }
+  EXPECT_GT(returns, 0);
+  EXPECT_GT(returns_beside_unknown, 0);  // where a look around would have turned
+}
+
 }  // namespace
 }  // namespace fsweep
