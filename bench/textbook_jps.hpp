@@ -14,10 +14,12 @@
 ///   cells beside it free), so diagonal moves have no forced neighbours, and a straight move from p
 ///   to x forces x + q (q perpendicular) when x + q is free and p + q is not (then x also branches
 ///   to x + q and x + d + q);
-/// - a diagonal jump steps one cell at a time and stops at a cell from which either straight jump
-///   along its components finds a jump point (or at the goal); that cell is a jump point of its own
-///   (the paper's stronger online pruning, which avoids expanding some jump points, is not used), so
-///   the yardstick expands the jump points `jps` expands;
+/// - a diagonal jump steps one cell at a time until a step is not allowed and at each cell runs the
+///   two straight jumps along its components, opening the jump points they find as successors of
+///   the cell jumped from, through the diagonal cell (the paper's online pruning: the cells of the
+///   diagonal are not opened, only the goal if the diagonal reaches it); the direction of arrival
+///   at a jump point is the last step's, along the longer axis from its parent, so the yardstick
+///   expands the jump points `jps` expands;
 /// - A* over the jump points: exact costs as counts of straight and diagonal steps, the octile
 ///   heuristic, an indexed binary heap with decrease-key ordered by smaller f, larger g, smaller
 ///   cell (the order of BestFirstSearchT; the padded cell index orders cells as the map's index does),
@@ -231,40 +233,49 @@ class TextbookJps {
     const bool free = ((line[stop / 64] >> static_cast<unsigned>(stop % 64)) & 1U) != 0;
     return free ? (stop - p) * kDir : 0;
   }
-  /// The steps of the jump from (x, y) along (kDx, kDy) to the goal or a jump point; 0 if a
-  /// blocked cell or a disallowed step comes first. Straight: along its row, or its column in the
-  /// transposed copy. Diagonal: one step at a time, stopping at a cell from which a straight jump
-  /// along kDx or kDy finds a jump point.
+  /// The steps of the straight jump from (x, y) along (kDx, kDy) to the goal or a jump point; 0
+  /// if a blocked cell comes first: along its row, or its column in the transposed copy.
   template <int kDx, int kDy>
-  [[nodiscard]] int jump_steps(int x, int y) const {
+  [[nodiscard]] int straight_steps(int x, int y) const {
     if constexpr (kDy == 0) {
       return jump_line<kDx>(rows_, y, x, goal_y_, goal_x_);
-    } else if constexpr (kDx == 0) {
+    } else {
       return jump_line<kDy>(columns_, x, y, goal_x_, goal_y_);
+    }
+  }
+  /// Jumps from cell `c` at (x, y) along (kDx, kDy) and opens the jump points found. Straight:
+  /// the jump point of the line. Diagonal: one step at a time until a step is not allowed,
+  /// opening at each cell the jump points of the straight jumps along kDx and kDy from it, or
+  /// the cell itself if it is the goal (then the jump ends); the cells of the diagonal are not
+  /// opened (the paper's online pruning).
+  template <int kDx, int kDy>
+  void jump(int c, int x, int y) {
+    const Node& from = nodes_[static_cast<std::size_t>(c)];
+    const int gs = from.gs;
+    const int gd = from.gd;
+    if constexpr (kDx == 0 || kDy == 0) {
+      const int steps = straight_steps<kDx, kDy>(x, y);
+      if (steps != 0)
+        relax(c, c + steps * (kDy * stride_ + kDx), gs + steps, gd, x + steps * kDx, y + steps * kDy);
     } else {
       const int vertical = kDy * stride_;
-      const std::uint8_t* c = free_.data() + static_cast<std::ptrdiff_t>(y) * stride_ + x;
+      const std::uint8_t* at = free_.data() + static_cast<std::ptrdiff_t>(y) * stride_ + x;
+      int cell = c;
       for (int steps = 1;; ++steps) {
-        if ((c[kDx] & c[vertical] & c[vertical + kDx]) == 0) return 0;
-        c += vertical + kDx;
+        if ((at[kDx] & at[vertical] & at[vertical + kDx]) == 0) return;
+        at += vertical + kDx;
+        cell += vertical + kDx;
         x += kDx;
         y += kDy;
-        if ((x == goal_x_ && y == goal_y_) || jump_steps<kDx, 0>(x, y) != 0 ||
-            jump_steps<0, kDy>(x, y) != 0) {
-          return steps;
+        if (cell == goal_) return relax(c, cell, gs, gd + steps, x, y);
+        if (const int across = straight_steps<kDx, 0>(x, y); across != 0) {
+          relax(c, cell + across * kDx, gs + across, gd + steps, x + across * kDx, y);
+        }
+        if (const int along = straight_steps<0, kDy>(x, y); along != 0) {
+          relax(c, cell + along * vertical, gs + along, gd + steps, x, y + along * kDy);
         }
       }
     }
-  }
-  /// Jumps from cell `c` at (x, y) along (kDx, kDy) and opens the jump point found.
-  template <int kDx, int kDy>
-  void jump(int c, int x, int y) {
-    const int steps = jump_steps<kDx, kDy>(x, y);
-    if (steps == 0) return;
-    constexpr bool kDiagonal = kDx != 0 && kDy != 0;
-    const Node& from = nodes_[static_cast<std::size_t>(c)];
-    relax(c, c + steps * (kDy * stride_ + kDx), from.gs + (kDiagonal ? 0 : steps),
-          from.gd + (kDiagonal ? steps : 0), x + steps * kDx, y + steps * kDy);
   }
   /// jump<dx, dy>(): one specialisation per direction, as the paper's (and Warthog's) jump
   /// functions, so that each scans with its direction's shifts and counts.
@@ -291,8 +302,12 @@ class TextbookJps {
       for (const Cell d : kDirections) jump(c, x, y, d.x, d.y);
       return;
     }
-    const int dx = sign(x - parent % stride_);
-    const int dy = sign(y - parent / stride_);
+    // The direction of the last step from the parent: along the longer axis (a diagonal run
+    // comes before a straight one), diagonal if the axes are equal.
+    const int across = std::abs(x - parent % stride_);
+    const int down = std::abs(y - parent / stride_);
+    const int dx = across >= down ? sign(x - parent % stride_) : 0;
+    const int dy = down >= across ? sign(y - parent / stride_) : 0;
     jump(c, x, y, dx, dy);  // the natural neighbour ahead
     if (dx != 0 && dy != 0) {
       jump(c, x, y, dx, 0);
@@ -341,8 +356,14 @@ class TextbookJps {
     int p = goal;
     for (int q = nodes_[static_cast<std::size_t>(p)].parent; q >= 0;
          p = q, q = nodes_[static_cast<std::size_t>(q)].parent) {
-      const int step = sign(p / stride_ - q / stride_) * stride_ + sign(p % stride_ - q % stride_);
-      for (int c = p; c != q; c -= step) (*cells)[--i] = Cell{c % stride_ - 1, c / stride_ - 1};
+      // From p back to q: the straight run along the longer axis, then the diagonal one.
+      for (int c = p; c != q;) {
+        (*cells)[--i] = Cell{c % stride_ - 1, c / stride_ - 1};
+        const int across = c % stride_ - q % stride_;
+        const int down = c / stride_ - q / stride_;
+        c -= (std::abs(across) >= std::abs(down) ? sign(across) : 0) +
+             (std::abs(down) >= std::abs(across) ? sign(down) * stride_ : 0);
+      }
     }
     (*cells)[0] = Cell{p % stride_ - 1, p / stride_ - 1};  // the start
     return count;

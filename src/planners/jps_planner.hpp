@@ -12,13 +12,20 @@
 /// - with corner cutting (a diagonal step needs only its target free, the 2011 paper's rules):
 ///   a straight move forces the diagonal x + d + q when x + q is blocked and x + d + q free; a
 ///   diagonal move (dx, dy) forces (-dx, dy) and (dx, -dy) past a blocked x - (dx, 0) or x - (0, dy).
-/// A jump continues in its direction until it reaches the goal, a cell with a forced neighbour,
-/// a blocked step, or (diagonal jumps) a cell from which a straight jump along either component
-/// finds a jump point. Straight jumps scan their row or column a word of 64 cells at a time
-/// (KnownMap's free bits; Harabor & Grastien, "Improving Jump Point Search", ICAPS 2014), finding
-/// the same jump points as a scan cell by cell. The A* runs on jump points (BestFirstSearch, octile
-/// heuristic, the edge cost the octile length of the straight or diagonal segment); the direction of arrival
-/// at a jump point is read from its parent.
+/// A straight jump continues until it reaches the goal, a cell with a forced neighbour or a
+/// blocked cell, scanning its row or column a word of 64 cells at a time (KnownMap's free bits;
+/// Harabor & Grastien, "Improving Jump Point Search", ICAPS 2014), finding the same jump points as
+/// a scan cell by cell. A diagonal jump steps one cell at a time until a step is not allowed and
+/// at every cell runs the straight jumps along its two components; the jump points they find are
+/// successors of the state jumped from, reached through that cell (the ICAPS 2014 paper's online
+/// pruning: the 2011 search stops at the first such cell and opens it as a jump point of its
+/// own, to be settled later only to make the same jumps). The diagonal cells are therefore never
+/// opened, except the goal and, with corner cutting, a cell with a forced neighbour, which end the
+/// jump. So `jps` settles fewer states than the 2011 search; its edges cover all of the 2011
+/// search's, each at the octile length of its diagonal run and straight run, so its lengths are
+/// the same. The A* runs on jump points (BestFirstSearch, octile heuristic); the direction of
+/// arrival at a jump point is that of the last step from its parent: along the longer axis of the
+/// two cells' offset, or diagonal if the two axes are equal.
 
 #include <limits>
 #include <memory>
@@ -45,9 +52,9 @@ struct JpsPlannerParams {
 /// Statuses (besides Planner::plan()'s endpoint checks): NoPath if the goal is not reachable
 /// through known-free cells; Timeout if the time limit or the expansion budget ends the search
 /// first; Success otherwise, with every cell of the path (the segments between jump points filled
-/// in; start == goal gives the one-cell path). The length equals `astar`'s (the same shortest
-/// octile length, so the same numbers of straight and diagonal steps), the path itself may differ.
-/// `expansions` counts settled jump points, not the cells the jumps scan. Ties break as in
+/// in, each diagonal run before its straight run; start == goal gives the one-cell path). The length equals
+/// `astar`'s (the same shortest octile length, so the same numbers of straight and diagonal steps), the path
+/// itself may differ. `expansions` counts settled jump points, not the cells the jumps scan. Ties break as in
 /// BestFirstSearch (smaller f, larger g, smaller cell index).
 class JpsPlanner final : public Planner {
  public:

@@ -206,41 +206,76 @@ class JumpTableEnvironment {
     jump_points::pruned_directions<kCut>(
         at, parent < 0 ? std::nullopt : std::optional<Cell>(cell_of(parent)),
         [this](int x, int y) { return is_free(x, y); }, add);
-    // Each jump: `steps` steps in heading h, to the cell opened as a successor. A* often
-    //    expands a successor soon after opening it (ties go to the larger g), so its table line
-    //    is fetched meanwhile: the table is too large to stay in cache on large maps (measured on
-    //    a 1024 x 1024 map: queries 0.7x the time without).
-    const auto jump = [&](std::size_t h, int steps, Cost cost) {
-      const int next = state + steps * offsets_[h];
+    // Each successor: `next`, reached at `cost`. A* often expands a successor soon after opening
+    //    it (ties go to the larger g), so its table line is fetched meanwhile: the table is too
+    //    large to stay in cache on large maps (measured on a 1024 x 1024 map: queries 0.7x the
+    //    time without).
+    const auto open = [&](int next, Cost cost) {
       __builtin_prefetch(distances_ + static_cast<std::ptrdiff_t>(next) * kHeadings);
       sink(next, cost);
     };
-    const std::int16_t* distances = distances_ + static_cast<std::ptrdiff_t>(state) * kHeadings;
-    const int gx = goal_.x - at.x;
-    const int gy = goal_.y - at.y;
     for (int k = 0; k < count; ++k) {
       const auto h = static_cast<std::size_t>(headings[static_cast<std::size_t>(k)]);
       const Cell s = kDirections[h];
-      const int d = distances[h];
-      const int reach = d > 0 ? d : -d;
-      // The goal within reach, else the jump point the table names (d > 0), if any. Straight:
-      //    the goal ahead on the line. Diagonal: the goal in the quadrant, its row or column
-      //    within reach: the stop on that row or column (a target jump point).
       if (s.x == 0 || s.y == 0) {
-        const int ahead = s.x * gx + s.y * gy;
-        const bool goal_ahead = (s.x == 0 ? gx : gy) == 0 && ahead > 0 && ahead <= reach;
-        const int steps = goal_ahead ? ahead : d;
-        if (steps > 0) jump(h, steps, Cost{steps, 0});
+        const int steps = straight_steps(state, at, h);
+        if (steps > 0) open(state + steps * offsets_[h], Cost{steps, 0});
       } else {
-        const int to_goal_line = std::min(gx * s.x, gy * s.y);
-        const bool goal_in_quadrant = sign_of(gx) == s.x && sign_of(gy) == s.y && to_goal_line <= reach;
-        const int steps = goal_in_quadrant ? to_goal_line : d;
-        if (steps > 0) jump(h, steps, Cost{0, steps});
+        follow_diagonal(state, at, h, open);
       }
     }
   }
 
  private:
+  /// The steps of the straight jump from `state` (at `at`) in heading h: to the goal when it
+  /// lies ahead on the line within reach, else the table's distance (<= 0: no jump point).
+  [[nodiscard]] int straight_steps(int state, Cell at, std::size_t h) const {
+    const Cell s = kDirections[h];
+    const int d = distances_[static_cast<std::ptrdiff_t>(state) * kHeadings + static_cast<std::ptrdiff_t>(h)];
+    const int gx = goal_.x - at.x;
+    const int gy = goal_.y - at.y;
+    const int ahead = s.x * gx + s.y * gy;
+    const bool goal_ahead = (s.x == 0 ? gx : gy) == 0 && ahead > 0 && ahead <= (d > 0 ? d : -d);
+    return goal_ahead ? ahead : d;
+  }
+  /// Opens the successors of `state` (at `at`) along the diagonal heading h, as `jps` does (its
+  /// online pruning, jps_planner.hpp): from each diagonal jump point the table names, the jump
+  /// points of its straight jumps along the two components, reached through it, and on to the
+  /// next one. The goal's row or column within reach in the goal's quadrant (Rabin's target
+  /// jump point) and, with corner cutting, a diagonal jump point with a forced neighbour are
+  /// opened themselves and end the jump.
+  template <typename Open>
+  void follow_diagonal(int state, Cell at, std::size_t h, const Open& open) const {
+    const Cell s = kDirections[h];
+    const auto across = static_cast<std::size_t>(heading_index(s.x, 0));
+    const auto along = static_cast<std::size_t>(heading_index(0, s.y));
+    int diagonal = 0;  // steps from the expanded state
+    while (true) {
+      const int d =
+          distances_[static_cast<std::ptrdiff_t>(state) * kHeadings + static_cast<std::ptrdiff_t>(h)];
+      const int gx = goal_.x - at.x;
+      const int gy = goal_.y - at.y;
+      const int to_goal_line = std::min(gx * s.x, gy * s.y);
+      if (sign_of(gx) == s.x && sign_of(gy) == s.y && to_goal_line <= (d > 0 ? d : -d)) {
+        return open(state + to_goal_line * offsets_[h], Cost{0, diagonal + to_goal_line});
+      }
+      if (d <= 0) return;
+      state += d * offsets_[h];
+      at = Cell{at.x + d * s.x, at.y + d * s.y};
+      diagonal += d;
+      if constexpr (kCut) {
+        if ((!is_free(at.x - s.x, at.y) && is_free(at.x - s.x, at.y + s.y)) ||
+            (!is_free(at.x, at.y - s.y) && is_free(at.x + s.x, at.y - s.y))) {
+          return open(state, Cost{0, diagonal});
+        }
+      }
+      for (const std::size_t straight : {across, along}) {
+        const int steps = straight_steps(state, at, straight);
+        if (steps > 0) open(state + steps * offsets_[straight], Cost{steps, diagonal});
+      }
+    }
+  }
+
   [[nodiscard]] Cell cell_of(int state) const { return Cell{state % width_, state / width_}; }
   /// Known free and inside the grid.
   [[nodiscard]] bool is_free(int x, int y) const {

@@ -9,10 +9,13 @@
 /// a cell with a forced neighbour (corner cutting only) or from which a straight jump along either
 /// component has a jump point: the rules of `jps` (jps_planner.hpp), under either corner rule of
 /// PlanRequest::allow_corner_cutting, one table each. A query is then `jps`'s A* over jump points
-/// with every jump read in O(1): only the goal needs checks of its own (Rabin's "target jump
-/// points"): a straight jump reaches it when it lies ahead on the line within |d| steps; a
-/// diagonal jump whose quadrant holds the goal stops, when min(|dx|, |dy|) to the goal is within
-/// |d| steps, at the cell of that many diagonal steps, on the goal's row or column.
+/// with every jump read in O(1), diagonals followed as `jps` follows them (the straight jumps'
+/// jump points from each diagonal jump point are successors of the state jumped from; the
+/// diagonal jump points themselves are not opened): only the goal needs checks of its own
+/// (Rabin's "target jump points"): a straight jump reaches it when it lies ahead on the line
+/// within |d| steps; a diagonal jump whose quadrant holds the goal stops, when min(|dx|, |dy|) to
+/// the goal is within |d| steps, at the cell of that many diagonal steps, on the goal's row or
+/// column, which is opened.
 ///
 /// Static maps only pay off. The table is rebuilt (O(cells), every cell and heading) by the first
 /// query after the map changed (KnownMap::instance_id() and revision()); on an unchanged map (a

@@ -32,8 +32,13 @@ void pruned_directions(Cell at, std::optional<Cell> from, const IsFree& is_free,
     for (const Cell d : kDirections) add(d.x, d.y);
     return;
   }
-  const int dx = sign_of(at.x - from->x);
-  const int dy = sign_of(at.y - from->y);
+  // The direction of the last step: a segment between jump points runs diagonally first, then
+  // straight along its longer axis (`jps`'s successors past a diagonal), so that axis alone when
+  // the two differ.
+  const int across = std::abs(at.x - from->x);
+  const int along = std::abs(at.y - from->y);
+  const int dx = across >= along ? sign_of(at.x - from->x) : 0;
+  const int dy = along >= across ? sign_of(at.y - from->y) : 0;
   add(dx, dy);
   if (dx == 0 || dy == 0) {
     for (const Cell q : {Cell{dy, dx}, Cell{-dy, -dx}}) {
@@ -57,7 +62,8 @@ void pruned_directions(Cell at, std::optional<Cell> from, const IsFree& is_free,
   }
 }
 
-/// Every cell of a chain of jump points, each consecutive pair on one straight or diagonal line.
+/// Every cell of a chain of jump points, each consecutive pair on one straight or diagonal line,
+/// or joined by a diagonal run and then a straight one (filled in that order).
 [[nodiscard]] inline std::vector<Cell> fill_segments(const std::vector<Cell>& jump_points) {
   std::vector<Cell> cells;
   if (jump_points.empty()) return cells;
@@ -70,10 +76,18 @@ void pruned_directions(Cell at, std::optional<Cell> from, const IsFree& is_free,
   cells.reserve(count);
   cells.push_back(jump_points.front());
   for (std::size_t i = 1; i < jump_points.size(); ++i) {
+    const Cell from = cells.back();
     const Cell to = jump_points[i];
-    const int dx = sign_of(to.x - cells.back().x);
-    const int dy = sign_of(to.y - cells.back().y);
-    while (cells.back() != to) cells.push_back(Cell{cells.back().x + dx, cells.back().y + dy});
+    const int across = std::abs(to.x - from.x);
+    const int along = std::abs(to.y - from.y);
+    const Cell diagonal{sign_of(to.x - from.x), sign_of(to.y - from.y)};
+    const Cell straight = across > along ? Cell{diagonal.x, 0} : Cell{0, diagonal.y};
+    Cell c = from;
+    for (int k = std::min(across, along); k > 0; --k)
+      cells.push_back(c = Cell{c.x + diagonal.x, c.y + diagonal.y});
+    for (int k = std::max(across, along) - std::min(across, along); k > 0; --k) {
+      cells.push_back(c = Cell{c.x + straight.x, c.y + straight.y});
+    }
   }
   return cells;
 }

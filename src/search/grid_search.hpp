@@ -277,6 +277,9 @@ class BestFirstSearchT {
   [[nodiscard]] bool reached(int state) const { return in_range(state) && nodes_[idx(state)].run == run_; }
   /// True if `state` was settled (its g is final) in the last run.
   [[nodiscard]] bool settled(int state) const { return in_range(state) && nodes_[idx(state)].pass == pass_; }
+  /// Starts loading the search data of `state` (in range) into the cache, for an environment
+  /// that finds a successor some time before it hands it to the sink (`jps`'s jumps).
+  void prefetch(int state) const { __builtin_prefetch(&nodes_[idx(state)]); }
   /// Predecessor of a reached state on its best path (-1 for the start or unreached states).
   [[nodiscard]] int parent(int state) const requires(kKeepsParents) {
     return reached(state) ? nodes_[idx(state)].parent : -1;
