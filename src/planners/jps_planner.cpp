@@ -134,9 +134,8 @@ class JumpEnvironment {
   /// a word of 64 cells at a time (Harabor & Grastien, "Improving Jump Point Search", ICAPS
   /// 2014): the first cell past `c` that is blocked or has a forced neighbour, from the bits of
   /// its line and of the two lines beside it (lines -1 and `lines` are KnownMap's clear guards).
-  /// `next_blocked`, if given, is set to whether the first cell past `c` is blocked.
   template <int kDx, int kDy>
-  [[nodiscard]] std::optional<Cell> jump_straight(Cell c, bool* next_blocked = nullptr) const {
+  [[nodiscard]] std::optional<Cell> jump_straight(Cell c) const {
     constexpr bool kAcross = kDy == 0;  // along a row
     constexpr int kDir = kAcross ? kDx : kDy;
     const int line = kAcross ? c.y : c.x;
@@ -154,10 +153,8 @@ class JumpEnvironment {
     // The goal on this line before the stop (the stop is blocked or a jump point itself).
     const int goal_line = kAcross ? goal_.y : goal_.x;
     const int goal_at = kAcross ? goal_.x : goal_.y;
-    const bool stop_free = bit(here, stop);
-    if (next_blocked != nullptr) *next_blocked = !stop_free && stop == from + kDir;
     if (goal_line == line && (goal_at - from) * kDir > 0 && (stop - goal_at) * kDir >= 0) return goal_;
-    if (!stop_free) return std::nullopt;
+    if (!bit(here, stop)) return std::nullopt;
     return kAcross ? Cell{stop, line} : Cell{line, stop};
   }
 
@@ -214,12 +211,14 @@ class JumpEnvironment {
   /// cutting only) a cell with a forced neighbour, is emitted itself and ends the jump.
   template <int kDx, int kDy, typename Emit>
   void jump_diagonal(Cell c, const Emit& emit) const {
-    // The step (octile_grid.hpp's rule): its target free and, without corner cutting, both cells
-    // beside it, which past the first step the straight jumps from `c` have read (a blocked
-    // first cell).
-    bool side_blocked = false;
-    if constexpr (!kCut) side_blocked = !is_free(c.x + kDx, c.y) || !is_free(c.x, c.y + kDy);
-    while (!side_blocked && is_free(c.x + kDx, c.y + kDy)) {
+    while (true) {
+      // The step (octile_grid.hpp's rule): its target free and, without corner cutting, both
+      // cells beside it.
+      const std::uint64_t* ahead = row(c.y + kDy);
+      if (!bit(ahead, c.x + kDx)) return;
+      if constexpr (!kCut) {
+        if (!bit(ahead, c.x) || !bit(row(c.y), c.x + kDx)) return;
+      }
       c = Cell{c.x + kDx, c.y + kDy};
       if (c == goal_) return emit(c);
       if constexpr (kCut) {
@@ -228,11 +227,8 @@ class JumpEnvironment {
           return emit(c);
         }
       }
-      bool across_blocked = false;
-      bool along_blocked = false;
-      if (const std::optional<Cell> across = jump_straight<kDx, 0>(c, &across_blocked)) emit(*across);
-      if (const std::optional<Cell> along = jump_straight<0, kDy>(c, &along_blocked)) emit(*along);
-      if constexpr (!kCut) side_blocked = across_blocked || along_blocked;
+      if (const std::optional<Cell> across = jump_straight<kDx, 0>(c)) emit(*across);
+      if (const std::optional<Cell> along = jump_straight<0, kDy>(c)) emit(*along);
     }
   }
 
