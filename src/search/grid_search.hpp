@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "core/always_inline.hpp"
+#include "search/dijkstra_list.hpp"
 #include "search/indexed_heap.hpp"
 #include "search/stop_condition.hpp"
 #include "world/grid.hpp"
@@ -200,9 +201,10 @@ enum class Parents : std::uint8_t { Kept, Dropped };
 /// goal with fewer expansions); on equal f and g the smaller state id first. The key is a
 /// total order on open-list entries, so a run is fully determined by the environment, and any
 /// open list that pops in this order gives the same run. A*'s list (IndexedHeap) holds one entry
-/// per open state and re-keys it when a cheaper path is found. The Dijkstra list (a binary heap
-/// of 16-byte entries) takes a duplicate instead and skips stale entries when popped: measured
-/// faster there (fields over many states, which the indexed heap's positions add a cache line to).
+/// per open state and re-keys it when a cheaper path is found. The Dijkstra lists
+/// (dijkstra_list.hpp: buckets for exact octile costs, else a binary heap, of 16-byte entries)
+/// take a duplicate instead and the search skips stale entries when popped: measured faster
+/// there (fields over many states, which the indexed heap's positions add a cache line to).
 template <typename Cost, Parents P = Parents::Kept>
 class BestFirstSearchT {
  public:
@@ -239,7 +241,7 @@ class BestFirstSearchT {
     ++pass_;
     reopened_ = true;
     heap_.clear();
-    dijkstra_heap_.clear();
+    dijkstra_list_.clear();
   }
   /// Opens `state` at cost `g`, reached from `parent` (-1: none; not kept with Parents::Dropped),
   /// if that is below its cost so far (between reopen() and resume()). Returns whether it did; a
@@ -251,7 +253,7 @@ class BestFirstSearchT {
     if (node.run == run_ && cost_value(node.g) <= cost_value(g)) return false;
     node = make_node(g, parent, run_);
     if constexpr (ZeroHeuristicEnvironment<Env>) {
-      dijkstra_heap_.push_back(open_item(env, state, g));  // ordered by resume(), all at once
+      dijkstra_list_.add(open_item(env, state, g));  // ordered by resume(), all at once
     } else {
       heap_.push_or_update(open_item(env, state, g));
     }
@@ -260,9 +262,7 @@ class BestFirstSearchT {
   /// Searches from the states opened by lower_cost() since reopen() (or from run()'s seeds).
   template <SearchEnvironment<Cost> Env>
   SearchOutcome resume(Env& env, const SearchLimits& limits = {}) {
-    if constexpr (ZeroHeuristicEnvironment<Env>) {
-      std::make_heap(dijkstra_heap_.begin(), dijkstra_heap_.end(), Later{});
-    }
+    if constexpr (ZeroHeuristicEnvironment<Env>) dijkstra_list_.start();
     return expand(env, limits);
   }
 
@@ -319,35 +319,19 @@ class BestFirstSearchT {
             (static_cast<unsigned>(a.g == b.g) & static_cast<unsigned>(a.state < b.state)))));
     }
   };
-  /// The open-list entry of a ZeroHeuristicEnvironment (f == g).
-  struct DijkstraItem {
-    double g;
-    int state;
-    [[nodiscard]] int id() const { return state; }
-  };
-  /// std heap comparator of the Dijkstra list: true when `a` comes out after `b` (smaller g, then
-  /// smaller state first). A function object so that the heap algorithms inline it.
-  struct Later {
-    bool operator()(const DijkstraItem& a, const DijkstraItem& b) const {
-      if (a.g != b.g) return a.g > b.g;
-      return a.state > b.state;
-    }
-  };
   /// A*'s open-list entry: the packed one for exact octile costs.
   using AStarItem = std::conditional_t<std::is_same_v<Cost, OctileCost>, PackedOctileItem, HeapItem>;
   /// Removes and returns the first entry of a non-empty open list.
   static AStarItem pop_open(IndexedHeap<AStarItem>& heap) { return heap.pop(); }
-  static DijkstraItem pop_open(std::vector<DijkstraItem>& heap) {
-    std::pop_heap(heap.begin(), heap.end(), Later{});
-    const DijkstraItem top = heap.back();
-    heap.pop_back();
-    return top;
+  template <typename List>
+  static DijkstraItem pop_open(List& list) {
+    return list.pop();
   }
   /// The open list `Env`'s searches use.
   template <typename Env>
   auto& open_list() {
     if constexpr (ZeroHeuristicEnvironment<Env>) {
-      return dijkstra_heap_;
+      return dijkstra_list_;
     } else {
       return heap_;
     }
@@ -370,8 +354,7 @@ class BestFirstSearchT {
   template <typename Env>
   void open(const Env& env, int state, Cost g, bool reached) {
     if constexpr (ZeroHeuristicEnvironment<Env>) {
-      dijkstra_heap_.push_back(open_item(env, state, g));
-      std::push_heap(dijkstra_heap_.begin(), dijkstra_heap_.end(), Later{});
+      dijkstra_list_.push(open_item(env, state, g));
     } else if (reached) {
       if constexpr (std::is_same_v<Cost, OctileCost>) {
         // A state reached in this pass and not settled has its entry on the list, and a cheaper
@@ -444,7 +427,7 @@ class BestFirstSearchT {
     ++run_;
     ++pass_;
     reopened_ = false;
-    dijkstra_heap_.clear();
+    dijkstra_list_.clear();
     if constexpr (ZeroHeuristicEnvironment<Env>) {
       heap_.clear();
     } else {
@@ -459,7 +442,8 @@ class BestFirstSearchT {
   /// True from reopen() to the next run: reached states need not be on the open list.
   bool reopened_ = false;
   IndexedHeap<AStarItem> heap_;
-  std::vector<DijkstraItem> dijkstra_heap_;
+  /// The Dijkstra list: buckets for exact octile costs (every step at least one cell long).
+  std::conditional_t<std::is_same_v<Cost, OctileCost>, DijkstraBuckets, DijkstraHeap> dijkstra_list_;
 };
 
 /// The search over double costs (planners, geodesic regions).

@@ -1,0 +1,153 @@
+#pragma once
+/// @file dijkstra_list.hpp
+/// The open lists of BestFirstSearchT's Dijkstra runs (grid_search.hpp, a zero heuristic): both
+/// take a duplicate entry when a state's cost drops (the search skips stale entries when popped)
+/// and pop the entries in the order of (g, state), smaller first. That order is total (a state is
+/// opened again only at a strictly lower g), so the two lists pop the same sequence and a run is
+/// the same whichever the search uses.
+///
+/// - DijkstraHeap: a binary heap (std::push_heap / pop_heap), for any costs >= 0.
+/// - DijkstraBuckets: for costs counted in cells with every edge at least one cell long (OctileCost:
+///   1 or sqrt(2) a step). Entries go to bucket floor(g); an edge of at least one cell takes an
+///   entry popped from bucket k to bucket k + 1 or later, so a bucket is complete when the search
+///   reaches it, and sorting it then gives the exact order. A push costs an append instead of a
+///   sift, a pop a read instead of a sift down; each entry is sorted once among the few of its
+///   bucket (the search's wave front one cell wide). An entry below the bucket being popped (a
+///   zero-cost edge, or a seed after the first pop) is still put in its place, by a sorted
+///   insertion or by taking its bucket as the one to pop.
+///   Against the heap, side by side: a distance field over den312d 0.75-0.85x the time, the
+///   Manhattan class's [0, 3]^4 weight search with a coverage target 0.84-0.89x.
+///
+/// Memory: DijkstraBuckets keeps one vector per cell of the largest g reached (24 bytes each,
+/// plus the entries' 16), their capacities reused by the next run.
+
+#include <algorithm>
+#include <cstddef>
+#include <vector>
+
+namespace fsweep {
+inline namespace search {
+
+/// An open-list entry of a Dijkstra run: the cost so far (as cost_value(), cells for the grid
+/// searches) and the state.
+struct DijkstraItem {
+  double g;
+  int state;
+  [[nodiscard]] int id() const { return state; }
+  /// The pop order: smaller g, then smaller state.
+  friend bool operator<(const DijkstraItem& a, const DijkstraItem& b) {
+    return a.g < b.g || (a.g == b.g && a.state < b.state);
+  }
+};
+
+/// The binary-heap list.
+class DijkstraHeap {
+ public:
+  void clear() { heap_.clear(); }
+  [[nodiscard]] bool empty() const { return heap_.empty(); }
+  /// Adds an entry before start(), unordered.
+  void add(const DijkstraItem& item) { heap_.push_back(item); }
+  /// Orders the entries add() gave.
+  void start() { std::make_heap(heap_.begin(), heap_.end(), Later{}); }
+  void push(const DijkstraItem& item) {
+    heap_.push_back(item);
+    std::push_heap(heap_.begin(), heap_.end(), Later{});
+  }
+  /// Removes and returns the first entry; the list must not be empty.
+  DijkstraItem pop() {
+    std::pop_heap(heap_.begin(), heap_.end(), Later{});
+    const DijkstraItem top = heap_.back();
+    heap_.pop_back();
+    return top;
+  }
+
+ private:
+  /// The std heap comparator: true when `a` comes out after `b`. A function object so that the
+  /// heap algorithms inline it.
+  struct Later {
+    bool operator()(const DijkstraItem& a, const DijkstraItem& b) const { return b < a; }
+  };
+  std::vector<DijkstraItem> heap_;
+};
+
+/// The bucket list (costs in cells, edges of at least one cell; see the file comment).
+class DijkstraBuckets {
+ public:
+  /// Empties the list, in time proportional to the buckets the last run used.
+  void clear() {
+    for (std::size_t b = low_; b < high_; ++b) buckets_[b].clear();
+    low_ = 0;
+    high_ = 0;
+    current_ = 0;
+    next_ = 0;
+    sorted_ = false;
+    size_ = 0;
+  }
+  [[nodiscard]] bool empty() const { return size_ == 0; }
+  void add(const DijkstraItem& item) { push(item); }
+  void start() {}
+  void push(const DijkstraItem& item) {
+    const std::size_t b = bucket_of(item.g);
+    if (b > current_ && b < buckets_.size() && size_ != 0) {  // the usual case: a bucket ahead
+      buckets_[b].push_back(item);
+      high_ = std::max(high_, b + 1);
+      ++size_;
+      return;
+    }
+    push_elsewhere(item, b);
+  }
+  /// Removes and returns the first entry; the list must not be empty.
+  DijkstraItem pop() {
+    while (next_ == buckets_[current_].size()) {  // this bucket is done: on to the next one
+      buckets_[current_].clear();
+      ++current_;
+      next_ = 0;
+      sorted_ = false;
+    }
+    std::vector<DijkstraItem>& bucket = buckets_[current_];
+    if (!sorted_) {
+      std::sort(bucket.begin() + static_cast<std::ptrdiff_t>(next_), bucket.end());
+      sorted_ = true;
+    }
+    --size_;
+    return bucket[next_++];
+  }
+
+ private:
+  static std::size_t bucket_of(double g) { return static_cast<std::size_t>(g); }
+
+  /// push() of an entry into bucket `b` when it is not one ahead of the current bucket.
+  void push_elsewhere(const DijkstraItem& item, std::size_t b) {
+    if (b >= buckets_.size()) buckets_.resize(b + 1);
+    if (size_ == 0 || b < current_) {
+      // The first entry, or one below the bucket being popped: its bucket is popped next, and
+      // the rest of the current one (its popped entries dropped) waits unsorted.
+      std::vector<DijkstraItem>& current = buckets_[current_];
+      current.erase(current.begin(), current.begin() + static_cast<std::ptrdiff_t>(next_));
+      current_ = b;
+      next_ = 0;
+      sorted_ = false;
+    }
+    std::vector<DijkstraItem>& bucket = buckets_[b];
+    if (b == current_ && sorted_) {  // into the sorted rest, at its place
+      bucket.insert(std::upper_bound(bucket.begin() + static_cast<std::ptrdiff_t>(next_), bucket.end(), item),
+                    item);
+    } else {
+      bucket.push_back(item);
+    }
+    low_ = size_ == 0 && high_ == 0 ? b : std::min(low_, b);
+    high_ = std::max(high_, b + 1);
+    ++size_;
+  }
+
+  std::vector<std::vector<DijkstraItem>> buckets_;
+  std::size_t low_ = 0;  ///< the buckets [low_, high_) may hold entries
+  std::size_t high_ = 0;
+  std::size_t current_ = 0;  ///< the bucket being popped: none below it holds an entry
+  std::size_t next_ = 0;     ///< its next entry to pop (those before it are popped)
+  bool sorted_ = false;      ///< its entries from next_ on are sorted
+  std::size_t size_ = 0;     ///< entries held
+};
+
+}  // namespace search
+}  // namespace fsweep
