@@ -16,10 +16,11 @@
 ///   zero-cost edge) or below it (a seed opened after the first pop) is still put in its place,
 ///   by a sorted insertion or by taking its bucket as the one to pop.
 ///   Against the heap, side by side: a Dijkstra over den312d 0.70-0.82x the time, the
-///   Manhattan class's [0, 3]^4 weight search with a coverage target 0.82-0.93x.
+///   Manhattan class's [0, 3]^4 weight search with a coverage target 0.82-0.93x; the same memory.
 ///
-/// Memory: DijkstraBuckets keeps one vector per cell of the largest g reached (24 bytes each,
-/// plus the entries' 16), their capacities reused by the next run.
+/// Memory: DijkstraBuckets keeps its buckets in a ring as long as the span of the costs it holds
+/// at once (three buckets for an octile search from one cell; wider for seeds of many costs), so
+/// it holds about as much as the heap would.
 
 #include <algorithm>
 #include <cstddef>
@@ -73,12 +74,11 @@ class DijkstraHeap {
 /// The bucket list (costs in cells, edges of at least one cell; see the file comment).
 class DijkstraBuckets {
  public:
-  /// Empties the list, in time proportional to the buckets the last run used.
+  /// Empties the list.
   void clear() {
-    for (std::size_t b = low_; b < high_; ++b) buckets_[b].clear();
-    low_ = 0;
-    high_ = 0;
+    for (std::vector<DijkstraItem>& bucket : ring_) bucket.clear();
     current_ = 0;
+    high_ = 0;
     next_ = 0;
     sorted_ = false;
     size_ = 0;
@@ -88,8 +88,8 @@ class DijkstraBuckets {
   void start() {}
   void push(const DijkstraItem& item) {
     const std::size_t b = bucket_of(item.g);
-    if (b > current_ && b < buckets_.size() && size_ != 0) {  // the usual case: a bucket ahead
-      buckets_[b].push_back(item);
+    if (b > current_ && b - current_ < ring_.size() && size_ != 0) {  // the usual case: a bucket ahead
+      at(b).push_back(item);
       high_ = std::max(high_, b + 1);
       ++size_;
       return;
@@ -98,13 +98,13 @@ class DijkstraBuckets {
   }
   /// Removes and returns the first entry; the list must not be empty.
   DijkstraItem pop() {
-    while (next_ == buckets_[current_].size()) {  // this bucket is done: on to the next one
-      buckets_[current_].clear();
+    while (next_ == at(current_).size()) {  // this bucket is done: on to the next one
+      at(current_).clear();
       ++current_;
       next_ = 0;
       sorted_ = false;
     }
-    std::vector<DijkstraItem>& bucket = buckets_[current_];
+    std::vector<DijkstraItem>& bucket = at(current_);
     if (!sorted_) {
       std::sort(bucket.begin() + static_cast<std::ptrdiff_t>(next_), bucket.end());
       sorted_ = true;
@@ -115,36 +115,58 @@ class DijkstraBuckets {
 
  private:
   static std::size_t bucket_of(double g) { return static_cast<std::size_t>(g); }
+  /// Bucket b (current_ <= b < current_ + ring size) in the ring.
+  std::vector<DijkstraItem>& at(std::size_t b) { return ring_[b & (ring_.size() - 1)]; }
 
   /// push() of an entry into bucket `b` when it is not one ahead of the current bucket.
   void push_elsewhere(const DijkstraItem& item, std::size_t b) {
-    if (b >= buckets_.size()) buckets_.resize(b + 1);
     if (size_ == 0 || b < current_) {
       // The first entry, or one below the bucket being popped: its bucket is popped next, and
       // the rest of the current one (its popped entries dropped) waits unsorted.
-      std::vector<DijkstraItem>& current = buckets_[current_];
-      current.erase(current.begin(), current.begin() + static_cast<std::ptrdiff_t>(next_));
+      if (!ring_.empty()) {
+        std::vector<DijkstraItem>& current = at(current_);
+        current.erase(current.begin(), current.begin() + static_cast<std::ptrdiff_t>(next_));
+      }
+      if (size_ == 0) high_ = b;
+      fit(b, std::max(high_, b + 1));
       current_ = b;
       next_ = 0;
       sorted_ = false;
+    } else {
+      fit(current_, std::max(high_, b + 1));
     }
-    std::vector<DijkstraItem>& bucket = buckets_[b];
+    std::vector<DijkstraItem>& bucket = at(b);
     if (b == current_ && sorted_) {  // into the sorted rest, at its place
       bucket.insert(std::upper_bound(bucket.begin() + static_cast<std::ptrdiff_t>(next_), bucket.end(), item),
                     item);
     } else {
       bucket.push_back(item);
     }
-    low_ = size_ == 0 && high_ == 0 ? b : std::min(low_, b);
     high_ = std::max(high_, b + 1);
     ++size_;
   }
+  /// Grows the ring (doubling) until it holds the buckets [low, high), moving the buckets held
+  /// now ([current_, high_) when not empty) to their new places.
+  void fit(std::size_t low, std::size_t high) {
+    std::size_t n = ring_.empty() ? kFirstRing : ring_.size();
+    while (high - low > n) n *= 2;
+    if (n == ring_.size()) return;
+    std::vector<std::vector<DijkstraItem>> grown(n);
+    if (size_ != 0) {
+      for (std::size_t b = current_; b < high_; ++b) grown[b & (n - 1)] = std::move(at(b));
+    }
+    ring_ = std::move(grown);
+  }
 
-  std::vector<std::vector<DijkstraItem>> buckets_;
-  std::size_t low_ = 0;  ///< the buckets [low_, high_) may hold entries
-  std::size_t high_ = 0;
+  /// Buckets a new ring holds: the live entries of an octile search span three.
+  static constexpr std::size_t kFirstRing = 8;
+  /// The buckets [current_, high_) in a ring of a power of two size, bucket b at b mod size: the
+  /// capacities of the few buckets a search keeps at once are reused, so the memory follows the
+  /// wave front, not the cells reached.
+  std::vector<std::vector<DijkstraItem>> ring_;
   std::size_t current_ = 0;  ///< the bucket being popped: none below it holds an entry
-  std::size_t next_ = 0;     ///< its next entry to pop (those before it are popped)
+  std::size_t high_ = 0;     ///< past the last bucket that may hold an entry
+  std::size_t next_ = 0;     ///< the current bucket's next entry to pop (those before are popped)
   bool sorted_ = false;      ///< its entries from next_ on are sorted
   std::size_t size_ = 0;     ///< entries held
 };

@@ -574,16 +574,16 @@ bool Sensor::all_known(const KnownMap& known, Cell at, const std::uint8_t* obser
                         [state, observable](std::ptrdiff_t first, std::size_t count) {
                           const CellState* const row = state + first;
                           if (observable == nullptr) return std::memchr(row, 0, count) == nullptr;
-                          // Whether an unknown cell of the row is observable, over the whole row
-                          // without branches: a search for each unknown cell called memchr once
-                          // per cell of a building's inside.
-                          const std::uint8_t* const seen = observable + first;
-                          unsigned hidden = 0;
+                          // Whether the row holds an unknown cell some scan could see, over the
+                          // whole row without branches (a memchr for each unknown cell would run
+                          // once per cell of a building's inside).
+                          const std::uint8_t* const seeable = observable + first;
+                          unsigned unseen = 0;
                           for (std::size_t i = 0; i < count; ++i) {
-                            hidden |= static_cast<unsigned>(row[i] == CellState::Unknown) &
-                                      static_cast<unsigned>(seen[i] != 0);
+                            unseen |= static_cast<unsigned>(row[i] == CellState::Unknown) &
+                                      static_cast<unsigned>(seeable[i] != 0);
                           }
-                          return hidden == 0;
+                          return unseen == 0;
                         });
 }
 
