@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
+#include <random>
 
 #include "core/config_error.hpp"
 #include "world/energy_model.hpp"
@@ -42,6 +43,59 @@ TEST(EnergyModel, DiagonalStepIsSqrt2) {
   EXPECT_DOUBLE_EQ(c.length_m, 2 * kSqrt2);
   EXPECT_DOUBLE_EQ(c.energy, 2 * kSqrt2);
   EXPECT_EQ(c.turns, 0);
+}
+
+/// measure_path() one cell at a time, as it is defined: every step's heading against the one
+/// before, a stop and a turn wherever it changes.
+MotionCost measure_each_step(const std::vector<Cell>& path, int heading, const EnergyModel& energy,
+                             double resolution_m) {
+  MotionCost cost;
+  long straight = 0;
+  long diagonal = 0;
+  for (std::size_t i = 1; i < path.size(); ++i) {
+    const int h = heading_of(path[i].x - path[i - 1].x, path[i].y - path[i - 1].y);
+    const int change = heading_difference(h, heading);
+    if (change != 0) {
+      ++cost.stops;
+      ++cost.turns;
+      cost.turned_deg += 45.0 * change;
+      cost.energy += energy.turn(change);
+    }
+    ++((h & 1) != 0 ? diagonal : straight);
+    heading = h;
+  }
+  const double cells = static_cast<double>(straight) + static_cast<double>(diagonal) * kSqrt2;
+  cost.length_m = cells * resolution_m;
+  cost.energy += energy.travel(cells, resolution_m);
+  cost.final_heading = heading;
+  return cost;
+}
+
+TEST(EnergyModel, MeasurePathEqualsMeasuringEachStep) {
+  // Paths of runs of 1 to 5 equal steps in random headings (reversals and repeated headings
+  // included), from every start heading, with turns that cost differently for each angle.
+  EnergyModel energy = energy_preset("mei2006");
+  energy.per_turn = {0.11, 0.23, 0.37, 0.41};
+  std::mt19937 rng(7);
+  for (int trial = 0; trial < 200; ++trial) {
+    std::vector<Cell> path{{0, 0}};
+    const int runs = static_cast<int>(rng() % 12);
+    for (int r = 0; r < runs; ++r) {
+      const Cell d = kDirections[rng() % 8];
+      for (int k = 1 + static_cast<int>(rng() % 5); k > 0; --k) {
+        path.push_back(Cell{path.back().x + d.x, path.back().y + d.y});
+      }
+    }
+    const int start = trial % 8;
+    const MotionCost got = measure_path(path, start, energy, 0.25);
+    const MotionCost want = measure_each_step(path, start, energy, 0.25);
+    EXPECT_EQ(got.length_m, want.length_m) << "trial " << trial;
+    EXPECT_EQ(got.energy, want.energy) << "trial " << trial;
+    EXPECT_EQ(got.stops, want.stops) << "trial " << trial;
+    EXPECT_EQ(got.turns, want.turns) << "trial " << trial;
+    EXPECT_EQ(got.turned_deg, want.turned_deg) << "trial " << trial;
+    EXPECT_EQ(got.final_heading, want.final_heading) << "trial " << trial;
+  }
 }
 
 TEST(EnergyModel, Pioneer3dxUsesRappaportPowers) {
