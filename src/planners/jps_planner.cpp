@@ -255,10 +255,10 @@ SearchResult JpsPlanner::search(const KnownMap& known, const PlanRequest& reques
   // Start == goal settles the start as the goal (a one-cell path).
   if (request.allow_corner_cutting) {
     return jump_points::search_jumps(search_, JumpEnvironment<true>(known, request.goal, search_), known,
-                                     request.start, stop);
+                                     request, stop);
   }
   return jump_points::search_jumps(search_, JumpEnvironment<false>(known, request.goal, search_), known,
-                                   request.start, stop);
+                                   request, stop);
 }
 
 }  // namespace planners

@@ -320,11 +320,11 @@ SearchResult JpsPlusPlanner::search(const KnownMap& known, const PlanRequest& re
   if (request.allow_corner_cutting) {
     return jump_points::search_jumps(
         search_, jps_plus_detail::JumpTableEnvironment<true>(known, distances, request.goal, search_), known,
-        request.start, stop);
+        request, stop);
   }
   return jump_points::search_jumps(
       search_, jps_plus_detail::JumpTableEnvironment<false>(known, distances, request.goal, search_), known,
-      request.start, stop);
+      request, stop);
 }
 
 }  // namespace planners

@@ -13,6 +13,7 @@
 #include "search/grid_search.hpp"
 #include "world/grid.hpp"
 #include "world/known_map.hpp"
+#include "world/motion.hpp"
 
 namespace fsweep {
 inline namespace planners {
@@ -92,15 +93,19 @@ void pruned_directions(Cell at, std::optional<Cell> from, const IsFree& is_free,
   return cells;
 }
 
-/// One query's search over the jump point environment `env`: the filled-in cells from start to
-/// goal, or the failure.
+/// One query's search over the jump point environment `env`: the filled-in cells from
+/// `request`'s start to its goal and their motion cost (measured from the jump points), or the
+/// failure.
 template <typename Env>
-[[nodiscard]] SearchResult search_jumps(OctileSearch& search, Env env, const KnownMap& known, Cell start,
-                                        const StopCondition& stop) {
+[[nodiscard]] SearchResult search_jumps(OctileSearch& search, Env env, const KnownMap& known,
+                                        const PlanRequest& request, const StopCondition& stop) {
   SearchLimits limits;
   limits.stop = stop;
-  const SearchOutcome outcome = search.run(env, known.index(start), limits);
+  const SearchOutcome outcome = search.run(env, known.index(request.start), limits);
   SearchResult result = search_result(search, outcome, [&known](int s) { return known.cell(s); });
+  if (result.status != PlanStatus::Success) return result;
+  result.motion =
+      measure_jump_points(result.path, request.start_heading, request.energy, known.resolution_m());
   result.path = fill_segments(result.path);
   return result;
 }

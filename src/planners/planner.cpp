@@ -54,8 +54,9 @@ PlanResult Planner::plan(const KnownMap& known, const PlanRequest& request) {
         throw std::logic_error(name() + ": search returned a path that does not join start and goal");
       }
       result.path = std::move(found.path);
-      const MotionCost cost =
-          measure_path(result.path, request.start_heading, request.energy, known.resolution_m());
+      const MotionCost cost = found.motion ? *found.motion
+                                           : measure_path(result.path, request.start_heading, request.energy,
+                                                          known.resolution_m());
       result.length_m = cost.length_m;
       result.energy = cost.energy;
       result.stops = cost.stops;

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -14,6 +15,7 @@
 #include "world/energy_model.hpp"
 #include "world/grid.hpp"
 #include "world/known_map.hpp"
+#include "world/motion.hpp"
 
 namespace fsweep {
 inline namespace planners {
@@ -111,6 +113,10 @@ struct SearchResult {
   std::vector<Cell> path;
   /// Nodes expanded (grid and lattice planners) or validity checks made (sampling planners).
   long expansions = 0;
+  /// On Success, optionally: measure_path() of `path` from PlanRequest::start_heading under
+  /// PlanRequest::energy, which a planner that knows its path's runs (the jump points of `jps`
+  /// and `jps+`) works out without walking the cells; plan() measures the cells when unset.
+  std::optional<MotionCost> motion;
   /// The planner's progress properties, when PlanRequest::progress_interval_s asks for them.
   PlanProgress progress;
 };

@@ -1,42 +1,84 @@
 #include "world/motion.hpp"
 
+#include <algorithm>
+#include <cstdlib>
+
 namespace fsweep {
 inline namespace world {
+namespace {
+
+/// The motion totals of a path fed in order as runs of equal steps. A step equal to the one
+/// before changes no heading, so a run is worked out once, however many cells it has, and a
+/// path measures the same however its runs are cut. Steps are counted and the length computed
+/// once from the counts: exact (a + b sqrt(2) with one rounding), so paths of equal length
+/// measure equal whatever their order of steps.
+class MotionTally {
+ public:
+  MotionTally(int start_heading, const EnergyModel& energy) : energy_(energy), heading_(start_heading) {}
+
+  /// `steps` more steps of `step` (a step that is not to an 8-neighbour has heading -1).
+  void add_run(Cell step, long steps) {
+    const int h = heading_of(step.x, step.y);
+    const int change = heading_difference(h, heading_);
+    if (change != 0) {
+      ++cost_.stops;
+      ++cost_.turns;
+      cost_.turned_deg += 45.0 * change;
+      cost_.energy += energy_.turn(change);
+    }
+    ((h & 1) != 0 ? diagonal_ : straight_) += steps;
+    heading_ = h;
+  }
+
+  [[nodiscard]] MotionCost finish(double resolution_m) const {
+    MotionCost cost = cost_;
+    const double cells = static_cast<double>(straight_) + static_cast<double>(diagonal_) * kSqrt2;
+    cost.length_m = cells * resolution_m;
+    cost.energy += energy_.travel(cells, resolution_m);
+    cost.final_heading = heading_;
+    return cost;
+  }
+
+ private:
+  const EnergyModel& energy_;
+  MotionCost cost_;
+  int heading_;
+  long straight_ = 0;
+  long diagonal_ = 0;
+};
+
+[[nodiscard]] int sign_of(int v) { return (v > 0) - (v < 0); }
+
+}  // namespace
 
 MotionCost measure_path(std::span<const Cell> path, int start_heading, const EnergyModel& energy,
                         double resolution_m) {
-  MotionCost cost;
-  int heading = start_heading;
-  // Steps counted, the length computed once from the counts: exact (a + b sqrt(2) with one
-  // rounding), so paths of equal length measure equal whatever their order of steps. A path is
-  // mostly runs of one step: a step equal to the one before changes no heading and is only
-  // counted, so the heading is worked out once per run rather than once per cell.
-  long straight = 0;
-  long diagonal = 0;
-  Cell step{0, 0};  // never a step of a path from start_heading: the first one is worked out
-  long* counter = &straight;
-  for (std::size_t i = 1; i < path.size(); ++i) {
-    const Cell d{path[i].x - path[i - 1].x, path[i].y - path[i - 1].y};
-    if (d != step || i == 1) {
-      step = d;
-      const int h = heading_of(d.x, d.y);
-      const int change = heading_difference(h, heading);
-      if (change != 0) {
-        ++cost.stops;
-        ++cost.turns;
-        cost.turned_deg += 45.0 * change;
-        cost.energy += energy.turn(change);
-      }
-      counter = (h & 1) != 0 ? &diagonal : &straight;
-      heading = h;
-    }
-    ++*counter;
+  MotionTally tally(start_heading, energy);
+  const auto step = [&](std::size_t i) { return Cell{path[i].x - path[i - 1].x, path[i].y - path[i - 1].y}; };
+  for (std::size_t i = 1; i < path.size();) {
+    const Cell d = step(i);
+    std::size_t end = i + 1;
+    while (end < path.size() && step(end) == d) ++end;
+    tally.add_run(d, static_cast<long>(end - i));
+    i = end;
   }
-  const double cells = static_cast<double>(straight) + static_cast<double>(diagonal) * kSqrt2;
-  cost.length_m = cells * resolution_m;
-  cost.energy += energy.travel(cells, resolution_m);
-  cost.final_heading = heading;
-  return cost;
+  return tally.finish(resolution_m);
+}
+
+MotionCost measure_jump_points(std::span<const Cell> jump_points, int start_heading,
+                               const EnergyModel& energy, double resolution_m) {
+  MotionTally tally(start_heading, energy);
+  for (std::size_t i = 1; i < jump_points.size(); ++i) {
+    const int dx = jump_points[i].x - jump_points[i - 1].x;
+    const int dy = jump_points[i].y - jump_points[i - 1].y;
+    const int across = std::abs(dx);
+    const int along = std::abs(dy);
+    const int diagonal = std::min(across, along);
+    const int straight = std::max(across, along) - diagonal;
+    if (diagonal > 0) tally.add_run(Cell{sign_of(dx), sign_of(dy)}, diagonal);
+    if (straight > 0) tally.add_run(across > along ? Cell{sign_of(dx), 0} : Cell{0, sign_of(dy)}, straight);
+  }
+  return tally.finish(resolution_m);
 }
 
 }  // namespace world

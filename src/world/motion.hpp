@@ -29,5 +29,11 @@ struct MotionCost {
 [[nodiscard]] MotionCost measure_path(std::span<const Cell> path, int start_heading,
                                       const EnergyModel& energy, double resolution_m);
 
+/// measure_path() of the cells that join `jump_points`, each consecutive pair by a diagonal run
+/// and then a straight one (as the planners' jump_points::fill_segments() fills a JPS path),
+/// worked out from the jump points alone: the same totals, without walking the cells.
+[[nodiscard]] MotionCost measure_jump_points(std::span<const Cell> jump_points, int start_heading,
+                                             const EnergyModel& energy, double resolution_m);
+
 }  // namespace world
 }  // namespace fsweep

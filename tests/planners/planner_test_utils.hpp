@@ -15,6 +15,7 @@
 #include "planners/planner.hpp"
 #include "search/octile_grid.hpp"
 #include "world/known_map.hpp"
+#include "world/motion.hpp"
 
 namespace fsweep::testing {
 
@@ -93,6 +94,14 @@ inline void expect_valid_path(const KnownMap& known, const PlanRequest& request,
         << ") is not an allowed 8-connected move";
   }
   EXPECT_NEAR(result.length_m, chain_length_cells(result.path) * known.resolution_m(), 1e-9);
+  // The motion totals are those of the cells returned, exactly, also where a planner works
+  // them out from its path's runs (SearchResult::motion).
+  const MotionCost cells =
+      measure_path(result.path, request.start_heading, request.energy, known.resolution_m());
+  EXPECT_EQ(result.length_m, cells.length_m);
+  EXPECT_EQ(result.energy, cells.energy);
+  EXPECT_EQ(result.stops, cells.stops);
+  EXPECT_EQ(result.turns, cells.turns);
 }
 
 /// A query from `start` to `goal` with the default energy model and start heading.

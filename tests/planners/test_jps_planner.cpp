@@ -16,6 +16,7 @@
 #include "planners/grid_planner.hpp"
 #include "planners/jps_planner.hpp"
 #include "planners/registry.hpp"
+#include "world/energy_model.hpp"
 #include "world/known_map.hpp"
 #include "world/map_loaders.hpp"
 
@@ -157,7 +158,10 @@ TEST(JpsPlanner, RandomMapsMatchAStar) {
         Cell goal = q % 3 == 0 ? random_cell_by_wall(known, rng) : testing::random_free_cell(known, rng);
         if (q % 20 == 7) goal = start;
         for (const bool cut : {false, true}) {
-          const PlanRequest req = request_for(start, goal, cut);
+          PlanRequest req = request_for(start, goal, cut);
+          // Every start heading, and turns that cost (expect_valid_path checks the totals).
+          req.start_heading = q % 8;
+          req.energy = energy_preset("mei2006");
           const std::string what =
               "density " + std::to_string(density) + " seed " + std::to_string(seed) + " " + query_text(req);
           const PlanStatus status = expect_same_as_astar(jps, *astar, known, req, what);

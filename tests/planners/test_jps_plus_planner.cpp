@@ -16,6 +16,7 @@
 #include "planners/grid_planner.hpp"
 #include "planners/jps_plus_planner.hpp"
 #include "planners/registry.hpp"
+#include "world/energy_model.hpp"
 #include "world/known_map.hpp"
 #include "world/map_loaders.hpp"
 
@@ -72,9 +73,13 @@ TEST(JpsPlusPlanner, ScenarioQueriesMatchAStarWithOneTablePerCornerRule) {
     const std::vector<ScenarioQuery> queries = load_scenario(data + scen_file);
     ASSERT_GT(queries.size(), 100U) << scen_file;
     JpsPlusPlanner jps_plus;
+    int k = 0;
     for (const ScenarioQuery& q : queries) {
       for (const bool cut : {false, true}) {
-        const PlanRequest req = request_for(q.start, q.goal, cut);
+        PlanRequest req = request_for(q.start, q.goal, cut);
+        // Every start heading, and turns that cost (expect_valid_path checks the totals).
+        req.start_heading = k++ % 8;
+        req.energy = energy_preset("mei2006");
         (void)expect_astar_answer(jps_plus, *astar, known, req, scen_file);
         if (cut || q.optimal_length <= 0.0) continue;
         EXPECT_NEAR(jps_plus.plan(known, req).length_m, q.optimal_length, 1e-5 * q.optimal_length)
