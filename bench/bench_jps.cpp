@@ -17,8 +17,10 @@
 /// - `BM_TextbookJpsPlanned/<map>`: the yardstick behind the Planner interface
 ///   (TextbookJpsPlanner below): Planner::plan()'s endpoint checks, clock reads and motion accounting
 ///   (measure_path over every cell), and the path's every cell written, as `jps` returns it. Against
-///   `BM_ScenarioQuery/jps/<map>` it compares the searches alone, the interface being the same code;
-///   `BM_TextbookJpsPlanned` minus `BM_TextbookJps` is that interface's cost per query set.
+///   `BM_ScenarioQuery/jps/<map>` it compares the searches and the paths they return, the interface
+///   being the same code but for the motion totals, which `jps` works out from its jump points
+///   (SearchResult::motion); `BM_TextbookJpsPlanned` minus `BM_TextbookJps` is the interface's cost
+///   per query set.
 /// - `BM_OpenJps/jps`, `BM_OpenJps/textbook`, `BM_OpenJps/textbook_planned`: `jps` through
 ///   make_planner("jps") and plan() (as BM_ScenarioQuery calls it), the yardstick's search alone, and
 ///   the yardstick through plan(), on an open 1,024 x 1,024 map generated from a fixed seed
@@ -36,10 +38,11 @@
 /// How the yardstick differs from `jps` (both expand the same jump points, in the same order by
 /// design; the check compares their numbers per query):
 /// - `jps` runs inside Planner::plan() (endpoint checks, a clock read before and after, the
-///   StopCondition checked before every expansion, measure_path's motion accounting over every
-///   cell) and returns every path cell (search_result() writes the jump points, fill_segments() the
-///   cells between them into a second vector); BM_TextbookJps does none of it, BM_TextbookJpsPlanned
-///   all of it but the stop condition;
+///   StopCondition checked before every expansion, the motion accounting, which `jps` works out
+///   from its jump points with measure_jump_points()) and returns every path cell (search_result()
+///   writes the jump points, fill_segments() the cells between them into a second vector);
+///   BM_TextbookJps does none of it, BM_TextbookJpsPlanned all of it but the stop condition, its
+///   motion accounting by measure_path() over every cell;
 /// - `jps` scans KnownMap's bit rows and columns, which follow every revealed cell (a guard word
 ///   at each end of a line and a guard line beyond each edge, so no read is bounds-checked); the
 ///   yardstick owns a padded static copy of its own;
