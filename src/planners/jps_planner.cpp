@@ -18,8 +18,6 @@ struct Step {
   int dy = 0;
 };
 
-using jump_points::sign_of;
-
 /// Search environment of one JPS query (the BestFirstSearch contract of grid_search.hpp): states
 /// are cell indices, but only jump points are ever opened; a successor is the jump point found
 /// from a state in one of its pruned directions, at the octile length of the segment between

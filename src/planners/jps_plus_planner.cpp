@@ -33,8 +33,6 @@ static_assert(kDirections[kSouthEast].x == 1 && kDirections[kSouthEast].y == 1 &
 /// Longest distance a table entry holds (see extend()).
 constexpr int kMaxDistance = std::numeric_limits<std::int16_t>::max();
 
-using jump_points::sign_of;
-
 /// The heading (grid.hpp) of the unit step (dx, dy), each in -1..1, not both 0.
 constexpr int heading_index(int dx, int dy) {
   constexpr std::array<int, 9> kByStep{kNorthWest, kNorth,     kNorthEast, kWest,     -1,

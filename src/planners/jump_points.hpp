@@ -19,8 +19,6 @@ namespace fsweep {
 inline namespace planners {
 namespace jump_points {
 
-constexpr int sign_of(int v) { return (v > 0) - (v < 0); }
-
 /// Calls add(dx, dy) for each direction a jump point search follows from `at`, reached from
 /// `from` (nullopt: the start, every direction in grid.hpp's order). After a straight move:
 /// ahead, and the forced neighbours on each side; after a diagonal one: ahead, its two straight
@@ -64,7 +62,7 @@ void pruned_directions(Cell at, std::optional<Cell> from, const IsFree& is_free,
 }
 
 /// Every cell of a chain of jump points, each consecutive pair on one straight or diagonal line,
-/// or joined by a diagonal run and then a straight one (filled in that order).
+/// or joined by a diagonal run and then a straight one (for_each_jump_run(), world/motion.hpp).
 [[nodiscard]] inline std::vector<Cell> fill_segments(const std::vector<Cell>& jump_points) {
   std::vector<Cell> cells;
   if (jump_points.empty()) return cells;
@@ -76,20 +74,10 @@ void pruned_directions(Cell at, std::optional<Cell> from, const IsFree& is_free,
   }
   cells.reserve(count);
   cells.push_back(jump_points.front());
-  for (std::size_t i = 1; i < jump_points.size(); ++i) {
-    const Cell from = cells.back();
-    const Cell to = jump_points[i];
-    const int across = std::abs(to.x - from.x);
-    const int along = std::abs(to.y - from.y);
-    const Cell diagonal{sign_of(to.x - from.x), sign_of(to.y - from.y)};
-    const Cell straight = across > along ? Cell{diagonal.x, 0} : Cell{0, diagonal.y};
-    Cell c = from;
-    for (int k = std::min(across, along); k > 0; --k)
-      cells.push_back(c = Cell{c.x + diagonal.x, c.y + diagonal.y});
-    for (int k = std::max(across, along) - std::min(across, along); k > 0; --k) {
-      cells.push_back(c = Cell{c.x + straight.x, c.y + straight.y});
-    }
-  }
+  for_each_jump_run(jump_points, [&cells](Cell step, int steps) {
+    Cell c = cells.back();
+    for (int k = steps; k > 0; --k) cells.push_back(c = Cell{c.x + step.x, c.y + step.y});
+  });
   return cells;
 }
 

@@ -491,8 +491,8 @@ class BoxWatch final : public RepresentativeWatch {
 }  // namespace
 
 bool octile_path_known_free(const KnownMap& known, Cell from, Cell to) {
-  const int sx = to.x > from.x ? 1 : (to.x < from.x ? -1 : 0);
-  const int sy = to.y > from.y ? 1 : (to.y < from.y ? -1 : 0);
+  const int sx = sign_of(to.x - from.x);
+  const int sy = sign_of(to.y - from.y);
   const int ax = std::abs(to.x - from.x);
   const int ay = std::abs(to.y - from.y);
   const int diagonal_steps = std::min(ax, ay);

@@ -56,6 +56,9 @@ constexpr int heading_difference(int a, int b) {
   return d > 4 ? 8 - d : d;
 }
 
+/// -1, 0 or 1: the sign of v.
+constexpr int sign_of(int v) { return (v > 0) - (v < 0); }
+
 /// Angle of heading h in radians, measured clockwise on screen from +x (= atan2(dy, dx)).
 inline double heading_angle(int heading) { return heading * (M_PI / 4.0); }
 

@@ -1,8 +1,5 @@
 #include "world/motion.hpp"
 
-#include <algorithm>
-#include <cstdlib>
-
 namespace fsweep {
 inline namespace world {
 namespace {
@@ -47,8 +44,6 @@ class MotionTally {
   long diagonal_ = 0;
 };
 
-[[nodiscard]] int sign_of(int v) { return (v > 0) - (v < 0); }
-
 }  // namespace
 
 MotionCost measure_path(std::span<const Cell> path, int start_heading, const EnergyModel& energy,
@@ -68,16 +63,7 @@ MotionCost measure_path(std::span<const Cell> path, int start_heading, const Ene
 MotionCost measure_jump_points(std::span<const Cell> jump_points, int start_heading,
                                const EnergyModel& energy, double resolution_m) {
   MotionTally tally(start_heading, energy);
-  for (std::size_t i = 1; i < jump_points.size(); ++i) {
-    const int dx = jump_points[i].x - jump_points[i - 1].x;
-    const int dy = jump_points[i].y - jump_points[i - 1].y;
-    const int across = std::abs(dx);
-    const int along = std::abs(dy);
-    const int diagonal = std::min(across, along);
-    const int straight = std::max(across, along) - diagonal;
-    if (diagonal > 0) tally.add_run(Cell{sign_of(dx), sign_of(dy)}, diagonal);
-    if (straight > 0) tally.add_run(across > along ? Cell{sign_of(dx), 0} : Cell{0, sign_of(dy)}, straight);
-  }
+  for_each_jump_run(jump_points, [&tally](Cell step, int steps) { tally.add_run(step, steps); });
   return tally.finish(resolution_m);
 }
 

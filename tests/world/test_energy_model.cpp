@@ -71,6 +71,16 @@ MotionCost measure_each_step(const std::vector<Cell>& path, int heading, const E
   return cost;
 }
 
+/// Every total of `got` equals `want`'s, exactly.
+void expect_same_motion(const MotionCost& got, const MotionCost& want, int trial) {
+  EXPECT_EQ(got.length_m, want.length_m) << "trial " << trial;
+  EXPECT_EQ(got.energy, want.energy) << "trial " << trial;
+  EXPECT_EQ(got.stops, want.stops) << "trial " << trial;
+  EXPECT_EQ(got.turns, want.turns) << "trial " << trial;
+  EXPECT_EQ(got.turned_deg, want.turned_deg) << "trial " << trial;
+  EXPECT_EQ(got.final_heading, want.final_heading) << "trial " << trial;
+}
+
 TEST(EnergyModel, MeasurePathEqualsMeasuringEachStep) {
   // Paths of runs of 1 to 5 equal steps in random headings (reversals and repeated headings
   // included), from every start heading, with turns that cost differently for each angle.
@@ -89,12 +99,35 @@ TEST(EnergyModel, MeasurePathEqualsMeasuringEachStep) {
     const int start = trial % 8;
     const MotionCost got = measure_path(path, start, energy, 0.25);
     const MotionCost want = measure_each_step(path, start, energy, 0.25);
-    EXPECT_EQ(got.length_m, want.length_m) << "trial " << trial;
-    EXPECT_EQ(got.energy, want.energy) << "trial " << trial;
-    EXPECT_EQ(got.stops, want.stops) << "trial " << trial;
-    EXPECT_EQ(got.turns, want.turns) << "trial " << trial;
-    EXPECT_EQ(got.turned_deg, want.turned_deg) << "trial " << trial;
-    EXPECT_EQ(got.final_heading, want.final_heading) << "trial " << trial;
+    expect_same_motion(got, want, trial);
+  }
+}
+
+TEST(EnergyModel, MeasureJumpPointsEqualsMeasuringTheirCells) {
+  // Chains of jump points at random offsets (straight, diagonal, both, repeated points), their
+  // cells filled here by the rule (a diagonal run, then a straight one) and measured one by one.
+  EnergyModel energy = energy_preset("mei2006");
+  energy.per_turn = {0.11, 0.23, 0.37, 0.41};
+  std::mt19937 rng(11);
+  const auto offset = [&rng] { return static_cast<int>(rng() % 9) - 4; };
+  for (int trial = 0; trial < 300; ++trial) {
+    std::vector<Cell> jump_points{{0, 0}};
+    for (int k = static_cast<int>(rng() % 8); k > 0; --k) {
+      const Cell last = jump_points.back();
+      jump_points.push_back(trial % 5 == 0 ? last : Cell{last.x + offset(), last.y + offset()});
+    }
+    std::vector<Cell> cells{jump_points.front()};
+    for (std::size_t i = 1; i < jump_points.size(); ++i) {
+      Cell c = cells.back();
+      const Cell to = jump_points[i];
+      while (c.x != to.x && c.y != to.y)
+        cells.push_back(c = Cell{c.x + sign_of(to.x - c.x), c.y + sign_of(to.y - c.y)});
+      while (c != to) cells.push_back(c = Cell{c.x + sign_of(to.x - c.x), c.y + sign_of(to.y - c.y)});
+    }
+    const int start = trial % 8;
+    const MotionCost got = measure_jump_points(jump_points, start, energy, 0.5);
+    const MotionCost want = measure_each_step(cells, start, energy, 0.5);
+    expect_same_motion(got, want, trial);
   }
 }
 
