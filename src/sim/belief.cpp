@@ -24,10 +24,27 @@ int Belief::sense(Sensor& sensor, const RunSetup& setup, Cell at, int heading, C
   keep_margin(setup, revealed);
   dock_field_.take_in(known_, revealed, dock, setup.allow_corner_cutting());
   for (const int i : revealed) {
-    if (known_.is_free(i) && setup.reachable[i] != 0) ++known_reachable_;
+    if (known_.is_free(i) && setup.reachable[i] != 0) {
+      ++known_reachable_;
+      if (reveal_ != nullptr) {
+        --unknown_by_bin_[static_cast<std::size_t>(reveal_->bin[static_cast<std::size_t>(i)])];
+      }
+    }
     if (setup.observable[i] != 0) ++known_observable_;
   }
   return static_cast<int>(revealed.size());
+}
+
+std::span<const int> Belief::unknown_by_bin(const RevealGeometry& reveal) const {
+  if (reveal_ == nullptr) {
+    reveal_ = &reveal;
+    unknown_by_bin_.assign(static_cast<std::size_t>(reveal.bins), 0);
+    for (int i = 0; i < known_.size(); ++i) {
+      const std::int32_t bin = reveal.bin[static_cast<std::size_t>(i)];
+      if (bin >= 0 && !known_.is_free(i)) ++unknown_by_bin_[static_cast<std::size_t>(bin)];
+    }
+  }
+  return unknown_by_bin_;
 }
 
 const std::vector<FrontierCluster>& Belief::clusters() {

@@ -59,12 +59,18 @@ class Belief {
   [[nodiscard]] double coverage(const RunSetup& setup) const;
   /// Known observable cells / observable cells of `setup` (1 when there are none).
   [[nodiscard]] double completeness(const RunSetup& setup) const;
-  /// Reachable free cells still unknown.
   /// Known free cells reachable from the start (the numerator of coverage()).
   [[nodiscard]] int known_reachable() const { return known_reachable_; }
+  /// Reachable free cells still unknown.
   [[nodiscard]] int unknown_reachable(const RunSetup& setup) const {
     return setup.reachable_count - known_reachable_;
   }
+
+  /// The reachable cells not yet known free, counted per bin of `reveal` (RevealGeometry::bin),
+  /// for the coverage target's bound: counted on the first call, then kept up to date by every
+  /// scan (here and in copies). `reveal` must be the same on every call. The first call writes
+  /// the counts: not to be made from two threads at once on one Belief.
+  [[nodiscard]] std::span<const int> unknown_by_bin(const RevealGeometry& reveal) const;
 
  private:
   KnownMap known_;
@@ -82,6 +88,9 @@ class Belief {
   std::vector<std::uint8_t> dropped_;
   int known_reachable_ = 0;
   int known_observable_ = 0;
+  /// unknown_by_bin(): the geometry counted by (null before the first call) and the counts.
+  mutable const RevealGeometry* reveal_ = nullptr;
+  mutable std::vector<int> unknown_by_bin_;
 };
 
 }  // namespace sim

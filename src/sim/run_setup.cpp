@@ -89,6 +89,11 @@ RunSetup::RunSetup(const RunSpec& run_spec) : spec(run_spec) {
   max_steps = spec.sim.max_steps > 0 ? spec.sim.max_steps : 100L * reachable_count + 1000L;
 }
 
+const RevealGeometry& RunSetup::reveal(Cell dock) const {
+  std::call_once(reveal_->once, [&] { reveal_->geometry = reveal_geometry(*this, dock); });
+  return reveal_->geometry;
+}
+
 std::optional<Cell> stop_cell_of(const RunSetup& setup) {
   if (!setup.spec.sim.stop_at_random) return setup.spec.sim.stop_at_cell;
   return draw_random_target(setup.reachable, setup.map().start, setup.spec.seed, "sim/stop_at_cell");

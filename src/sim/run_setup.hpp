@@ -5,10 +5,13 @@
 /// one RunSetup through std::shared_ptr<const RunSetup>, so a fork copies none of it.
 
 #include <cstdint>
+#include <memory>
+#include <mutex>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 
+#include "sim/reveal_bound.hpp"
 #include "sim/run_spec.hpp"
 #include "world/grid.hpp"
 #include "world/world_map.hpp"
@@ -63,6 +66,19 @@ struct RunSetup {
   long max_steps = 0;
   /// SimParams::stop_at_cell, resolved ("random" drawn); empty without one.
   std::optional<Cell> stop_cell;
+
+  /// The geometry of the coverage target's look-ahead bound (reveal_bound.hpp) for a robot docked
+  /// at `dock` (the run's dock, the same on every call): built on the first call, which only the
+  /// weight search and its check make (it costs about a sixth of a run on street grids), and
+  /// shared by the run and its forks. Thread-safe.
+  [[nodiscard]] const RevealGeometry& reveal(Cell dock) const;
+
+ private:
+  struct LazyReveal {
+    std::once_flag once;
+    RevealGeometry geometry;
+  };
+  std::shared_ptr<LazyReveal> reveal_ = std::make_shared<LazyReveal>();
 };
 
 /// SimParams::stop_at_cell of `setup.spec`, with "random" drawn as resolve_random_target() draws

@@ -438,17 +438,36 @@ double Simulation::coverage_target_bound_m() const {
   const RunMetrics& m = recorder_.metrics();
   if (m.distance_to_coverage_target_m) return *m.distance_to_coverage_target_m;
   if (recorder_.ended()) return m.distance_m;
-  // Every cell a later scan reveals has its centre within the sensor range of the centre of a
-  // cell the robot stands on from now on, so its whole square lies within R = range + res / sqrt(2)
-  // of the path it travels from here. That path's R-neighbourhood has area at most
-  // pi R^2 + 2 R d for a path of length d, and holds the revealed cells' disjoint squares.
+  // reveal_bound.hpp: the tube around the path still to travel must hold the cells still
+  // needed, and the battery brings the robot back to the dock between trips to the far ones.
   const RunSetup& setup = *setup_;
-  const double needed = setup.spec.sim.stop_at_coverage * static_cast<double>(setup.reachable_count) -
-                        static_cast<double>(belief_.known_reachable());
-  const double res = setup.resolution_m;
-  const double reach = setup.spec.robot.sensor.range_m + res * std::sqrt(0.5);
-  const double area = needed * res * res - std::numbers::pi * reach * reach;
-  return m.distance_m + std::max(0.0, area / (2.0 * reach));
+  if (!(setup.spec.sim.stop_at_coverage > 0.0)) return m.distance_m;  // no target: nothing is needed
+  TargetBound& cached = target_bound_;
+  if (cached.distance_m == m.distance_m && cached.battery == robot_.battery.level() &&
+      cached.known_reachable == belief_.known_reachable() && cached.robot == robot_.position) {
+    return cached.value;
+  }
+  const RevealGeometry& reveal = setup.reveal(robot_.dock);
+  RevealState s;
+  s.needed_cells = setup.spec.sim.stop_at_coverage * static_cast<double>(setup.reachable_count) -
+                   static_cast<double>(belief_.known_reachable());
+  s.cell_area_m2 = setup.resolution_m * setup.resolution_m;
+  s.reach_m = setup.spec.robot.sensor.range_m + setup.resolution_m * std::sqrt(0.5);
+  s.dock_m = reveal.dock_m[static_cast<std::size_t>(setup.reachable.index(robot_.position))];
+  s.bin_m = reveal.bin_m;
+  s.first_charge_m = s.charge_m = std::numeric_limits<double>::infinity();
+  const Battery& battery = robot_.battery;
+  if (!battery.unlimited()) {
+    // Battery::draw lets one draw overrun the charge by 1e-9 of the capacity; every metre costs
+    // at least the straight-travel energy (turns cost >= 0).
+    const double per_metre = setup.spec.robot.energy.travel_per_cell(setup.resolution_m) / setup.resolution_m;
+    const double slack = 1e-9 * battery.capacity();
+    s.first_charge_m = (battery.level() + slack) / per_metre * (1.0 + 1e-9);
+    s.charge_m = (battery.capacity() + slack) / per_metre * (1.0 + 1e-9);
+  }
+  cached = TargetBound{m.distance_m, robot_.battery.level(), belief_.known_reachable(), robot_.position,
+                       m.distance_m + travel_to_reveal_m(s, belief_.unknown_by_bin(reveal))};
+  return cached.value;
 }
 
 RunResult Simulation::result() const& { return completed(recorder_.result()); }

@@ -123,9 +123,11 @@ class Simulation {
   /// With a coverage target (SimParams::stop_at_coverage), a lower bound of the distance at
   /// which this run reaches it, for the weight search's branch and bound: the distance then
   /// once reached; distance_m once ended without reaching it (it never will: any value
-  /// bounds it); else distance_m plus the travel that can reveal the cells still needed, with
-  /// every revealed cell's square within R = range + res / sqrt(2) of the path and a path of
-  /// length d passing within R of at most (pi R^2 + 2 R d) / res^2 cells.
+  /// bounds it); else distance_m plus the travel that can reveal the cells still needed from
+  /// where the robot stands with what its battery holds (travel_to_reveal_m(), reveal_bound.hpp).
+  /// The first call builds the map's RevealGeometry (RunSetup::reveal) and counts the unknown
+  /// cells by it; the last value is kept for the state it was taken in. Unlike the other const
+  /// calls it writes those caches: not to be called from two threads at once on one Simulation.
   [[nodiscard]] double coverage_target_bound_m() const;
   /// The result so far (final once ended()).
   [[nodiscard]] RunResult result() const&;
@@ -189,6 +191,16 @@ class Simulation {
   DistanceScratch scratch_;
   /// What the last choice() found, until the next step.
   std::optional<PendingChoice> pending_;
+  /// coverage_target_bound_m()'s last value and the state it was for (the branch and bound asks
+  /// for the bound of every run of a branch at each of its decisions, and most did not move).
+  struct TargetBound {
+    double distance_m = -1.0;
+    double battery = 0.0;
+    int known_reachable = -1;
+    Cell robot{};
+    double value = 0.0;
+  };
+  mutable TargetBound target_bound_;
   /// decision_trace().
   std::uint64_t trace_ = 0;
   std::uint64_t steps_taken_ = 0;

@@ -20,7 +20,9 @@
 ///      that every vector of the region makes that choice (below);
 ///    both runs must make the same decisions (Simulation::decision_trace()). A finished
 ///    region's runs must end with its trace and objective; a pruned region's must reach, after
-///    its recorded steps, the state whose bound (report/search_objective.hpp) is its value.
+///    its recorded steps, a state whose bound (report/search_objective.hpp) is at least its
+///    value (equal when the search that wrote it bounded as this build does; a build with a
+///    weaker bound wrote less).
 ///
 /// Every vector of a box makes the representative's choice c when, for each other candidate
 /// j, d_j(w) = w . (f_j - f_c) beats the rounding of the two costs: the costs are sums of n

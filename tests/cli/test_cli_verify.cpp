@@ -90,6 +90,28 @@ TEST(CliVerify, ABestSearchsCertificateVerifies) {
   EXPECT_TRUE(has(r.output, "sum to the box's, and no vector is in two regions")) << r.output;
 }
 
+TEST(CliVerify, ACoverageTargetSearchWithABatteryVerifies) {
+  // The bound of the coverage target counts the trips back to the dock (sim/reveal_bound.hpp);
+  // the check computes it as the search did.
+  const std::string dir = fsweep::testing::fresh_temp_dir("verify", "target");
+  fs::create_directories(dir);
+  std::ofstream(dir + "/sweep.json") << R"({"schema_version": 1, "name": "cli_verify_target",
+    "maps": ["office:w=32,h=32,seed=3"],
+    "strategies": [{"name": "energy_aware", "search": {"mode": "best"},
+                    "params": {"w1": [0, 1, 2, 3], "w2": [0, 2], "w3": {"range": [0, 5], "step": 1},
+                               "w4": [0, 1]}}],
+    "robot": {"sensor": {"range_m": 6}, "energy": "distance", "battery": 150},
+    "sim": {"stop_at_coverage": 0.7}, "output": {"objective": "distance_to_coverage_target_m"},
+    "seed": 5})";
+  auto r = run_fsweep("run " + dir + "/sweep.json --quiet --out " + dir + "/out");
+  ASSERT_EQ(r.code, 0) << r.output;
+  const json search = json::parse(std::ifstream(dir + "/out/searches.json"))["searches"][0];
+  EXPECT_GT(search["certificate"]["pruned_regions"].get<int>(), 0) << search.dump();
+  r = run_fsweep("verify " + dir + "/out");
+  EXPECT_EQ(r.code, 0) << r.output;
+  EXPECT_TRUE(has(r.output, "verified")) << r.output;
+}
+
 TEST(CliVerify, AValueBelowTheOptimumFailsNamingItsLine) {
   std::size_t line = 0;
   const std::string dir = tampered("bound", [&](std::vector<std::string>& lines) {
@@ -104,10 +126,12 @@ TEST(CliVerify, AValueBelowTheOptimumFailsNamingItsLine) {
   EXPECT_TRUE(has(r.output, "is not worse than the optimum")) << r.output;
 }
 
-TEST(CliVerify, AnObjectiveItsRunsDoNotGiveFails) {
+/// Raises the value of the first region of `kind` that is not optimal by 0.5 and expects
+/// `fsweep verify` to fail naming its line, with `problem` in the message.
+void expect_a_raised_value_fails(const std::string& kind, const std::string& problem) {
   std::size_t line = 0;
-  const std::string dir = tampered("objective", [&](std::vector<std::string>& lines) {
-    line = first_line(lines, "finished", false);
+  const std::string dir = tampered("raised_" + kind, [&](std::vector<std::string>& lines) {
+    line = first_line(lines, kind, false);
     json j = json::parse(lines[line - 1]);
     j["value"] = j["value"].get<double>() + 0.5;
     lines[line - 1] = j.dump();
@@ -115,8 +139,18 @@ TEST(CliVerify, AnObjectiveItsRunsDoNotGiveFails) {
   ASSERT_GT(line, 0U);
   const auto r = run_fsweep("verify " + dir);
   EXPECT_EQ(r.code, 1) << r.output;
-  EXPECT_TRUE(has(r.output, "line " + std::to_string(line) + " (finished region")) << r.output;
-  EXPECT_TRUE(has(r.output, "the objective of its representative's runs is")) << r.output;
+  EXPECT_TRUE(has(r.output, "line " + std::to_string(line) + " (" + kind + " region")) << r.output;
+  EXPECT_TRUE(has(r.output, problem)) << r.output;
+}
+
+TEST(CliVerify, AnObjectiveItsRunsDoNotGiveFails) {
+  expect_a_raised_value_fails("finished", "the objective of its representative's runs is");
+}
+
+TEST(CliVerify, ABoundAboveWhatItsRunsGiveFails) {
+  // A pruned region's bound may be below what its runs give (a weaker bound proves it as well),
+  // not above.
+  expect_a_raised_value_fails("pruned", "below its value");
 }
 
 TEST(CliVerify, ARegionLeftOutOrListedTwiceFails) {
