@@ -26,9 +26,8 @@ int Belief::sense(Sensor& sensor, const RunSetup& setup, Cell at, int heading, C
   for (const int i : revealed) {
     if (known_.is_free(i) && setup.reachable[i] != 0) {
       ++known_reachable_;
-      if (reveal_ != nullptr) {
-        --unknown_by_bin_[static_cast<std::size_t>(reveal_->bin[static_cast<std::size_t>(i)])];
-      }
+      const std::int32_t bin = reveal_ != nullptr ? reveal_->bin[static_cast<std::size_t>(i)] : -1;
+      if (bin >= 0) --unknown_by_bin_[static_cast<std::size_t>(bin)];
     }
     if (setup.observable[i] != 0) ++known_observable_;
   }

@@ -8,6 +8,7 @@
 #include "search/distance_field.hpp"
 #include "sim/run_setup.hpp"
 #include "world/known_map.hpp"
+#include "world/sensor.hpp"
 
 namespace fsweep {
 inline namespace sim {
@@ -77,11 +78,11 @@ RevealGeometry reveal_geometry(const RunSetup& setup, Cell dock) {
   const int cells = setup.reachable.size();
   out.dock_m.assign(static_cast<std::size_t>(cells), kInfinity);
   for (int i = 0; i < cells; ++i) out.dock_m[static_cast<std::size_t>(i)] = field.distance_m(i);
-  // h: the least g of a reachable cell whose sensor disc (centres at most range apart, the
-  // boundary included, with a little slack: a larger disc only lowers h) holds the cell.
-  const double range = setup.spec.robot.sensor.range_m / setup.resolution_m;
-  const double range2 = range * range * (1.0 + 1e-9);
-  const int radius = static_cast<int>(std::floor(range * (1.0 + 1e-9)));
+  // h: the least g of a reachable cell whose sensor disc (the sensor's own range rule, its
+  // slack included) holds the cell.
+  const double range2 = squared_range_limit(setup.spec.robot.sensor.range_m / setup.resolution_m);
+  const int radius = static_cast<int>(std::floor(std::sqrt(range2)));
+  out.reach_m = (std::sqrt(range2) + std::sqrt(0.5)) * setup.resolution_m;
   // half_width[dy + radius]: the disc's half width in row dy.
   std::vector<int> half_width;
   for (int dy = -radius; dy <= radius; ++dy) {

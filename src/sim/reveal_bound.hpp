@@ -45,10 +45,14 @@ struct RevealGeometry {
   /// Per cell: g, the path length (metres) from the dock on the true map (the run's corner
   /// rule); +infinity where the dock does not reach.
   std::vector<double> dock_m;
-  /// Per reachable cell (RunSetup::reachable): floor(h / bin_m); -1 elsewhere.
+  /// Per reachable cell (RunSetup::reachable) that a cell the dock reaches sees: floor(h /
+  /// bin_m); -1 elsewhere (every cell when the dock is not reachable from the start).
   std::vector<std::int32_t> bin;
   /// Bins in use (the largest bin + 1); 0 when the dock reaches no reachable cell.
   int bins = 0;
+  /// R = r + res / sqrt(2) (metres), r the farthest a cell can be and be in the sensor's range
+  /// (squared_range_limit(), sensor.hpp).
+  double reach_m = 0.0;
 };
 
 /// The geometry of `setup`'s true map for a robot docked at `dock` (O(cells x sensor disc)).

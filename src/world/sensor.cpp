@@ -24,11 +24,6 @@ constexpr double kRangeSlack = 1e-9;
 /// Slack on the field-of-view boundary (radians), for the same reason.
 constexpr double kAngleSlack = 1e-9;
 
-/// Squared range in cells² with the slack applied; offsets with dx² + dy² <= this are in range.
-double squared_range_limit(double range_cells) {
-  return range_cells * range_cells * (1.0 + kRangeSlack) + kRangeSlack;
-}
-
 /// Walks a ray from the centre of the robot's cell to the end point (ex, ey), given in doubled
 /// coordinates relative to that centre: cell (x, y) relative to the robot's cell spans
 /// (2x - 1, 2x + 1) x (2y - 1, 2y + 1), so the target's centre is (2dx, 2dy) and the midpoints
@@ -294,6 +289,10 @@ double angle_distance(double a, double b) {
 }
 
 }  // namespace
+
+double squared_range_limit(double range_cells) {
+  return range_cells * range_cells * (1.0 + kRangeSlack) + kRangeSlack;
+}
 
 const ParamDecl<SensorParams>& sensor_params() {
   using P = SensorParams;

@@ -88,6 +88,10 @@ inline namespace world {
 /// decides those. `at` == `target`: true. For strategies that ask which cells are in view.
 [[nodiscard]] bool centre_ray_clear(const KnownMap& known, Cell at, Cell target);
 
+/// The squared range in cells² with the slack of the range rule (file comment above) applied:
+/// an offset with dx² + dy² <= this is in range of a sensor of `range_cells` cells.
+[[nodiscard]] double squared_range_limit(double range_cells);
+
 /// The physical model of a Sensor (rules in the file comment above).
 enum class SensorModel {
   Grid,   ///< "grid": every cell in range and in line of sight (exact shadowcasting)

@@ -15,6 +15,7 @@
 #include "core/config_error.hpp"
 #include "sim/simulation.hpp"
 #include "strategies/registry.hpp"
+#include "world/ascii_world.hpp"
 #include "world/energy_model.hpp"
 #include "world/map_spec.hpp"
 
@@ -129,6 +130,30 @@ TEST(CoverageTarget, TheBatteryAwareBoundNeverExceedsTheDistanceOnStreetGrids) {
       ASSERT_LE(bounds[i], reached) << c.map_seed << " step " << i;
     EXPECT_GT(bounds.front(), c.over_tube * tube) << c.map_seed << ": the trips to the far streets count";
   }
+}
+
+TEST(CoverageTarget, ADockTheStartCannotReachLeavesTheTubeAlone) {
+  // The dock is free but walled off from the start: no trips to it are counted (every cell's
+  // bin is -1), and every scan's reveals still keep the counts right.
+  RunSpec spec;
+  spec.map = std::make_shared<const WorldMap>(test::ascii_world({
+      "S.......#...",
+      "........#...",
+      "........#...",
+      "........#...",
+      "........#...",
+  }));
+  spec.strategy = configure_strategy("closest_frontier", nullptr);
+  spec.robot.sensor.range_m = 2.0;
+  spec.robot.dock = Cell{10, 2};
+  spec.sim.stop_at_coverage = 0.9;
+  Simulation sim(spec);
+  std::vector<double> bounds{sim.coverage_target_bound_m()};
+  while (sim.step()) bounds.push_back(sim.coverage_target_bound_m());
+  const RunResult r = sim.result();
+  ASSERT_TRUE(r.metrics.distance_to_coverage_target_m.has_value()) << r.end_detail;
+  for (const double b : bounds) EXPECT_LE(b, *r.metrics.distance_to_coverage_target_m);
+  EXPECT_GT(bounds.front(), 0.0);
 }
 
 TEST(CoverageTarget, IsReadAndWrittenOnlyWhenSet) {
