@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <numbers>
 
@@ -78,16 +79,16 @@ RevealGeometry reveal_geometry(const RunSetup& setup, Cell dock) {
   const int cells = setup.reachable.size();
   out.dock_m.assign(static_cast<std::size_t>(cells), kInfinity);
   for (int i = 0; i < cells; ++i) out.dock_m[static_cast<std::size_t>(i)] = field.distance_m(i);
-  // h: the least g of a reachable cell whose sensor disc (the sensor's own range rule, its
-  // slack included) holds the cell.
-  const double range2 = squared_range_limit(setup.spec.robot.sensor.range_m / setup.resolution_m);
-  const int radius = static_cast<int>(std::floor(std::sqrt(range2)));
-  out.reach_m = (std::sqrt(range2) + std::sqrt(0.5)) * setup.resolution_m;
-  // half_width[dy + radius]: the disc's half width in row dy.
-  std::vector<int> half_width;
-  for (int dy = -radius; dy <= radius; ++dy) {
-    half_width.push_back(static_cast<int>(std::floor(std::sqrt(std::max(0.0, range2 - dy * dy)))));
+  // h: the least g of a reachable cell whose sensor disc (disc_extent(): the sensor's own range
+  // rule) holds the cell. R: the farthest offset in range, plus half a cell's diagonal.
+  const std::vector<int> extent = disc_extent(setup.spec.robot.sensor.range_m / setup.resolution_m);
+  const int radius = static_cast<int>(extent.size()) - 1;
+  double farthest = 0.0;
+  for (int u = 0; u <= radius; ++u) {
+    const int v = extent[static_cast<std::size_t>(u)];
+    if (v >= 0) farthest = std::max(farthest, std::hypot(u, v));
   }
+  out.reach_m = (farthest + std::sqrt(0.5)) * setup.resolution_m;
   const int width = truth.width();
   const int height = truth.height();
   std::vector<double> reveal(static_cast<std::size_t>(cells), kInfinity);
@@ -96,8 +97,7 @@ RevealGeometry reveal_geometry(const RunSetup& setup, Cell dock) {
     if (setup.reachable[i] == 0 || !std::isfinite(g)) continue;
     const Cell s = setup.reachable.cell(i);
     for (int dy = std::max(-radius, -s.y); dy <= std::min(radius, height - 1 - s.y); ++dy) {
-      const int disc_row = dy + radius;
-      const int w = half_width[static_cast<std::size_t>(disc_row)];
+      const int w = extent[static_cast<std::size_t>(std::abs(dy))];
       const int first = (s.y + dy) * width + std::max(0, s.x - w);
       const int last = (s.y + dy) * width + std::min(width - 1, s.x + w);
       for (int at = first; at <= last; ++at) {
@@ -115,6 +115,19 @@ RevealGeometry reveal_geometry(const RunSetup& setup, Cell dock) {
     out.bins = std::max(out.bins, b + 1);
   }
   return out;
+}
+
+Charges charges_m(const Battery& battery, const EnergyModel& energy, double resolution_m) {
+  // Battery::draw lets a draw overrun the charge by 1e-9 of the capacity, and leaves an empty
+  // battery at 0: one step per charge can overrun, unless a step costs no more than that slack
+  // (then every step can, and the charge bounds nothing). Every metre costs at least the
+  // straight-travel energy (turns cost >= 0).
+  const double per_cell = energy.travel_per_cell(resolution_m);
+  const double slack = 1e-9 * battery.capacity();
+  if (battery.unlimited() || !(per_cell > slack)) return Charges{kInfinity, kInfinity};
+  const double per_metre = per_cell / resolution_m;
+  return Charges{(battery.level() + slack) / per_metre * (1.0 + 1e-9),
+                 (battery.capacity() + slack) / per_metre * (1.0 + 1e-9)};
 }
 
 double travel_to_reveal_m(const RevealState& s, std::span<const int> unknown_by_bin) {

@@ -30,6 +30,8 @@
 #include <span>
 #include <vector>
 
+#include "sim/battery.hpp"
+#include "world/energy_model.hpp"
 #include "world/grid.hpp"
 
 namespace fsweep {
@@ -50,8 +52,8 @@ struct RevealGeometry {
   std::vector<std::int32_t> bin;
   /// Bins in use (the largest bin + 1); 0 when the dock reaches no reachable cell.
   int bins = 0;
-  /// R = r + res / sqrt(2) (metres), r the farthest a cell can be and be in the sensor's range
-  /// (squared_range_limit(), sensor.hpp).
+  /// R = r + res / sqrt(2) (metres), r the farthest a cell in the sensor's range can be
+  /// (disc_extent(), sensor.hpp).
   double reach_m = 0.0;
 };
 
@@ -74,6 +76,15 @@ struct RevealState {
   /// Bin width of `unknown_by_bin` (RevealGeometry::bin_m).
   double bin_m = 1.0;
 };
+
+/// Metres of travel a battery allows: before its next recharge (`first`) and on a full charge
+/// (`full`); +infinity when unlimited, or when a cell's step costs no more than the overrun
+/// Battery::draw allows (then an empty battery still moves).
+struct Charges {
+  double first = 0.0;
+  double full = 0.0;
+};
+[[nodiscard]] Charges charges_m(const Battery& battery, const EnergyModel& energy, double resolution_m);
 
 /// A lower bound on the travel (metres) that reveals `state.needed_cells` more cells, given the
 /// unknown reachable cells per bin of h (`unknown_by_bin`; empty: the tube bound alone).

@@ -455,19 +455,9 @@ double Simulation::coverage_target_bound_m() const {
   s.reach_m = reveal.reach_m;
   s.dock_m = reveal.dock_m[static_cast<std::size_t>(setup.reachable.index(robot_.position))];
   s.bin_m = reveal.bin_m;
-  s.first_charge_m = s.charge_m = std::numeric_limits<double>::infinity();
-  const Battery& battery = robot_.battery;
-  // Battery::draw lets a draw overrun the charge by 1e-9 of the capacity, and leaves an empty
-  // battery at 0: one step per charge can overrun, unless a step costs no more than that slack
-  // (then every step can, and the charge bounds nothing). Every metre costs at least the
-  // straight-travel energy (turns cost >= 0).
-  const double per_cell = setup.spec.robot.energy.travel_per_cell(setup.resolution_m);
-  const double slack = 1e-9 * battery.capacity();
-  if (!battery.unlimited() && per_cell > slack) {
-    const double per_metre = per_cell / setup.resolution_m;
-    s.first_charge_m = (battery.level() + slack) / per_metre * (1.0 + 1e-9);
-    s.charge_m = (battery.capacity() + slack) / per_metre * (1.0 + 1e-9);
-  }
+  const Charges charges = charges_m(robot_.battery, setup.spec.robot.energy, setup.resolution_m);
+  s.first_charge_m = charges.first;
+  s.charge_m = charges.full;
   cached = TargetBound{m.distance_m, robot_.battery.level(), belief_.known_reachable(), robot_.position,
                        m.distance_m + travel_to_reveal_m(s, belief_.unknown_by_bin(reveal))};
   return cached.value;

@@ -24,6 +24,11 @@ constexpr double kRangeSlack = 1e-9;
 /// Slack on the field-of-view boundary (radians), for the same reason.
 constexpr double kAngleSlack = 1e-9;
 
+/// Squared range in cells² with the slack applied; offsets with dx² + dy² <= this are in range.
+double squared_range_limit(double range_cells) {
+  return range_cells * range_cells * (1.0 + kRangeSlack) + kRangeSlack;
+}
+
 /// Walks a ray from the centre of the robot's cell to the end point (ex, ey), given in doubled
 /// coordinates relative to that centre: cell (x, y) relative to the robot's cell spans
 /// (2x - 1, 2x + 1) x (2y - 1, 2y + 1), so the target's centre is (2dx, 2dy) and the midpoints
@@ -290,8 +295,17 @@ double angle_distance(double a, double b) {
 
 }  // namespace
 
-double squared_range_limit(double range_cells) {
-  return range_cells * range_cells * (1.0 + kRangeSlack) + kRangeSlack;
+std::vector<int> disc_extent(double range_cells) {
+  const double limit = squared_range_limit(range_cells);
+  const int r = static_cast<int>(std::floor(std::sqrt(limit)));
+  const auto in_range = [&](int dx, int dy) { return static_cast<double>(dx * dx + dy * dy) <= limit; };
+  std::vector<int> extent(static_cast<std::size_t>(r) + 1, -1);
+  for (int u = 0; u <= r; ++u) {
+    int v = -1;
+    while (v < r && in_range(u, v + 1)) ++v;
+    extent[static_cast<std::size_t>(u)] = v;
+  }
+  return extent;
 }
 
 const ParamDecl<SensorParams>& sensor_params() {
@@ -374,15 +388,10 @@ Sensor::Sensor(const SensorParams& params, double resolution_m)
   }
   auto tables = std::make_shared<Tables>();
   const double limit = squared_range_limit(range_cells_);
-  const int r = static_cast<int>(std::floor(std::sqrt(limit)));
   const auto in_range = [&](int dx, int dy) { return static_cast<double>(dx * dx + dy * dy) <= limit; };
+  tables->extent = disc_extent(range_cells_);
+  const int r = static_cast<int>(tables->extent.size()) - 1;
   tables->r = r;
-  tables->extent.assign(static_cast<std::size_t>(r) + 1, -1);
-  for (int u = 0; u <= r; ++u) {
-    int v = -1;
-    while (v < r && in_range(u, v + 1)) ++v;
-    tables->extent[static_cast<std::size_t>(u)] = v;
-  }
   tables->inverse.assign(2 * static_cast<std::size_t>(r) + 2, 0.0);
   for (std::size_t x = 1; x < tables->inverse.size(); ++x) tables->inverse[x] = 1.0 / static_cast<double>(x);
   // 1. Offset-table order by a counting sort on the squared distance: offsets visited row by

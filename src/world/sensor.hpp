@@ -88,9 +88,10 @@ inline namespace world {
 /// decides those. `at` == `target`: true. For strategies that ask which cells are in view.
 [[nodiscard]] bool centre_ray_clear(const KnownMap& known, Cell at, Cell target);
 
-/// The squared range in cells² with the slack of the range rule (file comment above) applied:
-/// an offset with dx² + dy² <= this is in range of a sensor of `range_cells` cells.
-[[nodiscard]] double squared_range_limit(double range_cells);
+/// The disc of offsets in range (the range rule of the file comment above, its slack included)
+/// of a sensor of `range_cells` cells, by rows: extent[u] for u in [0, r] is the largest v with
+/// (u, v) in range (-1: none); both models see within it.
+[[nodiscard]] std::vector<int> disc_extent(double range_cells);
 
 /// The physical model of a Sensor (rules in the file comment above).
 enum class SensorModel {

@@ -147,6 +147,20 @@ TEST(CliVerify, AnObjectiveItsRunsDoNotGiveFails) {
   expect_a_raised_value_fails("finished", "the objective of its representative's runs is");
 }
 
+TEST(CliVerify, ABoundBelowWhatItsRunsGiveStillProvesItsRegion) {
+  // As written by a build whose bound was weaker: still above the optimum, so still a proof.
+  const std::string dir = tampered("weaker", [&](std::vector<std::string>& lines) {
+    const std::size_t line = first_line(lines, "pruned", false);
+    const double optimum = json::parse(lines.front()).at("optimum").get<double>();
+    json j = json::parse(lines[line - 1]);
+    j["value"] = (j["value"].get<double>() + optimum) / 2.0;
+    lines[line - 1] = j.dump();
+  });
+  const auto r = run_fsweep("verify " + dir);
+  EXPECT_EQ(r.code, 0) << r.output;
+  EXPECT_TRUE(has(r.output, "verified")) << r.output;
+}
+
 TEST(CliVerify, ABoundAboveWhatItsRunsGiveFails) {
   // A pruned region's bound may be below what its runs give (a weaker bound proves it as well),
   // not above.

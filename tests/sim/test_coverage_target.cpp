@@ -132,6 +132,29 @@ TEST(CoverageTarget, TheBatteryAwareBoundNeverExceedsTheDistanceOnStreetGrids) {
   }
 }
 
+TEST(CoverageTarget, TheBoundDependsOnTheStateAloneNotOnWhenItWasAskedFor) {
+  // A run asked at every step (its counts kept up to date scan by scan, its last value kept)
+  // against fresh runs asked once at the same step, and a fork asked only after moving on.
+  RunSpec spec = rooms_run("energy_aware");
+  spec.robot.battery_capacity = 60.0;
+  spec.sim.stop_at_coverage = 0.9;
+  Simulation every(spec);
+  std::vector<double> bounds{every.coverage_target_bound_m()};
+  while (every.step()) bounds.push_back(every.coverage_target_bound_m());
+  ASSERT_GT(bounds.size(), 10U);
+  for (std::size_t n = 0; n < bounds.size(); n += 3) {
+    Simulation once(spec);
+    for (std::size_t k = 0; k < n; ++k) ASSERT_TRUE(once.step());
+    EXPECT_EQ(once.coverage_target_bound_m(), bounds[n]) << "step " << n;
+  }
+  Simulation asked(spec);
+  (void)asked.coverage_target_bound_m();
+  Simulation fork = asked;
+  for (int k = 0; k < 5; ++k) ASSERT_TRUE(fork.step());
+  EXPECT_EQ(fork.coverage_target_bound_m(), bounds[5]);
+  EXPECT_EQ(asked.coverage_target_bound_m(), bounds[0]);
+}
+
 TEST(CoverageTarget, ADockTheStartCannotReachLeavesTheTubeAlone) {
   // The dock is free but walled off from the start: no trips to it are counted (every cell's
   // bin is -1), and every scan's reveals still keep the counts right.

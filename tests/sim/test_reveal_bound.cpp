@@ -12,6 +12,7 @@
 #include "sim/reveal_bound.hpp"
 #include "sim/run_setup.hpp"
 #include "strategies/registry.hpp"
+#include "world/energy_model.hpp"
 #include "world/map_spec.hpp"
 
 namespace fsweep {
@@ -76,6 +77,26 @@ TEST(RevealBound, ARobotThatCannotReachTheDockEndsWithinItsCharge) {
   // no way to reveal them, and the bound falls back to the tube.
   s.first_charge_m = 11.0;
   EXPECT_DOUBLE_EQ(travel_to_reveal_m(s, kFarCells), (100.0 - kPi) / 2.0);
+}
+
+TEST(RevealBound, ChargesAreTheMetresTheBatteryPaysFor) {
+  // distance: 1 per metre; mei2006: 1 per cell length, so 0.5 per metre with 2 m cells.
+  const EnergyModel distance = energy_preset("distance");
+  Battery battery(1200.0, 1.0);
+  Charges c = charges_m(battery, distance, 5.0);
+  EXPECT_NEAR(c.first, 1200.0, 1e-5);
+  EXPECT_GE(c.first, 1200.0) << "the draw's overrun counts";
+  EXPECT_EQ(c.first, c.full);
+  ASSERT_TRUE(battery.draw(300.0, 300.0));
+  c = charges_m(battery, energy_preset("mei2006"), 2.0);
+  EXPECT_NEAR(c.first, 1800.0, 1e-5);
+  EXPECT_NEAR(c.full, 2400.0, 1e-5);
+  // Unlimited, and a step that costs no more than the overrun a draw may take: no bound.
+  c = charges_m(Battery(kUnlimited, 1.0), distance, 5.0);
+  EXPECT_EQ(c.first, kUnlimited);
+  EXPECT_EQ(c.full, kUnlimited);
+  c = charges_m(Battery(1e10, 1.0), distance, 5.0);
+  EXPECT_EQ(c.first, kUnlimited);
 }
 
 TEST(RevealBound, NothingNeededCostsNothing) {
