@@ -8,6 +8,8 @@
 /// - `BM_SensorScanBuilding/range:<cells>`: the same in a partly explored building (a
 ///   generated office of 400 x 400 cells, its left half known; scans from 256 free cells).
 /// - `BM_SensorScanKnown/range:<cells>`: one scan where every cell in range is already known.
+/// - `BM_SensorScanSight/range:<cells>`: BM_SensorScan with a SightTable whose rows for the 256
+///   cells are filled (what a weight search's scans from cells scanned before cost).
 /// - `BM_BeamScan/beams:<n>/range_m:<m>`: one scan of the beam model (n beams over 270 degrees
 ///   for 1080, else 180) in a 60 m x 60 m office at 5 cm per cell (1200 x 1200 cells), fresh
 ///   KnownMap, from 256 free cells; `BM_GridScanOffice/range_m:<m>`: the grid model there.
@@ -26,6 +28,7 @@
 #include <cmath>
 #include <cstdint>
 #include <deque>
+#include <memory>
 #include <vector>
 
 #include "core/random.hpp"
@@ -86,7 +89,7 @@ BENCHMARK(BM_SensorSetup)->ArgName("range")->Arg(20)->Arg(100)->Arg(200)->Unit(b
 /// of `params`. The copies are prepared in batches with the timer paused, so the pause cost is
 /// amortised over a batch and the map copy is not timed.
 void scan_from(benchmark::State& state, const WorldMap& map, const KnownMap& start,
-               const std::vector<Cell>& at, const SensorParams& params) {
+               const std::vector<Cell>& at, const SensorParams& params, SightTable* sight = nullptr) {
   Sensor sensor(params, map.resolution_m);
   constexpr std::size_t kBatch = 64;
   std::vector<KnownMap> pool(kBatch, start);
@@ -101,7 +104,7 @@ void scan_from(benchmark::State& state, const WorldMap& map, const KnownMap& sta
       used = 0;
       state.ResumeTiming();
     }
-    const auto cells = sensor.scan(map, pool[used++], at[next++ % at.size()], 0.0, rng);
+    const auto cells = sensor.scan(map, pool[used++], at[next++ % at.size()], 0.0, rng, nullptr, sight);
     revealed += static_cast<std::int64_t>(cells.size());
     benchmark::DoNotOptimize(cells.data());
   }
@@ -116,6 +119,26 @@ void BM_SensorScan(benchmark::State& state) {  // NOLINT(readability-identifier-
             sensor_params(static_cast<double>(state.range(0))));
 }
 BENCHMARK(BM_SensorScan)->ArgName("range")->Arg(10)->Arg(20)->Arg(30)->Arg(100)->Arg(200);
+
+/// BM_SensorScan reading a SightTable filled from the same cells first.
+void BM_SensorScanSight(benchmark::State& state) {  // NOLINT(readability-identifier-naming)
+  const WorldMap map = bench_world(0.15);
+  const SensorParams params = sensor_params(static_cast<double>(state.range(0)));
+  const std::vector<Cell> at = free_cells(map, 256, 0);
+  Sensor sensor(params, map.resolution_m);
+  const std::unique_ptr<SightTable> sight = sensor.sight_table(map);
+  if (sight == nullptr) {
+    state.SkipWithError("no sight table at this range and map size");
+    return;
+  }
+  Rng rng = make_rng(1, "sensor");
+  for (const Cell c : at) {
+    KnownMap fresh(kSide, kSide, map.resolution_m);
+    (void)sensor.scan(map, fresh, c, 0.0, rng, nullptr, sight.get());
+  }
+  scan_from(state, map, KnownMap(kSide, kSide, map.resolution_m), at, params, sight.get());
+}
+BENCHMARK(BM_SensorScanSight)->ArgName("range")->Arg(10)->Arg(30)->Arg(100);
 
 /// One scan in a partly explored building: a generated office (400 x 400 cells: rooms at least
 /// 40 cells deep, corridors 20 wide, walls 3 thick, doors 16 wide, e.g. 20 m x 20 m at 5 cm),

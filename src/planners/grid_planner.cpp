@@ -1,5 +1,6 @@
 #include "planners/grid_planner.hpp"
 
+#include <limits>
 #include <nlohmann/json.hpp>
 
 #include "core/config_error.hpp"
@@ -32,6 +33,11 @@ SearchResult GridPlanner::search(const KnownMap& known, const PlanRequest& reque
                                  const StopCondition& stop) {
   // Start == goal settles the start as the goal (a one-cell path).
   if (kind_ == GridSearchKind::AStar) {
+    // The same search run before, to the goal (PathProbe): only a budget could end this one sooner.
+    if (request.searched != nullptr && budget().time_limit_s == std::numeric_limits<double>::infinity() &&
+        budget().max_expansions == 0) {
+      return *request.searched;
+    }
     return search_grid(search_,
                        OctileGoalEnvironment<true>(known, request.goal, request.allow_corner_cutting), known,
                        request.start, stop);

@@ -24,6 +24,8 @@ enum class PlanStatus { Success, StartInvalid, GoalInvalid, NoPath, Timeout };
 
 [[nodiscard]] std::string_view to_string(PlanStatus s);
 
+struct SearchResult;
+
 /// One query. Planning is over known-free cells of the KnownMap.
 struct PlanRequest {
   Cell start;
@@ -39,6 +41,12 @@ struct PlanRequest {
   /// Seconds between samples of the planner's own progress properties (PlanResult::progress);
   /// 0, the default: none. Only planners that report progress properties take samples.
   double progress_interval_s = 0.0;
+  /// What planner `astar`'s own search finds for this very query (start, goal, corner rule) on
+  /// this map, found already by someone else with the same A* (search::PathProbe: the distance
+  /// probe of the decision that chose the goal); `astar` without a time limit or expansion budget
+  /// returns it instead of searching again (its expansions count as the planner's: the cells
+  /// `astar` would settle), every other planner ignores it. Null: none. Must outlive plan().
+  const SearchResult* searched = nullptr;
 };
 
 /// A planner's own progress properties sampled during one query: OMPL's planner progress

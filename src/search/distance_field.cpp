@@ -83,6 +83,28 @@ class FieldEnvironment : public OctileMoves {
   double go_on_until_m_ = -std::numeric_limits<double>::infinity();
 };
 
+/// compute_to()'s A* in `search`: the goal's length in metres (+infinity when unreachable or
+/// beyond the bound), nullopt when query.stop ended it first; `outcome` as the search ended.
+template <Parents P>
+std::optional<double> length_to(BestFirstSearchT<OctileCost, P>& search, const KnownMap& known, Cell source,
+                                Cell goal, const DistanceQuery& query, SearchOutcome& outcome) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  outcome = SearchOutcome{};
+  if (!known.is_free(source) || !known.is_free(goal)) {  // unreachable at once; the field reads empty
+    FieldEnvironment empty(known, query.allow_corner_cutting, nullptr, 0);
+    (void)search.run(empty, -1);
+    return kInf;
+  }
+  SearchLimits limits;
+  limits.g_limit = limit_cells(query, known.resolution_m());
+  limits.stop = query.stop;
+  const OctileGoalEnvironment<true> env(known, goal, query.allow_corner_cutting);
+  outcome = search.run(env, known.index(source), limits);
+  if (outcome.goal >= 0) return search.g(outcome.goal) * known.resolution_m();
+  if (outcome.stopped) return std::nullopt;
+  return kInf;
+}
+
 }  // namespace
 
 void DistanceField::compute(const KnownMap& known, Cell source, const DistanceQuery& query) {
@@ -130,24 +152,20 @@ std::optional<double> DistanceField::compute_to(const KnownMap& known, Cell sour
                                                 const DistanceQuery& query) {
   resolution_m_ = known.resolution_m();
   source_ = source;
-  expansions_ = 0;
-  stopped_ = false;
-  constexpr double kInf = std::numeric_limits<double>::infinity();
-  if (!known.is_free(source) || !known.is_free(goal)) {  // unreachable at once; the field reads empty
-    FieldEnvironment empty(known, query.allow_corner_cutting, nullptr, 0);
-    (void)search_.run(empty, -1);
-    return kInf;
-  }
-  SearchLimits limits;
-  limits.g_limit = limit_cells(query, resolution_m_);
-  limits.stop = query.stop;
-  const OctileGoalEnvironment<true> env(known, goal, query.allow_corner_cutting);
-  const SearchOutcome outcome = search_.run(env, known.index(source), limits);
+  SearchOutcome outcome;
+  const std::optional<double> length = length_to(search_, known, source, goal, query, outcome);
   expansions_ = outcome.expansions;
   stopped_ = outcome.stopped;
-  if (outcome.goal >= 0) return search_.g(outcome.goal) * resolution_m_;
-  if (outcome.stopped) return std::nullopt;
-  return kInf;
+  return length;
+}
+
+std::optional<double> PathProbe::compute_to(const KnownMap& known, Cell source, Cell goal,
+                                            const DistanceQuery& query) {
+  SearchOutcome outcome;
+  const std::optional<double> length = length_to(search_, known, source, goal, query, outcome);
+  expansions_ = outcome.expansions;
+  goal_ = outcome.goal;
+  return length;
 }
 
 double DistanceField::distance_m(int index) const {

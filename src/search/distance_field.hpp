@@ -103,5 +103,33 @@ class DistanceField {
   Cell source_{};
 };
 
+/// DistanceField::compute_to() with the parents kept (16 bytes a cell): the same A*
+/// (OctileGoalEnvironment, BestFirstSearchT's tie rule), so when it reaches the goal its path and
+/// its count of settled cells are those of the `astar` planner (planners/grid_planner.hpp) for the
+/// same start, goal and corner rule on the same map, whatever bound and stop it ran under: a cell
+/// beyond the bound costs more than the goal, so A* settles none before the goal, and none of
+/// the cells it does settle is reached through one. A caller that measured a path length this way
+/// hands the path on to the planner (PlanRequest::searched) rather than searching again.
+class PathProbe {
+ public:
+  /// DistanceField::compute_to() (the same values, bit for bit).
+  [[nodiscard]] std::optional<double> compute_to(const KnownMap& known, Cell source, Cell goal,
+                                                 const DistanceQuery& query);
+  /// True when the last compute_to() reached its goal.
+  [[nodiscard]] bool reached_goal() const { return goal_ >= 0; }
+  /// Cell indices from the source to the goal of the last compute_to(), both included; empty
+  /// unless it reached the goal.
+  [[nodiscard]] std::vector<int> path() const {
+    return goal_ >= 0 ? search_.path_to(goal_) : std::vector<int>{};
+  }
+  /// Cells settled by the last compute_to().
+  [[nodiscard]] long expansions() const { return expansions_; }
+
+ private:
+  OctileSearch search_;
+  int goal_ = -1;
+  long expansions_ = 0;
+};
+
 }  // namespace search
 }  // namespace fsweep

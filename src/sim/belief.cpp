@@ -18,7 +18,7 @@ Belief::Belief(const RunSetup& setup)
 
 int Belief::sense(Sensor& sensor, const RunSetup& setup, Cell at, int heading, Cell dock) {
   const auto revealed = sensor.scan(setup.map(), known_, at, heading_angle(heading), sensor_rng_,
-                                    setup.observable.data().data());
+                                    setup.observable.data().data(), setup.sight());
   frontiers_.update(known_, revealed);
   clusters_.revealed(revealed);
   keep_margin(setup, revealed);

@@ -17,6 +17,28 @@ GridDistanceOracle::GridDistanceOracle(const KnownMap& known, Cell robot, Cell d
       dock_field_(dock_field),
       scratch_(scratch) {
   scratch_.bound_m_ = -1.0;
+  scratch_.probed_.clear();
+  scratch_.probed_from_ = robot;
+  scratch_.probed_map_ = known.instance_id();
+  scratch_.probed_revision_ = known.revision();
+  scratch_.probed_corner_cutting_ = allow_corner_cutting;
+}
+
+std::optional<SearchResult> DistanceScratch::probed_path(const KnownMap& known, Cell start, Cell goal,
+                                                         bool allow_corner_cutting) const {
+  if (start != probed_from_ || known.instance_id() != probed_map_ || known.revision() != probed_revision_ ||
+      allow_corner_cutting != probed_corner_cutting_ || !known.in_bounds(goal)) {
+    return std::nullopt;
+  }
+  const int g = known.index(goal);
+  const auto p = std::find_if(probed_.begin(), probed_.end(), [g](const Probed& q) { return q.goal == g; });
+  if (p == probed_.end()) return std::nullopt;
+  SearchResult found;
+  found.status = PlanStatus::Success;
+  found.expansions = p->expansions;
+  found.path.reserve(p->path.size());
+  for (const int i : p->path) found.path.push_back(known.cell(i));
+  return found;
 }
 
 std::vector<double> GridDistanceOracle::lookup(Cell source, std::span<const int> cells, double bound_m) {
@@ -104,9 +126,14 @@ std::optional<double> GridDistanceOracle::probe_from_robot(int cell, double boun
   q.allow_corner_cutting = corner_cutting_;
   q.stop = StopCondition(SearchBudget{std::numeric_limits<double>::infinity(), max_expansions},
                          StopCondition::Clock::time_point{});
-  const std::optional<double> d = scratch_.field_.compute_to(known_, robot_, known_.cell(cell), q);
+  PathProbe& probe = scratch_.probe_;
+  const std::optional<double> d = probe.compute_to(known_, robot_, known_.cell(cell), q);
+  // The probes no longer run in field_, but a later lookup() still searches again, as when they
+  // did: the runs' planner_expansions stay what they were.
   scratch_.bound_m_ = -1.0;
-  expansions_ += scratch_.field_.expansions();
+  expansions_ += probe.expansions();
+  if (probe.reached_goal())
+    scratch_.probed_.push_back(DistanceScratch::Probed{cell, probe.path(), probe.expansions()});
   if (!d) return std::nullopt;
   return *d <= bound_m ? *d : std::numeric_limits<double>::infinity();
 }

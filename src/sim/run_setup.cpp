@@ -94,6 +94,13 @@ const RevealGeometry& RunSetup::reveal(Cell dock) const {
   return reveal_->geometry;
 }
 
+void RunSetup::keep_sight(const Sensor& sensor) const {
+  std::call_once(sight_->once, [&] {
+    sight_->owned = sensor.sight_table(map());
+    sight_->table.store(sight_->owned.get(), std::memory_order_release);
+  });
+}
+
 std::optional<Cell> stop_cell_of(const RunSetup& setup) {
   if (!setup.spec.sim.stop_at_random) return setup.spec.sim.stop_at_cell;
   return draw_random_target(setup.reachable, setup.map().start, setup.spec.seed, "sim/stop_at_cell");

@@ -4,6 +4,7 @@
 /// once (reachable and observable cells, resolved loop settings). A run and all its forks share
 /// one RunSetup through std::shared_ptr<const RunSetup>, so a fork copies none of it.
 
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <mutex>
@@ -14,6 +15,7 @@
 #include "sim/reveal_bound.hpp"
 #include "sim/run_spec.hpp"
 #include "world/grid.hpp"
+#include "world/sensor.hpp"
 #include "world/world_map.hpp"
 
 namespace fsweep {
@@ -73,12 +75,26 @@ struct RunSetup {
   /// shared by the run and its forks. Thread-safe.
   [[nodiscard]] const RevealGeometry& reveal(Cell dock) const;
 
+  /// Makes sight() return a SightTable of this run's map for `sensor` (a sensor of the run's own
+  /// parameters; Sensor::sight_table(), so none for a beam sensor or a table too large) from now
+  /// on, for the run and its forks. Thread-safe; later calls change nothing.
+  void keep_sight(const Sensor& sensor) const;
+  /// The table keep_sight() made, filled by the scans of the run and its forks (Belief::sense);
+  /// null before (or without one): scans sweep. Thread-safe.
+  [[nodiscard]] SightTable* sight() const { return sight_->table.load(std::memory_order_acquire); }
+
  private:
   struct LazyReveal {
     std::once_flag once;
     RevealGeometry geometry;
   };
   std::shared_ptr<LazyReveal> reveal_ = std::make_shared<LazyReveal>();
+  struct LazySight {
+    std::once_flag once;
+    std::unique_ptr<SightTable> owned;
+    std::atomic<SightTable*> table{nullptr};
+  };
+  std::shared_ptr<LazySight> sight_ = std::make_shared<LazySight>();
 };
 
 /// SimParams::stop_at_cell of `setup.spec`, with "random" drawn as resolve_random_target() draws

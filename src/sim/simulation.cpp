@@ -318,6 +318,9 @@ bool Simulation::travel(const Decision& decision, const Journey& journey) {
   request.energy = setup.spec.robot.energy;
   request.allow_corner_cutting = setup.allow_corner_cutting();
   request.seed = derive_seed(setup.spec.seed, "planner") + static_cast<std::uint64_t>(m.decisions);
+  const std::optional<SearchResult> probed =
+      scratch_.probed_path(belief_.known(), robot_.position, journey.goal, request.allow_corner_cutting);
+  if (probed) request.searched = &*probed;
   const PlanResult plan = planner_->plan(belief_.known(), request);
   m.planner_time_s += plan.time_s;
   m.planner_expansions += plan.expansions;

@@ -275,18 +275,19 @@ class Explorer {
     return s;
   }
 
-  /// Runs the probes of `bnb` inside `region` alone on every instance (as tasks, one per probe;
-  /// waits for them) and lowers the best objective to theirs.
-  void probe(std::span<const RunSpec> instances, const WeightRegion& region) {
+  /// Runs the probes of `bnb` inside `region` alone on every instance, each from a copy of the
+  /// instance's unstarted run in `roots` (as tasks, one per probe; waits for them), and lowers the
+  /// best objective to theirs.
+  void probe(std::span<const Simulation> roots, const WeightRegion& region) {
     if (bnb_ == nullptr) return;
     for (const auto& at : bnb_->probes) {
       if (!grid_.contains(region, at)) continue;
       ++probes_;
-      tasks_.run([this, instances, at] {
+      tasks_.run([this, roots, at] {
         const std::vector<double> weights = grid_.weights_at(at);
         std::vector<RunResult> results;
-        for (const RunSpec& spec : instances) {
-          Simulation sim(spec);
+        for (const Simulation& root : roots) {
+          Simulation sim = root;
           sim.set_weights(weights);
           while (sim.step()) {
             if (stopping()) return;
@@ -605,7 +606,7 @@ ExactSearchStats exact_search(std::span<const RunSpec> instances, const WeightGr
   std::vector<Simulation> roots;
   roots.reserve(instances.size());
   for (const RunSpec& spec : instances) {
-    roots.emplace_back(spec);
+    roots.emplace_back(spec).keep_sight();  // every branch and probe scans this map again
     // The strategy must score the grid's weights, each of the grid's values allowed.
     const std::unique_ptr<Strategy> probe = spec.strategy.make(spec.seed);
     LinearScoredStrategy* linear = probe->linear_scored();
@@ -639,7 +640,7 @@ ExactSearchStats exact_search(std::span<const RunSpec> instances, const WeightGr
     WeightRegion everything = within != nullptr ? *within : grid.everything();
     const std::uint64_t root = subtree_root(everything);
     if (!everything.empty() && !explorer.skipped(root, nullptr)) {
-      explorer.probe(instances, everything);
+      explorer.probe(roots, everything);
       auto first = std::make_shared<Branch>(Branch{std::move(roots),
                                                    std::move(everything),
                                                    {},

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
@@ -425,19 +426,47 @@ Sensor::Sensor(const SensorParams& params, double resolution_m)
   tables_ = std::move(tables);
 }
 
+std::size_t SightTable::bytes_for(std::size_t cells, std::size_t offsets) {
+  const std::size_t per_cell = (offsets + 63) / 64 * sizeof(std::uint64_t) + 1;
+  return cells > std::numeric_limits<std::size_t>::max() / per_cell ? std::numeric_limits<std::size_t>::max()
+                                                                    : cells * per_cell;
+}
+
+SightTable::SightTable(const WorldMap& map, double range_cells, std::size_t offsets)
+    : map_(&map),
+      range_cells_(range_cells),
+      cells_(static_cast<std::size_t>(map.width()) * static_cast<std::size_t>(map.height())),
+      words_((offsets + 63) / 64),
+      state_(std::make_unique<std::atomic<std::uint8_t>[]>(cells_)),
+      bits_(std::make_unique_for_overwrite<std::uint64_t[]>(cells_ * words_)) {}
+
+double Sensor::half_field_of_view() const { return params_.fov_deg * (M_PI / 360.0) + kAngleSlack; }
+
+bool Sensor::outside_view(std::uint32_t rank, double heading_rad) const {
+  return rank != 0 && angle_distance(tables_->angles[rank], heading_rad) > half_field_of_view();
+}
+
+std::unique_ptr<SightTable> Sensor::sight_table(const WorldMap& truth) const {
+  if (!tables_) return nullptr;
+  const std::size_t cells =
+      static_cast<std::size_t>(truth.width()) * static_cast<std::size_t>(truth.height());
+  if (SightTable::bytes_for(cells, tables_->order.size()) > kMaxSightTableBytes) return nullptr;
+  return std::unique_ptr<SightTable>(new SightTable(truth, range_cells_, tables_->order.size()));
+}
+
 template <typename Skip, typename Opaque, typename Visit>
-void Sensor::for_each_visible(int width, int height, Cell at, double heading_rad, Skip&& skip,
-                              Opaque&& opaque, Visit&& visit) const {
+void Sensor::for_each_visible(int width, int height, Cell at, double heading_rad, bool whole_disc,
+                              Skip&& skip, Opaque&& opaque, Visit&& visit) const {
   const Tables& t = *tables_;
   const int at_index = at.y * width + at.x;
-  const bool limit_fov = params_.fov_deg < 360.0;
-  const double half_fov = params_.fov_deg * (M_PI / 360.0) + kAngleSlack;
+  const bool limit_fov = !whole_disc && params_.fov_deg < 360.0;
+  const double half_fov = half_field_of_view();
   const std::size_t side = 2 * static_cast<std::size_t>(t.r) + 1;
   // Field of view (the robot's own cell is always seen), then visit.
   const auto target = [&](int index, int dx, int dy) {
     const std::uint32_t rank =
         t.rank[static_cast<std::size_t>(dy + t.r) * side + static_cast<std::size_t>(dx + t.r)];
-    if (limit_fov && rank != 0 && angle_distance(t.angles[rank], heading_rad) > half_fov) return;
+    if (limit_fov && outside_view(rank, heading_rad)) return;
     visit(index, rank);
   };
   if (!skip(at_index)) target(at_index, 0, 0);
@@ -471,75 +500,120 @@ void Sensor::for_each_visible(int width, int height, Cell at, double heading_rad
 }
 
 std::span<const int> Sensor::scan(const WorldMap& truth, KnownMap& known, Cell at, double heading_rad,
-                                  Rng& rng, const std::uint8_t* observable) {
+                                  Rng& rng, const std::uint8_t* observable, SightTable* sight) {
   if (params_.model == SensorModel::Beams) {
     return beams_.scan(truth, known, at, heading_rad, params_.miss_probability, rng);
   }
   revealed_.clear();
+  if (sight != nullptr &&
+      (sight->map_ != &truth || sight->range_cells_ != range_cells_ || sight->words_ != seen_bits_.size())) {
+    throw std::invalid_argument("Sensor::scan: the sight table was made for another map or range");
+  }
   if (!tables_ || !truth.occupied.in_bounds(at)) return {};
-  const std::uint8_t* occ = truth.occupied.data().data();
-  const bool noisy = params_.miss_probability > 0.0;
-  const CellState* const known_state = known.cells().data().data();
-  // 0. Nothing to reveal when every cell in range on the map is known, or never seen from
-  //    anywhere (a robot standing in explored space): a byte search along the rows of the disc
-  //    costs less than the sweep.
-  if (all_known(known, at, observable)) return revealed_;
-  const Offset* const order = tables_->order.data();
   const int width = truth.width();
   const int at_index = at.y * width + at.x;
-  // 1. A small disc without obstacles on the true map: every target in it is visible (a ray
+  const bool held = sight != nullptr && sight->filled(at_index);
+  // 0. Nothing to reveal when every cell in range on the map is known, or never seen from
+  //    anywhere (a robot standing in explored space): a byte search along the rows of the disc
+  //    costs less than the sweep (or than filling the sight table's row).
+  if (!held && all_known(known, at, observable)) return revealed_;
+  // 1. With a sight table: its row, filled by one sweep of every target the first time.
+  if (sight != nullptr) {
+    reveal_ranks<true>(truth, known, at, heading_rad, rng, sight_row(*sight, truth, at), 0, sight->words_);
+    return revealed_;
+  }
+  const std::uint8_t* occ = truth.occupied.data().data();
+  const CellState* const known_state = known.cells().data().data();
+  std::uint64_t* const bits = seen_bits_.data();
+  std::size_t first_word = seen_bits_.size();
+  std::size_t end_word = 0;
+  const auto take = [&](std::uint32_t rank) {
+    const std::size_t w = rank / 64;
+    bits[w] |= std::uint64_t{1} << (rank % 64);
+    first_word = std::min(first_word, w);
+    end_word = std::max(end_word, w + 1);
+  };
+  // 2. A small disc without obstacles on the true map: every target in it is visible (a ray
   //    between the centres of two cells in range enters, or touches at a corner, only cells of
-  //    the bounding box of those two, all in range and on the map, so nothing blocks it). The
-  //    targets are then those in range, on the map and in the field of view, revealed in
-  //    offset-table order as below, with the same noise draws, and the sweep is not needed.
+  //    the bounding box of those two, all in range and on the map, so nothing blocks it): the
+  //    targets are those on the map, unknown and in the field of view, and no sweep is needed.
   if (tables_->r <= kOpenDiscMaxCells && open_disc(truth, at)) {
+    const Offset* const order = tables_->order.data();
     const bool limit_fov = params_.fov_deg < 360.0;
-    const double half_fov = params_.fov_deg * (M_PI / 360.0) + kAngleSlack;
     const auto rank_count = static_cast<std::uint32_t>(tables_->order.size());
     for (std::uint32_t rank = 0; rank < rank_count; ++rank) {
       const int x = at.x + order[rank].dx;
       const int y = at.y + order[rank].dy;
       if (x < 0 || y < 0 || x >= width || y >= truth.height()) continue;
-      const int index = y * width + x;
-      if (known_state[index] != CellState::Unknown) continue;
-      if (limit_fov && rank != 0 && angle_distance(tables_->angles[rank], heading_rad) > half_fov) continue;
-      if (noisy && rank != 0 && uniform01(rng) < params_.miss_probability) continue;
-      known.reveal(index, Cell{x, y}, false);
-      revealed_.push_back(index);
+      if (known_state[y * width + x] != CellState::Unknown) continue;
+      if (limit_fov && outside_view(rank, heading_rad)) continue;
+      take(rank);
     }
-    return revealed_;
+  } else {
+    // 3. The visible targets that are still unknown, as bits by rank.
+    for_each_visible(
+        truth.width(), truth.height(), at, heading_rad, false,
+        // Known cells never change, so only unknown targets are looked at.
+        [&](int index) { return known_state[index] != CellState::Unknown; },
+        [&](int index) { return occ[index] != 0; }, [&](int, std::uint32_t rank) { take(rank); });
   }
-  // 2. The visible targets that are still unknown, as bits by rank.
-  std::uint64_t* const bits = seen_bits_.data();
-  std::size_t first_word = seen_bits_.size();
-  std::size_t last_word = 0;
-  for_each_visible(
-      truth.width(), truth.height(), at, heading_rad,
-      // Known cells never change, so only unknown targets are looked at.
-      [&](int index) { return known_state[index] != CellState::Unknown; },
-      [&](int index) { return occ[index] != 0; },
-      [&](int, std::uint32_t rank) {
-        const std::size_t w = rank / 64;
-        bits[w] |= std::uint64_t{1} << (rank % 64);
-        first_word = std::min(first_word, w);
-        last_word = std::max(last_word, w);
-      });
-  // 3. Reveal them in offset-table order (clearing the bits for the next scan).
-  for (std::size_t w = first_word; w <= last_word && w < seen_bits_.size(); ++w) {
-    std::uint64_t word = bits[w];
-    bits[w] = 0;
-    while (word != 0) {
+  // 4. Reveal them in offset-table order, then clear the bits for the next scan.
+  reveal_ranks<false>(truth, known, at, heading_rad, rng, bits, first_word, end_word);
+  if (first_word < end_word) std::fill(bits + first_word, bits + end_word, 0);
+  return revealed_;
+}
+
+const std::uint64_t* Sensor::sight_row(SightTable& sight, const WorldMap& truth, Cell at) {
+  const auto i = static_cast<std::size_t>(at.y) * static_cast<std::size_t>(truth.width()) +
+                 static_cast<std::size_t>(at.x);
+  std::uint64_t* const row = sight.bits_.get() + i * sight.words_;
+  // A plain load first: a compare-exchange takes the state's cache line even when it fails.
+  std::uint8_t state = sight.state_[i].load(std::memory_order_acquire);
+  if (state == SightTable::kFilled) return row;
+  const bool mine =
+      state == SightTable::kEmpty &&
+      sight.state_[i].compare_exchange_strong(state, SightTable::kFilling, std::memory_order_acquire);
+  if (!mine && state == SightTable::kFilled) return row;
+  sight_scratch_.resize(sight.words_);
+  std::uint64_t* const out = mine ? row : sight_scratch_.data();
+  std::fill(out, out + sight.words_, 0);
+  const std::uint8_t* occ = truth.occupied.data().data();
+  try {
+    for_each_visible(
+        truth.width(), truth.height(), at, 0.0, true, [](int) { return false; },
+        [&](int index) { return occ[index] != 0; },
+        [&](int, std::uint32_t rank) { out[rank / 64] |= std::uint64_t{1} << (rank % 64); });
+  } catch (...) {  // the sweep's scratch could not grow: the row is left to a later scan
+    if (mine) sight.state_[i].store(SightTable::kEmpty, std::memory_order_release);
+    throw;
+  }
+  if (mine) sight.state_[i].store(SightTable::kFilled, std::memory_order_release);
+  return out;
+}
+
+template <bool kEveryTarget>
+void Sensor::reveal_ranks(const WorldMap& truth, KnownMap& known, Cell at, double heading_rad, Rng& rng,
+                          const std::uint64_t* bits, std::size_t first_word, std::size_t end_word) {
+  const Offset* const order = tables_->order.data();
+  const std::uint8_t* occ = truth.occupied.data().data();
+  const CellState* const known_state = known.cells().data().data();
+  const int width = truth.width();
+  const int at_index = at.y * width + at.x;
+  const bool noisy = params_.miss_probability > 0.0;
+  const bool limit_fov = kEveryTarget && params_.fov_deg < 360.0;
+  for (std::size_t w = first_word; w < end_word; ++w) {
+    for (std::uint64_t word = bits[w]; word != 0; word &= word - 1) {
       const auto rank = static_cast<std::uint32_t>(w * 64 + static_cast<std::size_t>(std::countr_zero(word)));
-      word &= word - 1;
       const int index = at_index + order[rank].dy * width + order[rank].dx;
-      // 4. Seeded miss: one draw per visible unknown cell, in table order; the robot's own
-      //    cell is never missed.
+      if (kEveryTarget && known_state[index] != CellState::Unknown) continue;
+      if (limit_fov && outside_view(rank, heading_rad)) continue;
+      // Seeded miss: one draw per visible unknown cell, in table order; the robot's own cell is
+      // never missed.
       if (noisy && rank != 0 && uniform01(rng) < params_.miss_probability) continue;
       known.reveal(index, Cell{at.x + order[rank].dx, at.y + order[rank].dy}, occ[index] != 0);
       revealed_.push_back(index);
     }
   }
-  return revealed_;
 }
 
 namespace {
@@ -601,7 +675,7 @@ ScanCounts Sensor::gain(const KnownMap& known, Cell at, double heading_rad) cons
   if (!tables_ || !known.in_bounds(at)) return counts;
   const CellState* const state = known.cells().data().data();
   for_each_visible(
-      known.width(), known.height(), at, heading_rad, [](int) { return false; },
+      known.width(), known.height(), at, heading_rad, false, [](int) { return false; },
       [&](int index) { return state[index] == CellState::Occupied; },
       [&](int index, std::uint32_t) {
         ++(state[index] == CellState::Unknown ? counts.unknown : counts.known);

@@ -64,6 +64,8 @@
 ///   beam if it is occupied).
 /// - At long range, cells between two beams are not seen: fewer cells than the grid model.
 
+#include <atomic>
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <nlohmann/json_fwd.hpp>
@@ -126,6 +128,45 @@ inline constexpr int kMaxBeams = 100000;
 /// beam model existed.
 void to_json(nlohmann::json& j, const SensorParams& p);
 
+/// What a grid sensor sees from each cell of one true map: for every cell, one bit per offset in
+/// range (by rank, the offset-table order) for each target in line of sight on that map,
+/// whatever the robot knows; the field of view and the noise apply at each scan. Scans fill it
+/// cell by cell, the first time a scan from a cell has an unknown cell in range that some scan
+/// could see (Sensor::scan's `observable`), so the
+/// runs of one map and their forks, which scan from the same cells again and again (the weight
+/// search runs thousands of them), sweep each cell once. Several threads may scan with one
+/// table at once. Made by Sensor::sight_table(); a scan with it reveals the same cells in the
+/// same order with the same noise draws as one without.
+class SightTable {
+ public:
+  /// True when the targets seen from cell `index` (an index of the map, 0 <= index < width x
+  /// height) are in the table.
+  [[nodiscard]] bool filled(int index) const {
+    return state_[static_cast<std::size_t>(index)].load(std::memory_order_acquire) == kFilled;
+  }
+  /// The table's size in bytes (most of it is touched only for cells scans fill).
+  [[nodiscard]] std::size_t bytes() const { return bytes_for(cells_, words_ * 64); }
+  /// The size of a table of `cells` cells for a disc of `offsets` offsets (the largest size_t
+  /// when that overflows).
+  [[nodiscard]] static std::size_t bytes_for(std::size_t cells, std::size_t offsets);
+
+ private:
+  friend class Sensor;
+  /// An empty table for `map` (which must outlive it) and a grid sensor of `range_cells` cells
+  /// whose disc has `offsets` offsets in range (Sensor::sight_table(), which checks its size).
+  SightTable(const WorldMap& map, double range_cells, std::size_t offsets);
+  static constexpr std::uint8_t kEmpty = 0;
+  static constexpr std::uint8_t kFilling = 1;  // one thread fills it; the others sweep for themselves
+  static constexpr std::uint8_t kFilled = 2;
+
+  const WorldMap* map_;
+  double range_cells_;
+  std::size_t cells_;
+  std::size_t words_;                                   // 64-bit words per cell
+  std::unique_ptr<std::atomic<std::uint8_t>[]> state_;  // per cell: kEmpty, kFilling or kFilled
+  std::unique_ptr<std::uint64_t[]> bits_;               // per cell: words_ words, valid once kFilled
+};
+
 /// A sensor for one resolution, of either model. Grid: precomputes the offsets in range in
 /// offset-table order (O(r^2) memory for a range of r cells, at most 2000 cells); a scan sweeps
 /// the eight octants around the robot by exact shadowcasting, so its cost follows the cells
@@ -144,6 +185,10 @@ class Sensor {
   /// check could cost more than a sweep among walls, which follows the cells it sees.
   static constexpr int kOpenDiscMaxCells = 8;
 
+  /// Largest SightTable sight_table() makes (bytes): 256 MiB, a 241 x 241 map at 6 cells of range
+  /// takes about 1 MB, a 2,000 x 2,000 one at 30 cells 1.4 GB (no table then).
+  static constexpr std::size_t kMaxSightTableBytes = std::size_t{256} << 20;
+
   Sensor() = default;
   Sensor(const SensorParams& params, double resolution_m);
 
@@ -157,8 +202,17 @@ class Sensor {
   /// can stand ever sees it (the inside of a building: RunSetup::observable). A scan whose range
   /// holds no unknown cell but such ones reveals nothing and is skipped, as one whose range is all
   /// known; the cells revealed are the same either way.
+  ///
+  /// `sight` (optional, grid model): the SightTable of this `truth` object for a sensor of this
+  /// range, read for cells it holds and filled for the others (std::invalid_argument when it was
+  /// made for another map object or range). The cells revealed are the same with it and without.
   std::span<const int> scan(const WorldMap& truth, KnownMap& known, Cell at, double heading_rad, Rng& rng,
-                            const std::uint8_t* observable = nullptr);
+                            const std::uint8_t* observable = nullptr, SightTable* sight = nullptr);
+
+  /// An empty SightTable for scans of `truth` (which must outlive it) by this sensor, its copies,
+  /// or any grid sensor of the same range; null for the beam model, a default-constructed
+  /// sensor, or a table larger than kMaxSightTableBytes.
+  [[nodiscard]] std::unique_ptr<SightTable> sight_table(const WorldMap& truth) const;
 
   /// What a scan from `at` facing `heading_rad` would see on the robot's own map `known`, for
   /// information-gain estimates (Holz 2010 section IV-B/C): the same range, field of view and
@@ -191,11 +245,29 @@ class Sensor {
   /// that is on the grid, not skip(index), inside the field of view and in line of sight with
   /// opaque(index) as the obstacle test (for crossed cells and for choosing the occupied-target
   /// rule), calls visit(index, rank) once, rank being its position in offset-table order (the
-  /// robot's own cell has rank 0). The order of the calls is unspecified. Defined in
-  /// sensor.cpp, the only place it is used.
+  /// robot's own cell has rank 0). `whole_disc`: every direction, the field of view ignored.
+  /// The order of the calls is unspecified. Defined in sensor.cpp, the only place it is used.
   template <typename Skip, typename Opaque, typename Visit>
-  void for_each_visible(int width, int height, Cell at, double heading_rad, Skip&& skip, Opaque&& opaque,
-                        Visit&& visit) const;
+  void for_each_visible(int width, int height, Cell at, double heading_rad, bool whole_disc, Skip&& skip,
+                        Opaque&& opaque, Visit&& visit) const;
+
+  /// The targets seen from `at` on `truth` as bits by rank (SightTable's row): `sight`'s row,
+  /// swept and filled first when empty (or swept into a scratch row while another thread fills it).
+  const std::uint64_t* sight_row(SightTable& sight, const WorldMap& truth, Cell at);
+  /// Half the field of view (radians) with the rounding slack: a target farther off the heading
+  /// is not seen.
+  [[nodiscard]] double half_field_of_view() const;
+  /// True when the target of rank `rank` lies outside the field of view facing `heading_rad`
+  /// (never the robot's own cell). Only for a field of view below 360 degrees (the tables have
+  /// angles then).
+  [[nodiscard]] bool outside_view(std::uint32_t rank, double heading_rad) const;
+  /// Reveals into `known`, in rank order, the targets of `bits` (words [first_word, end_word)),
+  /// with scan()'s noise draws, and appends them to revealed_. kEveryTarget: `bits` holds every
+  /// target seen (a SightTable row), and only those unknown and in the field of view are taken;
+  /// otherwise it holds only those.
+  template <bool kEveryTarget>
+  void reveal_ranks(const WorldMap& truth, KnownMap& known, Cell at, double heading_rad, Rng& rng,
+                    const std::uint64_t* bits, std::size_t first_word, std::size_t end_word);
 
   /// True when every cell within range of `at` on the map is known, or 0 in `observable` (may be
   /// null: every cell may be seen) (scan() has nothing to do).
@@ -210,6 +282,8 @@ class Sensor {
   std::vector<int> revealed_;
   /// Scratch of scan(): one bit per offset in range, by rank; all zero between scans.
   std::vector<std::uint64_t> seen_bits_;
+  /// Scratch of sight_row() while another thread fills the table's row.
+  std::vector<std::uint64_t> sight_scratch_;
 };
 
 }  // namespace world

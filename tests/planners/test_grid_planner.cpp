@@ -7,6 +7,7 @@
 #include "planner_test_utils.hpp"
 #include "planners/grid_planner.hpp"
 #include "planners/registry.hpp"
+#include "search/distance_field.hpp"
 
 namespace fsweep {
 namespace {
@@ -251,6 +252,97 @@ TEST(GridPlanner, BudgetParams) {
     EXPECT_NE(msg.find("/planners/0/params/time_limit_s"), std::string::npos) << msg;
     EXPECT_NE(msg.find("/planners/0/params/max_expansions"), std::string::npos) << msg;
   }
+}
+
+TEST(GridPlanner, APathProbeFindsAstarsPathWhateverItsBoundAndBudget) {
+  // PathProbe (search/distance_field.hpp) runs astar's A* with the parents kept: when it reaches
+  // the goal, under any bound at least the length and any budget it does not run out of, its
+  // path and its settled cells are astar's, and its length is DistanceField::compute_to's bit
+  // for bit. Seeded maps of random walls, both corner rules.
+  int reached = 0;
+  int cut = 0;
+  for (std::uint64_t seed = 1; seed <= 8; ++seed) {
+    const KnownMap known = testing::random_known_map(30 + static_cast<int>(seed) * 5, 28, 0.3, seed);
+    Rng rng = make_rng(seed, "probe-queries");
+    for (int q = 0; q < 40; ++q) {
+      PlanRequest req =
+          request_for(testing::random_free_cell(known, rng), testing::random_free_cell(known, rng));
+      req.allow_corner_cutting = q % 2 == 1;
+      GridPlanner astar(GridSearchKind::AStar);
+      const PlanResult planned = astar.plan(known, req);
+      DistanceQuery query;
+      query.allow_corner_cutting = req.allow_corner_cutting;
+      DistanceField field;
+      const std::optional<double> length = field.compute_to(known, req.start, req.goal, query);
+      ASSERT_TRUE(length.has_value());
+      for (const double bound : {std::numeric_limits<double>::infinity(), *length, *length * 1.5 + 1.0}) {
+        for (const long budget : {0L, planned.expansions, planned.expansions - 1}) {
+          query.max_distance_m = bound;
+          query.stop = StopCondition(SearchBudget{std::numeric_limits<double>::infinity(), budget},
+                                     StopCondition::Clock::time_point{});
+          PathProbe probe;
+          const std::optional<double> d = probe.compute_to(known, req.start, req.goal, query);
+          const std::string what = "seed " + std::to_string(seed) + " query " + std::to_string(q) +
+                                   " bound " + std::to_string(bound) + " budget " + std::to_string(budget);
+          if (planned.status != PlanStatus::Success) {
+            ASSERT_FALSE(probe.reached_goal()) << what;
+            continue;
+          }
+          if (budget > 0 && budget < planned.expansions) {  // ran out one cell short of the goal
+            ASSERT_FALSE(d.has_value()) << what;
+            ASSERT_FALSE(probe.reached_goal()) << what;
+            ++cut;
+            continue;
+          }
+          ASSERT_TRUE(probe.reached_goal()) << what;
+          ASSERT_EQ(*d, *length) << what;
+          std::vector<Cell> path;
+          for (const int i : probe.path()) path.push_back(known.cell(i));
+          ASSERT_EQ(path, planned.path) << what;
+          ASSERT_EQ(probe.expansions(), planned.expansions) << what;
+          ++reached;
+        }
+      }
+      // Below the length the probe does not reach the goal (nor keep a path).
+      if (planned.status == PlanStatus::Success && *length > 0.0) {
+        query.max_distance_m = *length * 0.999;
+        query.stop = StopCondition{};
+        PathProbe probe;
+        EXPECT_EQ(probe.compute_to(known, req.start, req.goal, query),
+                  std::numeric_limits<double>::infinity());
+        EXPECT_FALSE(probe.reached_goal());
+        EXPECT_TRUE(probe.path().empty());
+      }
+    }
+  }
+  EXPECT_GT(reached, 1500);
+  EXPECT_GT(cut, 150);
+}
+
+TEST(GridPlanner, AstarTakesTheSearchedPathOnlyWithoutABudget) {
+  // PlanRequest::searched: astar returns it as its own search's result (an expansion count no
+  // search gives shows it);
+  // with a budget, and for dijkstra, it searches.
+  const auto m = known_from_ascii({"S....", ".###.", "....G"});
+  PlanRequest req = request_for(m.start, m.goal);
+  SearchResult given;
+  given.status = PlanStatus::Success;
+  given.path = {m.start, Cell{1, 0}, Cell{2, 0}, Cell{3, 0}, Cell{4, 0}, Cell{4, 1}, m.goal};
+  given.expansions = 77;
+  req.searched = &given;
+  const PlanResult taken = GridPlanner(GridSearchKind::AStar).plan(m.known, req);
+  EXPECT_EQ(taken.path, given.path);
+  EXPECT_EQ(taken.expansions, 77);
+  const PlanResult own = GridPlanner(GridSearchKind::AStar).plan(m.known, request_for(m.start, m.goal));
+  for (const PlanResult& searched :
+       {GridPlanner(GridSearchKind::AStar, GridPlannerParams{1.0e9, 0}).plan(m.known, req),
+        GridPlanner(GridSearchKind::AStar,
+                    GridPlannerParams{std::numeric_limits<double>::infinity(), 1000000})
+            .plan(m.known, req)}) {
+    EXPECT_EQ(searched.path, own.path);
+    EXPECT_EQ(searched.expansions, own.expansions);
+  }
+  EXPECT_NE(GridPlanner(GridSearchKind::Dijkstra).plan(m.known, req).expansions, 77);
 }
 
 TEST(GridPlanner, NamesAndClone) {

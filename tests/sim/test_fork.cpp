@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "planners/registry.hpp"
 #include "sim/effort_free.hpp"
 #include "sim/heuristics.hpp"
 #include "sim/simulation.hpp"
@@ -123,6 +124,60 @@ TEST(Fork, ForksRunOnSeveralThreadsAtOnceGiveTheOriginalsResult) {
   for (auto& t : threads) t.join();
   for (const RunResult& r : results) expect_same_result(reference, r, "a fork on its own thread");
   expect_same_result(reference, sim.run(), "the original after its forks");
+}
+
+TEST(Fork, RunsKeepingWhatEachCellSeesGiveTheSameResults) {
+  // Simulation::keep_sight(): a run and its forks, on several threads, fill and read one
+  // SightTable of the map; each finishes as a run without one (every strategy; a sensor that
+  // misses cells, and one with a field of view of 120 degrees that looks around).
+  for (const double fov : {360.0, 120.0}) {
+    for (const std::string& name : strategy_names()) {
+      RunSpec spec = fork_spec(name, json::array());
+      spec.robot.sensor.fov_deg = fov;
+      const std::string what = name + " fov " + std::to_string(fov);
+      const RunResult reference = simulate(spec);
+      Simulation sim(spec);
+      sim.keep_sight();
+      for (int i = 0; i < 3 && sim.step(); ++i) {
+      }
+      std::vector<Simulation> forks(3, sim);
+      std::vector<RunResult> results(forks.size());
+      std::vector<std::thread> threads;
+      for (std::size_t i = 0; i < forks.size(); ++i) {
+        threads.emplace_back([&, i] { results[i] = forks[i].run(); });
+      }
+      expect_same_result(reference, sim.run(), what + ", the run keeping what it sees");
+      for (auto& t : threads) t.join();
+      for (const RunResult& r : results)
+        expect_same_result(reference, r, what + ", a fork on its own thread");
+      // The table was made and filled (a grid sensor of 5 cells on a 50 x 40 map).
+      ASSERT_NE(sim.setup().sight(), nullptr) << what;
+      int filled = 0;
+      for (int i = 0; i < 50 * 40; ++i) filled += sim.setup().sight()->filled(i) ? 1 : 0;
+      EXPECT_GT(filled, 10) << what;
+    }
+  }
+}
+
+TEST(Fork, AJourneyOnTheProbesPathIsTheJourneyAstarPlans) {
+  // A journey to a goal whose length a probe measured takes the probe's path
+  // (PlanRequest::searched); `astar` with an expansion budget searches for itself. Both runs, and
+  // a fork of each taken mid-run, must be the same, planner expansions included.
+  for (const std::string& name : {std::string("energy_aware"), std::string("closest_frontier")}) {
+    RunSpec own = fork_spec(name, json::array());
+    own.planner = configure_planner("astar", json{{"max_expansions", 1000000000}});
+    const RunResult reference = simulate(own);
+    const RunSpec spec = fork_spec(name, json::array());
+    Simulation sim(spec);
+    for (int i = 0; i < 6 && sim.step(); ++i) {
+    }
+    Simulation fork = sim;
+    Simulation assigned(spec);
+    assigned = sim;  // assignment drops the paths the target's own probes found
+    expect_same_result(reference, sim.run(), name + ", probes' paths");
+    expect_same_result(reference, fork.run(), name + ", a fork");
+    expect_same_result(reference, assigned.run(), name + ", an assigned copy");
+  }
 }
 
 TEST(Fork, CopyAssignmentAndMoveCarryTheWholeRun) {

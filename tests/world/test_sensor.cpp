@@ -5,10 +5,12 @@
 #include <nlohmann/json.hpp>
 #include <set>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "core/config_error.hpp"
 #include "world/ascii_world.hpp"
+#include "world/map_spec.hpp"
 #include "world/scan_fixture.hpp"
 #include "world/sensor.hpp"
 
@@ -995,6 +997,157 @@ TEST(SensorSweep, RangeAtTheSupportedMaximum) {
   // A long range on a small map: the cells of the map, nothing else.
   const WorldMap map = open_world(30, 20);
   EXPECT_EQ(scan_fresh(map, range(500.0), Cell{3, 17}).revealed.size(), 600U);
+}
+
+// --- The sight table: what each cell sees, swept once and kept (Sensor::sight_table) ---
+
+TEST(SightTable, ScansWithTheTableEqualTheRule) {
+  // Seeded cases as in EqualsTheRuleTargetByTarget. Each map gets one table. A first scan fills
+  // the robot's row, a second reads it, and a scan from that row on another partly known map
+  // (a row holds what the cell sees, not what is known) reveals what the rule says, with the
+  // same noise draws.
+  const std::vector<double> ranges_cells = {1.0, 1.5, 2.0, 3.0, 5.0, 5.5, 7.0, 9.9, 12.5, 20.0};
+  const std::vector<double> fovs = {360.0, 270.0, 120.0, 45.0};
+  Rng rng = make_rng(2026, "sight-table-test");
+  const auto below = [&](int n) {
+    return static_cast<int>(uniform_below(rng, static_cast<std::uint64_t>(n)));
+  };
+  int read_rows = 0;
+  int revealed = 0;
+  for (int trial = 0; trial < 600; ++trial) {
+    const bool tiny = below(5) == 0;
+    const int width = tiny ? 1 + below(8) : 20 + below(30);
+    const int height = tiny ? 1 + below(8) : 20 + below(30);
+    const double u = uniform01(rng);
+    WorldMap truth =
+        stress_world(width, height, 0.05 + 0.55 * u * u, static_cast<std::uint64_t>(trial) + 7000);
+    const bool rounding = below(2) == 0;
+    truth.resolution_m = rounding ? 0.3 : 1.0;
+    const double range_cells =
+        ranges_cells[static_cast<std::size_t>(below(static_cast<int>(ranges_cells.size())))];
+    SensorParams p;
+    p.range_m = rounding ? range_cells * 0.3 : range_cells;
+    p.fov_deg = below(2) == 0 ? 360.0 : fovs[static_cast<std::size_t>(below(static_cast<int>(fovs.size())))];
+    p.miss_probability = below(3) == 0 ? 0.3 : 0.0;
+    Sensor sensor(p, truth.resolution_m);
+    const std::unique_ptr<SightTable> table = sensor.sight_table(truth);
+    ASSERT_NE(table, nullptr);
+    const Cell at{below(width), below(height)};
+    const int at_index = truth.occupied.index(at);
+    const auto partly_known = [&] {
+      KnownMap known(width, height, truth.resolution_m);
+      const double share = below(2) == 0 ? 0.0 : 0.7 * uniform01(rng);
+      for (int i = 0; i < known.size(); ++i) {
+        if (uniform01(rng) < share) known.reveal(i, !truth.is_free(i));
+      }
+      return known;
+    };
+    const std::string where = "trial " + std::to_string(trial) + " at " + std::to_string(at.x) + "," +
+                              std::to_string(at.y) + " range " + std::to_string(range_cells) + " fov " +
+                              std::to_string(p.fov_deg);
+    for (int map = 0; map < 2; ++map) {
+      const double heading = (2.0 * uniform01(rng) - 1.0) * M_PI;
+      KnownMap known = partly_known();
+      KnownMap expected_known = known;
+      Rng scan_rng = make_rng(static_cast<std::uint64_t>(trial * 2 + map), "sensor");
+      Rng expected_rng = scan_rng;
+      for (int again = 0; again < 2; ++again) {
+        const bool held = table->filled(at_index);
+        read_rows += held ? 1 : 0;
+        const auto got = sensor.scan(truth, known, at, heading, scan_rng, nullptr, table.get());
+        const std::vector<int> expected =
+            reference_scan(sensor, truth, expected_known, at, heading, expected_rng);
+        ASSERT_EQ(std::vector<int>(got.begin(), got.end()), expected)
+            << where << " map " << map << " scan " << again;
+        ASSERT_EQ(known, expected_known) << where;
+        ASSERT_EQ(scan_rng, expected_rng) << where;
+        if (!expected.empty()) {
+          ASSERT_TRUE(table->filled(at_index)) << where;
+        }
+        revealed += static_cast<int>(expected.size());
+      }
+    }
+  }
+  EXPECT_GT(read_rows, 600);  // most scans after the first read the row
+  EXPECT_GT(revealed, 20000);
+}
+
+TEST(SightTable, ThreadsFillingOneTableRevealWhatTheRuleSays) {
+  // Two threads scan every cell of one street grid with one table, each on its own known map,
+  // so both fill rows and read rows the other filled (or sweep for themselves while it fills).
+  const WorldMap truth = load_map_spec("manhattan:w=60,h=60,seed=2");
+  const Sensor sensor(range(6.0), truth.resolution_m);
+  const std::unique_ptr<SightTable> table = sensor.sight_table(truth);
+  ASSERT_NE(table, nullptr);
+  std::vector<int> order;
+  for (int i = 0; i < truth.occupied.size(); ++i) {
+    if (truth.is_free(i)) order.push_back(i);
+  }
+  std::vector<std::vector<int>> got(2);
+  const auto run = [&](int thread) {
+    Sensor own = sensor;
+    KnownMap known(truth.width(), truth.height(), truth.resolution_m);
+    Rng rng = make_rng(1, "sensor");
+    for (std::size_t k = 0; k < order.size(); ++k) {
+      const int i = order[thread == 0 ? k : order.size() - 1 - k];
+      for (const int c : own.scan(truth, known, truth.occupied.cell(i), 0.0, rng, nullptr, table.get()))
+        got[static_cast<std::size_t>(thread)].push_back(c);
+    }
+  };
+  std::thread other(run, 1);
+  run(0);
+  other.join();
+  for (int thread = 0; thread < 2; ++thread) {
+    KnownMap known(truth.width(), truth.height(), truth.resolution_m);
+    Rng rng = make_rng(1, "sensor");
+    std::vector<int> expected;
+    for (std::size_t k = 0; k < order.size(); ++k) {
+      const int i = order[thread == 0 ? k : order.size() - 1 - k];
+      for (const int c : reference_scan(sensor, truth, known, truth.occupied.cell(i), 0.0, rng))
+        expected.push_back(c);
+    }
+    EXPECT_EQ(got[static_cast<std::size_t>(thread)], expected) << "thread " << thread;
+  }
+}
+
+TEST(SightTable, OnlyForTheMapAndRangeItWasMadeFor) {
+  const WorldMap truth = open_world(20, 10);
+  Sensor sensor(range(3.0), 1.0);
+  const std::unique_ptr<SightTable> table = sensor.sight_table(truth);
+  ASSERT_NE(table, nullptr);
+  EXPECT_EQ(table->bytes(), 200U * (1 * 8 + 1));  // 29 offsets in range: one word per cell
+  Rng rng = make_rng(1, "sensor");
+  KnownMap wide(21, 10, 1.0);
+  EXPECT_THROW((void)sensor.scan(open_world(21, 10), wide, Cell{1, 1}, 0.0, rng, nullptr, table.get()),
+               std::invalid_argument);
+  KnownMap known(20, 10, 1.0);
+  const WorldMap same_size = open_world(20, 10);  // another map object of the same size
+  EXPECT_THROW((void)sensor.scan(same_size, known, Cell{1, 1}, 0.0, rng, nullptr, table.get()),
+               std::invalid_argument);
+  Sensor longer(range(4.0), 1.0);
+  EXPECT_THROW((void)longer.scan(truth, known, Cell{1, 1}, 0.0, rng, nullptr, table.get()),
+               std::invalid_argument);
+  // A sensor of the same range made apart shares the table.
+  Sensor same(range(3.0), 1.0);
+  EXPECT_EQ(same.scan(truth, known, Cell{1, 1}, 0.0, rng, nullptr, table.get()).size(), 18U);
+  EXPECT_TRUE(table->filled(truth.occupied.index(Cell{1, 1})));
+  // A scan with nothing unknown in range (explored space) leaves its cell's row empty.
+  KnownMap explored(20, 10, 1.0);
+  for (int i = 0; i < explored.size(); ++i) explored.reveal(i, false);
+  EXPECT_TRUE(same.scan(truth, explored, Cell{2, 2}, 0.0, rng, nullptr, table.get()).empty());
+  EXPECT_FALSE(table->filled(truth.occupied.index(Cell{2, 2})));
+}
+
+TEST(SightTable, NoneForBeamsOrBeyondTheSizeLimit) {
+  SensorParams beams = range(5.0);
+  beams.model = SensorModel::Beams;
+  EXPECT_EQ(Sensor(beams, 1.0).sight_table(open_world(10, 10)), nullptr);
+  EXPECT_EQ(Sensor().sight_table(open_world(10, 10)), nullptr);
+  // 100 cells of range: 31,417 offsets, 491 words (3,929 bytes) a cell; 68,000 cells pass the
+  // 256 MiB limit, 69,000 do not (nothing is allocated for them).
+  const Sensor wide(range(100.0), 1.0);
+  EXPECT_NE(wide.sight_table(open_world(340, 200)), nullptr);
+  EXPECT_EQ(wide.sight_table(open_world(345, 200)), nullptr);
 }
 
 }  // namespace test_sensor
