@@ -108,6 +108,11 @@ class Simulation {
   /// whose weights make argmin_linear() choose that candidate takes. Throws std::logic_error
   /// without such candidates.
   bool step_choosing(int candidate);
+  /// The candidates the last choice() returned on this state (on this simulation or on the one it
+  /// was copied from since), or null when there are none: what step_choosing() chooses among.
+  [[nodiscard]] const Candidates* pending_choice() const {
+    return pending_ ? &pending_->candidates : nullptr;
+  }
 
   /// Makes the run's linear-scored strategy score by `weights` from now on
   /// (LinearScoredStrategy::set_weights). Throws std::logic_error for another kind of strategy and

@@ -54,6 +54,8 @@ struct Journal {
   std::unordered_map<std::uint64_t, SubtreeTally> done;
   /// Branch and bound's other leaves (pruned and beaten): their paths and tallies.
   std::vector<std::pair<std::vector<int>, SubtreeTally>> leaves;
+  /// True when no line of the search was read.
+  [[nodiscard]] bool empty() const { return found.empty() && done.empty() && leaves.empty(); }
 };
 
 /// The cells' text, per instance (a journal line holds no column names).
@@ -261,6 +263,12 @@ class SearchWriter {
     if (guard != nullptr && guard->check())
       return stopped_by_memory(std::move(out), *guard, MemoryStop::Stage::Starting);
     Journal journaled = read_journal(key, out_dir_, JournalDamage::Repair, true, guard);
+    if (journaled.empty() && retired_lines(out_dir_, specs.size())) {
+      std::fprintf(stderr,
+                   "fsweep: %s holds lines of search %zu in journal format '%s' of an older build, whose "
+                   "region tree differs; this build does not read them, and the search starts again\n",
+                   journal_path(out_dir_).c_str(), id_, std::string(SearchJournal::kRetiredFormat).c_str());
+    }
     found = std::move(journaled.found);
     if (guard != nullptr && guard->reached())
       return stopped_by_memory(std::move(out), *guard, MemoryStop::Stage::Resuming);
@@ -400,7 +408,17 @@ class SearchWriter {
     const std::string key = unit_key(instance_count());
     std::map<std::uint64_t, std::size_t> by_trace;
     for (const std::string& dir : dirs) {
-      std::vector<FoundBehaviour> read = read_journal(key, dir, JournalDamage::Refuse, false, guard).found;
+      Journal journaled = read_journal(key, dir, JournalDamage::Refuse, false, guard);
+      if (journaled.empty() && retired_lines(dir, instance_count())) {
+        throw ConfigError(journal_path(dir),
+                          "holds the shard's lines of search " + std::to_string(id_) +
+                              " in journal format '" + std::string(SearchJournal::kRetiredFormat) +
+                              "' of an older build, whose region tree differs; this build merges '" +
+                              std::string(SearchJournal::kFormat) +
+                              "' only: rerun the shard's `fsweep run --shard i/N` with this build, after "
+                              "deleting its searches.json");
+      }
+      std::vector<FoundBehaviour> read = std::move(journaled.found);
       if (guard != nullptr && guard->reached()) {
         out.found.insert(out.found.end(), std::make_move_iterator(read.begin()),
                          std::make_move_iterator(read.end()));
@@ -433,6 +451,7 @@ class SearchWriter {
     for (const json& r : records) {
       out.stats.splits += r.at("splits").get<std::uint64_t>();
       out.stats.forks += r.at("forks").get<std::uint64_t>();
+      out.stats.steps += r.at("steps").get<std::uint64_t>();
       out.wall_s += r.at("wall_s").get<double>();
       if (r.contains("probes") && r.at("probes").is_number())
         out.stats.probes += r.at("probes").get<std::size_t>();
@@ -467,13 +486,14 @@ class SearchWriter {
 
   /// What a journal line must match to be this search's: its instances (every resolved
   /// parameter), box, objective and mode, and the journal's format (SearchJournal::kFormat).
-  [[nodiscard]] std::string unit_key(std::size_t instances) const {
+  [[nodiscard]] std::string unit_key(std::size_t instances,
+                                     std::string_view format = SearchJournal::kFormat) const {
     json key = json::array();
     for (std::size_t i = 0; i < instances; ++i) key.push_back(plan_.search_instance_json(unit_, i));
     key.push_back(search_.values);
     key.push_back(std::string(objective_.name));
     key.push_back(search_.mode == WeightSearch::Mode::All ? "all" : "best");
-    key.push_back(std::string(SearchJournal::kFormat));
+    key.push_back(std::string(format));
     return sweep_hash(key);  // the FNV-1a 64 of its dump, as the manifest's hash of a sweep
   }
 
@@ -531,6 +551,11 @@ class SearchWriter {
     out.done =
         SearchJournal::read(journal_path(dir), journal_shape(key, names), damage, hint, behaviour, leaf);
     return out;
+  }
+
+  /// True when the journal in `dir` has lines of this search in SearchJournal::kRetiredFormat.
+  [[nodiscard]] bool retired_lines(const std::string& dir, std::size_t instances) const {
+    return SearchJournal::holds_key(journal_path(dir), unit_key(instances, SearchJournal::kRetiredFormat));
   }
 
   /// The columns of a behaviour's cells per instance.
@@ -626,6 +651,7 @@ class SearchWriter {
                 {"resumed_behaviours", searched.resumed},
                 {"splits", stats.splits},
                 {"forks", stats.forks},
+                {"steps", stats.steps},
                 {"certificate", certificate(stats)},
                 {"wall_s", searched.wall_s},
                 {"merged_from_shards", shards},
@@ -884,6 +910,13 @@ SearchRunReport merge_weight_searches(const SweepPlan& plan, const std::string& 
   write_search_files(plan, units, std::move(rows), out_dir, report);
   report.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return report;
+}
+
+std::string weight_search_journal_key(const SweepPlan& plan, std::size_t search_id, std::string_view format) {
+  const Objective* objective = nullptr;
+  const std::vector<SearchUnit> units = checked_units(plan, objective);
+  const SearchWriter writer(plan, units.at(search_id), search_id, *objective, std::string());
+  return writer.unit_key(writer.instance_count(), format);
 }
 
 }  // namespace sweep

@@ -50,6 +50,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/memory_limit.hpp"
@@ -146,6 +147,13 @@ SearchRunReport run_weight_searches(const SweepPlan& plan, const std::string& ou
 SearchRunReport merge_weight_searches(const SweepPlan& plan, const std::string& out_dir,
                                       const std::vector<std::string>& shard_dirs,
                                       const SearchMemoryGuard& memory = {});
+
+/// The key of the lines of `plan`'s search `search_id` in a journal of `format`
+/// (SearchJournal::kFormat; kRetiredFormat for the lines an older build wrote): what a reader of
+/// the journal matches lines by. ConfigError as run_weight_searches() for a bad plan;
+/// std::out_of_range for an id past the plan's searches.
+[[nodiscard]] std::string weight_search_journal_key(const SweepPlan& plan, std::size_t search_id,
+                                                    std::string_view format);
 
 }  // namespace sweep
 }  // namespace fsweep

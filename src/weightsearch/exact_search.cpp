@@ -112,44 +112,74 @@ class Explorer {
   }
 
   /// Follows `b` to the end of its runs, forking a task for every share but the last at each
-  /// split (the last goes on in this one). The instances advance one at a time: the first
-  /// that has not ended runs until its next choice that depends on the weights. A stopped
-  /// search leaves `b` at its next decision or step, unfinished (its node is never released).
+  /// split (the last goes on in this one). Each instance in turn advances until it ends or comes
+  /// to a decision that splits the region (advance()); then the region splits at the first
+  /// instance's such decision, and every share goes on from there, the other instances held at
+  /// theirs. So what the region's vectors do alike on every instance is simulated once for the
+  /// region, not again for each share of a split on an earlier instance. A stopped search leaves
+  /// `b` at its next decision or step, unfinished (its node is never released).
   void explore(Branch b) {
-    std::vector<double> w_lo(static_cast<std::size_t>(grid_.weights()));
-    std::vector<double> w_hi(w_lo.size());
     for (;;) {
       if (stopping()) return;
-      const auto open =
-          std::find_if(b.sims.begin(), b.sims.end(), [](const Simulation& s) { return !s.ended(); });
-      if (open == b.sims.end()) return finish(std::move(b));
-      Simulation& sim = *open;
-      const auto instance = static_cast<std::size_t>(open - b.sims.begin());
       if (!b.vectors) b.vectors = grid_.count(b.region);
       if (pruned(b)) return;
       if (*b.vectors == 1) return run_alone(std::move(b));
-      const Candidates* candidates = choice(b, sim, w_lo, w_hi);
+      std::optional<std::size_t> split_at;
+      std::vector<WeightGrid::Share> shares;
+      for (std::size_t instance = 0; instance < b.sims.size(); ++instance) {
+        std::vector<WeightGrid::Share> held;
+        if (!advance(b, instance, held)) return;
+        if (!held.empty() && !split_at) {
+          split_at = instance;
+          shares = std::move(held);
+        }
+      }
+      if (!split_at) return finish(std::move(b));
+      if (!fork(b, shares, *split_at)) return;
+      step(b.sims[*split_at], b.choices.back());
+    }
+  }
+
+  /// Steps instance `instance` of `b` while every vector of the region makes the same choice:
+  /// until its run ends, or until a decision splits the region into `shares` (returned there; the
+  /// run keeps the decision's candidates, Simulation::pending_choice(), so a share of a split
+  /// elsewhere takes them up without asking again: they hold every candidate a vector of this
+  /// region, and so of any part of it, may choose). False when `b` was pruned or the search
+  /// stopped (`b` is then gone).
+  bool advance(Branch& b, std::size_t instance, std::vector<WeightGrid::Share>& shares) {
+    Simulation& sim = b.sims[instance];
+    while (!sim.ended()) {
+      if (stopping() || pruned(b)) return false;
+      const Candidates* candidates = sim.pending_choice();
+      if (candidates == nullptr) candidates = choice(b, sim);
       if (candidates == nullptr) {  // a decision no weight changes
-        (void)sim.step();
+        step(sim);
         continue;
       }
       if (candidates->cells.size() == 1) {  // the only candidate any weight vector here may choose
-        (void)sim.step_choosing(0);
+        step(sim, 0);
         continue;
       }
       const WeightDirections* tied_directions = nullptr;
       if (const int sole = sole_choice(b, *candidates, tied_directions); sole >= 0) {
-        (void)sim.step_choosing(sole);
+        step(sim, sole);
         continue;
       }
-      std::vector<WeightGrid::Share> shares = grid_.split(b.region, *candidates, tied_directions);
-      if (shares.size() == 1) {
-        (void)sim.step_choosing(shares.front().candidate);
+      std::vector<WeightGrid::Share> split = grid_.split(b.region, *candidates, tied_directions);
+      if (split.size() == 1) {
+        step(sim, split.front().candidate);
         continue;
       }
-      if (!fork(b, shares, instance)) return;
-      (void)sim.step_choosing(b.choices.back());
+      shares = std::move(split);
+      return true;
     }
+    return true;
+  }
+
+  /// sim.step() (candidate < 0) or sim.step_choosing(candidate), counted; its result.
+  bool step(Simulation& sim, int candidate = -1) {
+    steps_.fetch_add(1, std::memory_order_relaxed);
+    return candidate < 0 ? sim.step() : sim.step_choosing(candidate);
   }
 
   /// The rest of a branch down to one vector: its runs alone, by the strategy's own (cheaper)
@@ -158,7 +188,7 @@ class Explorer {
     const std::vector<double> weights = grid_.weights_at(grid_.lexmin(b.region));
     for (Simulation& s : b.sims) {
       s.set_weights(weights);
-      while (s.step()) {
+      while (step(s)) {
         if (stopping() || pruned(b)) return;
       }
     }
@@ -166,18 +196,25 @@ class Explorer {
   }
 
   /// The candidates of `sim`'s next decision for the vectors of `b`'s region (Simulation::choice,
-  /// given the region's bounding box in `w_lo`, `w_hi` and its directions), or null for a
-  /// decision no weight changes.
-  const Candidates* choice(Branch& b, Simulation& sim, std::vector<double>& w_lo, std::vector<double>& w_hi) {
+  /// given the region's bounding box and its directions), or null for a decision no weight
+  /// changes.
+  const Candidates* choice(Branch& b, Simulation& sim) {
     if (!b.box) b.box = grid_.bounds(b.region);
     const auto& box = *b.box;
-    for (int k = 0; k < grid_.weights(); ++k) {
-      const auto at = static_cast<std::size_t>(k);
-      w_lo[at] = grid_.values(k)[static_cast<std::size_t>(box[at][0])];
-      w_hi[at] = grid_.values(k)[static_cast<std::size_t>(box[at][1])];
+    std::array<double, WeightGrid::kMaxWeights> lo{};
+    std::array<double, WeightGrid::kMaxWeights> hi{};
+    const auto n = static_cast<std::size_t>(grid_.weights());
+    for (std::size_t k = 0; k < n; ++k) {
+      lo[k] = grid_.values(static_cast<int>(k))[static_cast<std::size_t>(box[k][0])];
+      hi[k] = grid_.values(static_cast<int>(k))[static_cast<std::size_t>(box[k][1])];
     }
+    return sim.choice(WeightBounds{std::span(lo).first(n), std::span(hi).first(n), directions(b)});
+  }
+
+  /// `b`'s region's directions (WeightGrid::directions), computed once per region.
+  const WeightDirections& directions(Branch& b) {
     if (!b.directions) b.directions = grid_.directions(b.region);
-    return sim.choice(WeightBounds{w_lo, w_hi, *b.directions});
+    return *b.directions;
   }
 
   /// The candidate every vector of `b`'s region chooses, when its directions prove it without
@@ -185,7 +222,7 @@ class Explorer {
   /// candidates can win in its bounding box), else -1. For tied candidates `tied_directions` is
   /// set to the region's directions in their coordinates, for split().
   int sole_choice(Branch& b, const Candidates& candidates, const WeightDirections*& tied_directions) {
-    const int sole = grid_.sole_choice(*b.directions, candidates);
+    const int sole = grid_.sole_choice(directions(b), candidates);
     const int sign = sole < 0 ? WeightGrid::tied_sign(candidates) : 0;
     if (sign == 0) return sole;
     // The energy-aware costs depend on w2 - w3 (or w2 + w3): in those coordinates a region's
@@ -235,7 +272,7 @@ class Explorer {
         continue;
       }
       tasks_.run([this, fork, candidate, instance] {
-        (void)fork->sims[instance].step_choosing(candidate);
+        step(fork->sims[instance], candidate);
         explore(std::move(*fork));
       });
     }
@@ -262,6 +299,7 @@ class Explorer {
     s.behaviours = behaviours_.load();
     s.splits = splits_.load();
     s.forks = forks_.load();
+    s.steps = steps_.load();
     s.pruned_regions = pruned_regions_.load();
     s.pruned_vectors = pruned_vectors_.load();
     s.smallest_pruned_bound = smallest_pruned_bound_.load();
@@ -346,7 +384,7 @@ class Explorer {
       waiting_.erase(at);
     }
     if (stopping()) return;  // its slot stays open: unresolved
-    (void)w.branch->sims[w.instance].step_choosing(w.candidate);
+    step(w.branch->sims[w.instance], w.candidate);
     explore(std::move(*w.branch));
   }
 
@@ -514,6 +552,7 @@ class Explorer {
   std::atomic<std::uint64_t> behaviours_{0};
   std::atomic<std::uint64_t> splits_{0};
   std::atomic<std::uint64_t> forks_{0};
+  std::atomic<std::uint64_t> steps_{0};
   const BranchAndBound* bnb_;
   const SubtreeJournal* journal_;
   const std::atomic<bool>* stop_;

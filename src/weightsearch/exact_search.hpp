@@ -133,6 +133,9 @@ struct ExactSearchStats {
   std::uint64_t behaviours = 0;
   std::uint64_t splits = 0;
   std::uint64_t forks = 0;
+  /// The steps its branches' runs took (Simulation::step() and step_choosing() calls; the probes'
+  /// not counted): its simulation work, which the sharing of decisions keeps down.
+  std::uint64_t steps = 0;
   /// Branch and bound only: the certificate. Regions pruned, the vectors in them, and the
   /// smallest lower bound among them (infinity when none was pruned): every pruned vector's
   /// objective is at least that, above `best`, the optimum. These counts depend on the order

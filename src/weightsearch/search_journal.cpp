@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <utility>
 
 #include "core/config_error.hpp"
@@ -178,6 +179,17 @@ std::unordered_map<std::uint64_t, SubtreeTally> SearchJournal::read(
     if (ec) throw ConfigError(path, "cannot cut off its damaged lines: " + ec.message());
   }
   return done;
+}
+
+bool SearchJournal::holds_key(const std::string& path, const std::string& key) {
+  std::ifstream in(path, std::ios::binary);
+  const std::string field = json{{"key", key}}.dump();  // {"key":"..."}
+  const std::string_view needle = std::string_view(field).substr(1, field.size() - 2);
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.find(needle) != std::string::npos) return true;
+  }
+  return false;
 }
 
 void SearchJournal::append(const std::string& key, const Behaviour& behaviour,

@@ -77,10 +77,18 @@ enum class JournalDamage {
 
 class SearchJournal {
  public:
-  /// The journal's format, the last part of every search's key. 3: regions' parts as point
-  /// runs and finished subtrees; journals of format 1 and 2 are not read (their searches are
-  /// redone).
-  static constexpr std::string_view kFormat = "journal 3";
+  /// The journal's format, the last part of every search's key. 4: the region tree whose
+  /// branches advance every instance before they split (exact_search.cpp, Explorer::explore);
+  /// 3: regions' parts as point runs and finished subtrees, in the tree that split at the first
+  /// unfinished instance's decisions. Journals of formats 1 to 3 are not read: a resumed search
+  /// redoes them (saying so for format 3, kRetiredFormat), a merge refuses them.
+  static constexpr std::string_view kFormat = "journal 4";
+  /// The format before kFormat, whose subtree ids name other regions.
+  static constexpr std::string_view kRetiredFormat = "journal 3";
+
+  /// True when the journal at `path` has a line of search key `key` (a scan for its key field
+  /// that parses no line; a missing file has none).
+  [[nodiscard]] static bool holds_key(const std::string& path, const std::string& key);
 
   /// Reads the lines of `shape.key` in the journal at `path` (missing: nothing): each finished
   /// behaviour goes to `each` as it is read (so a caller may drop what it need not keep), and the

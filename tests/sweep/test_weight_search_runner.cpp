@@ -26,6 +26,8 @@
 #include "sweep/sweep_runner.hpp"
 #include "sweep/sweep_test_files.hpp"
 #include "sweep/sweep_test_run.hpp"
+#include "sweep/weight_search_runner.hpp"
+#include "weightsearch/search_journal.hpp"
 #include "weightsearch/weight_grid.hpp"
 
 namespace fsweep {
@@ -648,6 +650,66 @@ TEST(WeightSearchRunner, AKilledSearchResumesFromItsJournalWithTheSameFiles) {
     std::set<std::string> distinct(relines.begin(), relines.end());
     EXPECT_EQ(distinct.size(), relines.size()) << what << ": a line journaled twice";
   }
+}
+
+/// `text` with every occurrence of `from` replaced by `to`.
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
+    text.replace(at, from.size(), to);
+  return text;
+}
+
+TEST(WeightSearchRunner, AJournalOfTheRetiredFormatIsSearchedAgainAndNeverMerged) {
+  // Lines an older build wrote (journal format 3) name subtrees of another region tree: a
+  // resumed search says so and searches again, to the same files; a merge refuses such a shard.
+  const json box = {{"w1", {0, 1, 2}}, {"w2", {0, 2}}, {"w3", {0, 1, 2}}, {"w4", {0, 2}}};
+  const json maps = json::array({{{"generator", "office"}, {"w", 32}, {"h", 32}, {"seeds", {3, 4}}}});
+  json sweep = search_and_grid(maps, box, json::array());
+  sweep["strategies"].erase(1);  // the search alone
+  sweep["strategies"][0]["search"] = {{"mode", "best"}};
+  const SweepPlan plan = SweepPlan::from_json(sweep, "search.json");
+  const std::string current = weight_search_journal_key(plan, 0, SearchJournal::kFormat);
+  const std::string retired = weight_search_journal_key(plan, 0, SearchJournal::kRetiredFormat);
+  ASSERT_NE(current, retired);
+  const auto retire = [&](const std::string& journal) {
+    const std::string text = testing::read_file(journal);
+    ASSERT_NE(text.find("\"key\":\"" + current + "\""), std::string::npos) << journal;
+    testing::write_file(journal, replaced(text, current, retired));
+  };
+
+  const std::string dir = run(sweep, "retired_format");
+  const std::vector<std::string> files{"behaviours.csv", "search_best.csv", "search_summary.csv"};
+  std::map<std::string, std::string> first;
+  for (const auto& f : files) first[f] = testing::read_file(dir + "/" + f);
+  retire(dir + "/search_journal.jsonl");
+  for (const auto& f : files) std::filesystem::remove(dir + "/" + f);
+  std::filesystem::remove(dir + "/searches.json");
+  ::testing::internal::CaptureStderr();
+  (void)run_sweep(plan, testing::quiet_runner(dir));
+  const std::string said = ::testing::internal::GetCapturedStderr();
+  EXPECT_NE(said.find("journal format 'journal 3' of an older build"), std::string::npos) << said;
+  const json record = json::parse(testing::read_file(dir + "/searches.json"))["searches"][0];
+  EXPECT_EQ(record["resumed_behaviours"].get<std::size_t>(), 0U);
+  for (const auto& f : files) EXPECT_EQ(testing::read_file(dir + "/" + f), first[f]) << f;
+
+  const std::string sharded = testing::fresh_dir("search", "retired_format_shards");
+  for (std::uint64_t i = 0; i < 2; ++i) {
+    RunnerOptions o = testing::quiet_runner(sharded);
+    o.shard_index = i;
+    o.shard_count = 2;
+    (void)run_sweep(plan, o);
+  }
+  const std::string journal = sharded + "/shard-1-of-2/search_journal.jsonl";
+  retire(journal);
+  try {
+    (void)merge_shards(sharded);
+    ADD_FAILURE() << "merged a shard of the retired journal format";
+  } catch (const ConfigError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find(journal), std::string::npos) << what;
+    EXPECT_NE(what.find("'journal 3'"), std::string::npos) << what;
+  }
+  EXPECT_FALSE(std::filesystem::exists(sharded + "/behaviours.csv"));
 }
 
 /// A search of the box [0, 3]^4 on an office map, without the grid entry.

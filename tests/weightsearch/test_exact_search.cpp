@@ -199,6 +199,25 @@ TEST(ExactSearchLong, DISABLED_AClassIsSearchedJointlyAsTheCommonRefinementOfIts
   EXPECT_EQ(total, grid.size());
 }
 
+TEST(ExactSearch, WhatARegionDoesAlikeOnEveryInstanceIsSimulatedOnce) {
+  // A class of one map twice: its second instance decides as the first, so each split of the
+  // first finds the second at the same decision, and the joint search takes twice the steps of
+  // the map's search alone; it does not run the second instance again from its start for each
+  // share of a split of the first.
+  const RunSpec spec = spec_on("office:w=32,h=32,seed=3", 120.0);
+  const WeightGrid grid({integers(0, 2), integers(0, 2), integers(0, 2), integers(0, 2)});
+  ExactSearchStats alone;
+  const std::vector<Behaviour> once = behaviours_of(spec, grid, 1, &alone);
+  ASSERT_GE(alone.splits, 3U) << "a search without splits tests nothing";
+  const std::vector<RunSpec> twice{spec, spec};
+  std::vector<Behaviour> joint;
+  const ExactSearchStats both =
+      exact_search(twice, grid, 1, [&](Behaviour&& b) { joint.push_back(std::move(b)); });
+  EXPECT_EQ(joint.size(), once.size());
+  EXPECT_EQ(both.splits, alone.splits);
+  EXPECT_EQ(both.steps, 2 * alone.steps);
+}
+
 TEST(ExactSearch, ShardsFindPartsOfTheWholeSearchsBehavioursWithTheirTraces) {
   // The whole grid's behaviours have distinct traces; a shard's behaviours are their parts in
   // the shard (same trace, same run), and the parts of one trace join into the whole region.

@@ -137,6 +137,22 @@ TEST(SearchJournal, ReadsBackWhatItAppendedForItsKeyOnly) {
   EXPECT_TRUE(none.empty());
 }
 
+TEST(SearchJournal, HoldsKeyFindsALineOfThatKeyOnly) {
+  // Keys that are prefixes of each other, and a key that appears only inside a line's cells.
+  const Fixture fx;
+  const std::string path = scratch_journal("holds_key");
+  {
+    SearchJournal journal(path);
+    journal.append("k12", fx.behaviour(0, 1), {{"k1", "x"}, {"y", "z"}});
+    journal.append_done("k3", 9, SubtreeTally{});
+  }
+  EXPECT_TRUE(SearchJournal::holds_key(path, "k12"));
+  EXPECT_TRUE(SearchJournal::holds_key(path, "k3"));
+  EXPECT_FALSE(SearchJournal::holds_key(path, "k1"));
+  EXPECT_FALSE(SearchJournal::holds_key(path, "k"));
+  EXPECT_FALSE(SearchJournal::holds_key(path + ".missing", "k12"));
+}
+
 TEST(SearchJournal, RepairCutsADamagedLineAndEverythingAfterIt) {
   const Fixture fx;
   const std::string path = scratch_journal("repair");
