@@ -56,6 +56,9 @@ struct Journal {
   std::vector<std::pair<std::vector<int>, SubtreeTally>> leaves;
   /// True when no line of the search was read.
   [[nodiscard]] bool empty() const { return found.empty() && done.empty() && leaves.empty(); }
+  /// Lines of the same search in SearchJournal::kPreviousFormat, for a class of several
+  /// instances (their subtree ids name regions of another tree): counted, not read.
+  std::size_t previous_lines = 0;
 };
 
 /// The cells' text, per instance (a journal line holds no column names).
@@ -88,6 +91,9 @@ struct Searched {
   /// Of them, read from the journal of a killed search.
   std::size_t resumed = 0;
   ExactSearchStats stats;
+  /// False for a merge of shards some of whose records have no `steps` (older builds'):
+  /// searches.json's `steps` is then null.
+  bool steps_known = true;
   double wall_s = 0.0;
   /// Mode best: where the search stands (describe_search_status() of its last anytime status);
   /// empty in mode all.
@@ -259,15 +265,16 @@ class SearchWriter {
     const auto start = std::chrono::steady_clock::now();
     Searched out;
     std::vector<FoundBehaviour>& found = out.found;
-    const std::string key = unit_key(specs.size());
+    const std::string key = journal_key();
     if (guard != nullptr && guard->check())
       return stopped_by_memory(std::move(out), *guard, MemoryStop::Stage::Starting);
     Journal journaled = read_journal(key, out_dir_, JournalDamage::Repair, true, guard);
-    if (journaled.empty() && retired_lines(out_dir_, specs.size())) {
+    if (journaled.empty() && journaled.previous_lines > 0) {
       std::fprintf(stderr,
-                   "fsweep: %s holds lines of search %zu in journal format '%s' of an older build, whose "
-                   "region tree differs; this build does not read them, and the search starts again\n",
-                   journal_path(out_dir_).c_str(), id_, std::string(SearchJournal::kRetiredFormat).c_str());
+                   "fsweep: %s holds %zu lines of search %zu in journal format '%s' of an older build, "
+                   "whose region tree differs; this build does not read them, and the search starts again\n",
+                   journal_path(out_dir_).c_str(), journaled.previous_lines, id_,
+                   std::string(SearchJournal::kPreviousFormat).c_str());
     }
     found = std::move(journaled.found);
     if (guard != nullptr && guard->reached())
@@ -405,14 +412,14 @@ class SearchWriter {
   Searched merged(const std::vector<std::string>& dirs, const std::vector<json>& records,
                   MemoryWatch* guard) {
     Searched out;
-    const std::string key = unit_key(instance_count());
+    const std::string key = journal_key();
     std::map<std::uint64_t, std::size_t> by_trace;
     for (const std::string& dir : dirs) {
       Journal journaled = read_journal(key, dir, JournalDamage::Refuse, false, guard);
-      if (journaled.empty() && retired_lines(dir, instance_count())) {
+      if (journaled.empty() && journaled.previous_lines > 0) {
         throw ConfigError(journal_path(dir),
                           "holds the shard's lines of search " + std::to_string(id_) +
-                              " in journal format '" + std::string(SearchJournal::kRetiredFormat) +
+                              " in journal format '" + std::string(SearchJournal::kPreviousFormat) +
                               "' of an older build, whose region tree differs; this build merges '" +
                               std::string(SearchJournal::kFormat) +
                               "' only: rerun the shard's `fsweep run --shard i/N` with this build, after "
@@ -451,7 +458,11 @@ class SearchWriter {
     for (const json& r : records) {
       out.stats.splits += r.at("splits").get<std::uint64_t>();
       out.stats.forks += r.at("forks").get<std::uint64_t>();
-      out.stats.steps += r.at("steps").get<std::uint64_t>();
+      if (r.contains("steps") && r.at("steps").is_number()) {
+        out.stats.steps += r.at("steps").get<std::uint64_t>();
+      } else {
+        out.steps_known = false;
+      }
       out.wall_s += r.at("wall_s").get<double>();
       if (r.contains("probes") && r.at("probes").is_number())
         out.stats.probes += r.at("probes").get<std::size_t>();
@@ -485,9 +496,12 @@ class SearchWriter {
   }
 
   /// What a journal line must match to be this search's: its instances (every resolved
-  /// parameter), box, objective and mode, and the journal's format (SearchJournal::kFormat).
-  [[nodiscard]] std::string unit_key(std::size_t instances,
-                                     std::string_view format = SearchJournal::kFormat) const {
+  /// parameter), box, objective and mode, and the journal's `format` (SearchJournal::format_for()).
+  /// This search's key in its journal format (SearchJournal::format_for()).
+  [[nodiscard]] std::string journal_key() const {
+    return unit_key(instance_count(), SearchJournal::format_for(instance_count()));
+  }
+  [[nodiscard]] std::string unit_key(std::size_t instances, std::string_view format) const {
     json key = json::array();
     for (std::size_t i = 0; i < instances; ++i) key.push_back(plan_.search_instance_json(unit_, i));
     key.push_back(search_.values);
@@ -548,14 +562,9 @@ class SearchWriter {
       }
       out.leaves.emplace_back(std::move(l.choices), t);
     };
-    out.done =
-        SearchJournal::read(journal_path(dir), journal_shape(key, names), damage, hint, behaviour, leaf);
+    out.done = SearchJournal::read(journal_path(dir), journal_shape(key, names), damage, hint, behaviour,
+                                   leaf, &out.previous_lines);
     return out;
-  }
-
-  /// True when the journal in `dir` has lines of this search in SearchJournal::kRetiredFormat.
-  [[nodiscard]] bool retired_lines(const std::string& dir, std::size_t instances) const {
-    return SearchJournal::holds_key(journal_path(dir), unit_key(instances, SearchJournal::kRetiredFormat));
   }
 
   /// The columns of a behaviour's cells per instance.
@@ -564,6 +573,9 @@ class SearchWriter {
   }
   [[nodiscard]] JournalShape journal_shape(const std::string& key, const Columns& names) const {
     JournalShape shape{key, &grid_, instance_count(), names.size()};
+    // A class's lines of the format before name regions of another tree: counted, not read.
+    if (instance_count() > 1 && SearchJournal::format_for(instance_count()) != SearchJournal::kPreviousFormat)
+      shape.counted_key = unit_key(instance_count(), SearchJournal::kPreviousFormat);
     // Journals written before runs had a coverage target lack that column; its cells are empty.
     const auto added = std::find_if(names.begin(), names.end(), [](const auto& column) {
       return column.first == "distance_to_coverage_target_m";
@@ -579,7 +591,7 @@ class SearchWriter {
     CertificateSource source;
     for (const std::string& dir : dirs) source.journals.push_back(journal_path(dir));
     const Columns names = cell_names();
-    source.shape = journal_shape(unit_key(instance_count()), names);
+    source.shape = journal_shape(journal_key(), names);
     source.objective_cell =
         static_cast<std::size_t>(std::find_if(names.begin(), names.end(),
                                               [&](const auto& c) { return c.first == objective_.column; }) -
@@ -651,7 +663,7 @@ class SearchWriter {
                 {"resumed_behaviours", searched.resumed},
                 {"splits", stats.splits},
                 {"forks", stats.forks},
-                {"steps", stats.steps},
+                {"steps", searched.steps_known ? json(stats.steps) : json(nullptr)},
                 {"certificate", certificate(stats)},
                 {"wall_s", searched.wall_s},
                 {"merged_from_shards", shards},

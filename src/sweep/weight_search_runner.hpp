@@ -149,7 +149,8 @@ SearchRunReport merge_weight_searches(const SweepPlan& plan, const std::string& 
                                       const SearchMemoryGuard& memory = {});
 
 /// The key of the lines of `plan`'s search `search_id` in a journal of `format`
-/// (SearchJournal::kFormat; kRetiredFormat for the lines an older build wrote): what a reader of
+/// (SearchJournal::format_for() of its instance count; kPreviousFormat for a class's lines an
+/// older build wrote): what a reader of
 /// the journal matches lines by. ConfigError as run_weight_searches() for a bad plan;
 /// std::out_of_range for an id past the plan's searches.
 [[nodiscard]] std::string weight_search_journal_key(const SweepPlan& plan, std::size_t search_id,

@@ -176,9 +176,10 @@ class Explorer {
     return true;
   }
 
-  /// sim.step() (candidate < 0) or sim.step_choosing(candidate), counted; its result.
+  /// sim.step() (candidate < 0) or sim.step_choosing(candidate), counted unless the run had
+  /// ended; its result.
   bool step(Simulation& sim, int candidate = -1) {
-    steps_.fetch_add(1, std::memory_order_relaxed);
+    if (!sim.ended()) steps_.fetch_add(1, std::memory_order_relaxed);
     return candidate < 0 ? sim.step() : sim.step_choosing(candidate);
   }
 

@@ -8,7 +8,6 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
-#include <string_view>
 #include <utility>
 
 #include "core/config_error.hpp"
@@ -136,7 +135,7 @@ JournaledBehaviour behaviour_of(const json& j, const JournalShape& shape) {
 std::unordered_map<std::uint64_t, SubtreeTally> SearchJournal::read(
     const std::string& path, const JournalShape& shape, JournalDamage damage, std::string_view hint,
     const std::function<void(JournaledBehaviour&&)>& each,
-    const std::function<void(JournaledLeaf&&)>& each_leaf) {
+    const std::function<void(JournaledLeaf&&)>& each_leaf, std::size_t* other_lines) {
   std::unordered_map<std::uint64_t, SubtreeTally> done;
   std::ifstream in(path, std::ios::binary);
   if (!in) return done;
@@ -149,7 +148,9 @@ std::unordered_map<std::uint64_t, SubtreeTally> SearchJournal::read(
     try {
       if (in.eof()) throw std::runtime_error("no newline");
       const json j = parse_json_bounded(line, path);
-      if (j.at("key").get<std::string>() == shape.key) {
+      const std::string key = j.at("key").get<std::string>();
+      if (other_lines != nullptr && !shape.counted_key.empty() && key == shape.counted_key) ++*other_lines;
+      if (key == shape.key) {
         if (j.contains("done")) {
           const std::uint64_t id = hex_id(j.at("done"), "subtree id");  // checked first: its error names it
           done.emplace(id, tally_of(j));
@@ -179,17 +180,6 @@ std::unordered_map<std::uint64_t, SubtreeTally> SearchJournal::read(
     if (ec) throw ConfigError(path, "cannot cut off its damaged lines: " + ec.message());
   }
   return done;
-}
-
-bool SearchJournal::holds_key(const std::string& path, const std::string& key) {
-  std::ifstream in(path, std::ios::binary);
-  const std::string field = json{{"key", key}}.dump();  // {"key":"..."}
-  const std::string_view needle = std::string_view(field).substr(1, field.size() - 2);
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.find(needle) != std::string::npos) return true;
-  }
-  return false;
 }
 
 void SearchJournal::append(const std::string& key, const Behaviour& behaviour,

@@ -63,6 +63,9 @@ struct JournalShape {
   /// A cell that lines of older journals lack (a column added since, empty for them): a row one
   /// cell short gets an empty cell inserted here. cells: none.
   std::size_t added_cell = std::numeric_limits<std::size_t>::max();
+  /// Another key whose lines are only counted (SearchJournal::read's `other_lines`): the same
+  /// search's key in the format before (SearchJournal::kPreviousFormat). Empty: none.
+  std::string counted_key{};
 };
 
 /// What to do with a line that does not parse or does not fit the shape.
@@ -77,28 +80,29 @@ enum class JournalDamage {
 
 class SearchJournal {
  public:
-  /// The journal's format, the last part of every search's key. 4: the region tree whose
-  /// branches advance every instance before they split (exact_search.cpp, Explorer::explore);
-  /// 3: regions' parts as point runs and finished subtrees, in the tree that split at the first
-  /// unfinished instance's decisions. Journals of formats 1 to 3 are not read: a resumed search
-  /// redoes them (saying so for format 3, kRetiredFormat), a merge refuses them.
+  /// The journal's format, the last part of every search's key (format_for()). 4: the region
+  /// tree of a class of several instances whose branches advance every instance before they
+  /// split (exact_search.cpp, Explorer::explore). 3 (kPreviousFormat): regions' parts as point
+  /// runs and finished subtrees, in the tree that split at the first unfinished instance's
+  /// decisions; for one instance the two trees are the same, so such searches keep format 3.
+  /// Lines of formats 1 and 2, and a class's lines of format 3, are not read as the search's.
   static constexpr std::string_view kFormat = "journal 4";
-  /// The format before kFormat, whose subtree ids name other regions.
-  static constexpr std::string_view kRetiredFormat = "journal 3";
-
-  /// True when the journal at `path` has a line of search key `key` (a scan for its key field
-  /// that parses no line; a missing file has none).
-  [[nodiscard]] static bool holds_key(const std::string& path, const std::string& key);
+  static constexpr std::string_view kPreviousFormat = "journal 3";
+  /// The format of the lines of a search of `instances` instances.
+  [[nodiscard]] static constexpr std::string_view format_for(std::size_t instances) {
+    return instances == 1 ? kPreviousFormat : kFormat;
+  }
 
   /// Reads the lines of `shape.key` in the journal at `path` (missing: nothing): each finished
   /// behaviour goes to `each` as it is read (so a caller may drop what it need not keep), and the
   /// finished subtrees are returned by id. Lines of other keys are parsed (a damaged one is
   /// damage too) and passed over.
   /// Each leaf line goes to `each_leaf` (may be empty: leaf lines are then only checked).
+  /// `other_lines` (may be null) counts the lines of `shape.counted_key`.
   [[nodiscard]] static std::unordered_map<std::uint64_t, SubtreeTally> read(
       const std::string& path, const JournalShape& shape, JournalDamage damage, std::string_view hint,
       const std::function<void(JournaledBehaviour&&)>& each,
-      const std::function<void(JournaledLeaf&&)>& each_leaf = {});
+      const std::function<void(JournaledLeaf&&)>& each_leaf = {}, std::size_t* other_lines = nullptr);
 
   /// Opens the journal at `path` for appending (created if missing); throws IoError naming it
   /// and the OS error when it cannot be. The appends throw IoError too, each line whole or not

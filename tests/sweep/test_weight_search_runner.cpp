@@ -660,8 +660,9 @@ std::string replaced(std::string text, const std::string& from, const std::strin
 }
 
 TEST(WeightSearchRunner, AJournalOfTheRetiredFormatIsSearchedAgainAndNeverMerged) {
-  // Lines an older build wrote (journal format 3) name subtrees of another region tree: a
-  // resumed search says so and searches again, to the same files; a merge refuses such a shard.
+  // A class's lines an older build wrote (journal format 3) name subtrees of another region
+  // tree: a resumed search says so and searches again, to the same files; a merge refuses such a
+  // shard. A single map's tree is the same in both, and its search keeps format 3.
   const json box = {{"w1", {0, 1, 2}}, {"w2", {0, 2}}, {"w3", {0, 1, 2}}, {"w4", {0, 2}}};
   const json maps = json::array({{{"generator", "office"}, {"w", 32}, {"h", 32}, {"seeds", {3, 4}}}});
   json sweep = search_and_grid(maps, box, json::array());
@@ -669,8 +670,19 @@ TEST(WeightSearchRunner, AJournalOfTheRetiredFormatIsSearchedAgainAndNeverMerged
   sweep["strategies"][0]["search"] = {{"mode", "best"}};
   const SweepPlan plan = SweepPlan::from_json(sweep, "search.json");
   const std::string current = weight_search_journal_key(plan, 0, SearchJournal::kFormat);
-  const std::string retired = weight_search_journal_key(plan, 0, SearchJournal::kRetiredFormat);
+  const std::string retired = weight_search_journal_key(plan, 0, SearchJournal::kPreviousFormat);
   ASSERT_NE(current, retired);
+  {
+    json one_map = sweep;
+    one_map["maps"][0]["seeds"] = {3};
+    const SweepPlan single = SweepPlan::from_json(one_map, "search.json");
+    const std::string journal =
+        testing::read_file(run(one_map, "previous_format_one_map") + "/search_journal.jsonl");
+    const std::string key = weight_search_journal_key(single, 0, SearchJournal::kPreviousFormat);
+    EXPECT_NE(journal.find("\"key\":\"" + key + "\""), std::string::npos)
+        << "a single map's search keeps format 3";
+    EXPECT_EQ(journal.find(weight_search_journal_key(single, 0, SearchJournal::kFormat)), std::string::npos);
+  }
   const auto retire = [&](const std::string& journal) {
     const std::string text = testing::read_file(journal);
     ASSERT_NE(text.find("\"key\":\"" + current + "\""), std::string::npos) << journal;

@@ -137,20 +137,35 @@ TEST(SearchJournal, ReadsBackWhatItAppendedForItsKeyOnly) {
   EXPECT_TRUE(none.empty());
 }
 
-TEST(SearchJournal, HoldsKeyFindsALineOfThatKeyOnly) {
-  // Keys that are prefixes of each other, and a key that appears only inside a line's cells.
+TEST(SearchJournal, ReadCountsTheLinesOfTheCountedKeyWithoutReadingThem) {
+  // The same search's key in the format before: its lines of each kind are counted, not read.
   const Fixture fx;
-  const std::string path = scratch_journal("holds_key");
+  const std::string path = scratch_journal("counted_key");
   {
     SearchJournal journal(path);
-    journal.append("k12", fx.behaviour(0, 1), {{"k1", "x"}, {"y", "z"}});
-    journal.append_done("k3", 9, SubtreeTally{});
+    journal.append("old", fx.behaviour(0, 1), {{"a", "1", ""}, {"b", "", "2"}});
+    journal.append_done("old", 9, SubtreeTally{});
+    journal.append("new", fx.behaviour(1, 2), {{"a", "1", ""}, {"b", "", "2"}});
+    journal.append_done("other", 4, SubtreeTally{});
   }
-  EXPECT_TRUE(SearchJournal::holds_key(path, "k12"));
-  EXPECT_TRUE(SearchJournal::holds_key(path, "k3"));
-  EXPECT_FALSE(SearchJournal::holds_key(path, "k1"));
-  EXPECT_FALSE(SearchJournal::holds_key(path, "k"));
-  EXPECT_FALSE(SearchJournal::holds_key(path + ".missing", "k12"));
+  JournalShape shape = fx.shape("new");
+  shape.counted_key = "old";
+  Read read;
+  std::size_t counted = 0;
+  const auto done = SearchJournal::read(
+      path, shape, JournalDamage::Refuse, "", [&](JournaledBehaviour&& b) { read.push_back(std::move(b)); },
+      {}, &counted);
+  EXPECT_EQ(counted, 2U);
+  ASSERT_EQ(read.size(), 1U);
+  EXPECT_EQ(read[0].behaviour.trace, 2U);
+  EXPECT_TRUE(done.empty());
+  // Without a counted key nothing is counted.
+  std::size_t none = 0;
+  Read again;
+  (void)SearchJournal::read(
+      path, fx.shape("new"), JournalDamage::Refuse, "",
+      [&](JournaledBehaviour&& b) { again.push_back(std::move(b)); }, {}, &none);
+  EXPECT_EQ(none, 0U);
 }
 
 TEST(SearchJournal, RepairCutsADamagedLineAndEverythingAfterIt) {
