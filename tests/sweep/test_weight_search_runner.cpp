@@ -682,6 +682,28 @@ TEST(WeightSearchRunner, AJournalOfTheRetiredFormatIsSearchedAgainAndNeverMerged
     EXPECT_NE(journal.find("\"key\":\"" + key + "\""), std::string::npos)
         << "a single map's search keeps format 3";
     EXPECT_EQ(journal.find(weight_search_journal_key(single, 0, SearchJournal::kFormat)), std::string::npos);
+    // Its shards merge with the sum of their steps; a shard's record without them (an older
+    // build's) leaves the merged `steps` null.
+    const std::string shards = testing::fresh_dir("search", "previous_format_one_map_shards");
+    std::uint64_t steps = 0;
+    for (std::uint64_t i = 0; i < 2; ++i) {
+      RunnerOptions o = testing::quiet_runner(shards);
+      o.shard_index = i;
+      o.shard_count = 2;
+      (void)run_sweep(single, o);
+      const std::string path = shards + "/shard-" + std::to_string(i) + "-of-2/searches.json";
+      steps += json::parse(testing::read_file(path))["searches"][0]["steps"].get<std::uint64_t>();
+    }
+    ASSERT_GT(steps, 0U);
+    (void)merge_shards(shards);
+    EXPECT_EQ(json::parse(testing::read_file(shards + "/searches.json"))["searches"][0]["steps"],
+              json(steps));
+    const std::string first = shards + "/shard-0-of-2/searches.json";
+    json record = json::parse(testing::read_file(first));
+    record["searches"][0].erase("steps");
+    testing::write_file(first, record.dump(2));
+    (void)merge_shards(shards);
+    EXPECT_TRUE(json::parse(testing::read_file(shards + "/searches.json"))["searches"][0]["steps"].is_null());
   }
   const auto retire = [&](const std::string& journal) {
     const std::string text = testing::read_file(journal);
