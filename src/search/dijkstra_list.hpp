@@ -8,18 +8,21 @@
 ///
 /// - DijkstraHeap: a binary heap (std::push_heap / pop_heap), for any costs >= 0.
 /// - DijkstraBuckets: for costs counted in cells with every edge at least one cell long (OctileCost:
-///   1 or sqrt(2) a step). Entries go to bucket floor(g); an edge of at least one cell takes an
-///   entry popped from bucket k to bucket k + 1 or later, so a bucket is complete when the search
-///   reaches it, and sorting it then gives the exact order. A push costs an append instead of a
-///   sift, a pop a read instead of a sift down; each entry is sorted once among the few of its
-///   bucket (the search's wave front one cell wide). An entry in the bucket being popped (a
-///   zero-cost edge) or below it (a seed opened after the first pop) is still put in its place,
-///   by a sorted insertion or by taking its bucket as the one to pop.
+///   1 or sqrt(2) a step). Entries go to bucket floor(kPerCell g), kPerCell buckets a cell; an edge
+///   of at least one cell takes an entry popped from bucket k to bucket k + kPerCell or later, so a
+///   bucket is complete when the search reaches it, and sorting it then gives the exact order. A
+///   push costs an append instead of a sift, a pop a read instead of a sift down; each entry is
+///   sorted once among the few of its bucket (a sixteenth of a cell of the search's wave front).
+///   An entry in the bucket being popped (a zero-cost edge) or below it (a seed opened after the
+///   first pop) is still put in its place, by a sorted insertion or by taking its bucket as the
+///   one to pop.
 ///   Against the heap, side by side: a Dijkstra over den312d 0.70-0.82x the time, the
-///   Manhattan class's [0, 3]^4 weight search with a coverage target 0.82-0.93x; the same memory.
+///   Manhattan class's [0, 3]^4 weight search with a coverage target 0.82-0.93x (one bucket a
+///   cell); the same memory. Sixteen buckets a cell against one: the weight search 0.93x (most
+///   of its buckets' sorting goes; 64 a cell was 1.08x slower than 16, the empty buckets' turn).
 ///
 /// Memory: DijkstraBuckets keeps its buckets in a ring as long as the span of the costs it holds
-/// at once (three buckets for an octile search from one cell; wider for seeds of many costs), so
+/// at once (about 24 buckets for an octile search from one cell; wider for seeds of many costs), so
 /// it holds about as much as the heap would.
 
 #include <algorithm>
@@ -114,7 +117,7 @@ class DijkstraBuckets {
   }
 
  private:
-  static std::size_t bucket_of(double g) { return static_cast<std::size_t>(g); }
+  static std::size_t bucket_of(double g) { return static_cast<std::size_t>(g * kPerCell); }
   /// Bucket b (current_ <= b < current_ + ring size) in the ring.
   std::vector<DijkstraItem>& at(std::size_t b) { return ring_[b & (ring_.size() - 1)]; }
 
@@ -158,8 +161,10 @@ class DijkstraBuckets {
     ring_ = std::move(grown);
   }
 
-  /// Buckets a new ring holds: the live entries of an octile search span three.
-  static constexpr std::size_t kFirstRing = 8;
+  /// Buckets a cell of cost: a power of two, so that g * kPerCell is exact.
+  static constexpr double kPerCell = 16.0;
+  /// Buckets a new ring holds: the live entries of an octile search span about 24.
+  static constexpr std::size_t kFirstRing = 64;
   /// The buckets [current_, high_) in a ring of a power of two size, bucket b at b mod size: the
   /// capacities of the few buckets a search keeps at once are reused, so the memory follows the
   /// wave front, not the cells reached.

@@ -375,9 +375,15 @@ class BoxWatch final : public RepresentativeWatch {
         directions_(bounds.directions),
         // At the zero vector every cost ties; the directions say nothing of who wins there.
         by_direction_(!bounds.directions.zero && bounds.directions.nonzero),
-        d_g_(terms.reps.size(), std::numeric_limits<double>::infinity()) {
+        d_g_(terms.reps.size(), std::numeric_limits<double>::infinity()),
+        estimate_(terms.reps.size(), 0.0),
+        estimated_in_(terms.reps.size(), 0) {
     for (std::size_t k = 0; k < middle_.size(); ++k)
       middle_[k] = 0.5 * (directions_.lo[k] + directions_.hi[k]);
+    open_list_.reserve(open_.size());
+    for (std::size_t i = 0; i < open_.size(); ++i) {
+      if (open_[i] != 0) open_list_.push_back(static_cast<std::uint32_t>(i));
+    }
   }
 
   void settled(std::size_t i, double d_g) override {
@@ -388,45 +394,37 @@ class BoxWatch final : public RepresentativeWatch {
     if (best_ < 0 || ceiling < ceiling_ || (ceiling == ceiling_ && i < static_cast<std::size_t>(best_))) {
       best_ = static_cast<int>(i);
       ceiling_ = ceiling;
-      next_ = -std::numeric_limits<double>::infinity();  // the representatives may close sooner now
+      bests_changed();
     }
     const double middle = linear_cost(middle_, row);
     if (by_direction_ && (middle_best_ < 0 || middle < middle_cost_)) {
       middle_best_ = static_cast<int>(i);
       middle_cost_ = middle;
       middle_row_ = row;
-      next_ = -std::numeric_limits<double>::infinity();
+      bests_changed();
     }
   }
 
   double go_on_until(double radius_m) override {
     // Asked after every settled representative: look again only where one may close.
     if (radius_m < next_) return next_;
-    bool any_open = false;
+    // Every open representative is looked at (the closed ones leave open_list_). One whose
+    // lower bound is still beyond the radius has the same row as when it was last looked at;
+    // if the bests did not change since, it is still open with the same estimate.
     double next = std::numeric_limits<double>::infinity();
-    const double w1 = w_lo_[0];
-    for (std::size_t i = 0; i < open_.size(); ++i) {
-      if (open_[i] == 0) continue;
-      const double d_g = std::max(radius_m, lower_bound_m_[i]);
-      const auto row = terms_.features_without_theta(i, d_g);
-      const double lowest = corner_cost(row, false);
-      if (closes(i, d_g, row, lowest)) {
-        open_[i] = 0;
-        continue;
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < open_list_.size(); ++k) {
+      const std::uint32_t i = open_list_[k];
+      if (open_[i] == 0) continue;  // reached
+      if (estimated_in_[i] != bests_ || lower_bound_m_[i] < radius_m) {
+        if (!estimate(i, radius_m)) continue;
+        estimated_in_[i] = bests_;
       }
-      any_open = true;
-      // About where it closes (eq. 7, or its lowest cost passing the ceiling, or its cost
-      // passing the middle's best at every direction): an estimate, as go_on_until decides on
-      // the exact bounds when asked there.
-      double r = terms_.d_l - terms_.d_gb[i];
-      if (best_ >= 0 && w1 > 0.0) r = std::min(r, d_g + (ceiling_ - lowest) / w1 * terms_.unit_m);
-      if (middle_best_ >= 0 && directions_.lo[0] > 0.0) {
-        // The difference at the middle grows by at least lo[0] per unit of d_g.
-        r = std::min(r, d_g + (middle_cost_ - linear_cost(middle_, row)) / directions_.lo[0] * terms_.unit_m);
-      }
-      next = std::min(next, r);
+      open_list_[kept++] = i;
+      next = std::min(next, estimate_[i]);
     }
-    if (!any_open) return -std::numeric_limits<double>::infinity();
+    open_list_.resize(kept);
+    if (kept == 0) return -std::numeric_limits<double>::infinity();
     next_ = std::max(next, radius_m);
     return next_;
   }
@@ -461,6 +459,35 @@ class BoxWatch final : public RepresentativeWatch {
            (middle_best_ >= 0 && costs_more_at_every_direction(row, middle_row_, directions_));
   }
 
+  /// The kept representatives changed: every open one is looked at again, and may close sooner.
+  void bests_changed() {
+    next_ = -std::numeric_limits<double>::infinity();
+    ++bests_;
+  }
+
+  /// Open representative i at distance max(radius_m, its lower bound): closes it and returns
+  /// false when it closes(), else sets estimate_[i] to about where it closes (eq. 7, or its lowest
+  /// cost passing the ceiling, or its cost passing the middle's best at every direction): an
+  /// estimate, as go_on_until decides on the exact bounds when asked there.
+  bool estimate(std::size_t i, double radius_m) {
+    const double d_g = std::max(radius_m, lower_bound_m_[i]);
+    const auto row = terms_.features_without_theta(i, d_g);
+    const double lowest = corner_cost(row, false);
+    if (closes(i, d_g, row, lowest)) {
+      open_[i] = 0;
+      return false;
+    }
+    double r = terms_.d_l - terms_.d_gb[i];
+    const double w1 = w_lo_[0];
+    if (best_ >= 0 && w1 > 0.0) r = std::min(r, d_g + (ceiling_ - lowest) / w1 * terms_.unit_m);
+    if (middle_best_ >= 0 && directions_.lo[0] > 0.0) {
+      // The difference at the middle grows by at least lo[0] per unit of d_g.
+      r = std::min(r, d_g + (middle_cost_ - linear_cost(middle_, row)) / directions_.lo[0] * terms_.unit_m);
+    }
+    estimate_[i] = r;
+    return true;
+  }
+
   /// linear_cost of `row` at the box's corner where it is highest (`highest`) or lowest.
   [[nodiscard]] double corner_cost(const std::array<double, EnergyAware::kFeatures>& row,
                                    bool highest) const {
@@ -486,6 +513,12 @@ class BoxWatch final : public RepresentativeWatch {
   std::array<double, EnergyAware::kFeatures> middle_row_{};
   /// The radius below which no representative closes (until a best changes).
   double next_ = -std::numeric_limits<double>::infinity();
+  /// The representatives open when last looked at, and for each its estimate() and the count of
+  /// changes of the bests (bests_) it was made in (0: never made).
+  std::vector<std::uint32_t> open_list_;
+  std::vector<double> estimate_;
+  std::vector<std::uint32_t> estimated_in_;
+  std::uint32_t bests_ = 1;
 };
 
 }  // namespace
