@@ -25,6 +25,8 @@ inline constexpr char kSearchRanksFile[] = "search_ranks.csv";
 inline constexpr char kSearchHeatmapsFile[] = "search_heatmaps.csv";
 inline constexpr char kVectorsFile[] = "vectors.csv";
 inline constexpr char kSearchJournalFile[] = "search_journal.jsonl";
+/// Mode best's finished probes, taken up on resume (weightsearch/search_probes.hpp).
+inline constexpr char kSearchProbesFile[] = "search_probes.jsonl";
 /// Mode best's certificate of search `id` (docs/dev/weight-search-design.md, "The certificate").
 [[nodiscard]] std::string search_certificate_file(std::size_t id);
 /// Whether a file name is a certificate's (`fsweep run --fresh` deletes them).

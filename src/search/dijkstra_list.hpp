@@ -9,8 +9,9 @@
 /// - DijkstraHeap: a binary heap (std::push_heap / pop_heap), for any costs >= 0.
 /// - DijkstraBuckets: for costs counted in cells with every edge at least one cell long (OctileCost:
 ///   1 or sqrt(2) a step). Entries go to bucket floor(kPerCell g), kPerCell buckets a cell; an edge
-///   of at least one cell takes an entry popped from bucket k to bucket k + kPerCell or later, so a
-///   bucket is complete when the search reaches it, and sorting it then gives the exact order. A
+///   of at least one cell takes an entry popped from bucket k to a later one (about k + kPerCell;
+///   rounding may make it k + kPerCell - 1), so a bucket is complete when the search reaches it,
+///   and sorting it then gives the exact order. A
 ///   push costs an append instead of a sift, a pop a read instead of a sift down; each entry is
 ///   sorted once among the few of its bucket (a sixteenth of a cell of the search's wave front).
 ///   An entry in the bucket being popped (a zero-cost edge) or below it (a seed opened after the
@@ -79,7 +80,9 @@ class DijkstraBuckets {
  public:
   /// Empties the list.
   void clear() {
-    for (std::vector<DijkstraItem>& bucket : ring_) bucket.clear();
+    // Only [current_, high_) may hold entries (the current one its popped ones too): pop()
+    // empties each bucket it leaves behind, so a wide ring is not walked whole.
+    for (std::size_t b = current_; b < high_; ++b) at(b).clear();
     current_ = 0;
     high_ = 0;
     next_ = 0;

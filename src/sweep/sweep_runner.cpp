@@ -48,7 +48,7 @@ constexpr const char* kOutputFiles[] = {"runs.csv",      "progress.csv",     "ma
                                         kSearchesFile,   kBehavioursFile,    kSearchSummaryFile,
                                         kSearchBestFile, kSearchRanksFile,   kSearchHeatmapsFile,
                                         kVectorsFile,    kSearchJournalFile, "results.sqlite",
-                                        kOptimaFile,     kSearchAnytimeFile};
+                                        kOptimaFile,     kSearchAnytimeFile, kSearchProbesFile};
 
 /// Set by SIGINT/SIGTERM while run_sweep runs (a signal handler can only reach a global).
 std::atomic<bool> stop_requested{false};  // NOLINT(cppcoreguidelines-avoid-non-const-global-variables)

@@ -40,6 +40,7 @@
 #include "sweep/sweep_table.hpp"
 #include "weightsearch/exact_search.hpp"
 #include "weightsearch/search_journal.hpp"
+#include "weightsearch/search_probes.hpp"
 #include "weightsearch/weight_grid.hpp"
 
 namespace fsweep {
@@ -269,13 +270,7 @@ class SearchWriter {
     if (guard != nullptr && guard->check())
       return stopped_by_memory(std::move(out), *guard, MemoryStop::Stage::Starting);
     Journal journaled = read_journal(key, out_dir_, JournalDamage::Repair, true, guard);
-    if (journaled.empty() && journaled.previous_lines > 0) {
-      std::fprintf(stderr,
-                   "fsweep: %s holds %zu lines of search %zu in journal format '%s' of an older build, "
-                   "whose region tree differs; this build does not read them, and the search starts again\n",
-                   journal_path(out_dir_).c_str(), journaled.previous_lines, id_,
-                   std::string(SearchJournal::kPreviousFormat).c_str());
-    }
+    if (journaled.empty() && journaled.previous_lines > 0) note_previous_format(journaled.previous_lines);
     found = std::move(journaled.found);
     if (guard != nullptr && guard->reached())
       return stopped_by_memory(std::move(out), *guard, MemoryStop::Stage::Resuming);
@@ -330,25 +325,36 @@ class SearchWriter {
         if (leaf.kind == CertifiedLeaf::Kind::Beaten) count(leaf.vectors);
         journal.append_leaf(key, leaf);
       };
-      bnb.incumbent = incumbent;
-      bnb.order = search_.order;
-      bnb.max_open = search_.max_open;
-      bnb.probes = spread_probes(grid_, root, search_.probes, id_);
-      bnb.on_probe = [&](const std::array<int, WeightGrid::kMaxWeights>& at, double objective) {
+      const auto better_probe = [&](const SearchProbeLog::Point& at, double objective) {
         if (!(objective < incumbent)) return;
         incumbent = objective;
         best_weights = grid_.weights_at(at);
+      };
+      double best_taken = std::numeric_limits<double>::infinity();
+      const std::set<SearchProbeLog::Point> taken =
+          probes_taken_up(key, root, [&](const SearchProbeLog::Point& at, double objective) {
+            best_taken = std::min(best_taken, objective);  // NaN: none
+            better_probe(at, objective);
+          });
+      SearchProbeLog probe_log(out_dir_ + "/" + kSearchProbesFile);
+      bnb.probes = spread_probes(grid_, root, search_.probes, id_);
+      std::erase_if(bnb.probes, [&](const SearchProbeLog::Point& at) { return taken.contains(at); });
+      bnb.incumbent = incumbent;
+      bnb.order = search_.order;
+      bnb.max_open = search_.max_open;
+      bnb.on_probe = [&](const std::array<int, WeightGrid::kMaxWeights>& at, double objective) {
+        probe_log.append(key, at, grid_.weights(), sign * objective);
+        better_probe(at, objective);
       };
       SearchAnytimeLog anytime(out_dir_, id_, key, grid_.count(root), sign, search_.weights);
       bnb.on_anytime = [&](const AnytimeState& state) {
         anytime.record(state, resolved.load(), best_weights, "running");
       };
       out.stats = exact_search(specs, grid_, threads, keep, &bnb, &root, &subtrees, stop);
-      AnytimeState last;
-      last.best = out.stats.best;
-      last.lower = std::min(out.stats.best, out.stats.unresolved_bound);
-      last.open_branches = out.stats.unresolved_branches;
-      anytime.record(last, resolved.load(), best_weights, out.stats.stopped ? "stopped" : "finished");
+      out.stats.probes += taken.size();
+      out.stats.best_probe = std::min(out.stats.best_probe, best_taken);
+      anytime.record(state_at_end(out.stats), resolved.load(), best_weights,
+                     out.stats.stopped ? "stopped" : "finished");
       out.standing = describe_search_status(anytime.last());
     }
     out.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -488,6 +494,40 @@ class SearchWriter {
     json r = record(searched.found, searched, nullptr);
     r["shard"] = {{"index", index}, {"count", count}};
     return r;
+  }
+
+  /// Where a search of mode best stands at its end (stopped or finished).
+  [[nodiscard]] static AnytimeState state_at_end(const ExactSearchStats& stats) {
+    AnytimeState last;
+    last.best = stats.best;
+    last.lower = std::min(stats.best, stats.unresolved_bound);
+    last.open_branches = stats.unresolved_branches;
+    return last;
+  }
+
+  /// The stderr note of a resumed search whose journal holds only `lines` lines of it in the
+  /// previous journal format (not read: their region tree differs).
+  void note_previous_format(std::size_t lines) const {
+    std::fprintf(stderr,
+                 "fsweep: %s holds %zu lines of search %zu in journal format '%s' of an older build, "
+                 "whose region tree differs; this build does not read them, and the search starts again\n",
+                 journal_path(out_dir_).c_str(), lines, id_,
+                 std::string(SearchJournal::kPreviousFormat).c_str());
+  }
+
+  /// The probes search `key` finished in a stopped run (search_probes.jsonl) that lie in `root`,
+  /// each once: given to `taken` with its objective as the search compares it (direction_sign()
+  /// applied; NaN: none), to be taken up instead of run again. Their points.
+  [[nodiscard]] std::set<SearchProbeLog::Point> probes_taken_up(
+      const std::string& key, const WeightRegion& root,
+      const std::function<void(const SearchProbeLog::Point&, double)>& taken) const {
+    std::set<SearchProbeLog::Point> points;
+    for (const SearchProbeLog::Probe& p :
+         SearchProbeLog::read(out_dir_ + "/" + kSearchProbesFile, key, grid_.weights())) {
+      if (!grid_.contains(root, p.at) || !points.insert(p.at).second) continue;
+      taken(p.at, direction_sign() * p.objective);
+    }
+    return points;
   }
 
   /// The journal of finished behaviours in `dir`, shared by the sweep's searches.

@@ -334,9 +334,10 @@ class Explorer {
           results.push_back(std::move(sim).result());
         }
         const double objective = bnb_->objective(results);
-        if (std::isnan(objective)) return;
-        lower_to(best_, objective);
-        lower_to(best_probe_, objective);
+        if (!std::isnan(objective)) {
+          lower_to(best_, objective);
+          lower_to(best_probe_, objective);
+        }
         if (bnb_->on_probe) {
           const std::lock_guard<std::mutex> lock(mutex_);
           bnb_->on_probe(at, objective);

@@ -120,7 +120,8 @@ struct BranchAndBound {
   /// dive's. Points outside the searched region are left out. Each is some vector's objective,
   /// so no optimal behaviour is pruned; only the time and the certificate's partition change.
   std::vector<std::array<int, WeightGrid::kMaxWeights>> probes;
-  /// Called with each probe's point and objective (not NaN), as on_behaviour; may be empty.
+  /// Called with each finished probe's point and objective (NaN: none), as on_behaviour; may be
+  /// empty. A probe cut short by a stop is not reported.
   std::function<void(const std::array<int, WeightGrid::kMaxWeights>&, double)> on_probe;
   /// The order of exploration, and SearchOrder::Bound's most waiting branches (>= 1).
   SearchOrder order = SearchOrder::Depth;

@@ -12,6 +12,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -488,6 +489,55 @@ TEST(WeightSearchRunner, AKilledBestSearchResumesWithItsJournalAsIncumbent) {
       EXPECT_LT(resumed["forks"], record["forks"]) << cut;
     }
   }
+}
+
+TEST(WeightSearchRunner, AResumedBestSearchTakesUpItsFinishedProbesInsteadOfRunningThemAgain) {
+  // Each finished probe is logged (search_probes.jsonl); a rerun takes them up as its first
+  // incumbent, runs only the others, and reports every probe as the first run did.
+  const json box = {
+      {"w1", {0, 1, 2, 3}}, {"w2", {0, 2}}, {"w3", {{"range", {0, 5}}, {"step", 1}}}, {"w4", {0, 1}}};
+  json sweep = search_and_grid(json::array({"office:w=32,h=32,seed=3"}), box, json::array());
+  sweep["strategies"].erase(1);
+  sweep["strategies"][0]["search"] = {{"mode", "best"}, {"probes", 5}};
+  const std::string dir = run(sweep, "best_probes_resume");
+  const std::string behaviours = testing::read_file(dir + "/behaviours.csv");
+  const std::string best = testing::read_file(dir + "/search_best.csv");
+  const json record = json::parse(testing::read_file(dir + "/searches.json"))["searches"][0];
+  ASSERT_EQ(record["probes"], 5);
+  ASSERT_TRUE(record["best_probe"].is_number());
+  const auto probe_lines = [&] {
+    std::vector<std::string> lines;
+    std::istringstream in(testing::read_file(dir + "/search_probes.jsonl"));
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    return lines;
+  };
+  const std::vector<std::string> logged = probe_lines();
+  ASSERT_EQ(logged.size(), 5U);
+  for (const std::string& line : logged) {
+    const json j = json::parse(line);
+    EXPECT_EQ(j["at"].size(), 4U) << line;
+    EXPECT_TRUE(j["objective"].is_number()) << line;
+  }
+  // Killed after its probes: the journal lost, the probes' log kept but for one line torn into
+  // text that does not parse, and a line of another search.
+  std::string log = "{\"key\": \"another search\", \"at\": [0, 0, 0, 0], \"objective\": 1}\n";
+  for (std::size_t i = 0; i + 1 < logged.size(); ++i) log += logged[i] + "\n";
+  log += logged.back().substr(0, logged.back().size() / 2) + "\n";
+  testing::write_file(dir + "/search_probes.jsonl", log);
+  testing::write_file(dir + "/search_journal.jsonl", "");
+  for (const char* f : {"behaviours.csv", "search_best.csv", "searches.json"})
+    std::filesystem::remove(dir + "/" + f);
+  RunnerOptions o = testing::quiet_runner(dir);
+  (void)run_sweep(SweepPlan::from_json(sweep, "search.json"), o);
+  EXPECT_EQ(testing::read_file(dir + "/behaviours.csv"), behaviours);
+  EXPECT_EQ(testing::read_file(dir + "/search_best.csv"), best);
+  const json resumed = json::parse(testing::read_file(dir + "/searches.json"))["searches"][0];
+  EXPECT_EQ(resumed["probes"], 5);
+  EXPECT_EQ(resumed["best_probe"], record["best_probe"]);
+  // Only the torn probe ran again: one line more, the same as the one torn.
+  const std::vector<std::string> after = probe_lines();
+  ASSERT_EQ(after.size(), 7U);
+  EXPECT_EQ(after.back(), logged.back());
 }
 
 TEST(WeightSearchRunner, AMapClassIsSearchedJointlyByItsMean) {
