@@ -442,15 +442,22 @@ std::string with_hex_parts(const std::string& line) {
   return j.dump() + "\n";
 }
 
-TEST(WeightSearchRunner, AKilledBestSearchResumesWithItsJournalAsIncumbent) {
-  // Mode best journals the behaviours it finishes; a rerun after the files are lost keeps them,
-  // starts from the best of them and writes the same optimal behaviours.
+/// The search of mode best on one office map over 96 vectors that the resume tests stop and
+/// rerun, with `probes` probes.
+json small_best_search(int probes) {
   const json box = {
       {"w1", {0, 1, 2, 3}}, {"w2", {0, 2}}, {"w3", {{"range", {0, 5}}, {"step", 1}}}, {"w4", {0, 1}}};
   json sweep = search_and_grid(json::array({"office:w=32,h=32,seed=3"}), box, json::array());
   sweep["strategies"].erase(1);
+  sweep["strategies"][0]["search"] = {{"mode", "best"}, {"probes", probes}};
+  return sweep;
+}
+
+TEST(WeightSearchRunner, AKilledBestSearchResumesWithItsJournalAsIncumbent) {
+  // Mode best journals the behaviours it finishes; a rerun after the files are lost keeps them,
+  // starts from the best of them and writes the same optimal behaviours.
   // No probes: they would find the optimum first, leaving one behaviour to journal.
-  sweep["strategies"][0]["search"] = {{"mode", "best"}, {"probes", 0}};
+  const json sweep = small_best_search(0);
   const std::string dir = run(sweep, "best_resume");
   const std::string behaviours = testing::read_file(dir + "/behaviours.csv");
   const std::string best = testing::read_file(dir + "/search_best.csv");
@@ -494,11 +501,7 @@ TEST(WeightSearchRunner, AKilledBestSearchResumesWithItsJournalAsIncumbent) {
 TEST(WeightSearchRunner, AResumedBestSearchTakesUpItsFinishedProbesInsteadOfRunningThemAgain) {
   // Each finished probe is logged (search_probes.jsonl); a rerun takes them up as its first
   // incumbent, runs only the others, and reports every probe as the first run did.
-  const json box = {
-      {"w1", {0, 1, 2, 3}}, {"w2", {0, 2}}, {"w3", {{"range", {0, 5}}, {"step", 1}}}, {"w4", {0, 1}}};
-  json sweep = search_and_grid(json::array({"office:w=32,h=32,seed=3"}), box, json::array());
-  sweep["strategies"].erase(1);
-  sweep["strategies"][0]["search"] = {{"mode", "best"}, {"probes", 5}};
+  const json sweep = small_best_search(5);
   const std::string dir = run(sweep, "best_probes_resume");
   const std::string behaviours = testing::read_file(dir + "/behaviours.csv");
   const std::string best = testing::read_file(dir + "/search_best.csv");
