@@ -330,20 +330,16 @@ class SearchWriter {
         incumbent = objective;
         best_weights = grid_.weights_at(at);
       };
-      double best_taken = std::numeric_limits<double>::infinity();
-      const std::set<SearchProbeLog::Point> taken =
-          probes_taken_up(key, root, [&](const SearchProbeLog::Point& at, double objective) {
-            best_taken = std::min(best_taken, objective);  // NaN: none
-            better_probe(at, objective);
-          });
-      SearchProbeLog probe_log(out_dir_ + "/" + kSearchProbesFile);
+      const TakenProbes taken = probes_taken_up(key, root, better_probe);
       bnb.probes = spread_probes(grid_, root, search_.probes, id_);
-      std::erase_if(bnb.probes, [&](const SearchProbeLog::Point& at) { return taken.contains(at); });
+      std::erase_if(bnb.probes, [&](const SearchProbeLog::Point& at) { return taken.points.contains(at); });
+      std::optional<SearchProbeLog> probe_log;  // opened only when probes are left to run
+      if (!bnb.probes.empty()) probe_log.emplace(out_dir_ + "/" + kSearchProbesFile);
       bnb.incumbent = incumbent;
       bnb.order = search_.order;
       bnb.max_open = search_.max_open;
       bnb.on_probe = [&](const std::array<int, WeightGrid::kMaxWeights>& at, double objective) {
-        probe_log.append(key, at, grid_.weights(), sign * objective);
+        probe_log->append(key, at, grid_.weights(), sign * objective);
         better_probe(at, objective);
       };
       SearchAnytimeLog anytime(out_dir_, id_, key, grid_.count(root), sign, search_.weights);
@@ -351,8 +347,8 @@ class SearchWriter {
         anytime.record(state, resolved.load(), best_weights, "running");
       };
       out.stats = exact_search(specs, grid_, threads, keep, &bnb, &root, &subtrees, stop);
-      out.stats.probes += taken.size();
-      out.stats.best_probe = std::min(out.stats.best_probe, best_taken);
+      out.stats.probes += taken.points.size();
+      out.stats.best_probe = std::min(out.stats.best_probe, taken.best);
       anytime.record(state_at_end(out.stats), resolved.load(), best_weights,
                      out.stats.stopped ? "stopped" : "finished");
       out.standing = describe_search_status(anytime.last());
@@ -515,19 +511,28 @@ class SearchWriter {
                  std::string(SearchJournal::kPreviousFormat).c_str());
   }
 
+  /// Probes taken up from a stopped run's log: their points, and the best of their objectives
+  /// as the search compares them (direction_sign() applied; +infinity: none).
+  struct TakenProbes {
+    std::set<SearchProbeLog::Point> points;
+    double best = std::numeric_limits<double>::infinity();
+  };
+
   /// The probes search `key` finished in a stopped run (search_probes.jsonl) that lie in `root`,
-  /// each once: given to `taken` with its objective as the search compares it (direction_sign()
-  /// applied; NaN: none), to be taken up instead of run again. Their points.
-  [[nodiscard]] std::set<SearchProbeLog::Point> probes_taken_up(
+  /// each once: given to `taken` with its objective as the search compares it (NaN: none), to be
+  /// taken up instead of run again.
+  [[nodiscard]] TakenProbes probes_taken_up(
       const std::string& key, const WeightRegion& root,
       const std::function<void(const SearchProbeLog::Point&, double)>& taken) const {
-    std::set<SearchProbeLog::Point> points;
+    TakenProbes out;
     for (const SearchProbeLog::Probe& p :
          SearchProbeLog::read(out_dir_ + "/" + kSearchProbesFile, key, grid_.weights())) {
-      if (!grid_.contains(root, p.at) || !points.insert(p.at).second) continue;
-      taken(p.at, direction_sign() * p.objective);
+      if (!grid_.contains(root, p.at) || !out.points.insert(p.at).second) continue;
+      const double objective = direction_sign() * p.objective;
+      out.best = std::min(out.best, objective);  // NaN: none
+      taken(p.at, objective);
     }
-    return points;
+    return out;
   }
 
   /// The journal of finished behaviours in `dir`, shared by the sweep's searches.

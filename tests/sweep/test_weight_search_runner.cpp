@@ -459,6 +459,7 @@ TEST(WeightSearchRunner, AKilledBestSearchResumesWithItsJournalAsIncumbent) {
   // No probes: they would find the optimum first, leaving one behaviour to journal.
   const json sweep = small_best_search(0);
   const std::string dir = run(sweep, "best_resume");
+  EXPECT_FALSE(std::filesystem::exists(dir + "/search_probes.jsonl")) << "a log without probes";
   const std::string behaviours = testing::read_file(dir + "/behaviours.csv");
   const std::string best = testing::read_file(dir + "/search_best.csv");
   const json record = json::parse(testing::read_file(dir + "/searches.json"))["searches"][0];
