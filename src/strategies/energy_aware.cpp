@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -417,8 +418,15 @@ class BoxWatch final : public RepresentativeWatch {
       const std::uint32_t i = open_list_[k];
       if (open_[i] == 0) continue;  // reached
       if (estimated_in_[i] != bests_ || lower_bound_m_[i] < radius_m) {
-        if (!estimate(i, radius_m)) continue;
+        const std::optional<double> estimate = estimate_at(i, radius_m);
+        if (!estimate) {
+          open_[i] = 0;
+          continue;
+        }
+        estimate_[i] = *estimate;
         estimated_in_[i] = bests_;
+      } else {
+        check_kept_estimate(i, radius_m);
       }
       open_list_[kept++] = i;
       next = std::min(next, estimate_[i]);
@@ -465,18 +473,15 @@ class BoxWatch final : public RepresentativeWatch {
     ++bests_;
   }
 
-  /// Open representative i at distance max(radius_m, its lower bound): closes it and returns
-  /// false when it closes(), else sets estimate_[i] to about where it closes (eq. 7, or its lowest
-  /// cost passing the ceiling, or its cost passing the middle's best at every direction): an
-  /// estimate, as go_on_until decides on the exact bounds when asked there.
-  bool estimate(std::size_t i, double radius_m) {
+  /// Open representative i at distance max(radius_m, its lower bound): nullopt when it closes(),
+  /// else about where it closes (eq. 7, or its lowest cost passing the ceiling, or its cost
+  /// passing the middle's best at every direction): an estimate, as go_on_until decides on the
+  /// exact bounds when asked there. A function of i, that distance and the bests.
+  [[nodiscard]] std::optional<double> estimate_at(std::size_t i, double radius_m) const {
     const double d_g = std::max(radius_m, lower_bound_m_[i]);
     const auto row = terms_.features_without_theta(i, d_g);
     const double lowest = corner_cost(row, false);
-    if (closes(i, d_g, row, lowest)) {
-      open_[i] = 0;
-      return false;
-    }
+    if (closes(i, d_g, row, lowest)) return std::nullopt;
     double r = terms_.d_l - terms_.d_gb[i];
     const double w1 = w_lo_[0];
     if (best_ >= 0 && w1 > 0.0) r = std::min(r, d_g + (ceiling_ - lowest) / w1 * terms_.unit_m);
@@ -484,8 +489,21 @@ class BoxWatch final : public RepresentativeWatch {
       // The difference at the middle grows by at least lo[0] per unit of d_g.
       r = std::min(r, d_g + (middle_cost_ - linear_cost(middle_, row)) / directions_.lo[0] * terms_.unit_m);
     }
-    estimate_[i] = r;
-    return true;
+    return r;
+  }
+
+  /// Debug builds (the sanitizer tree runs every test so): the estimate go_on_until() kept for
+  /// representative i is, bit for bit, the one estimate_at() makes now. It reuses it when the
+  /// bests are unchanged and i's lower bound is still beyond the radius, where both give the
+  /// same distance and row; a stale one could keep a loser open, which no choice would show.
+  void check_kept_estimate([[maybe_unused]] std::size_t i, [[maybe_unused]] double radius_m) const {
+#ifndef NDEBUG
+    const std::optional<double> now = estimate_at(i, radius_m);
+    if (!now || std::bit_cast<std::uint64_t>(*now) != std::bit_cast<std::uint64_t>(estimate_[i])) {
+      throw std::logic_error("BoxWatch: the estimate kept for representative " + std::to_string(i) +
+                             " is not the one made now");
+    }
+#endif
   }
 
   /// linear_cost of `row` at the box's corner where it is highest (`highest`) or lowest.
@@ -513,7 +531,7 @@ class BoxWatch final : public RepresentativeWatch {
   std::array<double, EnergyAware::kFeatures> middle_row_{};
   /// The radius below which no representative closes (until a best changes).
   double next_ = -std::numeric_limits<double>::infinity();
-  /// The representatives open when last looked at, and for each its estimate() and the count of
+  /// The representatives open when last looked at, and for each its estimate_at() and the count of
   /// changes of the bests (bests_) it was made in (0: never made).
   std::vector<std::uint32_t> open_list_;
   std::vector<double> estimate_;
