@@ -213,12 +213,19 @@ std::string describe_memory_stop(const MemoryStop& s, const WeightSearch& search
   return text;
 }
 
+/// What a resumed search of `root` takes from its journal (journaled_subtrees()): the
+/// ancestors of its finished subtrees (SubtreeJournal::ancestors), and the topmost of them
+/// (journal_topmost()), which it skips each once as it comes to them, so what they resolved
+/// counts from the start.
+struct JournaledTree {
+  std::unordered_set<std::uint64_t> ancestors;
+  JournalTop top;
+};
+
 /// The finished subtrees of a search of `root` that `journaled` holds, added to journaled.done:
 /// its nodes, and its behaviours (`found`, read from it) and other leaves as finished leaves.
-/// Returns their ancestors (SubtreeJournal::ancestors).
-std::unordered_set<std::uint64_t> journaled_subtrees(const WeightRegion& root,
-                                                     const std::vector<FoundBehaviour>& found,
-                                                     Journal& journaled) {
+JournaledTree journaled_subtrees(const WeightRegion& root, const std::vector<FoundBehaviour>& found,
+                                 Journal& journaled) {
   const std::uint64_t root_id = subtree_root(root);
   std::vector<std::vector<int>> paths;
   paths.reserve(found.size() + journaled.leaves.size());
@@ -233,7 +240,7 @@ std::unordered_set<std::uint64_t> journaled_subtrees(const WeightRegion& root,
     journaled.done.emplace(subtree_of(root_id, choices), leaf);
     paths.push_back(choices);
   }
-  return journal_ancestors(root_id, paths);
+  return JournaledTree{journal_ancestors(root_id, paths), journal_topmost(root_id, paths, journaled.done)};
 }
 
 class SearchWriter {
@@ -274,7 +281,7 @@ class SearchWriter {
     found = std::move(journaled.found);
     if (guard != nullptr && guard->reached())
       return stopped_by_memory(std::move(out), *guard, MemoryStop::Stage::Resuming);
-    const std::unordered_set<std::uint64_t> ancestors = journaled_subtrees(root, found, journaled);
+    const JournaledTree tree = journaled_subtrees(root, found, journaled);
     std::unordered_map<std::uint64_t, SubtreeTally>& done = journaled.done;
     const double sign = direction_sign();
     double incumbent = std::numeric_limits<double>::infinity();
@@ -289,14 +296,17 @@ class SearchWriter {
     SearchJournal journal(journal_path(out_dir_));
     SubtreeJournal subtrees;
     subtrees.done = &done;
-    subtrees.ancestors = &ancestors;
+    subtrees.ancestors = &tree.ancestors;
     subtrees.on_done = [&](std::uint64_t id, const SubtreeTally& t) { journal.append_done(key, id, t); };
     std::atomic<std::uint64_t> resolved{0};
     const auto count = [&](std::uint64_t n) {
       resolved.fetch_add(n, std::memory_order_relaxed);
       on_vectors(n);
     };
-    subtrees.on_skipped = count;
+    if (tree.top.vectors > 0) count(tree.top.vectors);
+    subtrees.on_skipped = [&](std::uint64_t id, std::uint64_t n) {
+      if (!tree.top.ids.contains(id)) count(n);
+    };
     const auto keep = [&](Behaviour&& b) {
       count(b.vectors);
       FoundBehaviour f;

@@ -107,7 +107,7 @@ class Explorer {
       const std::lock_guard<std::mutex> lock(mutex_);
       parent->tally.add(t);
     }
-    if (journal_->on_skipped) journal_->on_skipped(t.vectors);
+    if (journal_->on_skipped) journal_->on_skipped(id, t.vectors);
     return true;
   }
 
@@ -611,6 +611,19 @@ std::unordered_set<std::uint64_t> journal_ancestors(std::uint64_t root,
       out.insert(id);
       id = subtree_child(id, c);
     }
+  }
+  return out;
+}
+
+JournalTop journal_topmost(std::uint64_t root, std::span<const std::vector<int>> choices,
+                           const std::unordered_map<std::uint64_t, SubtreeTally>& done) {
+  JournalTop out;
+  for (const std::vector<int>& path : choices) {
+    std::uint64_t id = root;
+    std::size_t depth = 0;
+    while (!done.contains(id) && depth < path.size()) id = subtree_child(id, path[depth++]);
+    const auto it = done.find(id);
+    if (it != done.end() && out.ids.insert(id).second) out.vectors += it->second.vectors;
   }
   return out;
 }

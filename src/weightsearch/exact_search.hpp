@@ -194,14 +194,25 @@ struct SubtreeJournal {
   /// Called when a node that split has finished, with its id and what its leaves resolved (as
   /// on_behaviour, from any thread but never at once with another call of either); may be empty.
   std::function<void(std::uint64_t, const SubtreeTally&)> on_done;
-  /// Called with the vector count of each skipped subtree (progress); may be empty.
-  std::function<void(std::uint64_t)> on_skipped;
+  /// Called with the id and vector count of each skipped subtree (progress); may be empty.
+  std::function<void(std::uint64_t, std::uint64_t)> on_skipped;
 };
 
 /// The ids of the nodes above journaled finished leaves reached by `choices` from `root`
 /// (subtree_root()): every proper prefix of each, the root included, for SubtreeJournal::ancestors.
 [[nodiscard]] std::unordered_set<std::uint64_t> journal_ancestors(std::uint64_t root,
                                                                   std::span<const std::vector<int>> choices);
+
+/// The topmost of a journal's finished subtrees `done` (leaves included) down the paths
+/// `choices` of its leaves from `root`: on each path the first node `done` holds. A resumed
+/// search skips each once when it comes to it and goes below none (it never prunes above one:
+/// SubtreeJournal::ancestors), so `vectors`, theirs summed, is what the journal resolved.
+struct JournalTop {
+  std::unordered_set<std::uint64_t> ids;
+  std::uint64_t vectors = 0;
+};
+[[nodiscard]] JournalTop journal_topmost(std::uint64_t root, std::span<const std::vector<int>> choices,
+                                         const std::unordered_map<std::uint64_t, SubtreeTally>& done);
 
 /// `count` grid points spread over `region` for BranchAndBound::probes: the grid's middle point
 /// if the region holds it, then seeded uniform points of the grid that lie in it (at most 64 x

@@ -11,6 +11,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <span>
@@ -400,7 +401,7 @@ void journal_leaf(std::unordered_map<std::uint64_t, SubtreeTally>& done, std::ui
 struct Resume {
   explicit Resume(const std::unordered_map<std::uint64_t, SubtreeTally>& done) {
     journal.done = &done;
-    journal.on_skipped = [this](std::uint64_t v) { skipped += v; };
+    journal.on_skipped = [this](std::uint64_t /*id*/, std::uint64_t v) { skipped += v; };
   }
   Resume(const Resume&) = delete;
   Resume& operator=(const Resume&) = delete;
@@ -523,6 +524,78 @@ TEST(ExactSearch, APrunedBranchNeverSwallowsAJournaledLeaf) {
       }
     }
   }
+}
+
+TEST(ExactSearch, AResumedSearchSkipsEachTopmostJournaledSubtreeOnceSoWhatItResolvedCountsAtOnce) {
+  // Branch and bound stopped partway journals its behaviours, pruned and beaten leaves (with
+  // their paths) and finished nodes (ids). journal_topmost() finds the finished subtrees below
+  // no other, whose vectors are all the stopped search resolved; the resumed search skips each
+  // of them exactly once and resolves the rest, so a resume can count them from its start
+  // (the runner's resolved_vectors) without the count ever falling back.
+  const RunSpec spec = spec_on("office:w=32,h=32,seed=3", 120.0);
+  const WeightGrid grid({integers(0, 3), integers(0, 2), integers(0, 5), integers(0, 2)});
+  const std::uint64_t root = subtree_root(grid.everything());
+  std::mutex mutex;  // on_leaf and on_pruned come under the search's lock, behaviours not
+  std::unordered_map<std::uint64_t, SubtreeTally> done;
+  std::vector<std::vector<int>> paths;
+  std::uint64_t resolved = 0;
+  const auto leaf = [&](std::span<const int> choices, std::uint64_t vectors) {
+    const std::lock_guard<std::mutex> lock(mutex);
+    SubtreeTally t;
+    t.vectors = vectors;
+    done.emplace(subtree_of(root, choices), t);
+    paths.emplace_back(choices.begin(), choices.end());
+    resolved += vectors;
+  };
+  std::atomic<bool> stop{false};
+  SubtreeJournal journal;
+  std::size_t nodes = 0;
+  journal.on_done = [&](std::uint64_t id, const SubtreeTally& t) {
+    const std::lock_guard<std::mutex> lock(mutex);
+    done.emplace(id, t);
+    // Stopped once a few nodes that split have finished, so that some leaves lie below them.
+    if (++nodes == 3) stop.store(true);
+  };
+  BranchAndBound first = distance_bnb();
+  first.on_leaf = [&](const CertifiedLeaf& l) { leaf(l.choices, l.vectors); };
+  const ExactSearchStats stopped = exact_search(
+      std::span<const RunSpec>(&spec, 1), grid, 2, [&](Behaviour&& b) { leaf(b.choices, b.vectors); }, &first,
+      nullptr, &journal, &stop);
+  ASSERT_TRUE(stopped.stopped) << "the search finished before the stop";
+  ASSERT_GE(nodes, 3U);
+  ASSERT_LT(resolved, grid.size());
+
+  const JournalTop top = journal_topmost(root, paths, done);
+  EXPECT_EQ(top.vectors, resolved) << "the topmost subtrees hold what the stopped search resolved";
+  EXPECT_LT(top.ids.size(), paths.size()) << "no leaf lies below a finished node: the test tests little";
+  const std::unordered_set<std::uint64_t> ancestors = journal_ancestors(root, paths);
+  std::map<std::uint64_t, int> skipped;  // id -> times
+  std::uint64_t skipped_vectors = 0;
+  SubtreeJournal resume;
+  resume.done = &done;
+  resume.ancestors = &ancestors;
+  resume.on_skipped = [&](std::uint64_t id, std::uint64_t v) {
+    ++skipped[id];
+    skipped_vectors += v;
+  };
+  BranchAndBound second = distance_bnb();
+  second.incumbent = stopped.best;
+  std::uint64_t resolved_again = 0;
+  second.on_pruned = [&](std::uint64_t v) { resolved_again += v; };
+  second.on_leaf = [&](const CertifiedLeaf& l) {
+    if (l.kind == CertifiedLeaf::Kind::Beaten) resolved_again += l.vectors;
+  };
+  const ExactSearchStats rest = exact_search(
+      std::span<const RunSpec>(&spec, 1), grid, 2, [&](Behaviour&& b) { resolved_again += b.vectors; },
+      &second, nullptr, &resume);
+  EXPECT_FALSE(rest.stopped);
+  EXPECT_EQ(skipped.size(), top.ids.size());
+  for (const auto& [id, times] : skipped) {
+    EXPECT_TRUE(top.ids.contains(id)) << "skipped a subtree below another finished one";
+    EXPECT_EQ(times, 1) << "skipped a subtree twice";
+  }
+  EXPECT_EQ(skipped_vectors, top.vectors);
+  EXPECT_EQ(top.vectors + resolved_again, grid.size()) << "each vector resolved once";
 }
 
 TEST(ExactSearch, AStoppedSearchLeavesFinishedPartsOnlyAndResumesWithTheRest) {
