@@ -261,6 +261,18 @@ BranchAndBound distance_bnb() {
   return bnb;
 }
 
+/// distance_bnb() resumed with `incumbent`, adding to `resolved` the vectors of the regions it
+/// prunes and of the leaves it finds beaten (its behaviours' the caller adds).
+BranchAndBound resumed_bnb(double incumbent, std::uint64_t& resolved) {
+  BranchAndBound bnb = distance_bnb();
+  bnb.incumbent = incumbent;
+  bnb.on_pruned = [&resolved](std::uint64_t v) { resolved += v; };
+  bnb.on_leaf = [&resolved](const CertifiedLeaf& l) {
+    if (l.kind == CertifiedLeaf::Kind::Beaten) resolved += l.vectors;
+  };
+  return bnb;
+}
+
 TEST(ExactSearch, AnIncumbentPrunesEverythingWorseFromTheStart) {
   // Branch and bound started with the optimum as its incumbent (a resumed search) reports only
   // optimal behaviours, and the same ones as a search without it.
@@ -502,13 +514,8 @@ TEST(ExactSearch, APrunedBranchNeverSwallowsAJournaledLeaf) {
     for (const int threads : {1, 2}) {
       Resume resume(done);
       if (guarded) resume.journal.ancestors = &ancestors;
-      BranchAndBound warm = distance_bnb();
-      warm.incumbent = cold.best;
       std::uint64_t resolved = 0;
-      warm.on_pruned = [&](std::uint64_t v) { resolved += v; };
-      warm.on_leaf = [&](const CertifiedLeaf& l) {
-        if (l.kind == CertifiedLeaf::Kind::Beaten) resolved += l.vectors;
-      };
+      BranchAndBound warm = resumed_bnb(cold.best, resolved);
       const ExactSearchStats again = exact_search(
           std::span<const RunSpec>(&spec, 1), grid, threads, [&](Behaviour&& b) { resolved += b.vectors; },
           &warm, nullptr, &resume.journal);
@@ -578,13 +585,8 @@ TEST(ExactSearch, AResumedSearchSkipsEachTopmostJournaledSubtreeOnceSoWhatItReso
     ++skipped[id];
     skipped_vectors += v;
   };
-  BranchAndBound second = distance_bnb();
-  second.incumbent = stopped.best;
   std::uint64_t resolved_again = 0;
-  second.on_pruned = [&](std::uint64_t v) { resolved_again += v; };
-  second.on_leaf = [&](const CertifiedLeaf& l) {
-    if (l.kind == CertifiedLeaf::Kind::Beaten) resolved_again += l.vectors;
-  };
+  BranchAndBound second = resumed_bnb(stopped.best, resolved_again);
   const ExactSearchStats rest = exact_search(
       std::span<const RunSpec>(&spec, 1), grid, 2, [&](Behaviour&& b) { resolved_again += b.vectors; },
       &second, nullptr, &resume);
