@@ -49,6 +49,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.lines import Line2D  # noqa: E402
 from matplotlib.patches import Rectangle  # noqa: E402
+from matplotlib.ticker import FuncFormatter  # noqa: E402
 
 WEIGHTS = ["strategy.w1", "strategy.w2", "strategy.w3", "strategy.w4"]
 METRICS = [
@@ -461,10 +462,28 @@ def plot_search_heatmaps(path, out):
     return written
 
 
+def objective_label(directory):
+    """The y-axis label of a search's objective, from DIR/manifest.json's "objective" (a runs.csv
+    column: `distance_to_coverage_target_m` reads "distance to coverage target (m)"); "objective"
+    when the manifest does not say."""
+    try:
+        with open(os.path.join(directory, "manifest.json"), encoding="utf-8") as f:
+            name = json.load(f).get("objective")
+    except (OSError, ValueError):
+        return "objective"
+    if not isinstance(name, str) or not name:
+        return "objective"
+    for suffix, unit in (("_m2", " (m²)"), ("_m", " (m)"), ("_s", " (s)")):
+        if name.endswith(suffix):
+            return name[: -len(suffix)].replace("_", " ") + unit
+    return name.replace("_", " ")
+
+
 def plot_search_anytime(path, out):
     """search<k>_gap.png from search_anytime.csv: best and bound over time; the files written."""
     if not os.path.exists(path):
         return []
+    y_label = objective_label(os.path.dirname(path))
     _, rows = read_csv(path)
     curves = {}
     for r in rows:
@@ -504,7 +523,8 @@ def plot_search_anytime(path, out):
                              + (f"gap {100.0 * gap:.3g}%" if not math.isnan(gap) else "gap unknown"), 70),
                      fontsize=10)
         ax.set_xlabel(f"search time ({unit}, over every resumed process)", fontsize=11)
-        ax.set_ylabel("objective", fontsize=11)
+        ax.set_ylabel(y_label, fontsize=11)
+        ax.yaxis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:,.0f}" if abs(v) >= 1000 else f"{v:g}"))
         ax.grid(alpha=0.3)
         handles, labels = ax.get_legend_handles_labels()
         legend_below(fig, legend_ax, handles, labels, 7.0)
