@@ -468,15 +468,26 @@ def objective_label(directory):
     when the manifest does not say."""
     try:
         with open(os.path.join(directory, "manifest.json"), encoding="utf-8") as f:
-            name = json.load(f).get("objective")
+            manifest = json.load(f)
     except (OSError, ValueError):
         return "objective"
+    name = manifest.get("objective") if isinstance(manifest, dict) else None
     if not isinstance(name, str) or not name:
         return "objective"
     for suffix, unit in (("_m2", " (m²)"), ("_m", " (m)"), ("_s", " (s)")):
         if name.endswith(suffix):
             return name[: -len(suffix)].replace("_", " ") + unit
     return name.replace("_", " ")
+
+
+def thousands(ticks):
+    """A tick formatter for `ticks`: thousands separated, with as many decimals as their spacing
+    needs (so that close ticks read apart)."""
+    steps = [b - a for a, b in zip(ticks, ticks[1:]) if b > a]
+    decimals = 0
+    while steps and decimals < 6 and abs(round(min(steps), decimals) - min(steps)) > 1e-9 * max(1.0, min(steps)):
+        decimals += 1
+    return lambda v, _: f"{v:,.{decimals}f}"
 
 
 def plot_search_anytime(path, out):
@@ -524,7 +535,7 @@ def plot_search_anytime(path, out):
                      fontsize=10)
         ax.set_xlabel(f"search time ({unit}, over every resumed process)", fontsize=11)
         ax.set_ylabel(y_label, fontsize=11)
-        ax.yaxis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:,.0f}" if abs(v) >= 1000 else f"{v:g}"))
+        ax.yaxis.set_major_formatter(FuncFormatter(thousands(ax.get_yticks())))
         ax.grid(alpha=0.3)
         handles, labels = ax.get_legend_handles_labels()
         legend_below(fig, legend_ax, handles, labels, 7.0)

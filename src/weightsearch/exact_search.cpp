@@ -353,6 +353,15 @@ class Explorer {
     return OpenSlot{open_bounds_.open(bound), bound};
   }
 
+  /// Branch and bound: calls bnb->on_anytime once the root's branch is open, so that the curve
+  /// of a search starts where it starts (after its probes; a resumed one with its incumbent).
+  void report_start() {
+    if (bnb_ == nullptr || !bnb_->on_anytime) return;
+    const std::lock_guard<std::mutex> lock(mutex_);
+    last_report_ = std::chrono::steady_clock::now();
+    bnb_->on_anytime(anytime_state());
+  }
+
  private:
   /// A branch waiting for a thread (SearchOrder::Bound): its choice at `instance`'s decision is
   /// not yet stepped.
@@ -705,6 +714,7 @@ ExactSearchStats exact_search(std::span<const RunSpec> instances, const WeightGr
                                                    {},
                                                    std::nullopt});
       if (bnb != nullptr) first->open = explorer.open_slot(bnb->lower_bound(first->sims));
+      explorer.report_start();
       tasks.run([&explorer, first] { explorer.explore(std::move(*first)); });
     }
     tasks.wait();

@@ -101,7 +101,8 @@ struct BranchAndBound {
   /// objective, so that pruning a region whose bound exceeds a finished behaviour's objective
   /// never loses an optimal behaviour. -infinity when nothing is known.
   std::function<double(std::span<const Simulation>)> lower_bound;
-  /// Called with the vector count of each pruned region (progress); may be empty.
+  /// Called with the vector count of each pruned region (progress), from any thread, possibly
+  /// at once; may be empty.
   std::function<void(std::uint64_t)> on_pruned;
   /// Called for every leaf not reported as a behaviour (as on_behaviour: from any thread, never
   /// at once with it or another call); may be empty.
@@ -109,8 +110,9 @@ struct BranchAndBound {
   /// The objective of a behaviour known before the search (e.g. found by a killed search that
   /// is resumed): regions whose bound exceeds it are pruned from the start. +infinity: none.
   double incumbent = std::numeric_limits<double>::infinity();
-  /// Called with the search's AnytimeState at most once every `anytime_interval_s` seconds while
-  /// it runs (as on_behaviour: from any thread, never at once with another call); may be empty.
+  /// Called with the search's AnytimeState once its root's branch is open (after the probes), then
+  /// at most once every `anytime_interval_s` seconds while it runs (as on_behaviour: from any
+  /// thread, never at once with another call); may be empty.
   /// ExactSearchStats holds the state at the end.
   std::function<void(const AnytimeState&)> on_anytime;
   double anytime_interval_s = 5.0;
@@ -194,7 +196,8 @@ struct SubtreeJournal {
   /// Called when a node that split has finished, with its id and what its leaves resolved (as
   /// on_behaviour, from any thread but never at once with another call of either); may be empty.
   std::function<void(std::uint64_t, const SubtreeTally&)> on_done;
-  /// Called with the id and vector count of each skipped subtree (progress); may be empty.
+  /// Called with the id and vector count of each skipped subtree (progress), from any thread,
+  /// possibly at once; may be empty.
   std::function<void(std::uint64_t, std::uint64_t)> on_skipped;
 };
 
@@ -204,9 +207,11 @@ struct SubtreeJournal {
                                                                   std::span<const std::vector<int>> choices);
 
 /// The topmost of a journal's finished subtrees `done` (leaves included) down the paths
-/// `choices` of its leaves from `root`: on each path the first node `done` holds. A resumed
-/// search skips each once when it comes to it and goes below none (it never prunes above one:
-/// SubtreeJournal::ancestors), so `vectors`, theirs summed, is what the journal resolved.
+/// `choices` of its leaves from `root`: on each path the first node `done` holds. A search
+/// resumed with SubtreeJournal::ancestors = journal_ancestors(root, choices) skips each once
+/// when it comes to it and goes below none (it never prunes above one), so `vectors`, theirs
+/// summed, is what the journal resolved. Without those ancestors, branch and bound may prune a
+/// region that holds some of them, and their vectors would count twice.
 struct JournalTop {
   std::unordered_set<std::uint64_t> ids;
   std::uint64_t vectors = 0;

@@ -937,6 +937,38 @@ TEST(WeightSearchRunner, AStoppedBestSearchSaysWhereItStandsAndResumesItsCurve) 
   }
 }
 
+TEST(WeightSearchRunner, AResumedBestSearchCountsWhatItsJournalResolvedFromItsStart) {
+  // The curve of a search has a row where the search starts. A resumed search's says what the
+  // stopped one had resolved (its journal), and no later row says less, though the resumed
+  // search comes to the journal's finished subtrees again only as it re-walks its tree.
+  json sweep = office_search_of_256();
+  sweep["strategies"][0]["search"] = {{"mode", "best"}, {"order", "bound"}};
+  const std::string dir = testing::fresh_dir("search", "resolved_resume");
+  ASSERT_TRUE(run_until_journal_holds(sweep, dir, 6).searches.interrupted) << "finished before the stop";
+  const auto resolved_then =
+      json::parse(testing::read_file(dir + "/search_status_0.json"))["resolved_vectors"].get<std::uint64_t>();
+  ASSERT_GT(resolved_then, 0U);
+  RunnerOptions o = testing::quiet_runner(dir);
+  ASSERT_FALSE(run_sweep(SweepPlan::from_json(sweep, "search.json"), o).interrupted);
+  const Table curve = read_table(dir + "/search_anytime.csv");
+  const auto resolved = [&](std::size_t row) {
+    return std::stoull(curve.rows[row][curve.col("resolved_vectors")]);
+  };
+  const auto stop = static_cast<std::size_t>(
+      std::find_if(curve.rows.begin(), curve.rows.end(),
+                   [&](const auto& row) { return row[curve.col("status")] == "stopped"; }) -
+      curve.rows.begin());
+  ASSERT_GE(stop, 1U) << "no row where the first search started";
+  EXPECT_EQ(resolved(0), 0U) << "the first search started with nothing resolved";
+  ASSERT_LT(stop + 2, curve.rows.size() + 1) << "no row where the resumed search started";
+  EXPECT_EQ(resolved(stop), resolved_then);
+  EXPECT_EQ(resolved(stop + 1), resolved_then) << "the resumed search starts with what was resolved";
+  for (std::size_t row = stop + 1; row < curve.rows.size(); ++row)
+    EXPECT_GE(resolved(row), resolved_then) << row;
+  EXPECT_EQ(resolved(curve.rows.size() - 1), 256U);
+  std::filesystem::remove_all(dir);
+}
+
 TEST(WeightSearchRunner, TheShardsStatusesJoinIntoTheWholeSearchs) {
   // The best of the shards' best vectors, the weakest of their bounds, a shard without a status
   // (never started) leaving the bound unknown.

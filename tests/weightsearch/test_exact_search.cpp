@@ -262,8 +262,8 @@ BranchAndBound distance_bnb() {
 }
 
 /// distance_bnb() resumed with `incumbent`, adding to `resolved` the vectors of the regions it
-/// prunes and of the leaves it finds beaten (its behaviours' the caller adds).
-BranchAndBound resumed_bnb(double incumbent, std::uint64_t& resolved) {
+/// prunes (from any thread) and of the leaves it finds beaten (its behaviours' the caller adds).
+BranchAndBound resumed_bnb(double incumbent, std::atomic<std::uint64_t>& resolved) {
   BranchAndBound bnb = distance_bnb();
   bnb.incumbent = incumbent;
   bnb.on_pruned = [&resolved](std::uint64_t v) { resolved += v; };
@@ -413,12 +413,12 @@ void journal_leaf(std::unordered_map<std::uint64_t, SubtreeTally>& done, std::ui
 struct Resume {
   explicit Resume(const std::unordered_map<std::uint64_t, SubtreeTally>& done) {
     journal.done = &done;
-    journal.on_skipped = [this](std::uint64_t /*id*/, std::uint64_t v) { skipped += v; };
+    journal.on_skipped = [this](std::uint64_t /*id*/, std::uint64_t v) { skipped += v; };  // any thread
   }
   Resume(const Resume&) = delete;
   Resume& operator=(const Resume&) = delete;
   SubtreeJournal journal;
-  std::uint64_t skipped = 0;
+  std::atomic<std::uint64_t> skipped{0};
 };
 
 TEST(ExactSearch, SkippingFinishedSubtreesResumesWithTheRestOfTheBehaviours) {
@@ -448,7 +448,7 @@ TEST(ExactSearch, SkippingFinishedSubtreesResumesWithTheRestOfTheBehaviours) {
                                                          nodes.begin() + static_cast<std::ptrdiff_t>(kept));
     for (std::size_t i = 0; i < whole.size(); i += 3) journal_leaf(done, root, whole[i]);
     Resume resume(done);
-    const std::uint64_t& skipped = resume.skipped;
+    const std::atomic<std::uint64_t>& skipped = resume.skipped;
     std::uint64_t reported = 0;
     std::set<std::uint64_t> seen;
     const ExactSearchStats again = exact_search(
@@ -466,7 +466,7 @@ TEST(ExactSearch, SkippingFinishedSubtreesResumesWithTheRestOfTheBehaviours) {
     EXPECT_EQ(reported + skipped, grid.size()) << kept;
     EXPECT_EQ(again.behaviours, full.behaviours) << kept << ": journaled behaviours count as finished";
     if (kept == nodes.size()) {
-      EXPECT_EQ(skipped, grid.size());
+      EXPECT_EQ(skipped.load(), grid.size());
       EXPECT_EQ(again.forks, 0U) << "the root is journaled: nothing to search";
     } else if (kept == 0) {
       EXPECT_GT(reported, 0U);
@@ -514,7 +514,7 @@ TEST(ExactSearch, APrunedBranchNeverSwallowsAJournaledLeaf) {
     for (const int threads : {1, 2}) {
       Resume resume(done);
       if (guarded) resume.journal.ancestors = &ancestors;
-      std::uint64_t resolved = 0;
+      std::atomic<std::uint64_t> resolved{0};
       BranchAndBound warm = resumed_bnb(cold.best, resolved);
       const ExactSearchStats again = exact_search(
           std::span<const RunSpec>(&spec, 1), grid, threads, [&](Behaviour&& b) { resolved += b.vectors; },
@@ -522,11 +522,11 @@ TEST(ExactSearch, APrunedBranchNeverSwallowsAJournaledLeaf) {
       EXPECT_EQ(again.best, cold.best);
       // What the rerun resolves (and journals) besides the journal's leaves.
       if (guarded) {
-        EXPECT_EQ(resume.skipped, journaled) << threads << " threads";
+        EXPECT_EQ(resume.skipped.load(), journaled) << threads << " threads";
         EXPECT_EQ(resolved + journaled, grid.size()) << threads << " threads";
       } else {
         // Unguarded, it does prune above journaled leaves (or this test would test nothing).
-        EXPECT_LT(resume.skipped, journaled) << threads << " threads";
+        EXPECT_LT(resume.skipped.load(), journaled) << threads << " threads";
         EXPECT_GT(resolved + journaled, grid.size()) << threads << " threads";
       }
     }
@@ -542,7 +542,7 @@ TEST(ExactSearch, AResumedSearchSkipsEachTopmostJournaledSubtreeOnceSoWhatItReso
   const RunSpec spec = spec_on("office:w=32,h=32,seed=3", 120.0);
   const WeightGrid grid({integers(0, 3), integers(0, 2), integers(0, 5), integers(0, 2)});
   const std::uint64_t root = subtree_root(grid.everything());
-  std::mutex mutex;  // on_leaf and on_pruned come under the search's lock, behaviours not
+  std::mutex mutex;  // on_skipped and on_pruned may come from two threads at once
   std::unordered_map<std::uint64_t, SubtreeTally> done;
   std::vector<std::vector<int>> paths;
   std::uint64_t resolved = 0;
@@ -565,8 +565,9 @@ TEST(ExactSearch, AResumedSearchSkipsEachTopmostJournaledSubtreeOnceSoWhatItReso
   };
   BranchAndBound first = distance_bnb();
   first.on_leaf = [&](const CertifiedLeaf& l) { leaf(l.choices, l.vectors); };
+  // One thread: the same nodes finish first every time, so the stop comes at the same point.
   const ExactSearchStats stopped = exact_search(
-      std::span<const RunSpec>(&spec, 1), grid, 2, [&](Behaviour&& b) { leaf(b.choices, b.vectors); }, &first,
+      std::span<const RunSpec>(&spec, 1), grid, 1, [&](Behaviour&& b) { leaf(b.choices, b.vectors); }, &first,
       nullptr, &journal, &stop);
   ASSERT_TRUE(stopped.stopped) << "the search finished before the stop";
   ASSERT_GE(nodes, 3U);
@@ -582,10 +583,11 @@ TEST(ExactSearch, AResumedSearchSkipsEachTopmostJournaledSubtreeOnceSoWhatItReso
   resume.done = &done;
   resume.ancestors = &ancestors;
   resume.on_skipped = [&](std::uint64_t id, std::uint64_t v) {
+    const std::lock_guard<std::mutex> lock(mutex);
     ++skipped[id];
     skipped_vectors += v;
   };
-  std::uint64_t resolved_again = 0;
+  std::atomic<std::uint64_t> resolved_again{0};
   BranchAndBound second = resumed_bnb(stopped.best, resolved_again);
   const ExactSearchStats rest = exact_search(
       std::span<const RunSpec>(&spec, 1), grid, 2, [&](Behaviour&& b) { resolved_again += b.vectors; },
@@ -641,7 +643,7 @@ TEST(ExactSearch, AStoppedSearchLeavesFinishedPartsOnlyAndResumesWithTheRest) {
 
   for (const Behaviour& b : first) journal_leaf(done, root, b);
   Resume resume(done);
-  const std::uint64_t& skipped = resume.skipped;
+  const std::atomic<std::uint64_t>& skipped = resume.skipped;
   std::uint64_t reported = 0;
   std::set<std::uint64_t> seen;
   for (const Behaviour& b : first) seen.insert(b.trace);
