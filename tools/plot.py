@@ -29,7 +29,8 @@ every panel. Legends sit below the axes, never on them.
 
 --layout-json FILE writes, per figure, the bounding boxes (in pixels) matplotlib gives the
 figure, its axes, their titles, labels and tick labels, the figure's title and the legend, so a
-test can check that nothing is cut off or covered (tests/report/check_plot_layout.py).
+test can check that nothing is cut off or covered (tests/plots/check_plot_layout.py); each text
+says what it is (role: title, xlabel, ylabel, xtick, ytick).
 
 Needs Python 3 and matplotlib only; output is deterministic (no timestamps).
 """
@@ -242,8 +243,11 @@ def record_layout(name, fig):
                 entry["legends"].append(box(leg))
             continue
         entry["axes"].append(box(ax.patch))
-        texts = [ax.title, ax.xaxis.label, ax.yaxis.label] + drawn_tick_labels(ax.xaxis) + drawn_tick_labels(ax.yaxis)
-        entry["texts"] += [{"text": t.get_text(), "box": box(t)} for t in texts if t.get_text() and t.get_visible()]
+        texts = ([("title", ax.title), ("xlabel", ax.xaxis.label), ("ylabel", ax.yaxis.label)]
+                 + [("xtick", t) for t in drawn_tick_labels(ax.xaxis)]
+                 + [("ytick", t) for t in drawn_tick_labels(ax.yaxis)])
+        entry["texts"] += [{"text": t.get_text(), "box": box(t), "role": role} for role, t in texts
+                           if t.get_text() and t.get_visible()]
         if ax.get_legend():
             entry["legends"].append(box(ax.get_legend()))
     if fig._suptitle is not None:

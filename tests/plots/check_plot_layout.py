@@ -5,7 +5,10 @@ Draws the plots (tools/plot.py --layout-json) of three sweeps and checks every f
 - every text (figure title, panel titles, axis labels, tick labels) and every legend lies inside
   the figure (1 pixel of slack);
 - no legend overlaps a panel (the axes' area), and the figure title overlaps none;
-- no two panels overlap.
+- no two panels overlap;
+- a weight search's gap curve names its objective on the y axis ("distance to final coverage
+  (m)"), and its y tick labels differ from each other and carry thousands separators; the
+  label and tick helpers are also checked directly on made-up manifests and ticks.
 The sweeps: sweeps/examples/strategies_planners.json (48 configurations, 2 map classes), the
 default sweep, a small exact weight search of mode best (its gap curve), the same search over the
 full box [0, 250]^4 stopped by a Ctrl-C after 2 s (a directory with only its gap curve to draw),
@@ -22,8 +25,10 @@ import csv
 import json
 import os
 import shutil
+import importlib.util
 import subprocess
 import sys
+import tempfile
 
 SOURCE = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 SLACK = 1.0
@@ -68,6 +73,57 @@ def problems_of(name, figure):
         for ax in figure["axes"]:
             if overlap(t["box"], ax):
                 out.append(f"{name}: the title covers a panel")
+    return out
+
+
+def plot_module():
+    spec = importlib.util.spec_from_file_location("plot", os.path.join(SOURCE, "tools", "plot.py"))
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def label_problems():
+    """The gap curve's y label names the manifest's objective with its unit, and its tick labels
+    carry thousands separators and as many decimals as their spacing needs."""
+    plot = plot_module()
+    out = []
+    with tempfile.TemporaryDirectory() as d:
+        for manifest, expected in (({"objective": "distance_to_coverage_target_m"}, "distance to coverage target (m)"),
+                                   ({"objective": "explored_area_m2"}, "explored area (m²)"),
+                                   ({"objective": "time_s"}, "time (s)"),
+                                   ({"objective": "stops"}, "stops"),
+                                   ({}, "objective"), ([1, 2], "objective"), (None, "objective")):
+            path = os.path.join(d, "manifest.json")
+            if manifest is None:
+                os.remove(path)
+            else:
+                with open(path, "w", encoding="utf-8") as f:
+                    json.dump(manifest, f)
+            got = plot.objective_label(d)
+            if got != expected:
+                out.append(f"objective_label of the manifest {manifest!r}: {got!r}, not {expected!r}")
+    for ticks, expected in (([0.0, 5000.0, 10000.0], ["0", "5,000", "10,000"]),
+                            ([37017.0, 37017.5, 37018.0], ["37,017.0", "37,017.5", "37,018.0"]),
+                            ([-0.04, -0.02, 0.0, 0.02], ["-0.04", "-0.02", "0.00", "0.02"]),
+                            ([1234567.0], ["1,234,567"])):
+        formatter = plot.thousands(ticks)
+        got = [formatter(v, None) for v in ticks]
+        if got != expected:
+            out.append(f"thousands({ticks}): {got}, not {expected}")
+    return out
+
+
+def gap_label_problems(name, figure, objective_label):
+    """A drawn gap curve: its y label is the objective's, and its y tick labels read apart."""
+    labels = [t["text"] for t in figure["texts"] if t.get("role") == "ylabel"]
+    out = [] if labels == [objective_label] else [f"{name}: the y label is {labels}, not {objective_label!r}"]
+    ticks = [t["text"] for t in figure["texts"] if t.get("role") == "ytick"]
+    if len(ticks) < 2 or len(set(ticks)) != len(ticks):
+        out.append(f"{name}: the y tick labels do not read apart: {ticks}")
+    for t in ticks:
+        if abs(float(t.replace(",", "").replace("\u2212", "-"))) >= 1000 and "," not in t:
+            out.append(f"{name}: the y tick label {t!r} has no thousands separator")
     return out
 
 
@@ -139,6 +195,7 @@ def main():
     parser.add_argument("--work", required=True)
     args = parser.parse_args()
     os.makedirs(args.work, exist_ok=True)
+    problems = label_problems()
     dirs = {}
     for name, sweep in (("strategies_planners", "sweeps/examples/strategies_planners.json"),
                         ("default", "sweeps/default.json")):
@@ -147,7 +204,7 @@ def main():
     dirs["nightly"] = nightly_dir(args.fsweep, args.work)
     dirs["search"] = search_dir(args.fsweep, args.work)
     dirs["stopped"] = stopped_search_dir(args.fsweep, args.work)
-    problems, figures = [], 0
+    figures = 0
     for name, d in dirs.items():
         layout = os.path.join(d, "layout.json")
         run(["/usr/bin/python3", os.path.join(SOURCE, "tools", "plot.py"), d, "--out", os.path.join(d, "plots"),
@@ -156,6 +213,8 @@ def main():
             for png, figure in json.load(f).items():
                 figures += 1
                 problems += problems_of(f"{name}/{png}", figure)
+                if png == "search0_gap.png":  # the searches' default objective
+                    problems += gap_label_problems(f"{name}/{png}", figure, "distance to final coverage (m)")
     if figures < 7:
         problems.append(f"only {figures} figures were drawn")
     if not os.path.exists(os.path.join(dirs["stopped"], "plots", "search0_gap.png")):
