@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "cli/option_checks.hpp"
 #include "cli/sweep_warnings.hpp"
 #include "core/config_error.hpp"
 #include "core/csv_format.hpp"
@@ -187,10 +188,7 @@ Command add_expand_command(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("expand",
                                      "Validate a sweep and show its run count, axes and first runs "
                                      "(a dry run: nothing is run or written)");
-  sub->add_option("sweep", o->sweep, "Sweep JSON file")->required();
-  sub->add_option("overrides", o->overrides,
-                  "PATH=VALUE overrides of the sweep, applied before validation (robot.battery=800, "
-                  "'strategies[0].params.w1=[0,10]'; VALUE is JSON when it parses, else a string)");
+  add_sweep_positionals(*sub, o->sweep, o->overrides);
   sub->add_option("--limit", o->limit, "Runs to list (0: none)")->capture_default_str();
   sub->add_option("--from", o->from, "Index of the first run listed")->capture_default_str();
   return [o] { return run_expand(*o); };

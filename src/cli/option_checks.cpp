@@ -140,4 +140,13 @@ MemoryLimit parse_max_memory(const std::string& s) {
   return MemoryLimit{*bytes, "--max-memory " + s};
 }
 
+void add_sweep_positionals(CLI::App& sub, std::string& sweep_file, std::vector<std::string>& overrides,
+                           std::string_view overrides_note) {
+  sub.add_option("sweep", sweep_file, "Sweep file (JSON)")->required();
+  sub.add_option("overrides", overrides,
+                 "PATH=VALUE overrides of the sweep, applied before validation (robot.battery=800, "
+                 "'strategies[0].params.w1=[0,10]'; VALUE is JSON when it parses, else a string)" +
+                     std::string(overrides_note));
+}
+
 }  // namespace fsweep::cli

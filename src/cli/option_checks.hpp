@@ -3,10 +3,13 @@
 /// What CLI11 leaves unchecked or words as a library: numbers that its conversions accept
 /// wrongly (CLI11 2.1 reads "-1" into an unsigned option as 2^64 - 1 and "010" as octal 8), and
 /// parse errors that do not name what is wrong ("A subcommand is required" for an unknown
-/// command). main() applies both to every subcommand, so no option needs its own patch.
+/// command). main() applies both to every subcommand, so no option needs its own patch. Also the
+/// options several commands share (--max-memory, a sweep's positionals).
 
 #include <CLI/CLI.hpp>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "core/memory_limit.hpp"
 
@@ -36,5 +39,11 @@ void check_number_options(CLI::App& app);
 /// with K, M, G or T (core/memory_limit.hpp's parse_memory_size()). Throws ConfigError naming the
 /// option and what is allowed.
 [[nodiscard]] MemoryLimit parse_max_memory(const std::string& s);
+
+/// The positionals of a command that reads a sweep (`run`, `expand`, `slurm`): the sweep file
+/// (required) and its PATH=VALUE overrides, with `overrides_note` appended to the overrides'
+/// help (empty for none).
+void add_sweep_positionals(CLI::App& sub, std::string& sweep_file, std::vector<std::string>& overrides,
+                           std::string_view overrides_note = {});
 
 }  // namespace fsweep::cli

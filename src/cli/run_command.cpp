@@ -175,10 +175,7 @@ Command add_run_command(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("run",
                                      "Run a sweep file in parallel, resumably (runs.csv, progress.csv, "
                                      "summary.csv, best.csv, manifest.json)");
-  sub->add_option("sweep", o->sweep_file, "Sweep file (JSON)")->required();
-  sub->add_option("overrides", o->overrides,
-                  "PATH=VALUE overrides of the sweep, applied before validation (robot.battery=800, "
-                  "'strategies[0].params.w1=[0,10]'; VALUE is JSON when it parses, else a string)");
+  add_sweep_positionals(*sub, o->sweep_file, o->overrides);
   sub->add_option("--threads", o->threads, "Worker threads (0: all cores; at most 4 x the hardware threads)")
       ->capture_default_str();
   sub->add_flag("--fresh", o->fresh, "Delete previous outputs and start over");

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "cli/option_checks.hpp"
 #include "cli/output_dir.hpp"
 #include "cli/sweep_warnings.hpp"
 #include "core/config_error.hpp"
@@ -252,11 +253,7 @@ Command add_slurm_command(CLI::App& app) {
       "some tasks failed and then lists the missing runs), and submit both when sbatch is on PATH. Failed "
       "shards: "
       "sbatch --array=<their task ids> <out>/slurm/array.sbatch (shards resume), then fsweep merge <out>");
-  sub->add_option("sweep", o->sweep_file, "Sweep file (JSON)")->required();
-  sub->add_option("overrides", o->overrides,
-                  "PATH=VALUE overrides of the sweep, applied before validation (robot.battery=800, "
-                  "'strategies[0].params.w1=[0,10]'; VALUE is JSON when it parses, else a string)"
-                  " (the jobs run with them)");
+  add_sweep_positionals(*sub, o->sweep_file, o->overrides, " (the jobs run with them)");
   sub->add_option("--tasks", o->tasks, "Number of shards N (fsweep run --shard i/N for i = 0..N-1)")
       ->required();
   sub->add_option("--partition", o->partition, "Slurm partition (default: the cluster's)");
