@@ -6,12 +6,15 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <bit>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <numeric>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <utility>
 
 #include "core/config_error.hpp"
@@ -29,6 +32,47 @@ inline namespace verify {
 namespace {
 
 using nlohmann::json;
+
+/// `j` as a count or index: a JSON integer (not a boolean, not 6.0) in [0, max]; throws naming
+/// `what` otherwise.
+std::uint64_t whole(const json& j, std::string_view what, std::uint64_t max = UINT64_MAX) {
+  if (!j.is_number_integer() || (!j.is_number_unsigned() && j.get<std::int64_t>() < 0) ||
+      j.get<std::uint64_t>() > max) {
+    throw std::runtime_error(std::string(what) + " " + j.dump() + "; allowed: an integer from 0 to " +
+                             std::to_string(max));
+  }
+  return j.get<std::uint64_t>();
+}
+
+/// `j` as a number (not a boolean); throws naming `what` otherwise.
+double number(const json& j, std::string_view what) {
+  if (!j.is_number()) throw std::runtime_error(std::string(what) + " " + j.dump() + "; allowed: a number");
+  return j.get<double>();
+}
+
+/// `j` as an array; throws naming `what` otherwise.
+const json& array(const json& j, std::string_view what) {
+  if (!j.is_array()) throw std::runtime_error(std::string(what) + " is not an array");
+  return j;
+}
+
+/// A region's trace: exactly 16 hexadecimal digits.
+std::uint64_t trace_of(const json& j) {
+  const std::string text = j.get<std::string>();
+  if (text.size() != 16 || text.find_first_not_of("0123456789abcdefABCDEF") != std::string::npos)
+    throw std::runtime_error("trace '" + text + "'; allowed: 16 hexadecimal digits");
+  return std::stoull(text, nullptr, 16);
+}
+
+/// `path` opened for reading, refused unless it is a regular file (a FIFO would block).
+std::ifstream open_certificate(const std::string& path) {
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error))
+    throw ConfigError(path, std::filesystem::exists(path, error) ? "not a regular file" : "missing");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw ConfigError(path, "cannot be read");
+  return in;
+}
 
 constexpr double kUnit = 0x1.0p-53;
 /// Boxes the corners do not decide are checked point by point up to this many points.
@@ -63,8 +107,7 @@ std::string describe(const Region& r) {
 
 /// The lines after the header, checked against it.
 std::vector<Region> read_regions(const std::string& path, const CertificateHeader& header) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw ConfigError(path, "cannot be read");
+  std::ifstream in = open_certificate(path);
   std::string text;
   std::getline(in, text);  // the header
   const std::size_t n = header.weights.size();
@@ -81,33 +124,42 @@ std::vector<Region> read_regions(const std::string& path, const CertificateHeade
       r.pruned = kind == "pruned";
       const json& value = j.at("value");
       if (value.is_null() && r.pruned) throw std::runtime_error("a pruned region without a bound");
-      r.value = value.is_null() ? std::numeric_limits<double>::quiet_NaN() : value.get<double>();
+      r.value = value.is_null() ? std::numeric_limits<double>::quiet_NaN() : number(value, "value");
       if (r.pruned) {
-        r.steps = j.at("steps").get<std::vector<std::uint64_t>>();
+        for (const json& steps : array(j.at("steps"), "steps")) r.steps.push_back(whole(steps, "steps"));
         if (r.steps.size() != header.instances.size())
           throw std::runtime_error("steps for another number of instances");
       } else {
-        const std::string trace = j.at("trace").get<std::string>();
-        if (trace.size() != 16) throw std::runtime_error("trace is not 16 hexadecimal digits");
-        r.trace = std::stoull(trace, nullptr, 16);
+        r.trace = trace_of(j.at("trace"));
       }
-      for (const json& b : j.at("boxes")) {
-        if (b.size() != 2 * n)
+      // Its path in the region tree: read for its form only, since the re-simulation proves
+      // every decision over the whole region.
+      for (const json& choice : array(j.at("choices"), "choices")) (void)whole(choice, "a choice");
+      for (const json& b : array(j.at("boxes"), "boxes")) {
+        if (array(b, "a box").size() != 2 * n)
           throw std::runtime_error("a box of " + std::to_string(b.size()) + " numbers; allowed: 2 x " +
                                    std::to_string(n));
         Box box;
         std::uint64_t count = 1;
         for (std::size_t k = 0; k < n; ++k) {
-          box.lo[k] = b.at(k).get<int>();
-          box.hi[k] = b.at(n + k).get<int>();
-          const int size = static_cast<int>(header.values[k].size());
-          if (box.lo[k] < 0 || box.hi[k] >= size || box.lo[k] > box.hi[k]) {
-            throw std::runtime_error("a box outside the search's box along " + header.weights[k] +
-                                     " (indices 0.." + std::to_string(size - 1) + ")");
+          const auto size = static_cast<std::int64_t>(header.values[k].size());
+          const std::string allowed = "; allowed: an integer from 0 to " + std::to_string(size - 1) +
+                                      " (the search's box along " + header.weights[k] + ")";
+          const auto index = [&](const json& v) {
+            if (!v.is_number_integer() || v.get<std::int64_t>() < 0 || v.get<std::int64_t>() >= size)
+              throw std::runtime_error("a box index " + v.dump() + " along " + header.weights[k] + allowed);
+            return static_cast<int>(v.get<std::int64_t>());
+          };
+          box.lo[k] = index(b.at(k));
+          box.hi[k] = index(b.at(n + k));
+          if (box.lo[k] > box.hi[k]) {
+            throw std::runtime_error("an empty box: from " + std::to_string(box.lo[k]) + " to " +
+                                     std::to_string(box.hi[k]) + " along " + header.weights[k]);
           }
           count *= static_cast<std::uint64_t>(box.hi[k] - box.lo[k] + 1);
         }
-        r.vectors += count;
+        if (__builtin_add_overflow(r.vectors, count, &r.vectors))
+          throw std::runtime_error("a region of more than 2^64 vectors");
         r.boxes.push_back(box);
       }
       if (r.boxes.empty()) throw std::runtime_error("a region without a box");
@@ -165,10 +217,25 @@ const Region* holder(const CertificateHeader& h, const std::vector<Region>& regi
   return nullptr;
 }
 
+/// "(w1 = 3, w2 = 0, ...)": the weights of the vector of lexicographic index `index`.
+std::string describe_vector(const CertificateHeader& h, std::uint64_t index) {
+  std::vector<std::size_t> at(h.weights.size());
+  for (std::size_t d = h.weights.size(); d-- > 0;) {
+    at[d] = static_cast<std::size_t>(index % h.values[d].size());
+    index /= h.values[d].size();
+  }
+  std::string s = "(";
+  for (std::size_t d = 0; d < at.size(); ++d)
+    s += (d > 0 ? ", " : "") + h.weights[d] + " = " + format_number(h.values[d][at[d]]);
+  return s + ")";
+}
+
 /// Checks that the regions cover the box exactly.
 void check_cover(const CertificateHeader& h, const std::vector<Region>& regions, CertificateCheck& out) {
   std::uint64_t total = 0;
-  for (const Region& r : regions) total += r.vectors;
+  for (const Region& r : regions) {
+    if (__builtin_add_overflow(total, r.vectors, &total)) total = UINT64_MAX;  // more than the box
+  }
   out.counts_match = total == h.vectors;
   if (!out.counts_match) {
     out.problems.push_back("the regions hold " + std::to_string(total) + " vectors, the box " +
@@ -198,11 +265,34 @@ void check_cover(const CertificateHeader& h, const std::vector<Region>& regions,
       }
     }
   }
+  for (std::uint64_t word = 0; word < bits.size(); ++word) {
+    const std::uint64_t missing = ~bits[word];
+    if (missing == 0) continue;
+    const std::uint64_t index = word * 64 + static_cast<std::uint64_t>(std::countr_zero(missing));
+    if (index >= h.vectors) break;
+    out.problems.push_back("the vector of index " + std::to_string(index) + " " + describe_vector(h, index) +
+                           " is in no region");
+    return;
+  }
 }
 
 /// Checks the regions' values against the optimum.
 void check_values(const CertificateHeader& h, const std::vector<Region>& regions, CertificateCheck& out) {
   const auto worse = [&](double v) { return h.minimize ? v > h.optimum : v < h.optimum; };
+  if (std::isnan(h.optimum)) {
+    // No vector's runs have a value: every region must be a behaviour without one (nothing can
+    // be pruned against an optimum that does not exist).
+    for (const Region& r : regions) {
+      (r.pruned ? out.pruned : out.finished) += 1;
+      if (r.pruned || !std::isnan(r.value)) {
+        out.problems.push_back(describe(r) + ": " +
+                               (r.pruned ? "pruned, but no vector has a value to prune against"
+                                         : "its objective " + format_number(r.value) +
+                                               ", but the optimum is none (no vector has a value)"));
+      }
+    }
+    return;
+  }
   for (const Region& r : regions) {
     (r.pruned ? out.pruned : out.finished) += 1;
     if (std::isnan(r.value)) continue;
@@ -397,8 +487,7 @@ std::string resimulate(const CertificateHeader& h, const Objective& objective, c
 }  // namespace
 
 CertificateHeader read_certificate_header(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw ConfigError(path, "cannot be read");
+  std::ifstream in = open_certificate(path);
   std::string line;
   std::getline(in, line);
   CertificateHeader h;
@@ -408,11 +497,15 @@ CertificateHeader read_certificate_header(const std::string& path) {
       throw std::runtime_error("format '" + j.at("format").get<std::string>() + "'; allowed: '" +
                                kCertificateFormat + "'");
     }
-    h.search_id = j.at("search_id").get<std::size_t>();
+    h.search_id = whole(j.at("search_id"), "search_id");
     h.strategy_label = j.at("strategy_label").get<std::string>();
     h.map_class = j.at("map_class").get<std::string>();
     h.weights = j.at("weights").get<std::vector<std::string>>();
-    h.values = j.at("values").get<std::vector<std::vector<double>>>();
+    for (const json& values : array(j.at("values"), "values")) {
+      std::vector<double>& v = h.values.emplace_back();
+      for (const json& value : array(values, "a weight's values"))
+        v.push_back(number(value, "a weight's value"));
+    }
     h.objective = j.at("objective").get<std::string>();
     h.objective_column = j.at("objective_column").get<std::string>();
     const std::string direction = j.at("direction").get<std::string>();
@@ -420,8 +513,8 @@ CertificateHeader read_certificate_header(const std::string& path) {
       throw std::runtime_error("direction '" + direction + "'");
     h.minimize = direction == "minimize";
     const json& optimum = j.at("optimum");
-    h.optimum = optimum.is_null() ? std::numeric_limits<double>::quiet_NaN() : optimum.get<double>();
-    h.vectors = j.at("vectors").get<std::uint64_t>();
+    h.optimum = optimum.is_null() ? std::numeric_limits<double>::quiet_NaN() : number(optimum, "optimum");
+    h.vectors = whole(j.at("vectors"), "vectors");
     h.instances = j.at("instances");
     if (!h.instances.is_array() || h.instances.empty()) throw std::runtime_error("no instances");
     if (h.weights.empty() || h.weights.size() > 4 || h.values.size() != h.weights.size()) {
@@ -433,7 +526,8 @@ CertificateHeader read_certificate_header(const std::string& path) {
           std::adjacent_find(v.begin(), v.end()) != v.end() || v.front() < 0 || !std::isfinite(v.back())) {
         throw std::runtime_error("a weight's values must be finite, >= 0 and strictly ascending");
       }
-      size *= v.size();
+      if (__builtin_mul_overflow(size, std::uint64_t{v.size()}, &size))
+        throw std::runtime_error("a box of more than 2^64 vectors");
     }
     if (size != h.vectors)
       throw std::runtime_error("vectors " + std::to_string(h.vectors) + ", the values' product " +

@@ -5,15 +5,18 @@
 /// code: this layer does not link `weightsearch`. It reads the file's regions as plain boxes of
 /// grid indices, and re-simulates regions through the simulation layer:
 ///
-/// 1. Every line parses and every box lies in the box of the header.
+/// 1. Every line parses, its numbers of the JSON type they are (indices and counts integers,
+///    not 6.0 or true), and every box lies in the box of the header. A region's `choices` (its
+///    path in the search's tree) are read for their form only: step 4 proves every decision.
 /// 2. The regions cover the box exactly: their counts sum to its size, and no vector is in two
 ///    of them (a bitmap of the box, up to 2^33 vectors; above that the count alone).
 /// 3. Every finished region's objective is at least the optimum (minimised objectives; at most,
 ///    maximised), some finished region's is the optimum, and every pruned region's bound
-///    exceeds it.
+///    exceeds it. An optimum of none (null: no vector's runs have a value) holds when every
+///    region is a finished one without a value.
 /// 4. For each region checked (all of them when the box has at most `full_limit` vectors, else
 ///    the optimal ones and a seeded sample of the others): its representative, the
-///    lexicographically smallest vector of its first box, is simulated twice per instance,
+///    lexicographically smallest vector of the region, is simulated twice per instance,
 ///    - once by the ordinary single-run path (Simulation::step()), and
 ///    - once taking at each decision the candidates Simulation::choice() gives for the region's
 ///      bounding box of weights and the representative's choice among them, after checking

@@ -2,6 +2,7 @@
 // (exit 0); certificates tampered with in each way the check covers fail with the line named
 // (exit 1), or are refused as malformed (exit 2).
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <filesystem>
 #include <fstream>
@@ -33,23 +34,27 @@ void write_lines(const std::string& path, const std::vector<std::string>& lines)
   for (const std::string& l : lines) out << l << '\n';
 }
 
-/// A sweep with one search of mode best over 96 vectors of an office map, run into `dir`/out
-/// once per test program; returns the output directory.
+/// Runs the sweep `sweep` (JSON text) from a fresh temporary folder named `name`; returns its
+/// output directory, `<folder>/out` (the sweep file is `<folder>/sweep.json`).
+std::string run_sweep(const std::string& name, const std::string& sweep) {
+  const std::string dir = fsweep::testing::fresh_temp_dir("verify", name);
+  fs::create_directories(dir);
+  std::ofstream(dir + "/sweep.json") << sweep;
+  const auto r = run_fsweep("run " + dir + "/sweep.json --quiet --out " + dir + "/out");
+  EXPECT_EQ(r.code, 0) << r.output;
+  return dir + "/out";
+}
+
+/// A sweep with one search of mode best over 96 vectors of an office map, run once per test
+/// program; returns the output directory.
 const std::string& searched() {
-  static const std::string out = [] {
-    const std::string dir = fsweep::testing::fresh_temp_dir("verify", "search");
-    fs::create_directories(dir);
-    std::ofstream(dir + "/sweep.json") << R"({"schema_version": 1, "name": "cli_verify",
+  static const std::string out = run_sweep("search", R"({"schema_version": 1, "name": "cli_verify",
       "maps": ["office:w=32,h=32,seed=3"],
       "strategies": [{"name": "energy_aware", "search": {"method": "exact", "mode": "best"},
                       "params": {"w1": [0, 1, 2, 3], "w2": [0, 2], "w3": {"range": [0, 5], "step": 1},
                                  "w4": [0, 1]}}],
       "robot": {"sensor": {"range_m": 6}, "energy": "distance", "battery": 300},
-      "seed": 5})";
-    const auto r = run_fsweep("run " + dir + "/sweep.json --quiet --out " + dir + "/out");
-    EXPECT_EQ(r.code, 0) << r.output;
-    return dir + "/out";
-  }();
+      "seed": 5})");
   return out;
 }
 
@@ -93,21 +98,17 @@ TEST(CliVerify, ABestSearchsCertificateVerifies) {
 TEST(CliVerify, ACoverageTargetSearchWithABatteryVerifies) {
   // The bound of the coverage target counts the trips back to the dock (sim/reveal_bound.hpp);
   // the check computes it as the search did.
-  const std::string dir = fsweep::testing::fresh_temp_dir("verify", "target");
-  fs::create_directories(dir);
-  std::ofstream(dir + "/sweep.json") << R"({"schema_version": 1, "name": "cli_verify_target",
+  const std::string out = run_sweep("target", R"({"schema_version": 1, "name": "cli_verify_target",
     "maps": ["office:w=32,h=32,seed=3"],
     "strategies": [{"name": "energy_aware", "search": {"mode": "best"},
                     "params": {"w1": [0, 1, 2, 3], "w2": [0, 2], "w3": {"range": [0, 5], "step": 1},
                                "w4": [0, 1]}}],
     "robot": {"sensor": {"range_m": 6}, "energy": "distance", "battery": 150},
     "sim": {"stop_at_coverage": 0.7}, "output": {"objective": "distance_to_coverage_target_m"},
-    "seed": 5})";
-  auto r = run_fsweep("run " + dir + "/sweep.json --quiet --out " + dir + "/out");
-  ASSERT_EQ(r.code, 0) << r.output;
-  const json search = json::parse(std::ifstream(dir + "/out/searches.json"))["searches"][0];
+    "seed": 5})");
+  const json search = json::parse(std::ifstream(out + "/searches.json"))["searches"][0];
   EXPECT_GT(search["certificate"]["pruned_regions"].get<int>(), 0) << search.dump();
-  r = run_fsweep("verify " + dir + "/out");
+  const auto r = run_fsweep("verify " + out);
   EXPECT_EQ(r.code, 0) << r.output;
   EXPECT_TRUE(has(r.output, "verified")) << r.output;
 }
@@ -172,6 +173,7 @@ TEST(CliVerify, ARegionLeftOutOrListedTwiceFails) {
   auto r = run_fsweep("verify " + gap);
   EXPECT_EQ(r.code, 1) << r.output;
   EXPECT_TRUE(has(r.output, "they do not cover it exactly")) << r.output;
+  EXPECT_TRUE(has(r.output, "is in no region")) << r.output;  // the first vector left out, named
   const std::string twice = tampered("twice", [](std::vector<std::string>& lines) {
     lines.push_back(lines[1]);
     lines.erase(lines.begin() + 2);  // the count stays the box's when both lines hold as many vectors
@@ -219,7 +221,8 @@ TEST(CliVerify, AMalformedLineOrAnotherSearchsCertificateIsExit2) {
   });
   auto r = run_fsweep("verify " + outside);
   EXPECT_EQ(r.code, 2) << r.output;
-  EXPECT_TRUE(has(r.output, "search_certificate_0.jsonl:2: a box outside the search's box along w1"))
+  EXPECT_TRUE(
+      has(r.output, "search_certificate_0.jsonl:2: a box index 99 along w1; allowed: an integer from 0 to 3"))
       << r.output;
   const std::string other = tampered("other", [](std::vector<std::string>& lines) {
     json j = json::parse(lines[0]);
@@ -229,6 +232,153 @@ TEST(CliVerify, AMalformedLineOrAnotherSearchsCertificateIsExit2) {
   r = run_fsweep("verify " + other);
   EXPECT_EQ(r.code, 2) << r.output;
   EXPECT_TRUE(has(r.output, "the certificate is another search's")) << r.output;
+}
+
+/// The searched directory copied as `name`, its searches.json's search record edited by `change`.
+std::string with_record(const std::string& name, const std::function<void(json&)>& change) {
+  const std::string dir = tampered(name, [](std::vector<std::string>& /*lines*/) {});
+  json searches = json::parse(std::ifstream(dir + "/searches.json"));
+  change(searches["searches"][0]);
+  std::ofstream(dir + "/searches.json", std::ios::trunc) << searches.dump();
+  return dir;
+}
+
+/// `fsweep verify` on `dir` exits `code` with `part` in its output.
+void expect_verify(const std::string& dir, int code, const std::string& part) {
+  const auto r = run_fsweep("verify " + dir);
+  EXPECT_EQ(r.code, code) << r.output;
+  EXPECT_TRUE(has(r.output, part)) << "expected '" << part << "' in\n" << r.output;
+}
+
+TEST(CliVerify, ACertificateForAnotherBoxObjectiveDirectionOrInstancesIsRefused) {
+  // A certificate can prove a false claim only by being another search's: each is refused
+  // before its regions are read. Flipping the direction (a lower bound then "proves" a maximum):
+  expect_verify(
+      tampered("direction",
+               [](std::vector<std::string>& lines) {
+                 json h = json::parse(lines[0]);
+                 h["direction"] = "maximize";
+                 lines[0] = h.dump();
+               }),
+      2,
+      "objective distance_to_final_coverage_m (maximize), where the sweep's (manifest.json) search 0 "
+      "has distance_to_final_coverage_m (minimize)");
+  // A box cropped around a worse optimum:
+  expect_verify(tampered("cropped",
+                         [](std::vector<std::string>& lines) {
+                           json h = json::parse(lines[0]);
+                           h["values"][0] = json::array({0.0, 1.0});
+                           h["vectors"] = h["vectors"].get<int>() / 2;
+                           lines[0] = h.dump();
+                         }),
+                2, "the box [[0.0,1.0],");
+  // One instance more than the sweep's class has:
+  expect_verify(tampered("instances",
+                         [](std::vector<std::string>& lines) {
+                           json h = json::parse(lines[0]);
+                           h["instances"].push_back(h["instances"][0]);
+                           lines[0] = h.dump();
+                         }),
+                2, "instances 2, where the sweep's (manifest.json) search 0 has 1 (maps x repetitions)");
+  // Another search's id:
+  expect_verify(tampered("search_id",
+                         [](std::vector<std::string>& lines) {
+                           json h = json::parse(lines[0]);
+                           h["search_id"] = 1;
+                           lines[0] = h.dump();
+                         }),
+                2, "search_id 1, where the sweep's (manifest.json) search 0 has 0");
+}
+
+TEST(CliVerify, SearchesJsonMustReportTheCertificatesOptimumAndEverySearchOfModeBestOne) {
+  expect_verify(with_record("optimum", [](json& record) { record["certificate"]["optimum"] = 1.0; }), 1,
+                "searches.json gives the optimum 1.0, the certificate ");
+  expect_verify(with_record("regions", [](json& record) { record["certificate"]["regions"] = 3; }), 1,
+                "searches.json gives regions 3, the certificate ");
+  expect_verify(with_record("no_file", [](json& record) { record["certificate"].erase("file"); }), 1,
+                "search 0 (energy_aware, office:w=32,h=32,seed=3): nothing verified: its record in "
+                "searches.json names no certificate file");
+  expect_verify(with_record("no_record", [](json& record) { record["search_id"] = 5; }), 1,
+                "nothing verified: not finished: no record in searches.json");
+  expect_verify(
+      with_record("elsewhere",
+                  [](json& record) { record["certificate"]["file"] = "../out/search_certificate_0.jsonl"; }),
+      2,
+      "search 0's certificate file '../out/search_certificate_0.jsonl'; allowed: "
+      "'search_certificate_0.jsonl' beside it");
+}
+
+TEST(CliVerify, NumbersOfTheWrongTypeOrRangeAreExit2) {
+  const auto box_index = [](const json& index) {
+    return [index](std::vector<std::string>& lines) {
+      json j = json::parse(lines[1]);
+      j["boxes"][0][0] = index;
+      lines[1] = j.dump();
+    };
+  };
+  // Not read as 0, 1 or 6: refused.
+  expect_verify(tampered("float_index", box_index(0.0)), 2,
+                ":2: a box index 0.0 along w1; allowed: an integer");
+  expect_verify(tampered("bool_index", box_index(true)), 2, ":2: a box index true along w1");
+  expect_verify(tampered("wrapping_index", box_index(4294967296LL)), 2,
+                ":2: a box index 4294967296 along w1");
+  expect_verify(tampered("trace",
+                         [](std::vector<std::string>& lines) {
+                           const std::size_t line = first_line(lines, "finished", true);
+                           json j = json::parse(lines[line - 1]);
+                           j["trace"] = "zz" + j["trace"].get<std::string>().substr(2);
+                           lines[line - 1] = j.dump();
+                         }),
+                2, "allowed: 16 hexadecimal digits");
+  expect_verify(tampered("choices",
+                         [](std::vector<std::string>& lines) {
+                           json j = json::parse(lines[1]);
+                           j["choices"] = "garbage";
+                           lines[1] = j.dump();
+                         }),
+                2, ":2: choices is not an array");
+  // 4 weights of 65,536 values: 2^64 vectors, which a 64-bit count would wrap to 0.
+  expect_verify(tampered("huge",
+                         [](std::vector<std::string>& lines) {
+                           json h = json::parse(lines[0]);
+                           std::vector<double> values(65536);
+                           for (std::size_t i = 0; i < values.size(); ++i) values[i] = static_cast<double>(i);
+                           h["values"] = json::array({values, values, values, values});
+                           h["vectors"] = 0;
+                           lines = {h.dump()};
+                         }),
+                2, "a box of more than 2^64 vectors");
+}
+
+TEST(CliVerify, ACertificateThatIsNotARegularFileIsRefusedWithoutWaiting) {
+  const std::string dir = tampered("fifo", [](std::vector<std::string>& /*lines*/) {});
+  fs::remove(dir + "/search_certificate_0.jsonl");
+  ASSERT_EQ(::mkfifo((dir + "/search_certificate_0.jsonl").c_str(), 0600), 0);
+  expect_verify(dir, 2, "search_certificate_0.jsonl: not a regular file");
+}
+
+TEST(CliVerify, ASearchWhoseRunsNeverReachTheirTargetVerifiesWithNoOptimum) {
+  // Three steps cannot reveal 99% of the map: no vector has a value, every behaviour is finished
+  // without one, and nothing is pruned.
+  const std::string out = run_sweep("none", R"({"schema_version": 1, "name": "cli_verify_none",
+    "maps": ["office:w=32,h=32,seed=3"],
+    "strategies": [{"name": "energy_aware", "search": {"mode": "best"},
+                    "params": {"w1": [0, 1], "w2": [0, 1], "w3": [0, 1], "w4": [0, 1]}}],
+    "robot": {"sensor": {"range_m": 6}, "energy": "distance", "battery": 300},
+    "sim": {"stop_at_coverage": 0.99, "max_steps": 3},
+    "output": {"objective": "distance_to_coverage_target_m"}, "seed": 5})");
+  const json note = json::parse(std::ifstream(out + "/searches.json"))["searches"][0]["certificate"];
+  ASSERT_TRUE(note["optimum"].is_null()) << note.dump();
+  expect_verify(out, 0, "optimum none (distance_to_coverage_target_m): no vector's runs have a value");
+  // A region claiming a value there fails.
+  const std::string valued = out + "_valued";
+  fs::copy(out, valued, fs::copy_options::recursive);
+  std::vector<std::string> lines = lines_of(valued + "/search_certificate_0.jsonl");
+  json j = json::parse(lines[1]);
+  j["value"] = 5.0;
+  lines[1] = j.dump();
+  write_lines(valued + "/search_certificate_0.jsonl", lines);
+  expect_verify(valued, 1, "but the optimum is none (no vector has a value)");
 }
 
 }  // namespace
