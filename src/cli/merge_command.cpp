@@ -36,6 +36,8 @@ int run_merge(const MergeCommandOptions& o) {
               << r.rows << " runs.csv rows in the shards of a " << r.shard_count << "-way split, sweep of "
               << r.total << " runs):\n";
     print_problems(std::cerr, r.problems);
+    if (!r.search_status.empty())
+      std::cerr << "(only the searches' joint status was written" << r.search_status << ")\n";
     std::cerr
         << "rerun the failed or missing shards (fsweep run SWEEP --shard i/N resumes a partial shard)\n";
     return 1;

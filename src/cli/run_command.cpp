@@ -126,10 +126,12 @@ int run_command(const RunCommandOptions& o) {
     std::cout << "extended the results of an earlier version of the sweep file (sweep_hash "
               << r.extended_from << "): its " << r.kept << " finished runs kept, in this sweep's run order\n";
   }
-  std::cout << (r.interrupted ? "interrupted: " : "done: ") << r.ran << " ran, " << r.skipped
-            << " already done, " << r.failed << " failed (end_reason error), " << r.total - r.ran - r.skipped
-            << " left; " << one_decimal(r.wall_s) << " s, " << one_decimal(r.runs_per_s) << " runs/s on "
-            << r.threads << " threads\n";
+  if (r.total > 0 || r.searches.searches == 0) {  // a sweep of searches alone has no runs to count
+    std::cout << (r.interrupted ? "interrupted: " : "done: ") << r.ran << " ran, " << r.skipped
+              << " already done, " << r.failed << " failed (end_reason error), "
+              << r.total - r.ran - r.skipped << " left; " << one_decimal(r.wall_s) << " s, "
+              << one_decimal(r.runs_per_s) << " runs/s on " << r.threads << " threads\n";
+  }
   if (r.searches.searches > 0) {
     std::cout << "exact weight search: " << r.searches.searches
               << (r.searches.searches == 1 ? " search, " : " searches, ") << r.searches.vectors

@@ -303,11 +303,27 @@ MergeReport merge_shards(const std::string& dir, const std::string& objective,
   if (!fs::is_directory(dir)) throw ConfigError(dir, "not a directory");
   const std::vector<Shard> shards = read_shards(dir, report);
   std::vector<std::string> dirs;
+  std::vector<ShardDir> shard_list;
   dirs.reserve(shards.size());
-  for (const Shard& s : shards) dirs.push_back(s.dir);
+  shard_list.reserve(shards.size());
+  for (const Shard& s : shards) {
+    dirs.push_back(s.dir);
+    shard_list.push_back({s.index, s.count, s.dir});
+  }
   const std::optional<SweepPlan> plan = whole_plan(shards, report);
   const auto [runs_header, runs] = merged_runs(shards, plan, report);
-  if (!report.problems.empty()) return report;
+  if (!report.problems.empty()) {
+    // Where the searches stand all the same, a missing shard's bound unknown (as at a Slurm
+    // array's tasks still waiting).
+    if (plan && !plan->search_units().empty()) {
+      std::vector<std::string> all;
+      all.reserve(report.shard_count);
+      for (std::uint64_t i = 0; i < report.shard_count; ++i)
+        all.push_back(dir + "/" + shard_dir_name(i, report.shard_count));
+      report.search_status = join_search_statuses(*plan, dir, all);
+    }
+    return report;
+  }
 
   std::string runs_text = runs_header + "\n";
   for (const auto& [idx, row] : runs) runs_text += row + "\n";
@@ -326,7 +342,7 @@ MergeReport merge_shards(const std::string& dir, const std::string& objective,
       }
     }
   } else if (!plan->search_units().empty()) {
-    const SearchRunReport searches = merge_weight_searches(*plan, dir, dirs, memory);
+    const SearchRunReport searches = merge_weight_searches(*plan, dir, shard_list, memory);
     if (searches.memory_stop) {
       report.memory_stop = searches.memory_stop->message;
       return report;

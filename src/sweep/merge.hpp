@@ -24,6 +24,9 @@ struct MergeReport {
   /// Empty on success.
   std::vector<std::string> problems;
   bool written = false;  ///< merged files and aggregates written (problems is empty)
+  /// With problems and exact weight searches of mode best: where they stand over the shards
+  /// there are (join_search_statuses(), which wrote DIR/search_status_<id>.json); else empty.
+  std::string search_status;
   /// Exact weight searches merged (merge_weight_searches(), weight_search_runner.hpp).
   std::size_t searches = 0;
   /// Set when the memory guard stopped the searches' merge: what it says (MemoryStop::message).
@@ -42,7 +45,8 @@ struct MergeReport {
 /// file is not reachable from the current directory, the total is the sum of the shard
 /// manifests' `runs.total` and keys are not checked). Missing shard directories, run indices
 /// 0..total-1 without a row, indices outside that range, and a run_index or run_key in more than
-/// one row are listed in `problems`; then nothing is written. Otherwise writes DIR/runs.csv and
+/// one row are listed in `problems`; then nothing is written but the searches' joint status
+/// files (MergeReport::search_status). Otherwise writes DIR/runs.csv and
 /// DIR/progress.csv (rows ordered by run_index, a run's progress rows in their shard's order),
 /// DIR/manifest.json (the first shard's, with shard {index 0, count 1}, runs summed, every shard's
 /// sessions by start time, start_utc the first session's, status

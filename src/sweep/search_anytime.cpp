@@ -111,13 +111,18 @@ json join_search_status(std::span<const json> shards, std::uint64_t vectors, dou
       finished = false;
       continue;
     }
-    finished = finished && shard.value("status", std::string()) == "finished";
+    const bool shard_finished = shard.value("status", std::string()) == "finished";
+    finished = finished && shard_finished;
     resolved += shard.value("resolved_vectors", std::uint64_t{0});
     const json& b = shard.at("best");
     if (!b.is_null() && sign * b.at("objective").get<double>() < best) {
       best = sign * b.at("objective").get<double>();
       best_entry = b;
     }
+    // A finished shard leaves nothing unresolved: its bound is its own optimum, no better than its
+    // best, and none at all when it holds no vector (a shard past the box's blocks) or no vector
+    // of it has a value, so it bounds nothing the best does not.
+    if (shard_finished) continue;
     const double shard_bound = status_number(shard, "bound");
     if (std::isnan(shard_bound)) {
       bound_known = false;

@@ -59,9 +59,10 @@ class SearchAnytimeLog {
 };
 
 /// The status of a whole search from its shards' (each null when the shard has none, e.g. it
-/// never started): the best of their best vectors and the weakest of their bounds (null when
-/// some shard's bound is unknown), the resolved vectors summed, status "finished" only when
-/// every shard's is. `vectors`: the whole box's; `sign` as SearchAnytimeLog.
+/// never started): the best of their best vectors and the weakest of the unfinished shards'
+/// bounds (null when one of those is unknown; a finished shard bounds nothing its best does not,
+/// and one holding no vector has no bound), the resolved vectors summed, status "finished" only
+/// when every shard's is, the bound then the optimum. `vectors`: the whole box's; `sign` as SearchAnytimeLog.
 [[nodiscard]] nlohmann::json join_search_status(std::span<const nlohmann::json> shards, std::uint64_t vectors,
                                                 double sign);
 

@@ -416,17 +416,51 @@ class SearchWriter {
     return kept * instance_count();
   }
 
+  /// Refuses (ConfigError naming the shard's journal) a finished shard whose journal does not hold
+  /// what the shard found: in mode all, behaviours covering the shard's part of the box; in mode
+  /// best, a behaviour of the optimum its searches.json `record` gives and, for a journal that
+  /// lists its pruned regions (every build since the certificate), regions covering its part.
+  /// A journal emptied, deleted, truncated or replaced (another sweep's lines are not read) after
+  /// the shard finished would otherwise merge into a wrong optimum.
+  void check_shard_journal(const ShardDir& shard, const Journal& journal, const json& record) const {
+    const std::uint64_t expected = grid_.count(grid_.shard(shard.index, shard.count));
+    std::uint64_t held = 0;
+    for (const FoundBehaviour& f : journal.found) held += f.behaviour.vectors;
+    for (const auto& [choices, tally] : journal.leaves) held += tally.vectors;
+    const std::string rerun =
+        ": its journal lost lines or was replaced after the shard finished; rerun the "
+        "shard (`fsweep run SWEEP --shard " +
+        std::to_string(shard.index) + "/" + std::to_string(shard.count) + " --fresh` into " + shard.path +
+        ")";
+    const bool lists_regions = search_.mode == WeightSearch::Mode::All || !journal.leaves.empty();
+    if (lists_regions && held != expected) {
+      throw ConfigError(journal_path(shard.path), "holds search " + std::to_string(id_) + "'s regions of " +
+                                                      std::to_string(held) + " of the shard's " +
+                                                      std::to_string(expected) + " weight vectors" + rerun);
+    }
+    if (search_.mode != WeightSearch::Mode::Best) return;
+    const json& recorded = record.at("certificate").at("optimum");
+    const double sign = direction_sign();
+    const double found = signed_optimum(journal.found);
+    const bool same = recorded.is_null() ? std::isinf(found) : sign * recorded.get<double>() == found;
+    if (!same) {
+      throw ConfigError(journal_path(shard.path), "holds no behaviour of search " + std::to_string(id_) +
+                                                      " with the optimum " + recorded.dump() +
+                                                      " its searches.json records" + rerun);
+    }
+  }
+
   /// The parts of the whole grid's behaviours that searches of its shards found in `dirs`,
   /// merged: behaviours with one trace are one behaviour of the whole search (Behaviour::trace),
   /// its region the union of theirs. `records`: each shard's searches.json record of this search.
   /// `guard` (may be null): the memory guard; once it reached its threshold reading a journal,
   /// the rest is not read and `out` is stopped_by_memory() (stage Merging).
-  Searched merged(const std::vector<std::string>& dirs, const std::vector<json>& records,
-                  MemoryWatch* guard) {
+  Searched merged(const std::vector<ShardDir>& shards, const std::vector<json>& records, MemoryWatch* guard) {
     Searched out;
     const std::string key = journal_key();
     std::map<std::uint64_t, std::size_t> by_trace;
-    for (const std::string& dir : dirs) {
+    for (std::size_t s = 0; s < shards.size(); ++s) {
+      const std::string& dir = shards[s].path;
       Journal journaled = read_journal(key, dir, JournalDamage::Refuse, false, guard);
       if (journaled.empty() && journaled.previous_lines > 0) {
         throw ConfigError(journal_path(dir),
@@ -437,6 +471,7 @@ class SearchWriter {
                               "' only: rerun the shard's `fsweep run --shard i/N` with this build, after "
                               "deleting its searches.json");
       }
+      if (guard == nullptr || !guard->reached()) check_shard_journal(shards[s], journaled, records[s]);
       std::vector<FoundBehaviour> read = std::move(journaled.found);
       if (guard != nullptr && guard->reached()) {
         out.found.insert(out.found.end(), std::make_move_iterator(read.begin()),
@@ -462,10 +497,10 @@ class SearchWriter {
       tables_.admit(f);
     }
     if (search_.mode == WeightSearch::Mode::All && vectors != grid_.size()) {
-      throw ConfigError(journal_path(dirs.front()), "the shards' journals hold the behaviours of " +
-                                                        std::to_string(vectors) + " of the search's " +
-                                                        std::to_string(grid_.size()) +
-                                                        " weight vectors; rerun the shards that lack some");
+      throw ConfigError(journal_path(shards.front().path),
+                        "the shards' journals hold the behaviours of " + std::to_string(vectors) +
+                            " of the search's " + std::to_string(grid_.size()) +
+                            " weight vectors; rerun the shards that lack some");
     }
     for (const json& r : records) {
       out.stats.splits += r.at("splits").get<std::uint64_t>();
@@ -911,6 +946,7 @@ SearchRunReport run_weight_searches(const SweepPlan& plan, const std::string& ou
     write_file_atomically(out_dir + "/" + kSearchesFile, json{{"searches", shard_records}}.dump(2) + '\n');
     report.files.emplace_back(kSearchesFile);
     report.searches = units.size();
+    report.vectors = total;  // the shard's own part of the boxes
   } else {
     write_search_files(plan, units, std::move(rows), out_dir, report);
   }
@@ -918,17 +954,27 @@ SearchRunReport run_weight_searches(const SweepPlan& plan, const std::string& ou
   return report;
 }
 
+std::string join_search_statuses(const SweepPlan& plan, const std::string& out_dir,
+                                 const std::vector<std::string>& shard_dirs) {
+  const Objective* objective = nullptr;
+  const std::vector<SearchUnit> units = checked_units(plan, objective);
+  return join_shard_status(plan, units, out_dir, shard_dirs);
+}
+
 SearchRunReport merge_weight_searches(const SweepPlan& plan, const std::string& out_dir,
-                                      const std::vector<std::string>& shard_dirs,
-                                      const SearchMemoryGuard& memory) {
+                                      const std::vector<ShardDir>& shards, const SearchMemoryGuard& memory) {
   SearchRunReport report;
   const Objective* objective = nullptr;
   const std::vector<SearchUnit> units = checked_units(plan, objective);
   if (units.empty()) return report;
   const auto start = std::chrono::steady_clock::now();
+  std::vector<std::string> shard_dirs;
+  shard_dirs.reserve(shards.size());
+  for (const ShardDir& shard : shards) shard_dirs.push_back(shard.path);
   // Each shard's record of each search: its searches.json says the shard's searches finished.
   std::vector<std::vector<json>> records(units.size());
-  for (const std::string& dir : shard_dirs) {
+  for (const ShardDir& at : shards) {
+    const std::string& dir = at.path;
     const std::string path = dir + "/" + kSearchesFile;
     const std::optional<std::string> text = read_file(path);
     if (!text) {
@@ -949,6 +995,17 @@ SearchRunReport merge_weight_searches(const SweepPlan& plan, const std::string& 
     } catch (const std::exception& e) {
       throw ConfigError(path, std::string("not a shard's searches.json of this sweep: ") + e.what());
     }
+    for (std::size_t id = 0; id < units.size(); ++id) {
+      const json& recorded = records[id].back().value("shard", json());
+      const json expected{{"index", at.index}, {"count", at.count}};
+      if (recorded != expected) {
+        throw ConfigError(path, "search " + std::to_string(id) + " is of shard " + recorded.dump() +
+                                    ", its directory's name says " + expected.dump() +
+                                    ": a shard copied or renamed; rerun `fsweep run SWEEP --shard " +
+                                    std::to_string(at.index) + "/" + std::to_string(at.count) +
+                                    " --fresh` into " + dir);
+      }
+    }
   }
   std::optional<MemoryWatch> guard;
   if (memory.limit) guard.emplace(memory.limit->bytes, memory_reader(memory), nullptr);
@@ -964,7 +1021,7 @@ SearchRunReport merge_weight_searches(const SweepPlan& plan, const std::string& 
   std::vector<SearchRows> rows;
   for (std::size_t id = 0; id < units.size(); ++id) {
     SearchWriter writer(plan, units[id], id, *objective, out_dir);
-    Searched merged = writer.merged(shard_dirs, records[id], guard ? &*guard : nullptr);
+    Searched merged = writer.merged(shards, records[id], guard ? &*guard : nullptr);
     if (merged.memory_stop) return stopped(id, std::move(*merged.memory_stop));
     if (std::optional<MemoryStop> s =
             formatting_would_pass(guard ? &*guard : nullptr, memory, merged.found.size(),

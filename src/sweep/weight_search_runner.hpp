@@ -54,6 +54,7 @@
 #include <vector>
 
 #include "core/memory_limit.hpp"
+#include "core/shard_dirs.hpp"
 #include "sweep/sweep_plan.hpp"
 
 namespace fsweep {
@@ -133,8 +134,9 @@ SearchRunReport run_weight_searches(const SweepPlan& plan, const std::string& ou
                                     std::uint64_t shard_count = 1, const std::atomic<bool>* stop = nullptr,
                                     const SearchMemoryGuard& memory = {});
 
-/// Joins the searches of `plan` run as shards into `shard_dirs` (each with its searches.json and
-/// a journal without a damaged line, else ConfigError naming the file or line; the shards' files
+/// Joins the searches of `plan` run as `shards` (each with its searches.json, whose records name
+/// the shard its directory is, and a journal without a damaged line that holds what the shard
+/// found, check_shard_journal(); else ConfigError naming the file or line; the shards' files
 /// are only read) and writes the files above into `out_dir`: the behaviours of the
 /// shards with one trace (Behaviour::trace) are one behaviour, so every CSV file is the one an
 /// unsharded search writes. In searches.json the counts of work (splits, forks, wall_s, the
@@ -145,8 +147,15 @@ SearchRunReport run_weight_searches(const SweepPlan& plan, const std::string& ou
 /// files are formatted; past its threshold the merge stops with report.memory_stop (stage
 /// Merging) and writes nothing.
 SearchRunReport merge_weight_searches(const SweepPlan& plan, const std::string& out_dir,
-                                      const std::vector<std::string>& shard_dirs,
+                                      const std::vector<ShardDir>& shards,
                                       const SearchMemoryGuard& memory = {});
+
+/// For a merge that cannot go on (a shard directory missing): writes each search of mode best's
+/// joint status so far as merge_weight_searches() does for a shard that did not finish, a shard
+/// in `shard_dirs` without a status counting as unknown, and returns the note that says where
+/// they stand ("" when the sweep has no search of mode best).
+std::string join_search_statuses(const SweepPlan& plan, const std::string& out_dir,
+                                 const std::vector<std::string>& shard_dirs);
 
 /// The key of the lines of `plan`'s search `search_id` in a journal of `format`
 /// (SearchJournal::format_for() of its instance count; kPreviousFormat for a class's lines an

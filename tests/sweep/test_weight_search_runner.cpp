@@ -8,6 +8,7 @@
 #include <cmath>
 #include <csignal>
 #include <filesystem>
+#include <functional>
 #include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -994,6 +995,12 @@ TEST(WeightSearchRunner, TheShardsStatusesJoinIntoTheWholeSearchs) {
   EXPECT_TRUE(unknown["bound"].is_null());
   EXPECT_TRUE(unknown["gap"].is_null());
   EXPECT_EQ(join_search_status(std::vector<json>{finished, finished}, 200, 1.0)["status"], "finished");
+  // A finished shard of no vectors (past the box's blocks) has no bound; it leaves the optimum's.
+  const json empty = {{"status", "finished"}, {"resolved_vectors", 0}, {"bound", nullptr}, {"best", nullptr}};
+  const json complete = join_search_status(std::vector<json>{finished, empty}, 100, 1.0);
+  EXPECT_EQ(complete["status"], "finished");
+  EXPECT_EQ(complete["bound"], 10.0);
+  EXPECT_EQ(complete["gap"], 0.0);
   // A maximised objective: the best is the largest, the bound an upper one.
   json up = stopped;
   up["bound"] = 15.0;
@@ -1003,22 +1010,39 @@ TEST(WeightSearchRunner, TheShardsStatusesJoinIntoTheWholeSearchs) {
   EXPECT_EQ(max["gap"], 3.0);
 }
 
-TEST(WeightSearchRunner, AMergeOfUnfinishedShardsWritesTheirJointStatus) {
-  // Two shards ran; shard 1's search is then made unfinished (its searches.json removed): the
-  // merge refuses (as before) but says what the shards found so far and writes their joint
-  // status, its bound unknown while shard 1 has no status, else the weaker of the two.
+/// A search of mode best over 256 vectors (4 blocks) of an office map run as `shards` shards into a fresh
+/// directory named `name`; returns the directory.
+std::string best_search_in_shards(const std::string& name, std::uint64_t shards) {
   const json box = {
       {"w1", {{"range", {0, 15}}, {"step", 1}}}, {"w2", {0, 2}}, {"w3", {0, 3}}, {"w4", {0, 1}}};
   json sweep = search_and_grid(json::array({"office:w=32,h=32,seed=3"}), box, json::array());
   sweep["strategies"].erase(1);
   sweep["strategies"][0]["search"] = {{"mode", "best"}};
-  const std::string dir = testing::fresh_dir("search", "anytime_shards");
-  for (const std::uint64_t shard : {0U, 1U}) {
+  const std::string dir = testing::fresh_dir("search", name);
+  for (std::uint64_t shard = 0; shard < shards; ++shard) {
     RunnerOptions o = testing::quiet_runner(dir);
     o.shard_index = shard;
-    o.shard_count = 2;
+    o.shard_count = shards;
     (void)run_sweep(SweepPlan::from_json(sweep, "search.json"), o);
   }
+  return dir;
+}
+
+/// The message of the ConfigError merge_shards(`dir`) throws ("(merged)" when it merges).
+std::string merge_refusal(const std::string& dir) {
+  try {
+    (void)merge_shards(dir);
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+  return "(merged)";
+}
+
+TEST(WeightSearchRunner, AMergeOfUnfinishedShardsWritesTheirJointStatus) {
+  // Two shards ran; shard 1's search is then made unfinished (its searches.json removed): the
+  // merge refuses (as before) but says what the shards found so far and writes their joint
+  // status, its bound unknown while shard 1 has no status, else the weaker of the two.
+  const std::string dir = best_search_in_shards("anytime_shards", 2);
   const std::string status1 = dir + "/shard-1-of-2/search_status_0.json";
   const json shard0 = json::parse(testing::read_file(dir + "/shard-0-of-2/search_status_0.json"));
   json shard1 = json::parse(testing::read_file(status1));
@@ -1027,14 +1051,7 @@ TEST(WeightSearchRunner, AMergeOfUnfinishedShardsWritesTheirJointStatus) {
   EXPECT_EQ(shard0["gap"], 0.0);
   std::filesystem::remove(dir + "/shard-1-of-2/searches.json");
   std::filesystem::remove(status1);
-  const auto refused = [&] {
-    try {
-      (void)merge_shards(dir);
-    } catch (const ConfigError& e) {
-      return std::string(e.what());
-    }
-    return std::string("(merged)");
-  };
+  const auto refused = [&] { return merge_refusal(dir); };
   const std::string message = refused();
   EXPECT_NE(message.find("search 0 of the shards so far: best so far"), std::string::npos) << message;
   EXPECT_NE(message.find("no bound on the optimum yet"), std::string::npos) << message;
@@ -1052,7 +1069,88 @@ TEST(WeightSearchRunner, AMergeOfUnfinishedShardsWritesTheirJointStatus) {
   EXPECT_EQ(joint["status"], "stopped");
   EXPECT_EQ(joint["bound"], shard1["bound"]);
   EXPECT_EQ(joint["resolved_vectors"], 74U);
+  // Shard 1's directory missing altogether (a Slurm task not started yet): the merge lists it
+  // and writes nothing else, but still the joint status, with no bound.
+  std::filesystem::remove_all(dir + "/shard-1-of-2");
+  std::filesystem::remove(dir + "/search_status_0.json");
+  const MergeReport missing = merge_shards(dir);
+  EXPECT_FALSE(missing.written);
+  ASSERT_EQ(missing.problems.size(), 1U);
+  EXPECT_NE(missing.problems[0].find("missing shard directory"), std::string::npos) << missing.problems[0];
+  EXPECT_NE(missing.search_status.find("no bound on the optimum yet"), std::string::npos)
+      << missing.search_status;
+  joint = json::parse(testing::read_file(dir + "/search_status_0.json"));
+  EXPECT_TRUE(joint["bound"].is_null());
+  EXPECT_EQ(joint["resolved_vectors"], 64U);
   std::filesystem::remove_all(dir);
+}
+
+TEST(WeightSearchRunner, AShardPastTheBoxsBlocksLeavesTheCompleteMergesBoundTheOptimum) {
+  // The box's 4 blocks in 5 shards: shard 0 holds none, finished with no bound; the merged
+  // status is finished with the optimum as its bound.
+  const std::string dir = best_search_in_shards("empty_shard", 5);
+  const json empty = json::parse(testing::read_file(dir + "/shard-0-of-5/search_status_0.json"));
+  EXPECT_EQ(empty["vectors"], 0U);
+  EXPECT_TRUE(empty["bound"].is_null());
+  ASSERT_TRUE(merge_shards(dir).written);
+  const json joint = json::parse(testing::read_file(dir + "/search_status_0.json"));
+  const json record = json::parse(testing::read_file(dir + "/searches.json"))["searches"][0];
+  EXPECT_EQ(joint["status"], "finished");
+  EXPECT_EQ(joint["bound"], record["certificate"]["optimum"]);
+  EXPECT_EQ(joint["gap"], 0.0);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(WeightSearchRunner, AMergeRefusesAShardWhoseJournalDoesNotHoldWhatItFound) {
+  // Each would otherwise merge, exit 0, into a wrong optimum or wrong counts.
+  const std::string source = best_search_in_shards("journal_lost", 2);
+  const auto variant = [&](const std::string& name, const std::function<void(const std::string&)>& change) {
+    const std::string dir = testing::fresh_dir("search", name);
+    std::filesystem::remove_all(dir);
+    std::filesystem::copy(source, dir, std::filesystem::copy_options::recursive);
+    change(dir);
+    return merge_refusal(dir);
+  };
+  // The journal emptied after the shard finished (as by a user freeing space):
+  std::string message = variant("journal_emptied", [](const std::string& dir) {
+    testing::write_file(dir + "/shard-0-of-2/search_journal.jsonl", "");
+  });
+  EXPECT_NE(
+      message.find("shard-0-of-2/search_journal.jsonl: holds no behaviour of search 0 with the optimum"),
+      std::string::npos)
+      << message;
+  EXPECT_NE(message.find("--shard 0/2 --fresh"), std::string::npos) << message;
+  // One pruned region's line lost:
+  message = variant("journal_cut", [](const std::string& dir) {
+    const std::string path = dir + "/shard-1-of-2/search_journal.jsonl";
+    std::istringstream in(testing::read_file(path));
+    std::string kept;
+    bool dropped = false;
+    for (std::string line; std::getline(in, line);) {
+      if (!dropped && line.find("\"leaf\"") != std::string::npos) {
+        dropped = true;
+        continue;
+      }
+      kept += line + "\n";
+    }
+    ASSERT_TRUE(dropped) << "no pruned region in the shard's journal";
+    testing::write_file(path, kept);
+  });
+  EXPECT_NE(message.find("shard-1-of-2/search_journal.jsonl: holds search 0's regions of "),
+            std::string::npos)
+      << message;
+  // Shard 0 copied in place of shard 1:
+  message = variant("journal_copied", [](const std::string& dir) {
+    std::filesystem::remove_all(dir + "/shard-1-of-2");
+    std::filesystem::copy(dir + "/shard-0-of-2", dir + "/shard-1-of-2",
+                          std::filesystem::copy_options::recursive);
+  });
+  EXPECT_NE(message.find("shard-1-of-2/searches.json: search 0 is of shard {\"count\":2,\"index\":0}, its "
+                         "directory's name says {\"count\":2,\"index\":1}"),
+            std::string::npos)
+      << message;
+  EXPECT_EQ(variant("journal_whole", [](const std::string& /*dir*/) {}), "(merged)");
+  std::filesystem::remove_all(source);
 }
 
 /// The message of the ConfigError for `sweep`.
