@@ -18,6 +18,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "cli/commands.hpp"
@@ -28,6 +29,7 @@
 #include "core/files.hpp"
 #include "sweep/slurm_script.hpp"
 #include "sweep/sweep_plan.hpp"
+#include "sweep/weight_search_runner.hpp"
 
 namespace fsweep::cli {
 namespace {
@@ -167,8 +169,20 @@ void print_plan(const SweepPlan& plan, const SlurmScriptOptions& s, std::uint64_
   std::cout << "sweep " << plan.name() << ": " << runs << " runs (" << plan.configuration_count()
             << " configurations x " << plan.repetitions() << " repetitions) in " << s.shards << " shards of "
             << runs_per_shard(runs, s.shards) << " runs\n";
-  if (s.shards > runs) {
+  const std::vector<std::pair<std::uint64_t, std::uint64_t>> searches = weight_search_blocks(plan);
+  if (s.shards > runs && (runs > 0 || searches.empty())) {
     std::cout << "note: more shards than runs; shards " << runs << ".." << s.shards - 1 << " have no runs\n";
+  }
+  for (std::size_t id = 0; id < searches.size(); ++id) {
+    const auto [vectors, blocks] = searches[id];
+    std::cout << "exact weight search " << id << ": " << vectors << " weight vectors in " << blocks
+              << " blocks of 8^4, divided among the shards by block\n";
+    if (s.shards > blocks) {
+      const std::uint64_t idle = s.shards - blocks;
+      std::cout << "note: more shards than search " << id << "'s blocks: " << idle
+                << (idle == 1 ? " shard has" : " shards have") << " none of it (at most " << blocks
+                << " are useful)\n";
+    }
   }
   std::cout << "array: " << tasks << " tasks (MaxArraySize " << s.max_array_size << ", " << k_source << ")";
   if (tasks < s.shards) {

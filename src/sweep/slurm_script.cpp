@@ -291,7 +291,8 @@ std::string render_slurm_merge_script(const SlurmScriptOptions& o) {
     << "# Written by `fsweep slurm`: merges the " << o.shards << " shards of sweep " << o.name
     << " once every array task has ended\n"
     << "# (submitted with --dependency=afterany:<array job>, so it also runs after failures and then\n"
-    << "# lists the missing runs and exits 1, writing nothing).\n\n";
+    << "# lists the missing runs and exits 1, or names a shard whose weight search did not finish and\n"
+    << "# exits 2, writing nothing but the searches' joint status).\n\n";
   s << "cd -- " << shell_quote(o.work_dir) << " || exit 2\n";
   setup_block(s, o, /*restore_nounset=*/false);
   s << "exec " << shell_quote(o.fsweep) << " merge " << shell_quote(o.out_dir) << '\n';

@@ -954,6 +954,15 @@ SearchRunReport run_weight_searches(const SweepPlan& plan, const std::string& ou
   return report;
 }
 
+std::vector<std::pair<std::uint64_t, std::uint64_t>> weight_search_blocks(const SweepPlan& plan) {
+  std::vector<std::pair<std::uint64_t, std::uint64_t>> out;
+  for (const SearchUnit& u : plan.search_units()) {
+    const WeightGrid grid(plan.strategies().at(u.entry).search->values);
+    out.emplace_back(grid.size(), grid.block_count());
+  }
+  return out;
+}
+
 std::string join_search_statuses(const SweepPlan& plan, const std::string& out_dir,
                                  const std::vector<std::string>& shard_dirs) {
   const Objective* objective = nullptr;

@@ -51,6 +51,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "core/memory_limit.hpp"
@@ -149,6 +150,11 @@ SearchRunReport run_weight_searches(const SweepPlan& plan, const std::string& ou
 SearchRunReport merge_weight_searches(const SweepPlan& plan, const std::string& out_dir,
                                       const std::vector<ShardDir>& shards,
                                       const SearchMemoryGuard& memory = {});
+
+/// Per search of `plan`, in search order: its weight vectors and its blocks of 8^4 (WeightGrid),
+/// which `fsweep run --shard i/N` divides among the shards (a shard of no block has nothing to
+/// search).
+std::vector<std::pair<std::uint64_t, std::uint64_t>> weight_search_blocks(const SweepPlan& plan);
 
 /// For a merge that cannot go on (a shard directory missing): writes each search of mode best's
 /// joint status so far as merge_weight_searches() does for a shard that did not finish, a shard

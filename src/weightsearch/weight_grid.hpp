@@ -80,6 +80,8 @@ class WeightGrid {
   [[nodiscard]] std::span<const double> values(int k) const { return values_[static_cast<std::size_t>(k)]; }
   /// Points of the grid (the product of the list sizes).
   [[nodiscard]] std::uint64_t size() const { return size_; }
+  /// Blocks of kBlockEdge values per weight (fewer at the grid's end): what shard() divides.
+  [[nodiscard]] std::uint64_t block_count() const { return block_count_; }
 
   /// The region of every point.
   [[nodiscard]] WeightRegion everything() const;

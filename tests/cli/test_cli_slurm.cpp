@@ -80,6 +80,28 @@ TEST(CliSlurm, WithoutSbatchWritesAndPrintsThePackedScripts) {
   fs::remove_all(dir);
 }
 
+TEST(CliSlurm, ASearchSweepSaysHowManyShardsItsBlocksCanUse) {
+  // A search alone has no runs to count; its box of 2 x 8 values of w1 holds 2 blocks of 8^4, so
+  // 3 shards leave one with nothing to search.
+  const std::string dir = fsweep::testing::fresh_temp_dir("slurm", "search");
+  fs::create_directories(dir);
+  std::ofstream(dir + "/sweep.json") << R"({"schema_version": 1, "name": "cli_slurm_search",
+    "maps": ["rooms:w=24,h=20,door=2,seed=2"],
+    "strategies": [{"name": "energy_aware", "search": {"mode": "best"},
+                    "params": {"w1": {"range": [0, 15], "step": 1}, "w2": [0, 1], "w3": [0, 1], "w4": [0, 1]}}],
+    "seed": 3})";
+  const auto out = run_shell("cd " + dir + " && env PATH=/nonexistent " + std::string(FSWEEP_BINARY_DIR) +
+                             "/bin/fsweep slurm sweep.json --tasks 3 --out out");
+  ASSERT_EQ(out.code, 0) << out.output;
+  EXPECT_FALSE(has(out.output, "more shards than runs")) << out.output;
+  EXPECT_TRUE(has(out.output, "exact weight search 0: 128 weight vectors in 2 blocks of 8^4")) << out.output;
+  EXPECT_TRUE(has(out.output, "note: more shards than search 0's blocks: 1 shard has none of it"))
+      << out.output;
+  EXPECT_TRUE(
+      has(slurp(dir + "/out/slurm/merge.sbatch"), "names a shard whose weight search did not finish"));
+  fs::remove_all(dir);
+}
+
 /// The lines of `text` in order, from the first that starts with `first` to the first after it
 /// that starts with `last`, both included; empty when either is missing.
 std::vector<std::string> lines_between(const std::string& text, const std::string& first,
