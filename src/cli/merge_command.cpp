@@ -32,9 +32,10 @@ int run_merge(const MergeCommandOptions& o) {
     return 1;
   }
   if (!r.written) {
-    std::cerr << "fsweep merge: " << o.dir << ": " << r.problems.size() << " problem(s), nothing written ("
-              << r.rows << " runs.csv rows in the shards of a " << r.shard_count << "-way split, sweep of "
-              << r.total << " runs):\n";
+    std::cerr << "fsweep merge: " << o.dir << ": " << r.problems.size() << " problem(s), nothing "
+              << (r.search_status.empty() ? "written" : "merged") << " (" << r.rows
+              << " runs.csv rows in the shards of a " << r.shard_count << "-way split, sweep of " << r.total
+              << " runs):\n";
     print_problems(std::cerr, r.problems);
     if (!r.search_status.empty())
       std::cerr << "(only the searches' joint status was written" << r.search_status << ")\n";

@@ -126,7 +126,7 @@ int run_command(const RunCommandOptions& o) {
     std::cout << "extended the results of an earlier version of the sweep file (sweep_hash "
               << r.extended_from << "): its " << r.kept << " finished runs kept, in this sweep's run order\n";
   }
-  if (r.total > 0 || r.searches.searches == 0) {  // a sweep of searches alone has no runs to count
+  if (r.total > 0 || plan.search_units().empty()) {  // a sweep of searches alone has no runs to count
     std::cout << (r.interrupted ? "interrupted: " : "done: ") << r.ran << " ran, " << r.skipped
               << " already done, " << r.failed << " failed (end_reason error), "
               << r.total - r.ran - r.skipped << " left; " << one_decimal(r.wall_s) << " s, "

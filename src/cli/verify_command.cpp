@@ -37,15 +37,11 @@ struct VerifyCommandOptions {
   VerifyOptions verify;
 };
 
-/// searches.json's records by search id.
+/// searches.json's records by search id (none when the file is missing: no search finished).
 std::map<std::size_t, nlohmann::json> search_records(const std::string& dir) {
   const std::string path = dir + "/" + kSearchesFile;
   const std::optional<std::string> text = read_file(path);
-  if (!text) {
-    throw ConfigError(path,
-                      "missing: no exact weight search of DIR has finished (a stopped one has "
-                      "search_status_<id>.json; `fsweep run` on the same sweep and DIR finishes it)");
-  }
+  if (!text) return {};  // no search has finished: each is "not finished" (why_no_certificate())
   nlohmann::json searches;
   try {
     searches = parse_json_bounded(*text, path);
@@ -71,7 +67,8 @@ std::string why_no_certificate(const std::string& dir, std::size_t id,
   if (it == records.end()) {
     const std::optional<std::string> status = read_file(dir + "/" + search_status_file(id));
     return "not finished: no record in searches.json" +
-           (status ? " (" + search_status_file(id) + " holds where it stopped; `fsweep run` finishes it)"
+           (status ? " (" + search_status_file(id) +
+                         " holds where it stopped; `fsweep run` on the same sweep and DIR finishes it)"
                    : std::string());
   }
   const nlohmann::json& c = it->second.value("certificate", nlohmann::json());
@@ -102,7 +99,10 @@ std::vector<RunSpec> instance_specs(const SweepPlan& plan, const SearchUnit& uni
   if (header.strategy_label != plan.strategies().at(unit.entry).label)
     throw differs("strategy_label", header.strategy_label, plan.strategies().at(unit.entry).label);
   if (header.map_class != unit.map_class) throw differs("map_class", header.map_class, unit.map_class);
-  if (header.weights != search.weights || header.values != search.values) {
+  if (header.weights != search.weights) {
+    throw differs("weights", nlohmann::json(header.weights).dump(), nlohmann::json(search.weights).dump());
+  }
+  if (header.values != search.values) {
     throw differs("the box", nlohmann::json(header.values).dump(-1).substr(0, 120),
                   nlohmann::json(search.values).dump(-1).substr(0, 120));
   }
@@ -214,6 +214,15 @@ int run_verify(const VerifyCommandOptions& o) {
   const std::map<std::size_t, nlohmann::json> records = search_records(o.dir);
   bool all_verified = true;
   for (const std::size_t id : best) {
+    if (const auto it = records.find(id); it != records.end() && it->second.is_object()) {
+      const nlohmann::json shard = it->second.value("shard", nlohmann::json());
+      if (shard.is_object() && shard.value("count", 1) > 1) {
+        throw ConfigError(o.dir + "/" + kSearchesFile,
+                          "search " + std::to_string(id) + " here is a shard's part (shard " + shard.dump() +
+                              "): `fsweep merge` on the shards' parent directory writes its certificate; "
+                              "verify that directory");
+      }
+    }
     if (const std::string why = why_no_certificate(o.dir, id, records); !why.empty()) {
       std::cerr << "fsweep verify: search " << id << " (" << plan.strategies().at(units[id].entry).label
                 << ", " << units[id].map_class << "): nothing verified: " << why << '\n';

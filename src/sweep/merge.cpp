@@ -315,7 +315,8 @@ MergeReport merge_shards(const std::string& dir, const std::string& objective,
   if (!report.problems.empty()) {
     // Where the searches stand all the same, a missing shard's bound unknown (as at a Slurm
     // array's tasks still waiting).
-    if (plan && !plan->search_units().empty()) {
+    // Not over a complete merge's (its searches.json says the searches finished).
+    if (plan && !plan->search_units().empty() && !fs::exists(dir + "/" + kSearchesFile)) {
       std::vector<std::string> all;
       all.reserve(report.shard_count);
       for (std::uint64_t i = 0; i < report.shard_count; ++i)

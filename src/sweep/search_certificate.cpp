@@ -76,7 +76,8 @@ json write_search_certificate(const std::string& path, const json& header, const
   if (vectors != grid.size()) {
     const std::string cause =
         vectors < grid.size()
-            ? "part of it was written by a version that did not journal pruned regions"
+            ? "lines are missing (a journal cut after its search finished, or part of it written by a "
+              "version that did not journal pruned regions)"
             : "some overlap: a version that pruned above the regions it had journaled resumed it";
     return json{{"file", nullptr},
                 {"why_not", "the journal's regions hold " + std::to_string(vectors) + " of the " +

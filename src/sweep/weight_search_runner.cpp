@@ -418,35 +418,69 @@ class SearchWriter {
 
   /// Refuses (ConfigError naming the shard's journal) a finished shard whose journal does not hold
   /// what the shard found: in mode all, behaviours covering the shard's part of the box; in mode
-  /// best, a behaviour of the optimum its searches.json `record` gives and, for a journal that
-  /// lists its pruned regions (every build since the certificate), regions covering its part.
-  /// A journal emptied, deleted, truncated or replaced (another sweep's lines are not read) after
-  /// the shard finished would otherwise merge into a wrong optimum.
+  /// best, a behaviour of the optimum its searches.json `record` gives. A journal emptied,
+  /// deleted, cut or replaced (another sweep's lines are not read) after the shard finished would
+  /// otherwise merge into wrong files. (In mode best a lost pruned region cannot change the
+  /// optimum; the certificate's cover check then says so, as for a journal part of which an
+  /// older build wrote.)
   void check_shard_journal(const ShardDir& shard, const Journal& journal, const json& record) const {
-    const std::uint64_t expected = grid_.count(grid_.shard(shard.index, shard.count));
-    std::uint64_t held = 0;
-    for (const FoundBehaviour& f : journal.found) held += f.behaviour.vectors;
-    for (const auto& [choices, tally] : journal.leaves) held += tally.vectors;
     const std::string rerun =
         ": its journal lost lines or was replaced after the shard finished; rerun the "
         "shard (`fsweep run SWEEP --shard " +
         std::to_string(shard.index) + "/" + std::to_string(shard.count) + " --fresh` into " + shard.path +
         ")";
-    const bool lists_regions = search_.mode == WeightSearch::Mode::All || !journal.leaves.empty();
-    if (lists_regions && held != expected) {
-      throw ConfigError(journal_path(shard.path), "holds search " + std::to_string(id_) + "'s regions of " +
-                                                      std::to_string(held) + " of the shard's " +
-                                                      std::to_string(expected) + " weight vectors" + rerun);
+    if (search_.mode == WeightSearch::Mode::All) {
+      const std::uint64_t expected = grid_.count(grid_.shard(shard.index, shard.count));
+      std::uint64_t held = 0;
+      for (const FoundBehaviour& f : journal.found) held += f.behaviour.vectors;
+      if (held != expected) {
+        throw ConfigError(journal_path(shard.path),
+                          "holds search " + std::to_string(id_) + "'s behaviours of " + std::to_string(held) +
+                              " of the shard's " + std::to_string(expected) + " weight vectors" + rerun);
+      }
+      return;
     }
-    if (search_.mode != WeightSearch::Mode::Best) return;
-    const json& recorded = record.at("certificate").at("optimum");
-    const double sign = direction_sign();
+    const json note = record.contains("certificate") ? record.at("certificate") : json();
+    const json recorded = note.is_object() ? note.value("optimum", json("missing")) : json("missing");
+    if (!recorded.is_null() && !recorded.is_number()) {
+      throw ConfigError(shard.path + "/" + kSearchesFile, "search " + std::to_string(id_) +
+                                                              "'s certificate.optimum " + recorded.dump() +
+                                                              "; allowed: a number or null");
+    }
     const double found = signed_optimum(journal.found);
-    const bool same = recorded.is_null() ? std::isinf(found) : sign * recorded.get<double>() == found;
+    const bool same =
+        recorded.is_null() ? std::isinf(found) : direction_sign() * recorded.get<double>() == found;
     if (!same) {
       throw ConfigError(journal_path(shard.path), "holds no behaviour of search " + std::to_string(id_) +
                                                       " with the optimum " + recorded.dump() +
                                                       " its searches.json records" + rerun);
+    }
+  }
+
+  /// Adds a shard's searches.json record's counts of work to `out` (merged()).
+  void add_shard_counts(Searched& out, const json& r) const {
+    out.stats.splits += r.at("splits").get<std::uint64_t>();
+    out.stats.forks += r.at("forks").get<std::uint64_t>();
+    if (r.contains("steps") && r.at("steps").is_number()) {
+      out.stats.steps += r.at("steps").get<std::uint64_t>();
+    } else {
+      out.steps_known = false;
+    }
+    out.wall_s += r.at("wall_s").get<double>();
+    if (r.contains("probes") && r.at("probes").is_number())
+      out.stats.probes += r.at("probes").get<std::size_t>();
+    if (r.contains("best_probe") && r.at("best_probe").is_number()) {
+      out.stats.best_probe =
+          std::min(out.stats.best_probe, direction_sign() * r.at("best_probe").get<double>());
+    }
+    const json& c = r.at("certificate");
+    if (c.is_null()) return;
+    out.stats.behaviours += c.at("finished_behaviours").get<std::uint64_t>();
+    out.stats.pruned_regions += c.at("pruned_regions").get<std::uint64_t>();
+    out.stats.pruned_vectors += c.at("pruned_vectors").get<std::uint64_t>();
+    if (!c.at("smallest_pruned_bound").is_null()) {
+      out.stats.smallest_pruned_bound = std::min(
+          out.stats.smallest_pruned_bound, direction_sign() * c.at("smallest_pruned_bound").get<double>());
     }
   }
 
@@ -502,29 +536,12 @@ class SearchWriter {
                             " of the search's " + std::to_string(grid_.size()) +
                             " weight vectors; rerun the shards that lack some");
     }
-    for (const json& r : records) {
-      out.stats.splits += r.at("splits").get<std::uint64_t>();
-      out.stats.forks += r.at("forks").get<std::uint64_t>();
-      if (r.contains("steps") && r.at("steps").is_number()) {
-        out.stats.steps += r.at("steps").get<std::uint64_t>();
-      } else {
-        out.steps_known = false;
-      }
-      out.wall_s += r.at("wall_s").get<double>();
-      if (r.contains("probes") && r.at("probes").is_number())
-        out.stats.probes += r.at("probes").get<std::size_t>();
-      if (r.contains("best_probe") && r.at("best_probe").is_number()) {
-        out.stats.best_probe =
-            std::min(out.stats.best_probe, direction_sign() * r.at("best_probe").get<double>());
-      }
-      const json& c = r.at("certificate");
-      if (c.is_null()) continue;
-      out.stats.behaviours += c.at("finished_behaviours").get<std::uint64_t>();
-      out.stats.pruned_regions += c.at("pruned_regions").get<std::uint64_t>();
-      out.stats.pruned_vectors += c.at("pruned_vectors").get<std::uint64_t>();
-      if (!c.at("smallest_pruned_bound").is_null()) {
-        out.stats.smallest_pruned_bound = std::min(
-            out.stats.smallest_pruned_bound, direction_sign() * c.at("smallest_pruned_bound").get<double>());
+    for (std::size_t s = 0; s < records.size(); ++s) {
+      try {
+        add_shard_counts(out, records[s]);
+      } catch (const json::exception& e) {
+        throw ConfigError(shards[s].path + "/" + kSearchesFile,
+                          "search " + std::to_string(id_) + "'s record: " + e.what());
       }
     }
     return out;
@@ -1005,7 +1022,8 @@ SearchRunReport merge_weight_searches(const SweepPlan& plan, const std::string& 
       throw ConfigError(path, std::string("not a shard's searches.json of this sweep: ") + e.what());
     }
     for (std::size_t id = 0; id < units.size(); ++id) {
-      const json& recorded = records[id].back().value("shard", json());
+      const json& r = records[id].back();
+      const json recorded = r.is_object() ? r.value("shard", json()) : json();
       const json expected{{"index", at.index}, {"count", at.count}};
       if (recorded != expected) {
         throw ConfigError(path, "search " + std::to_string(id) + " is of shard " + recorded.dump() +

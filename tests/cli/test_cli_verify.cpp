@@ -272,6 +272,16 @@ TEST(CliVerify, ACertificateForAnotherBoxObjectiveDirectionOrInstancesIsRefused)
                            lines[0] = h.dump();
                          }),
                 2, "the box [[0.0,1.0],");
+  // Other weight names:
+  expect_verify(tampered("weights",
+                         [](std::vector<std::string>& lines) {
+                           json h = json::parse(lines[0]);
+                           h["weights"][0] = "w9";
+                           lines[0] = h.dump();
+                         }),
+                2,
+                "weights [\"w9\",\"w2\",\"w3\",\"w4\"], where the sweep's (manifest.json) search 0 has "
+                "[\"w1\",\"w2\",\"w3\",\"w4\"]");
   // One instance more than the sweep's class has:
   expect_verify(tampered("instances",
                          [](std::vector<std::string>& lines) {
@@ -306,6 +316,31 @@ TEST(CliVerify, SearchesJsonMustReportTheCertificatesOptimumAndEverySearchOfMode
       2,
       "search 0's certificate file '../out/search_certificate_0.jsonl'; allowed: "
       "'search_certificate_0.jsonl' beside it");
+}
+
+TEST(CliVerify, AnUnfinishedSearchIsNotVerifiedAndAShardsPartIsRefused) {
+  // No searches.json: no search finished (a stopped one keeps its status file).
+  const std::string unfinished = tampered("unfinished", [](std::vector<std::string>& /*lines*/) {});
+  fs::remove(unfinished + "/searches.json");
+  expect_verify(unfinished, 1, "nothing verified: not finished: no record in searches.json");
+  // A shard's directory: its certificate is the merge's.
+  const std::string sweep = fs::path(searched()).parent_path().string() + "/sweep.json";
+  const std::string dir = fsweep::testing::fresh_temp_dir("verify", "sharded") + "/out";
+  for (const char* shard : {"0/2", "1/2"}) {
+    const auto r = run_fsweep("run " + sweep + " --shard " + shard + " --quiet --out " + dir);
+    ASSERT_EQ(r.code, 0) << r.output;
+  }
+  expect_verify(dir + "/shard-0-of-2", 2,
+                "search 0 here is a shard's part (shard {\"count\":2,\"index\":0}): `fsweep merge` on the "
+                "shards' parent directory writes its certificate");
+  // Merged, the shards' certificate verifies, with the unsharded search's optimum.
+  const auto merged = run_fsweep("merge " + dir);
+  ASSERT_EQ(merged.code, 0) << merged.output;
+  expect_verify(dir, 0, "verified");
+  const auto optimum = [](const std::string& out) {
+    return json::parse(std::ifstream(out + "/searches.json"))["searches"][0]["certificate"]["optimum"];
+  };
+  EXPECT_EQ(optimum(dir), optimum(searched()));
 }
 
 TEST(CliVerify, NumbersOfTheWrongTypeOrRangeAreExit2) {

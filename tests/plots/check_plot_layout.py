@@ -194,6 +194,9 @@ def main():
     parser.add_argument("fsweep")
     parser.add_argument("--work", required=True)
     args = parser.parse_args()
+    args.work = os.path.abspath(args.work)  # the commands run in the source tree, not here
+    if os.sep in args.fsweep:  # a path, not a name on PATH
+        args.fsweep = os.path.abspath(args.fsweep)
     os.makedirs(args.work, exist_ok=True)
     problems = label_problems()
     dirs = {}

@@ -1098,31 +1098,39 @@ TEST(WeightSearchRunner, AShardPastTheBoxsBlocksLeavesTheCompleteMergesBoundTheO
   EXPECT_EQ(joint["status"], "finished");
   EXPECT_EQ(joint["bound"], record["certificate"]["optimum"]);
   EXPECT_EQ(joint["gap"], 0.0);
+  // A merge again with a shard moved away fails, and leaves the complete merge's status as it was.
+  std::filesystem::rename(dir + "/shard-4-of-5", dir + "/moved");
+  const MergeReport again = merge_shards(dir);
+  EXPECT_FALSE(again.written);
+  EXPECT_TRUE(again.search_status.empty());
+  EXPECT_EQ(json::parse(testing::read_file(dir + "/search_status_0.json")), joint);
   std::filesystem::remove_all(dir);
 }
 
-TEST(WeightSearchRunner, AMergeRefusesAShardWhoseJournalDoesNotHoldWhatItFound) {
+TEST(WeightSearchRunner, AMergeRefusesAShardWhoseJournalLostItsOptimumOrThatIsAnotherShard) {
   // Each would otherwise merge, exit 0, into a wrong optimum or wrong counts.
   const std::string source = best_search_in_shards("journal_lost", 2);
+  std::string dir;  // the last variant's
   const auto variant = [&](const std::string& name, const std::function<void(const std::string&)>& change) {
-    const std::string dir = testing::fresh_dir("search", name);
+    dir = testing::fresh_dir("search", name);
     std::filesystem::remove_all(dir);
     std::filesystem::copy(source, dir, std::filesystem::copy_options::recursive);
     change(dir);
     return merge_refusal(dir);
   };
   // The journal emptied after the shard finished (as by a user freeing space):
-  std::string message = variant("journal_emptied", [](const std::string& dir) {
-    testing::write_file(dir + "/shard-0-of-2/search_journal.jsonl", "");
+  std::string message = variant("journal_emptied", [](const std::string& emptied) {
+    testing::write_file(emptied + "/shard-0-of-2/search_journal.jsonl", "");
   });
   EXPECT_NE(
       message.find("shard-0-of-2/search_journal.jsonl: holds no behaviour of search 0 with the optimum"),
       std::string::npos)
       << message;
   EXPECT_NE(message.find("--shard 0/2 --fresh"), std::string::npos) << message;
-  // One pruned region's line lost:
-  message = variant("journal_cut", [](const std::string& dir) {
-    const std::string path = dir + "/shard-1-of-2/search_journal.jsonl";
+  // One pruned region's line lost: the optimum stands, so the merge writes its files, but the
+  // regions no longer cover the box: no certificate, and searches.json says why.
+  message = variant("journal_cut", [](const std::string& cut) {
+    const std::string path = cut + "/shard-1-of-2/search_journal.jsonl";
     std::istringstream in(testing::read_file(path));
     std::string kept;
     bool dropped = false;
@@ -1136,13 +1144,14 @@ TEST(WeightSearchRunner, AMergeRefusesAShardWhoseJournalDoesNotHoldWhatItFound) 
     ASSERT_TRUE(dropped) << "no pruned region in the shard's journal";
     testing::write_file(path, kept);
   });
-  EXPECT_NE(message.find("shard-1-of-2/search_journal.jsonl: holds search 0's regions of "),
-            std::string::npos)
-      << message;
+  EXPECT_EQ(message, "(merged)");
+  const json note = json::parse(testing::read_file(dir + "/searches.json"))["searches"][0]["certificate"];
+  EXPECT_TRUE(note["file"].is_null()) << note.dump();
+  EXPECT_NE(note.value("why_not", std::string()).find("lines are missing"), std::string::npos) << note.dump();
   // Shard 0 copied in place of shard 1:
-  message = variant("journal_copied", [](const std::string& dir) {
-    std::filesystem::remove_all(dir + "/shard-1-of-2");
-    std::filesystem::copy(dir + "/shard-0-of-2", dir + "/shard-1-of-2",
+  message = variant("journal_copied", [](const std::string& copied) {
+    std::filesystem::remove_all(copied + "/shard-1-of-2");
+    std::filesystem::copy(copied + "/shard-0-of-2", copied + "/shard-1-of-2",
                           std::filesystem::copy_options::recursive);
   });
   EXPECT_NE(message.find("shard-1-of-2/searches.json: search 0 is of shard {\"count\":2,\"index\":0}, its "
