@@ -494,12 +494,44 @@ def thousands(ticks):
     return lambda v, _: f"{v:,.{decimals}f}"
 
 
+ANYTIME_COLUMNS = ("search_id", "elapsed_s", "status", "resolved_vectors", "vectors", "best", "bound",
+                   "relative_gap")
+
+
+def anytime_problem(path):
+    """What makes search_anytime.csv at `path` no search curve to draw (None when nothing does), and
+    its rows: every column there, every row whole, times and counts numbers and best and bound empty
+    or numbers, all within +-1e300 (matplotlib cannot scale beyond)."""
+    try:
+        header, rows = read_csv(path)
+    except (OSError, UnicodeDecodeError, csv.Error) as e:
+        return f"cannot be read ({e})", []
+    missing = [c for c in ANYTIME_COLUMNS if c not in header]
+    if missing:
+        return f"no column {', '.join(missing)}: not a search curve", []
+    for line, r in enumerate(rows, start=2):
+        if None in r or any(v is None for v in r.values()):
+            return f"line {line} has {len(header)} fields expected, not as many", []
+        for column in ("elapsed_s", "resolved_vectors", "vectors"):
+            if not abs(number(r[column])) <= 1e300:  # NaN too
+                return f"line {line}: {column} {r[column]!r} is not a number within 1e300", []
+        for column in ("best", "bound"):
+            v = number(r[column])
+            if r[column] != "" and not (math.isfinite(v) and abs(v) <= 1e300):
+                return f"line {line}: {column} {r[column]!r} is neither empty nor a number within 1e300", []
+    return None, rows
+
+
 def plot_search_anytime(path, out):
-    """search<k>_gap.png from search_anytime.csv: best and bound over time; the files written."""
+    """search<k>_gap.png from search_anytime.csv: best and bound over time; the files written. A
+    file that is no search curve (anytime_problem()) is named on stderr and not drawn."""
     if not os.path.exists(path):
         return []
     y_label = objective_label(os.path.dirname(path))
-    _, rows = read_csv(path)
+    problem, rows = anytime_problem(path)
+    if problem:
+        print(f"plot.py: {path}: {problem}; its gap curve is not drawn", file=sys.stderr)
+        return []
     curves = {}
     for r in rows:
         curves.setdefault(r["search_id"], []).append(r)

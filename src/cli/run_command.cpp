@@ -140,6 +140,16 @@ int run_command(const RunCommandOptions& o) {
                                             : "")
               << (r.searches.optimal > 0 ? std::to_string(r.searches.optimal) + " optimal behaviours; " : "")
               << one_decimal(r.searches.wall_s) << " s\n";
+    const auto& entries = plan.strategies();
+    const bool best = std::any_of(entries.begin(), entries.end(), [](const auto& e) {
+      return e.search && e.search->mode == WeightSearch::Mode::Best;
+    });
+    if (best && r.searches.optimal == 0) {
+      std::cout
+          << "note: no weight vector's runs have a value of " << plan.objective()
+          << " (such as none reaching the coverage target), so no behaviour is optimal: search_best.csv "
+             "is empty and searches.json's optimum is null\n";
+    }
   } else if (r.searches.interrupted) {
     std::cout << "exact weight search: stopped; search_journal.jsonl keeps what it finished\n";
     for (const std::string& line : r.searches.standings) std::cout << "  " << line << "\n";

@@ -244,7 +244,7 @@ struct SearchInfo {
   std::string energy_unit;
 };
 
-std::vector<SearchInfo> read_searches_json(const std::string& path) {
+std::vector<SearchInfo> read_searches_records(const std::string& path) {
   const auto text = read_file(path);
   if (!text) throw ConfigError(path, "cannot read the file");
   const nlohmann::json j = parse_json_bounded(*text, path);
@@ -261,6 +261,16 @@ std::vector<SearchInfo> read_searches_json(const std::string& path) {
                    s.contains(unit) && s.at(unit).is_string() ? s.at(unit).get<std::string>() : ""});
   }
   return out;
+}
+
+std::vector<SearchInfo> read_searches_json(const std::string& path) {
+  try {
+    return read_searches_records(path);
+  } catch (const nlohmann::json::exception& e) {  // not JSON, or a field of another type
+    throw ConfigError(path, std::string("not a searches file of fsweep run: ") + e.what() +
+                                "; delete it and rerun `fsweep run` on the same sweep and directory, which "
+                                "writes it again from search_journal.jsonl");
+  }
 }
 
 /// Adds the sides of the searches: `<label>@best` (rank 1 of search_best.csv) and a side per

@@ -294,6 +294,12 @@ PageImage plot_image(const std::string& name, std::string png) {
     image.caption =
         "The objective's median over each pair of values of two weights (the best over the other "
         "weights and config columns); the best cell framed.";
+  } else if (stem.starts_with("search") && stem.ends_with("_gap")) {
+    image.title = "Exact weight search " + stem.substr(6, stem.size() - 10) + ": best and bound over time";
+    image.caption =
+        "Mode best (search_anytime.csv): the best objective found so far and the certified bound of the "
+        "optimum over the search's time, the gap between them shaded; crosses where it was stopped and "
+        "resumed.";
   } else if (stem.starts_with("search")) {
     image.title = "Exact weight search " + stem.substr(6);
     image.caption =

@@ -183,8 +183,10 @@ void read_searches(ResultDir& r) {
     if (records.is_object() && records.contains("searches") && records["searches"].is_array()) {
       for (const auto& rec : records["searches"]) {
         if (rec.is_object() && rec.contains(kSearchIdColumn) && rec[kSearchIdColumn] == s.id) {
-          label += " (" + rec.value("strategy_label", std::string()) + " on " +
-                   rec.value("map_class", std::string()) + ")";
+          const auto text = [&](const char* key) {  // a damaged record's field: left out
+            return rec.contains(key) && rec[key].is_string() ? rec[key].get<std::string>() : std::string("?");
+          };
+          label += " (" + text("strategy_label") + " on " + text("map_class") + ")";
         }
       }
     }

@@ -5,9 +5,12 @@
 #include <exception>
 #include <filesystem>
 #include <limits>
+#include <optional>
+#include <string>
 #include <system_error>
 #include <utility>
 
+#include "core/config_error.hpp"
 #include "core/csv_format.hpp"
 #include "core/files.hpp"
 #include "core/json_text.hpp"
@@ -42,6 +45,11 @@ void put_gap(json& status, double signed_best, double signed_bound, double sign)
 
 }  // namespace
 
+namespace {
+/// The longest time a resumed search takes from its status file (about 31 years).
+constexpr double kMaxEarlierSeconds = 1e9;
+}  // namespace
+
 SearchAnytimeLog::SearchAnytimeLog(std::string dir, std::size_t id, std::string key, std::uint64_t vectors,
                                    double sign, std::vector<std::string> weights)
     : dir_(std::move(dir)),
@@ -55,13 +63,28 @@ SearchAnytimeLog::SearchAnytimeLog(std::string dir, std::size_t id, std::string 
   if (const auto text = read_file(path)) {
     try {  // a damaged or foreign status only loses the earlier time
       const json earlier = parse_json_bounded(*text, path);
-      if (earlier.value("key", std::string()) == key_) earlier_s_ = earlier.value("elapsed_s", 0.0);
+      const json& elapsed = earlier.value("elapsed_s", json());
+      // Not a time a search can have taken (negative, 1e308): the earlier time is lost, not trusted.
+      if (earlier.value("key", std::string()) == key_ && elapsed.is_number() &&
+          elapsed.get<double>() >= 0.0 && elapsed.get<double>() < kMaxEarlierSeconds) {
+        earlier_s_ = elapsed.get<double>();
+      }
     } catch (const std::exception&) {
     }
   }
-  std::error_code ec;  // a missing file reads as empty
-  if (std::filesystem::file_size(curve_.path(), ec) == 0 || ec)
-    curve_.write(csv_record(search_anytime_columns()) + '\n');
+  const std::string header = csv_record(search_anytime_columns()) + '\n';
+  const std::optional<std::string> curve = read_file(curve_.path());
+  if (!curve || curve->empty()) {
+    curve_.write(header);
+    return;
+  }
+  if (!curve->starts_with(header)) {
+    throw ConfigError(curve_.path(), "not a search's curve (its first line is not the header " +
+                                         header.substr(0, header.size() - 1) +
+                                         "): move it away, and the search starts a new one");
+  }
+  // A row cut short by a stop mid-write: the rows after it start on a line of their own.
+  if (curve->back() != '\n') std::filesystem::resize_file(curve_.path(), curve->rfind('\n') + 1);
 }
 
 void SearchAnytimeLog::record(const AnytimeState& state, std::uint64_t resolved,

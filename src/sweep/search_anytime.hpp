@@ -32,7 +32,9 @@ class SearchAnytimeLog {
   /// The log of search `id` of `vectors` weight vectors (named `weights`) into `dir`; `key` its
   /// journal key (a status file of another search is not continued); `sign` as branch and bound
   /// minimises sign x the objective. Reads the elapsed time of an earlier process of the same
-  /// search from its status file.
+  /// search from its status file (one below 0 or above 10^9 s is not taken). An existing curve is
+  /// continued: a last row cut short is cut off, and a file whose first line is not the curve's
+  /// header is ConfigError (its content is never appended to or lost).
   SearchAnytimeLog(std::string dir, std::size_t id, std::string key, std::uint64_t vectors, double sign,
                    std::vector<std::string> weights);
 

@@ -20,6 +20,7 @@
 #include "sim/run_spec.hpp"
 #include "strategies/registry.hpp"
 #include "strategies/strategy.hpp"
+#include "weightsearch/weight_grid.hpp"
 
 namespace fsweep {
 inline namespace sweep {
@@ -388,6 +389,16 @@ void make_search_entry(const json& search, const std::string& where, const Param
     }
   }
   if (ws.values.size() != ws.weights.size()) return;
+  if (const std::uint64_t blocks = WeightGrid::blocks_of(ws.values); blocks > WeightGrid::kMaxSearchBlocks) {
+    const std::string why =
+        " (4 times the full [0, 250]^4 of integers), since a decision over the whole box "
+        "holds memory for each block: fewer values per weight";
+    problems.push_back(
+        concat({where, "/params: a search box of ", with_thousands(blocks), " blocks of ",
+                std::to_string(WeightGrid::kBlockEdge), " values per weight; allowed: at most ",
+                with_thousands(WeightGrid::kMaxSearchBlocks), why}));
+    return;
+  }
   entry.groups = std::move(others);
   check_search_outputs(search, at, ws, problems);
   read_rank_vectors(search, at, ws, problems);
@@ -760,9 +771,20 @@ std::vector<StrategyEntry> parse_strategies(const json& strategies, SweepPaths& 
     return out;
   }
   const std::vector<std::string> known = strategy_names();
+  std::optional<std::size_t> first_search;  // every search entry's weights head one set of files' columns
   for (std::size_t i = 0; i < strategies.size(); ++i) {
-    if (auto entry =
-            parse_strategy(strategies[i], "/strategies/" + std::to_string(i), known, paths, problems)) {
+    const std::string where = "/strategies/" + std::to_string(i);
+    if (auto entry = parse_strategy(strategies[i], where, known, paths, problems)) {
+      if (entry->search && !first_search) {
+        first_search = out.size();
+      } else if (entry->search && entry->search->weights != out.at(*first_search).search->weights) {
+        const std::string allowed =
+            "; allowed: the same weights in every search entry of a sweep (their names "
+            "head the columns of one set of search files): one sweep per strategy";
+        problems.push_back(concat({where, "/search: searches the weights ",
+                                   join_names(entry->search->weights), ", an earlier search entry ",
+                                   join_names(out.at(*first_search).search->weights), allowed}));
+      }
       out.push_back(std::move(*entry));
     }
   }

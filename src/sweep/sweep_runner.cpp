@@ -21,7 +21,9 @@
 #include <thread>
 
 #include "core/config_error.hpp"
+#include "core/files.hpp"
 #include "core/io_error.hpp"
+#include "core/json_text.hpp"
 #include "report/aggregate.hpp"
 #include "report/runs_schema.hpp"
 #include "report/search_schema.hpp"
@@ -371,16 +373,23 @@ nlohmann::json manifest_of(const SweepPlan& plan, const ManifestInfo& info, cons
 }
 
 /// The exact weight searches (weight_search_runner.hpp), after the runs: searches.json is
-/// written last, so its presence means every search file is complete and nothing is searched.
+/// written last, so its presence (a whole one, a record per search) means every search file is
+/// complete and nothing is searched.
 /// A search the memory guard stopped leaves the manifest "failed": the environment, not the
 /// user, ended it, as a file that cannot be written does.
 void run_searches(const SweepPlan& plan, const RunnerOptions& options, int threads,
                   const std::string& manifest_path, Clock::time_point wall_start, ManifestInfo& info,
                   RunnerReport& report) {
   const std::string& dir = report.out_dir;
-  if (fs::exists(dir + "/" + kSearchesFile)) {
-    report.searches_done_before = true;
-    return;
+  if (const std::optional<std::string> text = read_file(dir + "/" + kSearchesFile)) {
+    // A searches.json that is not whole (cut short, edited) marks nothing: the searches read
+    // their journals back and write their files again.
+    const nlohmann::json done = parse_json_or_discard(*text);
+    if (done.is_object() && done.contains("searches") && done.at("searches").is_array() &&
+        done.at("searches").size() == plan.search_units().size()) {
+      report.searches_done_before = true;
+      return;
+    }
   }
   info.status = "running";
   write_manifest(manifest_path, manifest_of(plan, info, report));

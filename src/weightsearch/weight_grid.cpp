@@ -131,6 +131,15 @@ bool tied_box_ratios(std::span<const double> lo, std::span<const double> hi, int
 
 }  // namespace
 
+std::uint64_t WeightGrid::blocks_of(const std::vector<std::vector<double>>& values) {
+  std::uint64_t blocks = 1;
+  for (const std::vector<double>& v : values) {
+    const std::uint64_t edge = (v.size() + kBlockEdge - 1) / kBlockEdge;
+    if (__builtin_mul_overflow(blocks, edge, &blocks)) return UINT64_MAX;
+  }
+  return blocks;
+}
+
 WeightGrid::WeightGrid(std::vector<std::vector<double>> values) : values_(std::move(values)) {
   if (values_.empty() || values_.size() > kWeights) {
     throw std::invalid_argument("a weight grid has 1 to 4 weights, not " + std::to_string(values_.size()));
@@ -147,8 +156,7 @@ WeightGrid::WeightGrid(std::vector<std::vector<double>> values) : values_(std::m
     blocks_[k] = static_cast<std::uint32_t>((v.size() + kBlockEdge - 1) / kBlockEdge);
     size_ *= v.size();
   }
-  std::uint64_t blocks = 1;
-  for (const std::uint32_t b : blocks_) blocks *= b;
+  const std::uint64_t blocks = blocks_of(values_);
   if (blocks > std::uint64_t{1} << 31) throw std::invalid_argument("a weight grid of more than 2^31 blocks");
   block_count_ = static_cast<std::uint32_t>(blocks);
   if (values_.size() == kWeights) {

@@ -71,6 +71,13 @@ class WeightGrid {
   static constexpr int kMaxWeights = 4;
   /// Values per weight along one edge of a block.
   static constexpr int kBlockEdge = 8;
+  /// Most blocks of a box a search takes (4 times the full [0, 250]^4's 32^4): a decision over a
+  /// whole box splits it into parts block by block, and holds memory in proportion to its blocks
+  /// before a search can stop (about 60 bytes a block per share).
+  static constexpr std::uint64_t kMaxSearchBlocks = std::uint64_t{1} << 22;
+
+  /// The blocks of the grid of `values` (each weight's count of values), saturating at 2^64 - 1.
+  [[nodiscard]] static std::uint64_t blocks_of(const std::vector<std::vector<double>>& values);
 
   /// `values[k]`: the values of weight k, strictly ascending, finite and >= 0, at least one.
   /// Throws std::invalid_argument otherwise.

@@ -103,6 +103,24 @@ def label_problems():
             got = plot.objective_label(d)
             if got != expected:
                 out.append(f"objective_label of the manifest {manifest!r}: {got!r}, not {expected!r}")
+    # A search_anytime.csv that is no search curve is named and not drawn, never a traceback.
+    header = ",".join(("search_id", "elapsed_s", "status", "resolved_vectors", "vectors", "open_branches",
+                       "best", "bound", "gap", "relative_gap"))
+    with tempfile.TemporaryDirectory() as d:
+        path = os.path.join(d, "search_anytime.csv")
+        for text, expected in (("a,b,c\n1,2,3\n", "no column search_id"),
+                               (header + "\n0,1.5,running,10,100,3,50,40,10\n", "line 2 has 10 fields"),
+                               (header + "\n0,1.5,running,x,100,3,50,40,10,0.2\n", "line 2: resolved_vectors 'x'"),
+                               (header + "\n0,1.5,running,10,100,3,1e308,40,10,0.2\n", "line 2: best '1e308'")):
+            with open(path, "w", encoding="utf-8") as f:
+                f.write(text)
+            problem, _ = plot.anytime_problem(path)
+            if not problem or expected not in problem:
+                out.append(f"anytime_problem of {text!r}: {problem!r}, not one with {expected!r}")
+        with open(path, "wb") as f:
+            f.write(header.encode() + b"\n\xff\xfe\n")
+        if plot.plot_search_anytime(path, d) != []:
+            out.append("a search_anytime.csv that is not UTF-8 was drawn")
     for ticks, expected in (([0.0, 5000.0, 10000.0], ["0", "5,000", "10,000"]),
                             ([37017.0, 37017.5, 37018.0], ["37,017.0", "37,017.5", "37,018.0"]),
                             ([-0.04, -0.02, 0.0, 0.02], ["-0.04", "-0.02", "0.00", "0.02"]),

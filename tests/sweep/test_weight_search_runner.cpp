@@ -938,6 +938,48 @@ TEST(WeightSearchRunner, AStoppedBestSearchSaysWhereItStandsAndResumesItsCurve) 
   }
 }
 
+TEST(WeightSearchRunner, AResumeRepairsACutCurveDistrustsAnImpossibleTimeAndRefusesAForeignCurve) {
+  json sweep = office_search_of_256();
+  sweep["strategies"][0]["search"] = {{"mode", "best"}, {"order", "bound"}};
+  const std::string dir = testing::fresh_dir("search", "anytime_damaged");
+  ASSERT_TRUE(run_until_journal_holds(sweep, dir, 6).searches.interrupted);
+  const std::string curve = dir + "/search_anytime.csv";
+  const std::string status = dir + "/search_status_0.json";
+  // The last row cut short, and the status's time set to one no search takes.
+  std::string text = testing::read_file(curve);
+  testing::write_file(curve, text.substr(0, text.size() - 5));
+  json stopped = json::parse(testing::read_file(status));
+  stopped["elapsed_s"] = -1000.0;
+  testing::write_file(status, stopped.dump());
+  // A copy whose curve is another file's.
+  const std::string foreign = testing::fresh_dir("search", "anytime_foreign");
+  std::filesystem::remove_all(foreign);
+  std::filesystem::copy(dir, foreign, std::filesystem::copy_options::recursive);
+  testing::write_file(foreign + "/search_anytime.csv", "a,b,c\n1,2,3\n");
+
+  RunnerOptions o = testing::quiet_runner(dir);
+  ASSERT_FALSE(run_sweep(SweepPlan::from_json(sweep, "search.json"), o).interrupted);
+  const Table rows = read_table(curve);
+  ASSERT_GE(rows.rows.size(), 2U);
+  for (const auto& row : rows.rows) {
+    ASSERT_EQ(row.size(), rows.header.size());
+    EXPECT_GE(std::stod(row[rows.col("elapsed_s")]), 0.0);
+  }
+  EXPECT_EQ(rows.rows.back()[rows.col("status")], "finished");
+
+  RunnerOptions f = testing::quiet_runner(foreign);
+  try {
+    (void)run_sweep(SweepPlan::from_json(sweep, "search.json"), f);
+    ADD_FAILURE() << "a foreign curve was appended to";
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("search_anytime.csv: not a search's curve"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(testing::read_file(foreign + "/search_anytime.csv"), "a,b,c\n1,2,3\n");
+  std::filesystem::remove_all(dir);
+  std::filesystem::remove_all(foreign);
+}
+
 TEST(WeightSearchRunner, AResumedBestSearchCountsWhatItsJournalResolvedFromItsStart) {
   // The curve of a search has a row where the search starts. A resumed search's says what the
   // stopped one had resolved (its journal), and no later row says less, though the resumed
@@ -1206,6 +1248,26 @@ TEST(WeightSearchRunner, BadSearchEntriesAreRefusedWithTheirPath) {
       with("/strategies/0/search/rank", json::array({{2, 0, 0, 0}})).find("/strategies/0/search/rank/0"),
       std::string::npos);
   EXPECT_NE(best_refusal.find("/strategies/0/search/rank: mode \"best\""), std::string::npos) << best_refusal;
+  // A box of more blocks than a search takes, refused when the sweep is read (also by expand),
+  // not after its first decision has filled the memory: 501 values per weight, 63^4 blocks.
+  const json halves = {{"range", {0, 250}}, {"step", 0.5}};
+  json huge = base;
+  for (const char* w : {"w1", "w2", "w3", "w4"}) huge["strategies"][0]["params"][w] = halves;
+  huge["strategies"].erase(1);
+  EXPECT_NE(
+      refusal(huge).find("/strategies/0/params: a search box of 15,752,961 blocks of 8 values per weight; "
+                         "allowed: at most 4,194,304"),
+      std::string::npos)
+      << refusal(huge);
+  // Search entries of different weights (their names head one set of files' columns).
+  json two = base;
+  two["strategies"][1] = {
+      {"name", "target_seeking"}, {"search", {{"mode", "all"}}}, {"params", json::object()}};
+  EXPECT_NE(
+      refusal(two).find("/strategies/1/search: searches the weights w1, w2, w3, an earlier search entry "
+                        "w1, w2, w3, w4"),
+      std::string::npos)
+      << refusal(two);
   json ordered = base;
   ordered["/strategies/0/search/order"_json_pointer] = "bound";
   ordered["/strategies/0/search/max_open"_json_pointer] = 0;
