@@ -196,8 +196,8 @@ bool read_search_settings(const json& search, const std::string& at, WeightSearc
       throw ConfigError(at, "expected an object {\"method\": \"exact\", \"mode\": ...}");
     require_known_keys(search, {"method", "mode", "write_vectors", "rank", "order", "max_open", "probes"},
                        at);
-  } catch (const ConfigError& e) {
-    problems.push_back(at + ": " + strip_path(e.what(), at));
+  } catch (const ConfigError& e) {  // its message starts with its path (at, or at/<key>)
+    problems.emplace_back(e.what());
     return false;
   }
   const json method = search.value("method", json("exact"));
@@ -346,10 +346,14 @@ void read_rank_vectors(const json& search, const std::string& at, WeightSearch& 
       ok = v[k].is_number() && std::binary_search(box.begin(), box.end(), v[k].get<double>());
       if (ok) vector.push_back(v[k].get<double>());
     }
+    for (double& w : vector) w += 0.0;  // -0.0 is the value 0, written "0"
     if (!ok) {
       problems.push_back(rat + ": value " + value_text(v) + "; allowed: a list of " +
                          std::to_string(ws.weights.size()) + " weights (" + join_names(ws.weights) +
                          "), each one of the search's values");
+    } else if (const auto seen = std::find(ws.rank.begin(), ws.rank.end(), vector); seen != ws.rank.end()) {
+      problems.push_back(concat({rat, ": value ", value_text(v), " repeats ", at, "/rank/",
+                                 std::to_string(seen - ws.rank.begin()), "; allowed: each vector once"}));
     } else {
       ws.rank.push_back(std::move(vector));
     }
@@ -368,7 +372,9 @@ void make_search_entry(const json& search, const std::string& where, const Param
   // The strategy's weights.
   std::unique_ptr<Strategy> probe;
   try {
-    probe = configure_strategy(entry.name, entry.params_at(0), where).make(0);
+    json params = entry.params_at(0);
+    if (params.is_object()) params.erase("heuristics");  // the entry's heuristics axis, not a parameter
+    probe = configure_strategy(entry.name, params.empty() ? json() : params, where).make(0);
   } catch (const std::exception& e) {
     problems.push_back(where + "/params: " + e.what());
     return;

@@ -193,6 +193,12 @@ std::vector<std::string> sweep_warnings(const SweepPlan& plan) {
   }
   for (std::string& line : clipped_free_space_warnings(plan)) out.push_back(std::move(line));
   for (std::string& line : identical_repetition_warnings(plan)) out.push_back(std::move(line));
+  if (plan.competitive() && !plan.search_units().empty()) {
+    out.push_back(
+        "competitive: the offline optimum's bounds and the competitive ratios are computed for the "
+        "sweep's runs (runs.csv) only; exact weight searches' files (behaviours.csv, search_best.csv) "
+        "have no such columns");
+  }
   return out;
 }
 

@@ -26,6 +26,7 @@
 #include "sweep/search_anytime.hpp"
 #include "sweep/sweep_plan.hpp"
 #include "sweep/sweep_runner.hpp"
+#include "sweep/sweep_table.hpp"
 #include "sweep/sweep_test_files.hpp"
 #include "sweep/sweep_test_run.hpp"
 #include "sweep/weight_search_runner.hpp"
@@ -1214,6 +1215,30 @@ std::string refusal(const json& sweep) {
   return "(accepted)";
 }
 
+TEST(WeightSearchRunner, ASearchEntrysHeuristicsBesideItsParamsReachItsRuns) {
+  // Given beside "params" as for any entry (they are a simulation setting, not a weight).
+  json sweep = small_best_search(0);
+  sweep["strategies"][0]["heuristics"] = json::array({"rr"});
+  const std::string dir = testing::fresh_dir("search", "heuristics");
+  (void)run_sweep(SweepPlan::from_json(sweep, "search.json"), testing::quiet_runner(dir));
+  const json record = json::parse(testing::read_file(dir + "/searches.json"))["searches"][0];
+  EXPECT_EQ(record["instances"][0]["strategy_params"]["heuristics"], json::array({"rr"})) << record.dump();
+  EXPECT_TRUE(record["certificate"]["optimum"].is_number());
+  std::filesystem::remove_all(dir);
+}
+
+TEST(WeightSearchRunner, ACompetitiveSweepWithASearchWarnsThatSearchesHaveNoRatios) {
+  json sweep = small_best_search(0);
+  const auto warned = [](const json& s) {
+    for (const std::string& w : sweep_warnings(SweepPlan::from_json(s, "search.json")))
+      if (w.starts_with("competitive: ")) return true;
+    return false;
+  };
+  EXPECT_FALSE(warned(sweep));
+  sweep["competitive"] = true;
+  EXPECT_TRUE(warned(sweep));
+}
+
 TEST(WeightSearchRunner, BadSearchEntriesAreRefusedWithTheirPath) {
   const json box = {{"w1", {0, 1}}, {"w2", 0}, {"w3", 0}, {"w4", 0}};
   const json base = search_and_grid(json::array({"office:w=32,h=32,seed=3"}), box, json::array());
@@ -1247,6 +1272,9 @@ TEST(WeightSearchRunner, BadSearchEntriesAreRefusedWithTheirPath) {
   EXPECT_NE(
       with("/strategies/0/search/rank", json::array({{2, 0, 0, 0}})).find("/strategies/0/search/rank/0"),
       std::string::npos);
+  EXPECT_NE(with("/strategies/0/search/rank", json::array({{1, 0, 0, 0}, {0, 0, 0, 0}, {1, 0, 0, 0}}))
+                .find("/strategies/0/search/rank/2: value [1,0,0,0] repeats /strategies/0/search/rank/0"),
+            std::string::npos);
   EXPECT_NE(best_refusal.find("/strategies/0/search/rank: mode \"best\""), std::string::npos) << best_refusal;
   // A box of more blocks than a search takes, refused when the sweep is read (also by expand),
   // not after its first decision has filled the memory: 501 values per weight, 63^4 blocks.
