@@ -512,6 +512,8 @@ def anytime_problem(path):
     for line, r in enumerate(rows, start=2):
         if None in r or any(v is None for v in r.values()):
             return f"line {line} has {len(header)} fields expected, not as many", []
+        if not r["search_id"].isdigit():  # it names the figure's file
+            return f"line {line}: search_id {r['search_id']!r} is not a whole number", []
         for column in ("elapsed_s", "resolved_vectors", "vectors"):
             if not abs(number(r[column])) <= 1e300:  # NaN too
                 return f"line {line}: {column} {r[column]!r} is not a number within 1e300", []

@@ -144,7 +144,7 @@ int run_command(const RunCommandOptions& o) {
     const bool best = std::any_of(entries.begin(), entries.end(), [](const auto& e) {
       return e.search && e.search->mode == WeightSearch::Mode::Best;
     });
-    if (best && r.searches.optimal == 0) {
+    if (best && r.searches.optimal == 0 && options.shard_count <= 1) {  // a shard's files are the merge's
       std::cout
           << "note: no weight vector's runs have a value of " << plan.objective()
           << " (such as none reaching the coverage target), so no behaviour is optimal: search_best.csv "

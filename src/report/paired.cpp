@@ -268,8 +268,8 @@ std::vector<SearchInfo> read_searches_json(const std::string& path) {
     return read_searches_records(path);
   } catch (const nlohmann::json::exception& e) {  // not JSON, or a field of another type
     throw ConfigError(path, std::string("not a searches file of fsweep run: ") + e.what() +
-                                "; delete it and rerun `fsweep run` on the same sweep and directory, which "
-                                "writes it again from search_journal.jsonl");
+                                "; `fsweep run` on the same sweep and directory writes it again from "
+                                "search_journal.jsonl (`fsweep merge` from the shards', for a merge)");
   }
 }
 

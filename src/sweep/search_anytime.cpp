@@ -74,7 +74,8 @@ SearchAnytimeLog::SearchAnytimeLog(std::string dir, std::size_t id, std::string 
   }
   const std::string header = csv_record(search_anytime_columns()) + '\n';
   const std::optional<std::string> curve = read_file(curve_.path());
-  if (!curve || curve->empty()) {
+  if (!curve || curve->empty() || header.starts_with(*curve)) {  // none, or a header cut short
+    if (curve && !curve->empty()) std::filesystem::resize_file(curve_.path(), 0);
     curve_.write(header);
     return;
   }

@@ -395,14 +395,11 @@ void make_search_entry(const json& search, const std::string& where, const Param
     }
   }
   if (ws.values.size() != ws.weights.size()) return;
-  if (const std::uint64_t blocks = WeightGrid::blocks_of(ws.values); blocks > WeightGrid::kMaxSearchBlocks) {
-    const std::string why =
-        " (4 times the full [0, 250]^4 of integers), since a decision over the whole box "
-        "holds memory for each block: fewer values per weight";
+  if (const std::uint64_t blocks = WeightGrid::blocks_of(ws.values); blocks > WeightGrid::kMaxBlocks) {
     problems.push_back(
         concat({where, "/params: a search box of ", with_thousands(blocks), " blocks of ",
                 std::to_string(WeightGrid::kBlockEdge), " values per weight; allowed: at most ",
-                with_thousands(WeightGrid::kMaxSearchBlocks), why}));
+                with_thousands(WeightGrid::kMaxBlocks), ": fewer values per weight"}));
     return;
   }
   entry.groups = std::move(others);

@@ -390,6 +390,12 @@ void run_searches(const SweepPlan& plan, const RunnerOptions& options, int threa
       report.searches_done_before = true;
       return;
     }
+    if (!fs::exists(dir + "/" + kSearchJournalFile)) {  // a merge's: its journals are the shards'
+      throw ConfigError(dir + "/" + kSearchesFile,
+                        "not whole, and no search_journal.jsonl beside it to write it again from (the "
+                        "directory of a merge, whose journals are its shards'): run `fsweep merge` on the "
+                        "shards' directory again");
+    }
   }
   info.status = "running";
   write_manifest(manifest_path, manifest_of(plan, info, report));

@@ -195,9 +195,10 @@ std::vector<std::string> sweep_warnings(const SweepPlan& plan) {
   for (std::string& line : identical_repetition_warnings(plan)) out.push_back(std::move(line));
   if (plan.competitive() && !plan.search_units().empty()) {
     out.push_back(
-        "competitive: the offline optimum's bounds and the competitive ratios are computed for the "
-        "sweep's runs (runs.csv) only; exact weight searches' files (behaviours.csv, search_best.csv) "
-        "have no such columns");
+        "competitive: the offline optimum's certified bounds and the competitive ratios between them "
+        "(optimum_lower_m, ..., competitive_ratio_max) are computed for the sweep's runs (runs.csv) only; "
+        "exact weight searches' behaviours.csv has its own optimal_distance_m and competitive_ratio, not "
+        "these");
   }
   return out;
 }

@@ -37,6 +37,7 @@
 #include "sweep/search_anytime.hpp"
 #include "sweep/search_certificate.hpp"
 #include "sweep/search_tables.hpp"
+#include "sweep/sweep_axes.hpp"
 #include "sweep/sweep_table.hpp"
 #include "weightsearch/exact_search.hpp"
 #include "weightsearch/search_journal.hpp"
@@ -869,6 +870,27 @@ std::string join_shard_status(const SweepPlan& plan, const std::vector<SearchUni
   return note;
 }
 
+/// Throws ConfigError, before anything is searched, when the part of search `u`'s box that shard
+/// `shard_index` of `shard_count` searches holds more than WeightGrid::kMaxSearchBlocks blocks:
+/// a decision over the whole part holds memory per block.
+void check_search_blocks(const WeightGrid& grid, const SearchUnit& u, std::uint64_t shard_index,
+                         std::uint64_t shard_count) {
+  if (const std::uint64_t blocks = WeightGrid::shard_blocks(grid.block_count(), shard_index, shard_count);
+      blocks > WeightGrid::kMaxSearchBlocks) {
+    const std::uint64_t shards =
+        (grid.block_count() + WeightGrid::kMaxSearchBlocks - 1) / WeightGrid::kMaxSearchBlocks;
+    throw ConfigError(
+        "/strategies/" + std::to_string(u.entry) + "/params",
+        "the part of the search box this process searches holds " + sweep_detail::with_thousands(blocks) +
+            " blocks of 8 values per weight; allowed: at most " +
+            sweep_detail::with_thousands(WeightGrid::kMaxSearchBlocks) +
+            " per process (4 times the full [0, 250]^4 of integers), since a decision over them "
+            "holds memory for each block: search it in at least " +
+            std::to_string(shards) +
+            " shards (fsweep run --shard i/N, or fsweep slurm) or with fewer values");
+  }
+}
+
 }  // namespace
 
 SearchRunReport run_weight_searches(const SweepPlan& plan, const std::string& out_dir, int threads,
@@ -888,6 +910,7 @@ SearchRunReport run_weight_searches(const SweepPlan& plan, const std::string& ou
   std::uint64_t total = 0;
   for (const SearchUnit& u : units) {
     const WeightGrid grid(plan.strategies().at(u.entry).search->values);
+    check_search_blocks(grid, u, shard_index, shard_count);
     roots.push_back(shard_count > 1 ? grid.shard(shard_index, shard_count) : grid.everything());
     total += grid.count(roots.back());
   }

@@ -140,6 +140,11 @@ std::uint64_t WeightGrid::blocks_of(const std::vector<std::vector<double>>& valu
   return blocks;
 }
 
+std::uint64_t WeightGrid::shard_blocks(std::uint64_t blocks, std::uint64_t index, std::uint64_t count) {
+  const auto edge = [&](std::uint64_t i) { return i * blocks / count; };
+  return edge(index + 1) - edge(index);
+}
+
 WeightGrid::WeightGrid(std::vector<std::vector<double>> values) : values_(std::move(values)) {
   if (values_.empty() || values_.size() > kWeights) {
     throw std::invalid_argument("a weight grid has 1 to 4 weights, not " + std::to_string(values_.size()));
@@ -157,7 +162,7 @@ WeightGrid::WeightGrid(std::vector<std::vector<double>> values) : values_(std::m
     size_ *= v.size();
   }
   const std::uint64_t blocks = blocks_of(values_);
-  if (blocks > std::uint64_t{1} << 31) throw std::invalid_argument("a weight grid of more than 2^31 blocks");
+  if (blocks > kMaxBlocks) throw std::invalid_argument("a weight grid of more than 2^31 blocks");
   block_count_ = static_cast<std::uint32_t>(blocks);
   if (values_.size() == kWeights) {
     // The smallest positive w1 + |w2 - w3| + w4: the smallest positive w1 or w4, or |w2 - w3| (by
@@ -492,8 +497,8 @@ WeightRegion WeightGrid::shard(std::uint64_t index, std::uint64_t count) const {
                                 std::to_string(count));
   }
   const std::uint64_t blocks = block_count_;
-  std::uint64_t at = index * blocks / count;
-  const std::uint64_t end = (index + 1) * blocks / count;
+  std::uint64_t at = index * blocks / count;  // as shard_blocks() counts them
+  const std::uint64_t end = at + shard_blocks(blocks, index, count);
   // Block numbers are mixed-radix digits (weight 0 most significant): from `at`, take the
   // longest run of whole sub-boxes that fits, along the most significant weight whose less
   // significant digits are all 0 at `at`.

@@ -71,10 +71,15 @@ class WeightGrid {
   static constexpr int kMaxWeights = 4;
   /// Values per weight along one edge of a block.
   static constexpr int kBlockEdge = 8;
-  /// Most blocks of a box a search takes (4 times the full [0, 250]^4's 32^4): a decision over a
-  /// whole box splits it into parts block by block, and holds memory in proportion to its blocks
-  /// before a search can stop (about 60 bytes a block per share).
+  /// Most blocks of a grid (a block's number is 32 bits wide).
+  static constexpr std::uint64_t kMaxBlocks = std::uint64_t{1} << 31;
+  /// Most blocks one process searches (4 times the full [0, 250]^4's 32^4; a shard searches its
+  /// part of them): a decision over a whole box splits it into parts block by block, and holds
+  /// memory in proportion to its blocks before a search can stop.
   static constexpr std::uint64_t kMaxSearchBlocks = std::uint64_t{1} << 22;
+  /// The blocks of shard `index` of `count` (shard()), of a grid of `blocks` blocks.
+  [[nodiscard]] static std::uint64_t shard_blocks(std::uint64_t blocks, std::uint64_t index,
+                                                  std::uint64_t count);
 
   /// The blocks of the grid of `values` (each weight's count of values), saturating at 2^64 - 1.
   [[nodiscard]] static std::uint64_t blocks_of(const std::vector<std::vector<double>>& values);

@@ -327,8 +327,9 @@ TEST(CliVerify, AnUnfinishedSearchIsNotVerifiedAndAShardsPartIsRefused) {
   const std::string sweep = fs::path(searched()).parent_path().string() + "/sweep.json";
   const std::string dir = fsweep::testing::fresh_temp_dir("verify", "sharded") + "/out";
   for (const char* shard : {"0/2", "1/2"}) {
-    const auto r = run_fsweep("run " + sweep + " --shard " + shard + " --quiet --out " + dir);
+    const auto r = run_fsweep("run " + sweep + " --shard " + shard + " --out " + dir);
     ASSERT_EQ(r.code, 0) << r.output;
+    EXPECT_FALSE(has(r.output, "no behaviour is optimal")) << r.output;  // a shard's files are the merge's
   }
   expect_verify(dir + "/shard-0-of-2", 2,
                 "search 0 here is a shard's part (shard {\"count\":2,\"index\":0}): `fsweep merge` on the "
@@ -341,6 +342,12 @@ TEST(CliVerify, AnUnfinishedSearchIsNotVerifiedAndAShardsPartIsRefused) {
     return json::parse(std::ifstream(out + "/searches.json"))["searches"][0]["certificate"]["optimum"];
   };
   EXPECT_EQ(optimum(dir), optimum(searched()));
+  // A merge's searches.json damaged: no journal to write it again from, so not searched again.
+  std::ofstream(dir + "/searches.json", std::ios::trunc) << "{\"searches\": [";
+  const auto again = run_fsweep("run " + sweep + " --quiet --out " + dir);
+  EXPECT_EQ(again.code, 2) << again.output;
+  EXPECT_TRUE(has(again.output, "searches.json: not whole, and no search_journal.jsonl beside it"))
+      << again.output;
 }
 
 TEST(CliVerify, NumbersOfTheWrongTypeOrRangeAreExit2) {

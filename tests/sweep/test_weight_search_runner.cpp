@@ -1276,16 +1276,33 @@ TEST(WeightSearchRunner, BadSearchEntriesAreRefusedWithTheirPath) {
                 .find("/strategies/0/search/rank/2: value [1,0,0,0] repeats /strategies/0/search/rank/0"),
             std::string::npos);
   EXPECT_NE(best_refusal.find("/strategies/0/search/rank: mode \"best\""), std::string::npos) << best_refusal;
-  // A box of more blocks than a search takes, refused when the sweep is read (also by expand),
-  // not after its first decision has filled the memory: 501 values per weight, 63^4 blocks.
+  // A box of more blocks than one process searches: refused before anything is searched, with the
+  // shards that would take it (501 values per weight, 63^4 blocks); one of more blocks than a
+  // grid holds is refused when the sweep is read (2,001 values per weight, 251^4 blocks).
   const json halves = {{"range", {0, 250}}, {"step", 0.5}};
   json huge = base;
   for (const char* w : {"w1", "w2", "w3", "w4"}) huge["strategies"][0]["params"][w] = halves;
   huge["strategies"].erase(1);
-  EXPECT_NE(
-      refusal(huge).find("/strategies/0/params: a search box of 15,752,961 blocks of 8 values per weight; "
-                         "allowed: at most 4,194,304"),
-      std::string::npos)
+  huge["strategies"][0]["search"] = {{"mode", "best"}};
+  try {
+    (void)run_sweep(SweepPlan::from_json(huge, "search.json"),
+                    testing::quiet_runner(testing::fresh_dir("search", "huge")));
+    ADD_FAILURE() << "a box of 15,752,961 blocks was searched";
+  } catch (const ConfigError& e) {
+    EXPECT_NE(
+        std::string(e.what()).find("/strategies/0/params: the part of the search box this process "
+                                   "searches holds 15,752,961 blocks of 8 values per weight; allowed: at "
+                                   "most 4,194,304 per process"),
+        std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find("search it in at least 4 shards"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(WeightGrid::shard_blocks(15'752'961, 3, 4), 3'938'241U);  // each of 4 shards within the limit
+  const json eighths = {{"range", {0, 250}}, {"step", 0.125}};
+  for (const char* w : {"w1", "w2", "w3", "w4"}) huge["strategies"][0]["params"][w] = eighths;
+  EXPECT_NE(refusal(huge).find("/strategies/0/params: a search box of 3,969,126,001 blocks of 8 values per "
+                               "weight; allowed: at most 2,147,483,648"),
+            std::string::npos)
       << refusal(huge);
   // Search entries of different weights (their names head one set of files' columns).
   json two = base;
