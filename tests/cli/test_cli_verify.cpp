@@ -70,6 +70,15 @@ std::string tampered(const std::string& name, const std::function<void(std::vect
   return dir;
 }
 
+/// A copy of the searched directory whose certificate header `change` edits.
+std::string with_header(const std::string& name, const std::function<void(json&)>& change) {
+  return tampered(name, [&](std::vector<std::string>& lines) {
+    json h = json::parse(lines[0]);
+    change(h);
+    lines[0] = h.dump();
+  });
+}
+
 /// The first region line (1-based line number) of kind `kind` whose value is not the optimum.
 std::size_t first_line(const std::vector<std::string>& lines, const std::string& kind, bool optimal) {
   const double optimum = json::parse(lines.front()).at("optimum").get<double>();
@@ -254,50 +263,26 @@ TEST(CliVerify, ACertificateForAnotherBoxObjectiveDirectionOrInstancesIsRefused)
   // A certificate can prove a false claim only by being another search's: each is refused
   // before its regions are read. Flipping the direction (a lower bound then "proves" a maximum):
   expect_verify(
-      tampered("direction",
-               [](std::vector<std::string>& lines) {
-                 json h = json::parse(lines[0]);
-                 h["direction"] = "maximize";
-                 lines[0] = h.dump();
-               }),
-      2,
+      with_header("direction", [](json& h) { h["direction"] = "maximize"; }), 2,
       "objective distance_to_final_coverage_m (maximize), where the sweep's (manifest.json) search 0 "
       "has distance_to_final_coverage_m (minimize)");
   // A box cropped around a worse optimum:
-  expect_verify(tampered("cropped",
-                         [](std::vector<std::string>& lines) {
-                           json h = json::parse(lines[0]);
-                           h["values"][0] = json::array({0.0, 1.0});
-                           h["vectors"] = h["vectors"].get<int>() / 2;
-                           lines[0] = h.dump();
-                         }),
+  expect_verify(with_header("cropped",
+                            [](json& h) {
+                              h["values"][0] = json::array({0.0, 1.0});
+                              h["vectors"] = h["vectors"].get<int>() / 2;
+                            }),
                 2, "the box [[0.0,1.0],");
   // Other weight names:
-  expect_verify(tampered("weights",
-                         [](std::vector<std::string>& lines) {
-                           json h = json::parse(lines[0]);
-                           h["weights"][0] = "w9";
-                           lines[0] = h.dump();
-                         }),
-                2,
+  expect_verify(with_header("weights", [](json& h) { h["weights"][0] = "w9"; }), 2,
                 "weights [\"w9\",\"w2\",\"w3\",\"w4\"], where the sweep's (manifest.json) search 0 has "
                 "[\"w1\",\"w2\",\"w3\",\"w4\"]");
   // One instance more than the sweep's class has:
-  expect_verify(tampered("instances",
-                         [](std::vector<std::string>& lines) {
-                           json h = json::parse(lines[0]);
-                           h["instances"].push_back(h["instances"][0]);
-                           lines[0] = h.dump();
-                         }),
-                2, "instances 2, where the sweep's (manifest.json) search 0 has 1 (maps x repetitions)");
+  expect_verify(with_header("instances", [](json& h) { h["instances"].push_back(h["instances"][0]); }), 2,
+                "instances 2, where the sweep's (manifest.json) search 0 has 1 (maps x repetitions)");
   // Another search's id:
-  expect_verify(tampered("search_id",
-                         [](std::vector<std::string>& lines) {
-                           json h = json::parse(lines[0]);
-                           h["search_id"] = 1;
-                           lines[0] = h.dump();
-                         }),
-                2, "search_id 1, where the sweep's (manifest.json) search 0 has 0");
+  expect_verify(with_header("search_id", [](json& h) { h["search_id"] = 1; }), 2,
+                "search_id 1, where the sweep's (manifest.json) search 0 has 0");
 }
 
 TEST(CliVerify, SearchesJsonMustReportTheCertificatesOptimumAndEverySearchOfModeBestOne) {
