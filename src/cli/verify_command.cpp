@@ -44,7 +44,7 @@ std::map<std::size_t, nlohmann::json> search_records(const std::string& dir) {
   if (!text) return {};  // no search has finished: each is "not finished" (why_no_certificate())
   nlohmann::json searches;
   try {
-    searches = parse_json_bounded(*text, path);
+    searches = parse_json_unique_keys(*text, path);
   } catch (const nlohmann::json::exception& e) {
     throw ConfigError(path, std::string("not JSON: ") + e.what());
   }

@@ -10,6 +10,9 @@ namespace fsweep {
 inline namespace core {
 namespace {
 
+/// JSON paths in messages are cut here (keys may be long).
+constexpr std::size_t kMaxPathText = 160;
+
 /// Calls `visit(offset)` for each character of `text` outside strings, in order, until it
 /// returns false. Strings (with their escapes) are skipped.
 template <typename Visit>
@@ -94,6 +97,38 @@ nlohmann::json parse_json_bounded(std::string_view text, const std::string& path
                                                          std::to_string(kMaxJsonNesting));
   }
   return nlohmann::json::parse(text);
+}
+
+nlohmann::json parse_json_unique_keys(std::string_view text, const std::string& path) {
+  nlohmann::json j = parse_json_bounded(text, path);  // syntax and depth errors first
+  JsonKeyFinder finder(kMaxJsonNesting);
+  (void)nlohmann::json::sax_parse(text, &finder);
+  if (!finder.problems().empty()) throw ConfigError(path, finder.problems().front());
+  return j;
+}
+
+bool JsonKeyFinder::key(std::string& k) {
+  Frame& top = stack_.back();
+  top.key = k;
+  if (!top.keys.insert(top.key).second)
+    problems_.push_back(path() + ": duplicate key '" + top.key +
+                        "'; allowed: each key once (JSON keeps only the last)");
+  return true;
+}
+
+std::string JsonKeyFinder::path() const {
+  std::string p;
+  for (const auto& f : stack_) {
+    p += "/" + (f.object ? f.key : std::to_string(f.index));
+    if (p.size() > kMaxPathText) return p.substr(0, kMaxPathText) + "...";
+  }
+  return p.empty() ? "/" : p;
+}
+
+bool JsonKeyFinder::open(bool object) {
+  if (stack_.size() + 1 > static_cast<std::size_t>(max_nesting_)) throw JsonNestingTooDeep{path()};
+  stack_.push_back(Frame{object, {}, {}, 0});
+  return true;
 }
 
 }  // namespace core

@@ -5,9 +5,11 @@
 
 #include <cstddef>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 namespace fsweep {
 inline namespace core {
@@ -26,6 +28,71 @@ inline constexpr int kMaxJsonNesting = 128;
 /// json::parse(text) (nlohmann's parse_error for text that is not JSON), after a ConfigError
 /// "<path>:<line>:<column>: JSON nested deeper than 128 levels" for too deep text.
 [[nodiscard]] nlohmann::json parse_json_bounded(std::string_view text, const std::string& path);
+
+/// parse_json_bounded(text, path), then a ConfigError "<path>: <JSON path>: duplicate key ..." for
+/// the first key an object holds twice (nlohmann keeps only its last value, another reader may
+/// keep the first): for files whose every value must mean one thing, such as a certificate.
+[[nodiscard]] nlohmann::json parse_json_unique_keys(std::string_view text, const std::string& path);
+
+/// Thrown by JsonKeyFinder when an array or object opens deeper than its limit; `path` is the
+/// JSON path of the value being read.
+struct JsonNestingTooDeep {
+  std::string path;
+};
+
+/// A SAX handler for json::sax_parse that lists the keys an object holds twice, with their JSON
+/// paths, and knows the path of the value being read. A SAX pass, not the DOM parser's callback:
+/// nlohmann's callback parser looks through the enclosing container at every value's end,
+/// quadratic in a list of 100,000 entries. Throws JsonNestingTooDeep at an array or object
+/// opening deeper than `max_nesting` levels; ends the pass at a syntax error (which the DOM
+/// parser then reports with its message).
+class JsonKeyFinder {
+ public:
+  explicit JsonKeyFinder(int max_nesting) : max_nesting_(max_nesting) {}
+
+  bool null() { return value(); }
+  bool boolean(bool /*v*/) { return value(); }
+  bool number_integer(nlohmann::json::number_integer_t /*v*/) { return value(); }
+  bool number_unsigned(nlohmann::json::number_unsigned_t /*v*/) { return value(); }
+  bool number_float(nlohmann::json::number_float_t /*v*/, const std::string& /*text*/) { return value(); }
+  bool string(std::string& /*v*/) { return value(); }
+  bool binary(nlohmann::json::binary_t& /*v*/) { return value(); }
+  bool start_object(std::size_t /*elements*/) { return open(true); }
+  bool start_array(std::size_t /*elements*/) { return open(false); }
+  bool end_object() { return close(); }
+  bool end_array() { return close(); }
+  bool key(std::string& k);
+  bool parse_error(std::size_t /*position*/, const std::string& /*token*/,
+                   const nlohmann::detail::exception& /*error*/) {
+    return false;
+  }
+
+  /// "<JSON path>: duplicate key '<key>'; allowed: ..." for each repeated key, in text order.
+  [[nodiscard]] const std::vector<std::string>& problems() const { return problems_; }
+  /// The JSON path of the value being parsed ("/" at the top), cut after 160 characters.
+  [[nodiscard]] std::string path() const;
+
+ private:
+  struct Frame {
+    bool object;
+    std::set<std::string> keys;
+    std::string key;
+    std::size_t index;
+  };
+  bool open(bool object);
+  bool close() {
+    stack_.pop_back();
+    return value();
+  }
+  /// A value of the enclosing container is done.
+  bool value() {
+    if (!stack_.empty() && !stack_.back().object) ++stack_.back().index;
+    return true;
+  }
+  int max_nesting_;
+  std::vector<Frame> stack_;
+  std::vector<std::string> problems_;
+};
 
 /// "<path>:<line>:<column>" of byte `offset` of `text` (both counted from 1; an offset past the
 /// end is the end).

@@ -1,5 +1,5 @@
 /// @file sweep_json_reader.cpp
-/// parse_sweep_json: a SAX pass that finds duplicate keys and stops at kMaxSweepNesting, then
+/// parse_sweep_json: a SAX pass (JsonKeyFinder) that finds duplicate keys and stops at kMaxSweepNesting, then
 /// nlohmann's parser, and its exceptions turned into messages naming the file, line and column;
 /// apply_sweep_overrides: the command line's PATH=VALUE overrides.
 
@@ -10,7 +10,6 @@
 #include <map>
 #include <memory>
 #include <optional>
-#include <set>
 
 #include "core/config_error.hpp"
 #include "core/json_excerpt.hpp"
@@ -22,96 +21,19 @@ namespace {
 
 using nlohmann::json;
 
-/// JSON paths in messages are cut here (keys may be long).
-constexpr std::size_t kMaxPathText = 160;
-
-/// Thrown by the parse callback when an array or object opens deeper than kMaxSweepNesting.
-struct NestingTooDeep {
-  std::string path;
-};
-
-/// Duplicate keys of one object, found by a SAX pass over the text (nlohmann keeps only the
-/// last), and the JSON path of the value being read. A SAX pass, not the DOM parser's callback:
-/// nlohmann's callback parser looks through the enclosing container at every value's end,
-/// quadratic in a list of 100,000 strategy entries.
-class DuplicateKeyFinder {
- public:
-  bool null() { return value(); }
-  bool boolean(bool /*v*/) { return value(); }
-  bool number_integer(json::number_integer_t /*v*/) { return value(); }
-  bool number_unsigned(json::number_unsigned_t /*v*/) { return value(); }
-  bool number_float(json::number_float_t /*v*/, const std::string& /*text*/) { return value(); }
-  bool string(std::string& /*v*/) { return value(); }
-  bool binary(json::binary_t& /*v*/) { return value(); }
-  bool start_object(std::size_t /*elements*/) { return open(true); }
-  bool start_array(std::size_t /*elements*/) { return open(false); }
-  bool end_object() { return close(); }
-  bool end_array() { return close(); }
-  bool key(std::string& k) {
-    Frame& top = stack_.back();
-    top.key = k;
-    if (!top.keys.insert(top.key).second) {
-      problems_.push_back(path() + ": duplicate key '" + top.key +
-                          "'; allowed: each key once (JSON keeps only "
-                          "the last)");
-    }
-    return true;
-  }
-  /// Ends the pass; the DOM parser then throws the same error with its message.
-  bool parse_error(std::size_t /*position*/, const std::string& /*token*/,
-                   const nlohmann::detail::exception& /*error*/) {
-    return false;
-  }
-
-  [[nodiscard]] const std::vector<std::string>& problems() const { return problems_; }
-  /// The JSON path of the value being parsed ("/" at the top), cut after kMaxPathText characters.
-  [[nodiscard]] std::string path() const {
-    std::string p;
-    for (const auto& f : stack_) {
-      p += "/" + (f.object ? f.key : std::to_string(f.index));
-      if (p.size() > kMaxPathText) return p.substr(0, kMaxPathText) + "...";
-    }
-    return p.empty() ? "/" : p;
-  }
-
- private:
-  struct Frame {
-    bool object;
-    std::set<std::string> keys;
-    std::string key;
-    std::size_t index;
-  };
-  bool open(bool object) {
-    if (stack_.size() + 1 > static_cast<std::size_t>(kMaxSweepNesting)) throw NestingTooDeep{path()};
-    stack_.push_back(Frame{object, {}, {}, 0});
-    return true;
-  }
-  bool close() {
-    stack_.pop_back();
-    return value();
-  }
-  /// A value of the enclosing container is done.
-  bool value() {
-    if (!stack_.empty() && !stack_.back().object) ++stack_.back().index;
-    return true;
-  }
-  std::vector<Frame> stack_;
-  std::vector<std::string> problems_;
-};
-
 /// `s` cut to `n` characters for messages.
 std::string cut(const std::string& s, std::size_t n) { return s.size() > n ? s.substr(0, n) + "..." : s; }
 
 }  // namespace
 
 SweepJson parse_sweep_json(const std::string& text, const std::string& path) {
-  auto finder = std::make_shared<DuplicateKeyFinder>();
+  auto finder = std::make_shared<JsonKeyFinder>(kMaxSweepNesting);
   SweepJson out;
   try {
     // The pass stops at a syntax error, which the parse then throws with its message.
     (void)json::sax_parse(text, finder.get());
     out.value = json::parse(text);
-  } catch (const NestingTooDeep& e) {
+  } catch (const JsonNestingTooDeep& e) {
     throw ConfigError(text_position(path, text, first_too_deep_opening(text, kMaxSweepNesting)),
                       e.path + ": arrays and objects are nested more than " +
                           std::to_string(kMaxSweepNesting) + " levels deep; allowed: at most " +

@@ -115,7 +115,7 @@ std::vector<Region> read_regions(const std::string& path, const CertificateHeade
   for (std::size_t line = 2; std::getline(in, text); ++line) {
     const std::string where = path + ":" + std::to_string(line);
     try {
-      const json j = parse_json_bounded(text, where);
+      const json j = parse_json_unique_keys(text, where);
       Region r;
       r.line = line;
       const std::string kind = j.at("kind").get<std::string>();
@@ -492,7 +492,7 @@ CertificateHeader read_certificate_header(const std::string& path) {
   std::getline(in, line);
   CertificateHeader h;
   try {
-    const json j = parse_json_bounded(line, path + ":1");
+    const json j = parse_json_unique_keys(line, path + ":1");
     if (j.at("format").get<std::string>() != kCertificateFormat) {
       throw std::runtime_error("format '" + j.at("format").get<std::string>() + "'; allowed: '" +
                                kCertificateFormat + "'");

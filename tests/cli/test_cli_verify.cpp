@@ -1,6 +1,7 @@
 // `fsweep verify DIR` end to end: a search of mode best writes its certificate, which verifies
 // (exit 0); certificates tampered with in each way the check covers fail with the line named
-// (exit 1), or are refused as malformed (exit 2).
+// (exit 1), or are refused as malformed (exit 2). Also what a damaged searches.json does to a
+// rerun (which writes it again) and to the report.
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
@@ -16,6 +17,7 @@
 namespace {
 
 namespace fs = std::filesystem;
+using fsweep::testing::read_all;
 using fsweep::testing::run_fsweep;
 using nlohmann::json;
 
@@ -243,6 +245,25 @@ TEST(CliVerify, AMalformedLineOrAnotherSearchsCertificateIsExit2) {
   EXPECT_TRUE(has(r.output, "the certificate is another search's")) << r.output;
 }
 
+TEST(CliVerify, AKeyALineHoldsTwiceIsExit2) {
+  // nlohmann keeps a key's last value, other readers its first: a certificate whose line can be
+  // read two ways proves nothing.
+  const std::string twice = tampered("twice", [](std::vector<std::string>& lines) {
+    const std::size_t close = lines[0].rfind('}');
+    lines[0] = lines[0].substr(0, close) + R"(, "direction": "maximize"})";
+  });
+  auto r = run_fsweep("verify " + twice);
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_TRUE(has(r.output, "search_certificate_0.jsonl:1: /direction: duplicate key 'direction'"))
+      << r.output;
+  const std::string region = tampered("twice_region", [](std::vector<std::string>& lines) {
+    lines[2] = "{\"value\": 0, " + lines[2].substr(1);
+  });
+  r = run_fsweep("verify " + region);
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_TRUE(has(r.output, "search_certificate_0.jsonl:3: /value: duplicate key 'value'")) << r.output;
+}
+
 /// The searched directory copied as `name`, its searches.json's search record edited by `change`.
 std::string with_record(const std::string& name, const std::function<void(json&)>& change) {
   const std::string dir = tampered(name, [](std::vector<std::string>& /*lines*/) {});
@@ -406,6 +427,32 @@ TEST(CliVerify, ASearchWhoseRunsNeverReachTheirTargetVerifiesWithNoOptimum) {
   lines[1] = j.dump();
   write_lines(valued + "/search_certificate_0.jsonl", lines);
   expect_verify(valued, 1, "but the optimum is none (no vector has a value)");
+}
+
+TEST(CliVerify, ADamagedSearchesJsonIsWrittenAgainByARerunAndNamedByTheReport) {
+  // A record whose fields are of other types: the report still writes its page, the search's
+  // trajectories labelled without them, and says why the strategies are not compared.
+  const std::string damaged = with_record("damaged", [](json& record) {
+    record["map_class"] = 7;
+    record["strategy_label"] = nullptr;
+  });
+  auto r = run_fsweep("report " + damaged);
+  ASSERT_EQ(r.code, 0) << r.output;
+  const std::string page = read_all(damaged + "/report.html");
+  EXPECT_TRUE(has(page, "search 0 (? on ?): best behaviour (rank 1")) << page.substr(0, 2000);
+  EXPECT_TRUE(has(page, damaged + "/searches.json: not a searches file of fsweep run"))
+      << page.substr(0, 2000);
+  // Cut short (a full disk, an editor): not "already done"; a rerun reads the journal back and
+  // writes it again, with the certificate's counts, and it verifies.
+  const std::string cut = tampered("cut_searches", [](std::vector<std::string>& /*lines*/) {});
+  const std::string text = read_all(cut + "/searches.json");
+  std::ofstream(cut + "/searches.json", std::ios::trunc) << text.substr(0, text.size() / 2);
+  r = run_fsweep("run " + fs::path(searched()).parent_path().string() + "/sweep.json --quiet --out " + cut);
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_TRUE(has(r.output, "exact weight search: 1 search, 96 weight vectors")) << r.output;
+  EXPECT_EQ(json::parse(read_all(cut + "/searches.json"))["searches"][0]["certificate"],
+            json::parse(read_all(searched() + "/searches.json"))["searches"][0]["certificate"]);
+  expect_verify(cut, 0, "verified");
 }
 
 }  // namespace

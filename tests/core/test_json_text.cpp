@@ -36,5 +36,22 @@ TEST(JsonText, BoundedParseNamesThePlaceOfTheTooDeepOpening) {
   EXPECT_THROW((void)parse_json_bounded("{", "f.json"), nlohmann::json::parse_error);
 }
 
+TEST(JsonText, AKeyAnObjectHoldsTwiceIsRefusedWithItsPath) {
+  EXPECT_EQ(parse_json_unique_keys(R"({"a": {"b": 1}, "c": [{"b": 2}, {"b": 3}]})", "f.jsonl:4")["c"][1]["b"],
+            3);
+  try {
+    (void)parse_json_unique_keys(R"({"a": 1, "c": [{"b": 2}, {"b": 3, "d": 0, "b": 4}], "a": 5})",
+                                 "f.jsonl:4");
+    FAIL() << "a duplicate key parsed";
+  } catch (const ConfigError& e) {
+    // The first one in the text is named, with its place in the line's value.
+    EXPECT_EQ(std::string(e.what()),
+              "f.jsonl:4: /c/1/b: duplicate key 'b'; allowed: each key once (JSON keeps only the last)");
+  }
+  // Syntax and depth come first, as in parse_json_bounded.
+  EXPECT_THROW((void)parse_json_unique_keys(R"({"a": 1, "a": )", "f"), nlohmann::json::parse_error);
+  EXPECT_THROW((void)parse_json_unique_keys(nested(kMaxJsonNesting + 1), "f"), ConfigError);
+}
+
 }  // namespace
 }  // namespace fsweep
