@@ -343,7 +343,7 @@ std::optional<std::string> SweepPaths::resolve(const std::string& written, Kind 
     warnings_.push_back(
         concat({where, ": '", written, "' is not beside the sweep file (no ", absolute(beside),
                 "); read from the working directory instead (", absolute(path),
-                "), as sweeps were before relative paths followed the sweep file",
+                "), which is tried when a relative path is not beside the sweep file",
                 relative.empty() ? "" : "; write '", relative, relative.empty() ? "" : "'"}));
     return written;
   }

@@ -323,7 +323,7 @@ TEST(SweepPlan, APathOnlyUnderTheWorkingDirectoryIsReadFromThereWithAWarning) {
   EXPECT_EQ(plan.path_warnings()[0],
             "/maps/0/file: 'maps/two_rooms.txt' is not beside the sweep file (no " + dir +
                 "/sweeps/maps/two_rooms.txt); read from the working directory instead (" + dir +
-                "/maps/two_rooms.txt), as sweeps were before relative paths followed the "
+                "/maps/two_rooms.txt), which is tried when a relative path is not beside the "
                 "sweep file; write '../maps/two_rooms.txt'");
   EXPECT_EQ(plan.path_warnings()[1].rfind("/maps/1: 'maps/two_rooms.txt' is not beside the sweep file", 0),
             0U);
