@@ -18,16 +18,16 @@
 ///   generator's default), closest_frontier and energy_aware (10,0,9,20), unlimited battery:
 ///   the size at which energy-aware decisions used to cost 95x closest frontier's (issue 14).
 /// - `BM_ExactWeightSearch/step:<s>` and `BM_BruteWeightSearch/step:<s>`: Rappaport 2016's
-///   free-space weight search (sweeps/paper/rappaport2016_weights_free.json's setting on an
-///   unclipped 69x69 map: 10 m cells, sensor 30 m, `distance` energy, range 600 m) over the
+///   free-space weight search (sweeps/paper/rappaport2016_weights_free.json's setting on its
+///   unclipped 71x71 map: 10 m cells, sensor 30 m, `distance` energy, range 600 m) over the
 ///   grid {0, s, 2s, ..., 250}^4, on one thread: the exact search (weightsearch/exact_search.hpp) and one
 ///   simulate() per vector. `behaviours` counts the distinct behaviours, `vectors` the grid.
 ///   `BM_ExactWeightSearchBox16` and `BM_BruteWeightSearchBox16Slow` (about 3 minutes, left out
 ///   of the nightly set): the same at step 1 over a 16^4 box (box16_grid()).
 /// - `BM_RappaportFree/r:<m>/<strategy>`: Rappaport 2016's free space (10 m cells, sensor 30 m,
-///   `distance` energy, battery range r, dock at the centre) on an unclipped square, half-width
-///   r/2 + r_s + 1 cell, as sweeps/paper/ sizes it, at r = 1800, 3600 and the paper's 9000 m;
-///   closest_frontier and energy_aware (10,0,9,20).
+///   `distance` energy, battery range r, dock at the centre) on an unclipped square: free
+///   half-width r/2 + r_s + 1 cell inside the map's occupied frame, as sweeps/paper/ sizes it, at r = 1800,
+///   3600 and the paper's 9000 m; closest_frontier and energy_aware (10,0,9,20).
 
 #include <benchmark/benchmark.h>
 
@@ -217,12 +217,13 @@ std::array<Item, 2> large_run_strategies() {
 }
 
 /// Rappaport 2016's free space for battery range `range_m` (metres): 10 m cells, sensor 30 m,
-/// travel-only energy, on the smallest odd square whose half-width is range_m / 2 + 30 m + one
-/// cell, so that the border never cuts the reachable disc or its sensor band.
+/// travel-only energy, on the smallest odd square whose free half-width is range_m / 2 + 30 m +
+/// one cell inside the map's frame of occupied cells, so that the border never cuts the reachable
+/// disc or its sensor band (fsweep sim warns when it would: 1800 m needs 191x191 cells).
 RunSpec rappaport_free_spec(const Item& strategy, double range_m) {
   constexpr double kCellM = 10.0;
   constexpr double kSensorM = 30.0;
-  const int half = static_cast<int>(std::ceil((range_m / 2.0 + kSensorM) / kCellM)) + 1;
+  const int half = static_cast<int>(std::ceil((range_m / 2.0 + kSensorM) / kCellM)) + 2;  // + the frame
   const std::string side = std::to_string(2 * half + 1);
   RunSpec s;
   s.map = std::make_shared<const WorldMap>(load_map_spec("free:w=" + side + ",h=" + side + ",res=10"));
@@ -234,7 +235,7 @@ RunSpec rappaport_free_spec(const Item& strategy, double range_m) {
 
 /// The free-space weight search's run (see the file comment) with energy-aware weights `w`.
 RunSpec weight_search_spec(const std::vector<double>& w) {
-  static const auto kMap = std::make_shared<const WorldMap>(load_map_spec("free:w=69,h=69,res=10"));
+  static const auto kMap = std::make_shared<const WorldMap>(load_map_spec("free:w=71,h=71,res=10"));
   RunSpec s;
   s.map = kMap;
   s.strategy = configure_strategy("energy_aware", {{"w1", w[0]}, {"w2", w[1]}, {"w3", w[2]}, {"w4", w[3]}});

@@ -67,6 +67,25 @@ std::pair<std::size_t, std::string> first_overflowing_number(std::string_view te
   return found;
 }
 
+std::string null_non_finite_words(std::string_view text) {
+  std::string out;
+  std::size_t copied = 0;
+  std::size_t skip_to = 0;
+  scan_outside_strings(text, [&](std::size_t i) {
+    if (i < skip_to) return true;
+    const std::size_t word = text[i] == '-' ? i + 1 : i;
+    for (const std::string_view name : {std::string_view("NaN"), std::string_view("Infinity")}) {
+      if (text.substr(word, name.size()) == name) {
+        out.append(text.substr(copied, i - copied)).append("null");
+        copied = skip_to = word + name.size();
+        break;
+      }
+    }
+    return true;
+  });
+  return out.append(text.substr(copied));
+}
+
 std::size_t first_too_deep_opening(std::string_view text, int max_depth) {
   std::size_t found = text.size();
   int depth = 0;

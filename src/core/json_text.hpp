@@ -102,6 +102,11 @@ class JsonKeyFinder {
 /// byte offset and its text; the offset is text.size() if there is none.
 [[nodiscard]] std::pair<std::size_t, std::string> first_overflowing_number(std::string_view text);
 
+/// `text` with the words NaN, Infinity, -NaN and -Infinity outside strings replaced by null:
+/// Google Benchmark's JSON writes non-finite numbers so (the coefficient of variation of a counter
+/// whose mean is 0), which JSON does not allow and no JSON parser reads.
+[[nodiscard]] std::string null_non_finite_words(std::string_view text);
+
 /// The byte offset of the first '[' or '{' outside strings that opens nesting level
 /// `max_depth + 1` (the top level is 1); text.size() if there is none.
 [[nodiscard]] std::size_t first_too_deep_opening(std::string_view text, int max_depth);

@@ -19,11 +19,13 @@ namespace {
 using nlohmann::json;
 
 /// The whole JSON file; ConfigError naming it when missing or malformed.
-json read_json_file(const std::string& path) {
+/// The JSON of `path`; `benchmark`: Google Benchmark's output, whose non-finite numbers (NaN,
+/// Infinity) are read as null.
+json read_json_file(const std::string& path, bool benchmark = false) {
   const std::optional<std::string> text = read_file(path);
   if (!text) throw ConfigError(path, "cannot be read (missing?)");
   try {
-    return parse_json_bounded(*text, path);
+    return parse_json_bounded(benchmark ? null_non_finite_words(*text) : *text, path);
   } catch (const json::parse_error& e) {
     throw ConfigError(path, std::string("not valid JSON: ") + e.what());
   }
@@ -85,7 +87,7 @@ ManifestFacts read_manifest_facts(const std::string& path) {
 
 std::optional<BenchFile> read_bench_file(const std::string& path) {
   if (!std::filesystem::exists(path)) return std::nullopt;
-  const json j = read_json_file(path);
+  const json j = read_json_file(path, true);
   if (!j.is_object() || !j.contains("benchmarks") || !j["benchmarks"].is_array()) {
     throw ConfigError(path,
                       "expected Google Benchmark's JSON output (an object with a \"benchmarks\" array)");

@@ -36,6 +36,17 @@ TEST(JsonText, BoundedParseNamesThePlaceOfTheTooDeepOpening) {
   EXPECT_THROW((void)parse_json_bounded("{", "f.json"), nlohmann::json::parse_error);
 }
 
+TEST(JsonText, NonFiniteWordsOutsideStringsBecomeNull) {
+  // As Google Benchmark writes a counter's coefficient of variation when its mean is 0.
+  const std::string text =
+      R"({"exact": NaN, "gap": -Infinity, "n": -NaN, "up": Infinity, "name": "NaN Infinity", "x": [NaN]})";
+  EXPECT_EQ(null_non_finite_words(text),
+            R"({"exact": null, "gap": null, "n": null, "up": null, "name": "NaN Infinity", "x": [null]})");
+  EXPECT_TRUE(nlohmann::json::parse(null_non_finite_words(text)).at("exact").is_null());
+  EXPECT_EQ(null_non_finite_words(R"({"a": -1.5e3, "b": "-Infinity"})"),
+            R"({"a": -1.5e3, "b": "-Infinity"})");
+}
+
 TEST(JsonText, AKeyAnObjectHoldsTwiceIsRefusedWithItsPath) {
   EXPECT_EQ(parse_json_unique_keys(R"({"a": {"b": 1}, "c": [{"b": 2}, {"b": 3}]})", "f.jsonl:4")["c"][1]["b"],
             3);
