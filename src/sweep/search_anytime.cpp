@@ -165,13 +165,14 @@ json join_search_status(std::span<const json> shards, std::uint64_t vectors, dou
   return s;
 }
 
-std::string describe_search_status(const json& status) {
+std::string describe_search_status(const json& status, std::string_view unit) {
+  const std::string with_unit = unit.empty() ? std::string() : " " + std::string(unit);
   std::string out;
   const json& best = status.at("best");
   if (best.is_null()) {
     out = "no behaviour finished yet";
   } else {
-    out = "best so far " + readable_number(best.at("objective").get<double>(), 6) + " at (";
+    out = "best so far " + readable_number(best.at("objective").get<double>(), 6) + with_unit + " at (";
     bool first = true;
     for (const auto& [name, value] : best.at("weights").items()) {
       out += (first ? "" : ", ") + name + "=" + readable_number(value.get<double>(), 6);
@@ -183,7 +184,7 @@ std::string describe_search_status(const json& status) {
   const bool minimised = status.value("direction", std::string("minimize")) == "minimize";
   out += std::isnan(bound) ? std::string("; no bound on the optimum yet")
                            : std::string("; the optimum is at ") + (minimised ? "least " : "most ") +
-                                 readable_number(bound, 6);
+                                 readable_number(bound, 6) + with_unit;
   const double relative = status_number(status, "relative_gap");
   if (!std::isnan(relative)) out += " (gap " + readable_number(100.0 * relative, 3) + "%)";
   out += "; " + sweep_detail::with_thousands(status.value("resolved_vectors", std::uint64_t{0})) + " of " +

@@ -68,8 +68,9 @@ class SearchAnytimeLog {
 [[nodiscard]] nlohmann::json join_search_status(std::span<const nlohmann::json> shards, std::uint64_t vectors,
                                                 double sign);
 
-/// One line for a person: best, bound and gap of a status (SearchAnytimeLog::last()).
-[[nodiscard]] std::string describe_search_status(const nlohmann::json& status);
+/// One line for a person: best, bound and gap of a status (SearchAnytimeLog::last()), the
+/// objective's values followed by `unit` ("m"; none when empty).
+[[nodiscard]] std::string describe_search_status(const nlohmann::json& status, std::string_view unit = {});
 
 }  // namespace sweep
 }  // namespace fsweep

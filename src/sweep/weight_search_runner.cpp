@@ -362,7 +362,7 @@ class SearchWriter {
       out.stats.best_probe = std::min(out.stats.best_probe, taken.best);
       anytime.record(state_at_end(out.stats), resolved.load(), best_weights,
                      out.stats.stopped ? "stopped" : "finished");
-      out.standing = describe_search_status(anytime.last());
+      out.standing = describe_search_status(anytime.last(), metric_unit(objective_.column));
     }
     out.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (out.stats.stopped && guard != nullptr && guard->reached())
@@ -864,8 +864,9 @@ std::string join_shard_status(const SweepPlan& plan, const std::vector<SearchUni
     const json joint = join_search_status(shards, grid.size(), sign);
     std::filesystem::create_directories(out_dir);
     write_file_atomically(out_dir + "/" + search_status_file(id), joint.dump(2) + '\n');
-    note += "; search " + std::to_string(id) + " of the shards so far: " + describe_search_status(joint) +
-            " (" + out_dir + "/" + search_status_file(id) + ")";
+    note += "; search " + std::to_string(id) +
+            " of the shards so far: " + describe_search_status(joint, metric_unit(objective->column)) + " (" +
+            out_dir + "/" + search_status_file(id) + ")";
   }
   return note;
 }

@@ -1032,7 +1032,8 @@ TEST(WeightSearchRunner, TheShardsStatusesJoinIntoTheWholeSearchs) {
   EXPECT_EQ(joint["bound"], 7.5);
   EXPECT_EQ(joint["gap"], 2.5);
   EXPECT_EQ(joint["relative_gap"], 0.25);
-  EXPECT_NE(describe_search_status(joint).find("the optimum is at least 7.5 (gap 25%)"), std::string::npos)
+  EXPECT_NE(describe_search_status(joint, "m").find("the optimum is at least 7.5 m (gap 25%)"),
+            std::string::npos)
       << describe_search_status(joint);
   const json unknown = join_search_status(std::vector<json>{finished, nullptr}, 200, 1.0);
   EXPECT_TRUE(unknown["bound"].is_null());
