@@ -108,21 +108,71 @@ nlohmann::json parse_json_or_discard(std::string_view text) {
   return nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
 }
 
-nlohmann::json parse_json_bounded(std::string_view text, const std::string& path) {
+namespace {
+
+/// Throws ConfigError at the first array or object of `text` nested deeper than kMaxJsonNesting.
+void refuse_too_deep(std::string_view text, const std::string& path) {
   if (const std::size_t at = first_too_deep_opening(text, kMaxJsonNesting); at < text.size()) {
     throw ConfigError(text_position(path, text, at), "JSON nested deeper than " +
                                                          std::to_string(kMaxJsonNesting) +
                                                          " levels (arrays and objects); allowed: at most " +
                                                          std::to_string(kMaxJsonNesting));
   }
+}
+
+}  // namespace
+
+nlohmann::json parse_json_bounded(std::string_view text, const std::string& path) {
+  refuse_too_deep(text, path);
   return nlohmann::json::parse(text);
 }
 
+namespace {
+
+/// A SAX handler that builds the value as json::parse does (nlohmann's own DOM builder) and
+/// finds repeated keys on the way (JsonKeyFinder): one pass over the text.
+class UniqueKeyDom {
+ public:
+  explicit UniqueKeyDom(nlohmann::json& out) : dom_(out) {}
+  bool null() { return keys.null() && dom_.null(); }
+  bool boolean(bool v) { return keys.boolean(v) && dom_.boolean(v); }
+  bool number_integer(nlohmann::json::number_integer_t v) {
+    return keys.number_integer(v) && dom_.number_integer(v);
+  }
+  bool number_unsigned(nlohmann::json::number_unsigned_t v) {
+    return keys.number_unsigned(v) && dom_.number_unsigned(v);
+  }
+  bool number_float(nlohmann::json::number_float_t v, const std::string& text) {
+    return keys.number_float(v, text) && dom_.number_float(v, text);
+  }
+  bool string(std::string& v) { return keys.string(v) && dom_.string(v); }
+  bool binary(nlohmann::json::binary_t& v) { return keys.binary(v) && dom_.binary(v); }
+  bool start_object(std::size_t n) { return keys.start_object(n) && dom_.start_object(n); }
+  bool start_array(std::size_t n) { return keys.start_array(n) && dom_.start_array(n); }
+  bool end_object() { return keys.end_object() && dom_.end_object(); }
+  bool end_array() { return keys.end_array() && dom_.end_array(); }
+  bool key(std::string& k) { return keys.key(k) && dom_.key(k); }
+  /// Throws `error` (nlohmann's parse_error, out_of_range, ...) as json::parse does: a template,
+  /// so that the exception keeps its own type.
+  template <typename Exception>
+  bool parse_error(std::size_t position, const std::string& token, const Exception& error) {
+    return dom_.parse_error(position, token, error);
+  }
+
+  JsonKeyFinder keys{kMaxJsonNesting};
+
+ private:
+  nlohmann::detail::json_sax_dom_parser<nlohmann::json> dom_;
+};
+
+}  // namespace
+
 nlohmann::json parse_json_unique_keys(std::string_view text, const std::string& path) {
-  nlohmann::json j = parse_json_bounded(text, path);  // syntax and depth errors first
-  JsonKeyFinder finder(kMaxJsonNesting);
-  (void)nlohmann::json::sax_parse(text, &finder);
-  if (!finder.problems().empty()) throw ConfigError(path, finder.problems().front());
+  refuse_too_deep(text, path);
+  nlohmann::json j;
+  UniqueKeyDom handler(j);
+  (void)nlohmann::json::sax_parse(text, &handler);
+  if (!handler.keys.problems().empty()) throw ConfigError(path, handler.keys.problems().front());
   return j;
 }
 

@@ -245,6 +245,22 @@ TEST(CliVerify, AMalformedLineOrAnotherSearchsCertificateIsExit2) {
   EXPECT_TRUE(has(r.output, "the certificate is another search's")) << r.output;
 }
 
+/// The searched directory copied as `name`, its searches.json's search record edited by `change`.
+std::string with_record(const std::string& name, const std::function<void(json&)>& change) {
+  const std::string dir = tampered(name, [](std::vector<std::string>& /*lines*/) {});
+  json searches = json::parse(std::ifstream(dir + "/searches.json"));
+  change(searches["searches"][0]);
+  std::ofstream(dir + "/searches.json", std::ios::trunc) << searches.dump();
+  return dir;
+}
+
+/// `fsweep verify` on `dir` exits `code` with `part` in its output.
+void expect_verify(const std::string& dir, int code, const std::string& part) {
+  const auto r = run_fsweep("verify " + dir);
+  EXPECT_EQ(r.code, code) << r.output;
+  EXPECT_TRUE(has(r.output, part)) << "expected '" << part << "' in\n" << r.output;
+}
+
 TEST(CliVerify, AKeyALineHoldsTwiceIsExit2) {
   // nlohmann keeps a key's last value, other readers its first: a certificate whose line can be
   // read two ways proves nothing.
@@ -262,22 +278,12 @@ TEST(CliVerify, AKeyALineHoldsTwiceIsExit2) {
   r = run_fsweep("verify " + region);
   EXPECT_EQ(r.code, 2) << r.output;
   EXPECT_TRUE(has(r.output, "search_certificate_0.jsonl:3: /value: duplicate key 'value'")) << r.output;
-}
-
-/// The searched directory copied as `name`, its searches.json's search record edited by `change`.
-std::string with_record(const std::string& name, const std::function<void(json&)>& change) {
-  const std::string dir = tampered(name, [](std::vector<std::string>& /*lines*/) {});
-  json searches = json::parse(std::ifstream(dir + "/searches.json"));
-  change(searches["searches"][0]);
-  std::ofstream(dir + "/searches.json", std::ios::trunc) << searches.dump();
-  return dir;
-}
-
-/// `fsweep verify` on `dir` exits `code` with `part` in its output.
-void expect_verify(const std::string& dir, int code, const std::string& part) {
-  const auto r = run_fsweep("verify " + dir);
-  EXPECT_EQ(r.code, code) << r.output;
-  EXPECT_TRUE(has(r.output, part)) << "expected '" << part << "' in\n" << r.output;
+  // searches.json, whose counts verify compares, is read the same way.
+  const std::string record = tampered("twice_record", [](std::vector<std::string>& /*lines*/) {});
+  std::string searches = read_all(record + "/searches.json");
+  searches.insert(searches.find("\"behaviours\""), R"("behaviours": 99, )");
+  std::ofstream(record + "/searches.json", std::ios::trunc) << searches;
+  expect_verify(record, 2, "searches.json: /searches/0/behaviours: duplicate key 'behaviours'");
 }
 
 TEST(CliVerify, ACertificateForAnotherBoxObjectiveDirectionOrInstancesIsRefused) {
