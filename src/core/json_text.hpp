@@ -29,9 +29,10 @@ inline constexpr int kMaxJsonNesting = 128;
 /// "<path>:<line>:<column>: JSON nested deeper than 128 levels" for too deep text.
 [[nodiscard]] nlohmann::json parse_json_bounded(std::string_view text, const std::string& path);
 
-/// parse_json_bounded(text, path), then a ConfigError "<path>: <JSON path>: duplicate key ..." for
+/// parse_json_bounded(text, path), and a ConfigError "<path>: <JSON path>: duplicate key ..." for
 /// the first key an object holds twice (nlohmann keeps only its last value, another reader may
-/// keep the first): for files whose every value must mean one thing, such as a certificate.
+/// keep the first), found in the same pass over the text: for files whose every value must mean
+/// one thing, such as a certificate.
 [[nodiscard]] nlohmann::json parse_json_unique_keys(std::string_view text, const std::string& path);
 
 /// Thrown by JsonKeyFinder when an array or object opens deeper than its limit; `path` is the

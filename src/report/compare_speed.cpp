@@ -18,9 +18,8 @@ namespace {
 
 using nlohmann::json;
 
-/// The whole JSON file; ConfigError naming it when missing or malformed.
-/// The JSON of `path`; `benchmark`: Google Benchmark's output, whose non-finite numbers (NaN,
-/// Infinity) are read as null.
+/// The whole JSON file; ConfigError naming it when missing or malformed. `benchmark`: Google
+/// Benchmark's output, whose non-finite numbers (NaN, Infinity) are read as null.
 json read_json_file(const std::string& path, bool benchmark = false) {
   const std::optional<std::string> text = read_file(path);
   if (!text) throw ConfigError(path, "cannot be read (missing?)");
